@@ -1,0 +1,55 @@
+//! Typed errors for every fallible entry point.
+
+use core::fmt;
+
+/// What was wrong with an input to microraster.
+///
+/// Every public function that can receive bad input returns this error (or a
+/// [`RenderError`] that wraps it) instead of panicking.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Error {
+    /// A coordinate was NaN or infinite.
+    NonFiniteCoordinate,
+    /// A coordinate lies outside the supported range
+    /// (see [`SubPoint::MAX_SUBPIXELS`](crate::SubPoint::MAX_SUBPIXELS)).
+    CoordinateOutOfRange,
+    /// The frame height is zero or larger than [`MAX_FRAME_DIM`](crate::MAX_FRAME_DIM).
+    InvalidFrameSize,
+}
+
+impl fmt::Display for Error {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let text = match self {
+            Error::NonFiniteCoordinate => "coordinate is NaN or infinite",
+            Error::CoordinateOutOfRange => "coordinate outside the supported range",
+            Error::InvalidFrameSize => "frame size is zero or too large",
+        };
+        f.write_str(text)
+    }
+}
+
+impl core::error::Error for Error {}
+
+/// Error returned by [`Renderer::render`](crate::Renderer::render).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum RenderError<E> {
+    /// The renderer's configuration or the scene was invalid.
+    Input(Error),
+    /// The display (the `DrawTarget`) reported an error while a band was sent.
+    Target(E),
+}
+
+impl<E> From<Error> for RenderError<E> {
+    fn from(e: Error) -> Self {
+        RenderError::Input(e)
+    }
+}
+
+impl<E: fmt::Debug> fmt::Display for RenderError<E> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            RenderError::Input(e) => write!(f, "invalid input: {e}"),
+            RenderError::Target(e) => write!(f, "draw target error: {e:?}"),
+        }
+    }
+}
