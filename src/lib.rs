@@ -4,6 +4,7 @@
 #![deny(missing_docs)]
 
 pub mod clip;
+pub mod edge;
 pub mod error;
 pub mod subpixel;
 
