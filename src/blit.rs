@@ -1,0 +1,104 @@
+//! Blitters: where rasterized spans and pixels are written.
+//!
+//! The rasterizers ([`crate::edge`], [`crate::line`]) only produce coordinates;
+//! a [`Blitter`] turns them into colour. The band renderer blits into a
+//! [`BandView`](crate::band::BandView); [`TargetBlitter`] blits straight into
+//! any `embedded-graphics` [`DrawTarget`] (a full framebuffer, or a
+//! `MockDisplay` in tests), with no band at all.
+
+use crate::ClipRect;
+use crate::edge::Span;
+use embedded_graphics_core::prelude::{DrawTarget, PixelColor, Point, Size};
+use embedded_graphics_core::primitives::Rectangle;
+
+/// A sink for pixels. Implementors provide [`Blitter::clip`] and
+/// [`Blitter::set_pixel`]; the span methods have per-pixel defaults that fast
+/// implementors override.
+pub trait Blitter<C: PixelColor> {
+    /// The pixels this blitter accepts; rasterizers never emit outside it.
+    fn clip(&self) -> ClipRect;
+
+    /// Writes one pixel inside [`Blitter::clip`].
+    fn set_pixel(&mut self, x: i32, y: i32, color: C);
+
+    /// Writes `color` over a span inside the clip.
+    fn fill_span(&mut self, span: Span, color: C) {
+        for i in 0..span.len as i32 {
+            self.set_pixel(span.x + i, span.y, color);
+        }
+    }
+
+    /// Writes one colour per pixel of the span, left to right.
+    fn shade_span<I: Iterator<Item = C>>(&mut self, span: Span, colors: I) {
+        for (i, c) in (0..span.len as i32).zip(colors) {
+            self.set_pixel(span.x + i, span.y, c);
+        }
+    }
+}
+
+/// Blits directly into a [`DrawTarget`]: spans become `fill_solid` and
+/// `fill_contiguous` calls. The first error the target reports is kept in
+/// [`TargetBlitter::error`] and later writes are skipped.
+///
+/// ```
+/// use embedded_graphics::mock_display::MockDisplay;
+/// use embedded_graphics_core::pixelcolor::BinaryColor;
+/// use microraster::{blit::TargetBlitter, edge::Cull, SubPoint, Triangle};
+/// let p = |x, y| SubPoint::<4>::from_pixels(x, y).unwrap();
+/// let mut display = MockDisplay::<BinaryColor>::new();
+/// let mut blitter = TargetBlitter::new(&mut display);
+/// Triangle::flat([p(0, 0), p(3, 0), p(0, 3)], BinaryColor::On).draw(&mut blitter, Cull::None);
+/// assert!(blitter.error.is_none());
+/// display.assert_pattern(&["##", "# "]);
+/// ```
+pub struct TargetBlitter<'a, D: DrawTarget> {
+    target: &'a mut D,
+    clip: ClipRect,
+    /// The first error reported by the target, if any.
+    pub error: Option<D::Error>,
+}
+
+impl<'a, D: DrawTarget> TargetBlitter<'a, D> {
+    /// Blits into `target`, clipped to its bounding box (pixels at negative
+    /// coordinates are never drawn).
+    pub fn new(target: &'a mut D) -> Self {
+        let b = target.bounding_box();
+        let (w, h) = (b.size.width.min(i32::MAX as u32) as i32, b.size.height.min(i32::MAX as u32) as i32);
+        let clip = ClipRect::new(b.top_left.x, b.top_left.y, b.top_left.x.saturating_add(w), b.top_left.y.saturating_add(h));
+        TargetBlitter { target, clip, error: None }
+    }
+
+    fn keep(&mut self, r: Result<(), D::Error>) {
+        if let (Err(e), None) = (r, &self.error) {
+            self.error = Some(e);
+        }
+    }
+}
+
+impl<D: DrawTarget> Blitter<D::Color> for TargetBlitter<'_, D> {
+    fn clip(&self) -> ClipRect {
+        self.clip
+    }
+
+    fn set_pixel(&mut self, x: i32, y: i32, color: D::Color) {
+        self.fill_span(Span { y, x, len: 1 }, color);
+    }
+
+    fn fill_span(&mut self, span: Span, color: D::Color) {
+        if self.error.is_none() {
+            let r = self.target.fill_solid(&span_rect(span), color);
+            self.keep(r);
+        }
+    }
+
+    fn shade_span<I: Iterator<Item = D::Color>>(&mut self, span: Span, colors: I) {
+        if self.error.is_none() {
+            let r = self.target.fill_contiguous(&span_rect(span), colors);
+            self.keep(r);
+        }
+    }
+}
+
+fn span_rect(s: Span) -> Rectangle {
+    Rectangle::new(Point::new(s.x, s.y), Size::new(s.len, 1))
+}

@@ -1,0 +1,196 @@
+//! Scene primitives: triangles and lines with their shading.
+//!
+//! Primitives hold snapped vertices (so every coordinate is already validated)
+//! and the range of pixel rows they can touch, which lets the band renderer
+//! skip a primitive that misses a band with two comparisons.
+
+use crate::attr::{Plane, PlaneFrame, channel};
+use crate::blit::Blitter;
+use crate::edge::{Cull, TriangleSpans};
+use crate::line::{line_pixels, line_rows};
+use crate::{Error, Interpolate, SubPoint};
+
+/// How a triangle is coloured.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Shading<C> {
+    /// One colour for the whole triangle.
+    Flat(C),
+    /// A colour per vertex, interpolated linearly in screen space (Gouraud).
+    Gouraud([C; 3]),
+}
+
+/// A triangle with snapped vertices.
+///
+/// ```
+/// use embedded_graphics_core::pixelcolor::Rgb565;
+/// use microraster::{SubPoint, Triangle};
+/// let t = Triangle::<_, 4>::from_f32([(0.0, 0.0), (10.5, 2.0), (3.0, 8.25)], Rgb565::new(31, 0, 0))?;
+/// assert_eq!(t.rows(), (0, 7)); // centres y + 0.5 for y in 0..=7 lie within 0..=8.25
+/// # Ok::<(), microraster::Error>(())
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Triangle<C, const S: u32> {
+    vertices: [SubPoint<S>; 3],
+    shading: Shading<C>,
+}
+
+impl<C: Interpolate, const S: u32> Triangle<C, S> {
+    /// A triangle with the given shading.
+    pub const fn new(vertices: [SubPoint<S>; 3], shading: Shading<C>) -> Self {
+        Triangle { vertices, shading }
+    }
+
+    /// A flat-coloured triangle.
+    pub const fn flat(vertices: [SubPoint<S>; 3], color: C) -> Self {
+        Self::new(vertices, Shading::Flat(color))
+    }
+
+    /// A Gouraud-shaded triangle with one colour per vertex.
+    pub const fn gouraud(vertices: [SubPoint<S>; 3], colors: [C; 3]) -> Self {
+        Self::new(vertices, Shading::Gouraud(colors))
+    }
+
+    /// A flat triangle from `f32` pixel coordinates, snapped to nearest.
+    pub fn from_f32(v: [(f32, f32); 3], color: C) -> Result<Self, Error> {
+        let mut out = [SubPoint::default(); 3];
+        for (o, (x, y)) in out.iter_mut().zip(v) {
+            *o = SubPoint::from_f32(x, y)?;
+        }
+        Ok(Self::flat(out, color))
+    }
+
+    /// The snapped vertices.
+    pub const fn vertices(&self) -> [SubPoint<S>; 3] {
+        self.vertices
+    }
+
+    /// The shading.
+    pub const fn shading(&self) -> Shading<C> {
+        self.shading
+    }
+
+    /// Inclusive range of pixel rows whose centres lie within the vertical
+    /// extent of the triangle (empty if `.0 > .1`).
+    pub fn rows(&self) -> (i32, i32) {
+        let ys = self.vertices.map(|v| v.y());
+        center_rows::<S>(ys[0].min(ys[1]).min(ys[2]), ys[0].max(ys[1]).max(ys[2]))
+    }
+
+    /// Rasterizes into `blitter` (clipped to its clip rectangle).
+    pub fn draw<B: Blitter<C>>(&self, blitter: &mut B, cull: Cull) {
+        let spans = TriangleSpans::new(self.vertices, blitter.clip(), cull);
+        match self.shading {
+            Shading::Flat(c) => spans.for_each(|s| blitter.fill_span(s, c)),
+            Shading::Gouraud(cs) => self.draw_gouraud(spans, cs, blitter),
+        }
+    }
+
+    fn draw_gouraud<B: Blitter<C>>(&self, spans: TriangleSpans, cs: [C; 3], blitter: &mut B) {
+        let frame = PlaneFrame { v: self.vertices.map(|p| (2 * p.x() as i64, 2 * p.y() as i64)), shift: S + 1 };
+        let ch = cs.map(|c| c.to_channels());
+        let max = C::CHANNEL_MAX;
+        let mut planes = [None; 3];
+        for (k, plane) in planes.iter_mut().enumerate() {
+            if max[k] > 0 {
+                *plane = Plane::new(&frame, [ch[0][k], ch[1][k], ch[2][k]]);
+            }
+        }
+        let (one, half) = (1i64 << (S + 1), 1i64 << S);
+        let (ox, oy) = frame.v[0];
+        for span in spans {
+            let (dx, dy) = (span.x as i64 * one + half - ox, span.y as i64 * one + half - oy);
+            let mut acc = [0i32; 3];
+            let mut step = [0i32; 3];
+            for k in 0..3 {
+                if let Some(p) = &planes[k] {
+                    acc[k] = p.at(dx, dy);
+                    step[k] = p.step_x();
+                }
+            }
+            let colors = (0..span.len).map(|_| {
+                let c = [channel(acc[0], max[0]), channel(acc[1], max[1]), channel(acc[2], max[2])];
+                for k in 0..3 {
+                    acc[k] = acc[k].wrapping_add(step[k]); // the step after the last pixel is unused
+                }
+                C::from_channels(c)
+            });
+            blitter.shade_span(span, colors);
+        }
+    }
+}
+
+/// A line segment, drawn with the midpoint algorithm (see [`crate::line`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Line<C, const S: u32> {
+    /// Start point (its pixel is drawn).
+    pub start: SubPoint<S>,
+    /// End point (its pixel is not drawn: lines are half-open).
+    pub end: SubPoint<S>,
+    /// Colour.
+    pub color: C,
+}
+
+impl<C: Interpolate, const S: u32> Line<C, S> {
+    /// A line from `start` to `end`.
+    pub const fn new(start: SubPoint<S>, end: SubPoint<S>, color: C) -> Self {
+        Line { start, end, color }
+    }
+
+    /// Inclusive range of rows the line can touch (empty if `.0 > .1`).
+    pub fn rows(&self) -> (i32, i32) {
+        line_rows(self.start, self.end).unwrap_or((1, 0))
+    }
+
+    /// Rasterizes into `blitter` (clipped to its clip rectangle).
+    pub fn draw<B: Blitter<C>>(&self, blitter: &mut B) {
+        for (x, y) in line_pixels(self.start, self.end, blitter.clip()) {
+            blitter.set_pixel(x, y, self.color);
+        }
+    }
+}
+
+/// Anything a scene can hold.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Primitive<C, const S: u32> {
+    /// A filled triangle.
+    Triangle(Triangle<C, S>),
+    /// A line segment.
+    Line(Line<C, S>),
+}
+
+impl<C: Interpolate, const S: u32> Primitive<C, S> {
+    /// Inclusive range of rows the primitive can touch (empty if `.0 > .1`).
+    pub fn rows(&self) -> (i32, i32) {
+        match self {
+            Primitive::Triangle(t) => t.rows(),
+            Primitive::Line(l) => l.rows(),
+        }
+    }
+
+    /// Rasterizes into `blitter`; `cull` applies to triangles only.
+    pub fn draw<B: Blitter<C>>(&self, blitter: &mut B, cull: Cull) {
+        match self {
+            Primitive::Triangle(t) => t.draw(blitter, cull),
+            Primitive::Line(l) => l.draw(blitter),
+        }
+    }
+}
+
+impl<C, const S: u32> From<Triangle<C, S>> for Primitive<C, S> {
+    fn from(t: Triangle<C, S>) -> Self {
+        Primitive::Triangle(t)
+    }
+}
+
+impl<C, const S: u32> From<Line<C, S>> for Primitive<C, S> {
+    fn from(l: Line<C, S>) -> Self {
+        Primitive::Line(l)
+    }
+}
+
+/// Rows whose centre `y + 0.5` lies in `[lo, hi]` (subpixel units).
+fn center_rows<const S: u32>(lo: i32, hi: i32) -> (i32, i32) {
+    let (lo, hi) = (2 * lo as i64, 2 * hi as i64);
+    let (one, half) = (1i64 << (S + 1), 1i64 << S);
+    (((lo - half + one - 1) >> (S + 1)) as i32, ((hi - half) >> (S + 1)) as i32)
+}

@@ -1,0 +1,101 @@
+//! The band renderer: a frame drawn band by band into a `DrawTarget`.
+
+use crate::band::Band;
+use crate::blit::Blitter;
+use crate::edge::Cull;
+use crate::{Error, Interpolate, MAX_FRAME_DIM, Primitive, RenderError};
+use embedded_graphics_core::prelude::{DrawTarget, Point, Size};
+use embedded_graphics_core::primitives::Rectangle;
+
+/// Renders scenes of [`Primitive`]s, band by band, to a display.
+///
+/// For each band of `H` rows (the last may be shorter) the renderer clears the
+/// band to the background, rasterizes every primitive whose row range overlaps
+/// it (clipped to the band), and sends the band with one
+/// [`DrawTarget::fill_contiguous`] over the band's rectangle. The frame is `W`
+/// pixels wide (the band's width) and [`Renderer::height`] rows tall, placed at
+/// [`Renderer::offset`] on the target. The image does not depend on `H`.
+///
+/// ```
+/// use embedded_graphics::mock_display::MockDisplay;
+/// use embedded_graphics_core::pixelcolor::BinaryColor;
+/// use microraster::{Band, Primitive, Renderer, SubPoint, Triangle};
+/// let p = |x, y| SubPoint::<4>::from_pixels(x, y).unwrap();
+/// let scene = [Primitive::from(Triangle::flat([p(0, 0), p(4, 0), p(0, 4)], BinaryColor::On))];
+/// let mut band = Band::<BinaryColor, 4, 2>::new(BinaryColor::Off);
+/// let mut display = MockDisplay::new();
+/// Renderer::new(4, BinaryColor::Off).render(&scene, &mut band, &mut display).unwrap();
+/// display.assert_pattern(&["###.", "##..", "#...", "...."]);
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Renderer<C> {
+    height: u32,
+    offset: Point,
+    background: C,
+    cull: Cull,
+}
+
+impl<C: Interpolate> Renderer<C> {
+    /// A renderer for frames `height` rows tall, cleared to `background`,
+    /// at the target's origin, culling nothing.
+    pub const fn new(height: u32, background: C) -> Self {
+        Renderer { height, offset: Point::zero(), background, cull: Cull::None }
+    }
+
+    /// The same renderer with another cull mode.
+    pub const fn with_cull(self, cull: Cull) -> Self {
+        Renderer { cull, ..self }
+    }
+
+    /// The same renderer drawing the frame at `offset` on the target.
+    pub const fn with_offset(self, offset: Point) -> Self {
+        Renderer { offset, ..self }
+    }
+
+    /// Frame height in rows.
+    pub const fn height(&self) -> u32 {
+        self.height
+    }
+
+    /// Where the frame's top-left pixel goes on the target.
+    pub const fn offset(&self) -> Point {
+        self.offset
+    }
+
+    /// Renders `scene` through `band` into `target`.
+    ///
+    /// Errors: [`Error::InvalidFrameSize`] if the height is 0 or above
+    /// [`MAX_FRAME_DIM`]; [`RenderError::Target`] if the target fails (the
+    /// remaining bands are not sent).
+    pub fn render<D, const S: u32, const W: usize, const H: usize>(
+        &self,
+        scene: &[Primitive<C, S>],
+        band: &mut Band<C, W, H>,
+        target: &mut D,
+    ) -> Result<(), RenderError<D::Error>>
+    where
+        D: DrawTarget<Color = C>,
+    {
+        if self.height == 0 || self.height > MAX_FRAME_DIM {
+            return Err(Error::InvalidFrameSize.into());
+        }
+        let height = self.height as i32;
+        let mut y0 = 0i32;
+        while y0 < height {
+            let rows = (height - y0).min(H as i32);
+            let mut view = band.view(y0, rows as usize, self.background);
+            let y1 = y0 + rows;
+            for prim in scene {
+                let (lo, hi) = prim.rows();
+                if lo < y1 && hi >= y0 {
+                    prim.draw(&mut view, self.cull);
+                }
+            }
+            debug_assert_eq!(view.clip().y1(), y1);
+            let area = Rectangle::new(self.offset + Point::new(0, y0), Size::new(W as u32, rows as u32));
+            target.fill_contiguous(&area, view.pixels()).map_err(RenderError::Target)?;
+            y0 = y1;
+        }
+        Ok(())
+    }
+}
