@@ -4,7 +4,7 @@
 //! ([`SubPoint`]), covered with integer edge functions under the top-left fill
 //! rule ([`edge`]), and drawn band by band ([`Band`], [`Renderer`]) into any
 //! `embedded-graphics` [`DrawTarget`](embedded_graphics_core::draw_target::DrawTarget).
-//! Pipeline stages, one module each: [`subpixel`] → [`edge`] / [`line`] →
+//! Pipeline stages, one module each: [`subpixel`] → [`edge`] / [`mod@line`] →
 //! [`blit`] → [`band`] → [`render`].
 #![no_std]
 #![forbid(unsafe_code)]
@@ -20,6 +20,7 @@ pub mod error;
 pub mod line;
 pub mod primitive;
 pub mod render;
+pub mod scenes;
 pub mod subpixel;
 
 pub use band::Band;
