@@ -86,7 +86,8 @@ impl<C: Interpolate, const S: u32> Triangle<C, S> {
     }
 
     fn draw_gouraud<B: Blitter<C>>(&self, spans: TriangleSpans, cs: [C; 3], blitter: &mut B) {
-        let frame = PlaneFrame { v: self.vertices.map(|p| (2 * p.x() as i64, 2 * p.y() as i64)), shift: S + 1 };
+        let frame =
+            PlaneFrame { v: self.vertices.map(|p| (2 * p.x() as i64, 2 * p.y() as i64)), shift: S + 1 };
         let ch = cs.map(|c| c.to_channels());
         let max = C::CHANNEL_MAX;
         let mut planes = [None; 3];
@@ -120,25 +121,43 @@ impl<C: Interpolate, const S: u32> Triangle<C, S> {
 }
 
 /// A line segment, drawn with the midpoint algorithm (see [`crate::line`]).
+///
+/// The start pixel is drawn and the end pixel is not (lines are half-open), so
+/// a polyline lights each shared vertex once.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Line<C, const S: u32> {
-    /// Start point (its pixel is drawn).
-    pub start: SubPoint<S>,
-    /// End point (its pixel is not drawn: lines are half-open).
-    pub end: SubPoint<S>,
-    /// Colour.
-    pub color: C,
+    start: SubPoint<S>,
+    end: SubPoint<S>,
+    color: C,
+    // Computed once here: the band renderer asks for it in every band.
+    rows: (i32, i32),
 }
 
 impl<C: Interpolate, const S: u32> Line<C, S> {
     /// A line from `start` to `end`.
-    pub const fn new(start: SubPoint<S>, end: SubPoint<S>, color: C) -> Self {
-        Line { start, end, color }
+    pub fn new(start: SubPoint<S>, end: SubPoint<S>, color: C) -> Self {
+        let rows = line_rows(start, end).unwrap_or((1, 0));
+        Line { start, end, color, rows }
+    }
+
+    /// Start point (its pixel is drawn).
+    pub const fn start(&self) -> SubPoint<S> {
+        self.start
+    }
+
+    /// End point (its pixel is not drawn).
+    pub const fn end(&self) -> SubPoint<S> {
+        self.end
+    }
+
+    /// Colour.
+    pub const fn color(&self) -> C {
+        self.color
     }
 
     /// Inclusive range of rows the line can touch (empty if `.0 > .1`).
-    pub fn rows(&self) -> (i32, i32) {
-        line_rows(self.start, self.end).unwrap_or((1, 0))
+    pub const fn rows(&self) -> (i32, i32) {
+        self.rows
     }
 
     /// Rasterizes into `blitter` (clipped to its clip rectangle).

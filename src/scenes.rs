@@ -397,7 +397,7 @@ mod tests {
                 n += 1;
                 let ok = match p {
                     Primitive::Triangle(t) => t.vertices().iter().all(|&v| inside(v, 0)),
-                    Primitive::Line(l) => inside(l.start, 1) && inside(l.end, 1),
+                    Primitive::Line(l) => inside(l.start(), 1) && inside(l.end(), 1),
                 };
                 let (lo, hi) = p.rows();
                 assert!(ok && (lo > hi || (lo >= 0 && hi < h as i32)), "{name} {w}x{h}: {p:?}");
@@ -500,7 +500,7 @@ mod tests {
         let mut i = 0;
         line_fan::<Rgb565, 4>(128, 96, &mut |p| {
             let Primitive::Line(l) = p else { panic!("a triangle in line_fan") };
-            let (mut dx, mut dy) = (l.end.x() - l.start.x(), l.end.y() - l.start.y());
+            let (mut dx, mut dy) = (l.end().x() - l.start().x(), l.end().y() - l.start().y());
             // Rotate by -90° into [0°, 90°), then split at 45° (the boundary goes up).
             let mut octant = 0;
             while !(dx > 0 && dy >= 0) {
@@ -527,7 +527,7 @@ mod tests {
             let (v, c) = match *p {
                 Primitive::Line(l) => {
                     lines += 1;
-                    ([l.start, l.end, l.end], [l.color; 3])
+                    ([l.start(), l.end(), l.end()], [l.color(); 3])
                 }
                 Primitive::Triangle(t) => match t.shading() {
                     Shading::Flat(c) => (t.vertices(), [c; 3]),
@@ -543,7 +543,7 @@ mod tests {
         assert_eq!((lines, gouraud), (MIXED_LINES, 2 + MIXED_TRIANGLES / 3));
         assert_eq!(hash, 0xc403_0545_d823_c0fb, "the mixed scene changed");
         // Lines are light: on, even in 1-bit colour.
-        let on = |p| !matches!(p, Primitive::Line(l) if l.color == BinaryColor::Off);
+        let on = |p| !matches!(p, Primitive::Line(l) if l.color() == BinaryColor::Off);
         mixed::<BinaryColor, 4>(320, 240, &mut |p| assert!(on(p))).unwrap();
     }
 }
