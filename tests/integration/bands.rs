@@ -1,0 +1,108 @@
+//! Band invariance: the image must not depend on the band height, and every
+//! band must go out as exactly one `fill_contiguous` over its rectangle.
+
+use crate::framebuffer::Framebuffer;
+use crate::reference::Rng;
+use embedded_graphics_core::pixelcolor::{BinaryColor, Gray8, Rgb565};
+use embedded_graphics_core::prelude::*;
+use microraster::blit::TargetBlitter;
+use microraster::edge::Cull;
+use microraster::{Band, Interpolate, Line, Primitive, Renderer, SubPoint, Triangle};
+
+const W: usize = 96;
+const HEIGHT: u32 = 61; // not a multiple of 7 or 16: the last band is short
+
+fn random_scene<C: Interpolate>(rng: &mut Rng, n: usize) -> Vec<Primitive<C, 4>> {
+    let color = |rng: &mut Rng| {
+        let m = C::CHANNEL_MAX;
+        C::from_channels([0, 1, 2].map(|k| (rng.below(m[k] as u64 + 1)) as u8))
+    };
+    let point = |rng: &mut Rng| {
+        // Up to 50% beyond the frame on each side, 1/16 px resolution.
+        let x = rng.range(-(W as i64) * 8, (W as i64) * 24) as i32;
+        let y = rng.range(-(HEIGHT as i64) * 8, (HEIGHT as i64) * 24) as i32;
+        SubPoint::<4>::new(x, y).unwrap()
+    };
+    (0..n)
+        .map(|i| match i % 3 {
+            0 => Triangle::flat([point(rng), point(rng), point(rng)], color(rng)).into(),
+            1 => Triangle::gouraud([point(rng), point(rng), point(rng)], [color(rng), color(rng), color(rng)]).into(),
+            _ => Line::new(point(rng), point(rng), color(rng)).into(),
+        })
+        .collect()
+}
+
+fn render_banded<C: Interpolate, const H: usize>(scene: &[Primitive<C, 4>], bg: C, cull: Cull) -> Framebuffer<C> {
+    let mut fb = Framebuffer::new(W as u32, HEIGHT, bg);
+    let mut band = Band::<C, W, H>::new(bg);
+    Renderer::new(HEIGHT, bg).with_cull(cull).render(scene, &mut band, &mut fb).unwrap();
+    // One fill_contiguous per band, full width, consecutive rows, last one short.
+    let expected_bands = HEIGHT.div_ceil(H as u32) as usize;
+    assert_eq!(fb.contiguous.len(), expected_bands, "band count for H = {H}");
+    for (i, r) in fb.contiguous.iter().enumerate() {
+        assert_eq!(r.top_left, Point::new(0, (i * H) as i32));
+        assert_eq!(r.size.width, W as u32);
+        assert_eq!(r.size.height, (HEIGHT - (i * H) as u32).min(H as u32));
+    }
+    assert!(fb.writes.iter().all(|&w| w == 1), "each frame pixel sent exactly once");
+    fb
+}
+
+fn render_direct<C: Interpolate>(scene: &[Primitive<C, 4>], bg: C, cull: Cull) -> Vec<C> {
+    let mut fb = Framebuffer::new(W as u32, HEIGHT, bg);
+    let mut blitter = TargetBlitter::new(&mut fb);
+    for p in scene {
+        p.draw(&mut blitter, cull);
+    }
+    fb.pixels
+}
+
+fn check_invariance<C: Interpolate + core::fmt::Debug>(seed: u64, bg: C) -> usize {
+    let mut rng = Rng::new(seed);
+    let mut scenes = 0;
+    for cull in [Cull::None, Cull::Clockwise, Cull::CounterClockwise] {
+        for n in [1, 5, 40] {
+            let scene = random_scene::<C>(&mut rng, n);
+            let full = render_banded::<C, { HEIGHT as usize }>(&scene, bg, cull).pixels;
+            assert_eq!(render_banded::<C, 1>(&scene, bg, cull).pixels, full, "band height 1");
+            assert_eq!(render_banded::<C, 7>(&scene, bg, cull).pixels, full, "band height 7");
+            assert_eq!(render_banded::<C, 16>(&scene, bg, cull).pixels, full, "band height 16");
+            assert_eq!(render_direct(&scene, bg, cull), full, "direct rendering without bands");
+            scenes += 1;
+        }
+    }
+    scenes
+}
+
+#[test]
+fn image_is_identical_for_band_heights_1_7_16_and_full() {
+    let mut scenes = 0;
+    for seed in 1..=12 {
+        scenes += check_invariance(seed, Rgb565::new(0, 0, 0));
+        scenes += check_invariance(seed + 100, Gray8::new(17));
+        scenes += check_invariance(seed + 200, BinaryColor::Off);
+    }
+    println!("band invariance: {scenes} scenes × 5 renderings compared");
+    assert_eq!(scenes, 12 * 3 * 9);
+}
+
+#[test]
+fn frame_offset_and_bad_height() {
+    let mut rng = Rng::new(7);
+    let scene = random_scene::<Rgb565>(&mut rng, 10);
+    let bg = Rgb565::new(1, 2, 3);
+    let mut band = Band::<Rgb565, W, 8>::new(bg);
+    let mut fb = Framebuffer::new(W as u32 + 5, HEIGHT + 9, Rgb565::new(31, 63, 31));
+    Renderer::new(HEIGHT, bg).with_offset(Point::new(5, 9)).render(&scene, &mut band, &mut fb).unwrap();
+    let reference = render_banded::<Rgb565, 8>(&scene, bg, Cull::None).pixels;
+    for y in 0..HEIGHT {
+        for x in 0..W as u32 {
+            let shifted = fb.pixels[((y + 9) * (W as u32 + 5) + x + 5) as usize];
+            assert_eq!(shifted, reference[(y * W as u32 + x) as usize]);
+        }
+    }
+    for bad in [0, microraster::MAX_FRAME_DIM + 1] {
+        let r = Renderer::new(bad, bg).render(&scene, &mut band, &mut fb);
+        assert_eq!(r, Err(microraster::RenderError::Input(microraster::Error::InvalidFrameSize)));
+    }
+}

@@ -1,0 +1,25 @@
+//! microraster's integration tests, built as ONE test binary (`cargo test --test
+//! integration`) so the shared reference code compiles once and every suite can
+//! use it. Each suite is a module; add new ones below.
+//!
+//! - `reference`: independent brute-force rasterizers, PRNG and generators.
+//! - `triangles_exact`: `TriangleSpans` vs the exact integer reference.
+//! - `triangles_float`: snapping error vs an `f64` reference on unsnapped vertices.
+//! - `triangles_skia`: against tiny-skia's non-anti-aliased fill.
+//! - `watertight`: meshes tiling a region hit every pixel exactly once.
+//! - `lines`: midpoint lines vs an `f64` reference and embedded-graphics' `Line`.
+//! - `gouraud`: Gouraud colour vs an `f64` barycentric reference.
+//! - `bands`: identical images for every band height; one `fill_contiguous` per band.
+//! - `mock_display`: embedded-graphics `MockDisplay` pattern tests (overdraw panics).
+//! - `framebuffer`: a recording host `DrawTarget` used by the suites above.
+
+mod bands;
+mod framebuffer;
+mod gouraud;
+mod lines;
+mod mock_display;
+mod reference;
+mod triangles_exact;
+mod triangles_float;
+mod triangles_skia;
+mod watertight;
