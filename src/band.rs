@@ -96,14 +96,18 @@ impl<C: PixelColor, const W: usize> Blitter<C> for BandView<'_, C, W> {
 
     #[inline]
     fn fill_span(&mut self, s: Span, color: C) {
-        if let Some(px) = self.row_mut(s.y).and_then(|r| r.get_mut(s.x as usize..s.x as usize + s.len as usize)) {
+        if let Some(px) =
+            self.row_mut(s.y).and_then(|r| r.get_mut(s.x as usize..s.x as usize + s.len as usize))
+        {
             px.fill(color);
         }
     }
 
     #[inline]
     fn shade_span<I: Iterator<Item = C>>(&mut self, s: Span, colors: I) {
-        if let Some(px) = self.row_mut(s.y).and_then(|r| r.get_mut(s.x as usize..s.x as usize + s.len as usize)) {
+        if let Some(px) =
+            self.row_mut(s.y).and_then(|r| r.get_mut(s.x as usize..s.x as usize + s.len as usize))
+        {
             for (p, c) in px.iter_mut().zip(colors) {
                 *p = c;
             }

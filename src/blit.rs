@@ -64,7 +64,12 @@ impl<'a, D: DrawTarget> TargetBlitter<'a, D> {
     pub fn new(target: &'a mut D) -> Self {
         let b = target.bounding_box();
         let (w, h) = (b.size.width.min(i32::MAX as u32) as i32, b.size.height.min(i32::MAX as u32) as i32);
-        let clip = ClipRect::new(b.top_left.x, b.top_left.y, b.top_left.x.saturating_add(w), b.top_left.y.saturating_add(h));
+        let clip = ClipRect::new(
+            b.top_left.x,
+            b.top_left.y,
+            b.top_left.x.saturating_add(w),
+            b.top_left.y.saturating_add(h),
+        );
         TargetBlitter { target, clip, error: None }
     }
 

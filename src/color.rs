@@ -5,8 +5,8 @@
 //! [`BinaryColor`]), so no precision is invented and none is lost converting.
 
 use embedded_graphics_core::pixelcolor::{
-    Bgr555, Bgr565, Bgr666, Bgr888, BinaryColor, Gray2, Gray4, Gray8, GrayColor, Rgb555, Rgb565,
-    Rgb666, Rgb888, RgbColor,
+    Bgr555, Bgr565, Bgr666, Bgr888, BinaryColor, Gray2, Gray4, Gray8, GrayColor, Rgb555, Rgb565, Rgb666,
+    Rgb888, RgbColor,
 };
 use embedded_graphics_core::prelude::PixelColor;
 

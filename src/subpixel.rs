@@ -139,7 +139,7 @@ const fn in_range(v: i64) -> bool {
 }
 
 /// `v * 2^shift`, rounded to nearest with ties to even when `shift < 0`.
-const fn shift_round_even(v: i64, shift: i32) -> i64 {
+pub(crate) const fn shift_round_even(v: i64, shift: i32) -> i64 {
     if shift >= 0 {
         return v << shift;
     }
@@ -152,11 +152,16 @@ const fn shift_round_even(v: i64, shift: i32) -> i64 {
 
 /// Rounds `v * 2^S` to the nearest integer, ties to even, checking the range.
 fn snap_f32<const S: u32>(v: f32) -> Result<i32, Error> {
+    snap_f32_bits(v, S)
+}
+
+/// [`snap_f32`] with the bit count as a value (`s ≤ 8`).
+pub(crate) fn snap_f32_bits(v: f32, s: u32) -> Result<i32, Error> {
     if !v.is_finite() {
         return Err(Error::NonFiniteCoordinate);
     }
     // Scaling by a power of two is exact; the range test below keeps the cast exact too.
-    let scaled = v * (1u32 << S) as f32;
+    let scaled = v * (1u32 << s.min(MAX_SUBPIXEL_BITS)) as f32;
     if scaled.abs() > (1u32 << 28) as f32 + 0.5 {
         return Err(Error::CoordinateOutOfRange);
     }
