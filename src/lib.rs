@@ -1,11 +1,9 @@
-//! microraster: a `no_std`, allocation-free, fixed-point rasterizer for small displays.
+#![doc = include_str!("../README.md")]
+//! ## Modules
 //!
-//! Triangles and lines are snapped to a fixed-point subpixel grid
-//! ([`SubPoint`]), covered with integer edge functions under the top-left fill
-//! rule ([`edge`]), and drawn band by band ([`Band`], [`Renderer`]) into any
-//! `embedded-graphics` [`DrawTarget`](embedded_graphics_core::draw_target::DrawTarget).
-//! Pipeline stages, one module each: [`subpixel`] → [`edge`] / [`mod@line`] →
-//! [`blit`] → [`band`] → [`render`].
+//! One module per pipeline stage: [`subpixel`] (snapping) → [`edge`] (triangle
+//! coverage) and [`mod@line`] (midpoint lines) → [`blit`] (where pixels go) →
+//! [`band`] (the band buffer) → [`render`] (the band loop).
 #![no_std]
 #![forbid(unsafe_code)]
 #![deny(missing_docs)]

@@ -117,9 +117,12 @@ fn float_mismatches_are_explained_by_snapping_and_shrink_with_s() {
         "float reference: S | triangles | pixels tested | float-covered | mismatches | rate | rate(S-2)/rate(S)"
     );
     for r in &rows {
-        let ratio = if r.s >= 2 { rows[r.s as usize - 2].rate() / r.rate() } else { f64::NAN };
+        let ratio = match r.s {
+            0 | 1 => "-".to_string(),
+            s => format!("{:.2}", rows[s as usize - 2].rate() / r.rate()),
+        };
         println!(
-            "  {} | {} | {} | {} | {} | {:.3e} | {:.2}",
+            "  {} | {} | {} | {} | {} | {:.3e} | {}",
             r.s,
             r.triangles,
             r.tested,
