@@ -7,7 +7,9 @@ use microraster::edge::fast_path_extent_px;
 use microraster::{Band, MAX_FRAME_DIM, SubPoint};
 
 fn main() {
-    println!("| subpixel bits S | resolution (px) | coordinate range (px) | i32 fast path: triangle extent up to (px) |");
+    println!(
+        "| subpixel bits S | resolution (px) | coordinate range (px) | i32 fast path: triangle extent up to (px) |"
+    );
     println!("|---|---|---|---|");
     macro_rules! row {
         ($($s:literal),*) => {$(

@@ -26,13 +26,20 @@ fn random_scene<C: Interpolate>(rng: &mut Rng, n: usize) -> Vec<Primitive<C, 4>>
     (0..n)
         .map(|i| match i % 3 {
             0 => Triangle::flat([point(rng), point(rng), point(rng)], color(rng)).into(),
-            1 => Triangle::gouraud([point(rng), point(rng), point(rng)], [color(rng), color(rng), color(rng)]).into(),
+            1 => {
+                Triangle::gouraud([point(rng), point(rng), point(rng)], [color(rng), color(rng), color(rng)])
+                    .into()
+            }
             _ => Line::new(point(rng), point(rng), color(rng)).into(),
         })
         .collect()
 }
 
-fn render_banded<C: Interpolate, const H: usize>(scene: &[Primitive<C, 4>], bg: C, cull: Cull) -> Framebuffer<C> {
+fn render_banded<C: Interpolate, const H: usize>(
+    scene: &[Primitive<C, 4>],
+    bg: C,
+    cull: Cull,
+) -> Framebuffer<C> {
     let mut fb = Framebuffer::new(W as u32, HEIGHT, bg);
     let mut band = Band::<C, W, H>::new(bg);
     Renderer::new(HEIGHT, bg).with_cull(cull).render(scene, &mut band, &mut fb).unwrap();

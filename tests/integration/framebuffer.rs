@@ -49,7 +49,11 @@ impl<C: PixelColor> DrawTarget for Framebuffer<C> {
         Ok(())
     }
 
-    fn fill_contiguous<I: IntoIterator<Item = C>>(&mut self, area: &Rectangle, colors: I) -> Result<(), Self::Error> {
+    fn fill_contiguous<I: IntoIterator<Item = C>>(
+        &mut self,
+        area: &Rectangle,
+        colors: I,
+    ) -> Result<(), Self::Error> {
         self.contiguous.push(*area);
         let mut n = 0u32;
         for (p, c) in area.points().zip(colors) {
