@@ -1,46 +1,33 @@
-//! Attribute planes: Gouraud colour interpolated across a triangle.
+//! Attribute planes: values interpolated linearly in screen space across a
+//! triangle (Gouraud colour, depth, perspective numerators and `1/w`).
 //!
-//! A channel value `c` is a plane over the triangle:
-//! `c(p) = c₀ + λ₁(c₁ − c₀) + λ₂(c₂ − c₀)`, with the barycentric weights taken
-//! from the same snapped coordinates as coverage. We keep the plane's exact
-//! integer numerators and evaluate it:
-//!
-//! * at the first pixel of every span, exactly (rounded to nearest in 16.16
-//!   fixed point, in `i128`, because a far-away vertex makes the numerators
-//!   up to 2^86);
-//! * then along the span by adding a 16.16 step per pixel in `i32`.
+//! A value `v` with vertex values `v₀, v₁, v₂` is the plane
+//! `v(p) = v₀ + λ₁(v₁ − v₀) + λ₂(v₂ − v₀)`, the barycentric weights taken from
+//! the same snapped coordinates as coverage. Setup (once per triangle and
+//! band) computes, each rounded to nearest in the caller's fixed-point units:
+//! the per-pixel gradients `gx`, `gy` and the value `base` at a reference
+//! pixel centre inside the clip. Then
+//! `v(x, y) = base + gx·(x − rx) + gy·(y − ry)` is evaluated at each span
+//! start and stepped by `gx` along the span.
 //!
 //! # Error bound
-//! The span start is within 2^-17 of the exact value and each step adds at
-//! most 2^-17, so after `k` pixels the 16.16 value is within `(k+1)·2^-17` of
-//! exact: with spans at most [`MAX_FRAME_DIM`](crate::MAX_FRAME_DIM) = 4096
-//! pixels that is below 0.032 of a channel step. The final rounding adds 0.5,
-//! so every output channel is within **0.532** of the exact value (and clamped
-//! to the channel's range, which the exact value never leaves inside the
-//! triangle).
+//! Each of `base`, `gx`, `gy` is within ½ unit of exact. Reference and sample
+//! pixels lie in the same frame (`< 2^12` apart on each axis) and a span adds
+//! fewer than 2^12 steps, so any sampled value is within
+//! `½·(1 + 3·2^12) < 2^13` units of exact. Callers choose their fixed-point
+//! scale from that: Gouraud colour uses 2^20 units per channel step (error
+//! < 2^-7, so every output channel is within 0.5 + 2^-7 of exact); depth
+//! uses 2^16 units per depth step (error < 1/8 LSB).
 //!
 //! # Overflow
-//! Channel values are at most 255, internal coordinates differ by at most
-//! 2^30: the numerators `gx`, `gy` stay below 2^40 and the per-span products
-//! below 2^71 (with the 2^16 scale, 2^87) — well inside `i128`. A step larger
-//! than `i32` only occurs when the gradient exceeds 255 levels per pixel, in
-//! which case no span can contain two pixels and the saturated step is never
-//! used.
+//! Values are at most 2^56 in magnitude, and the exact value at every pixel
+//! the caller samples lies between the vertex values, so it fits `i64`.
+//! Gradients of slivers can exceed `i64`, and so can the terms `gx·(x − rx)`;
+//! evaluation therefore uses wrapping arithmetic, which is exact modulo 2^64
+//! and so returns the (in-range) sum. Setup runs in `i64` when the products fit
+//! and in `i128` otherwise.
 
-/// One interpolated channel.
-#[derive(Debug, Clone, Copy)]
-pub(crate) struct Plane {
-    c0: i64,
-    gx: i64,
-    gy: i64,
-    det: i64,
-    /// 16.16 increment per pixel to the right (saturated, see module docs).
-    step_x: i32,
-}
-
-const FRAC: u32 = 16;
-
-/// Vertex positions in internal units (`1/2^(S+1)` px) and the pixel-centre geometry.
+/// Vertex positions in internal units (`1/2^(S+1)` px).
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct PlaneFrame {
     /// Internal coordinates of the three vertices.
@@ -49,56 +36,83 @@ pub(crate) struct PlaneFrame {
     pub shift: u32,
 }
 
-impl PlaneFrame {
-    /// Twice the signed area (non-zero for any triangle that covers a pixel).
-    fn det(&self) -> i64 {
-        crate::edge::signed_area2(self.v)
-    }
+/// One interpolated value, in the caller's fixed-point units.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Plane {
+    base: i64,
+    gx: i64,
+    gy: i64,
+    rx: i32,
+    ry: i32,
 }
 
 impl Plane {
-    /// The plane through the values `c` at the vertices of `frame`.
-    /// Returns `None` for a degenerate (zero-area) triangle.
-    pub fn new(frame: &PlaneFrame, c: [u8; 3]) -> Option<Plane> {
-        let det = frame.det();
+    /// The plane through `values` (|v| ≤ 2^56) at the vertices of `frame`,
+    /// referenced at pixel `(rx, ry)`. `None` for a zero-area triangle.
+    pub fn new(frame: &PlaneFrame, values: [i64; 3], rx: i32, ry: i32) -> Option<Plane> {
+        let [(x0, y0), (x1, y1), (x2, y2)] = frame.v;
+        let det = (x1 - x0) * (y2 - y0) - (x2 - x0) * (y1 - y0);
         if det == 0 {
             return None;
         }
-        let [(x0, y0), (x1, y1), (x2, y2)] = frame.v;
-        let (d1, d2) = (c[1] as i64 - c[0] as i64, c[2] as i64 - c[0] as i64);
-        // Cramer's rule: ∂c/∂x = gx/det and ∂c/∂y = gy/det per internal unit.
-        let gx = d1 * (y2 - y0) - d2 * (y1 - y0);
-        let gy = d2 * (x1 - x0) - d1 * (x2 - x0);
-        let step = div_round((gx as i128) << (frame.shift + FRAC), det as i128);
-        let step_x = step.clamp(i32::MIN as i128, i32::MAX as i128) as i32;
-        Some(Plane { c0: c[0] as i64, gx, gy, det, step_x })
+        let (d1, d2) = (values[1] - values[0], values[2] - values[0]);
+        let one = 1i64 << frame.shift;
+        let half = one >> 1;
+        // Reference pixel centre relative to vertex 0, internal units (< 2^31).
+        let (px, py) = (rx as i64 * one + half - x0, ry as i64 * one + half - y0);
+        let (ex, ey) = ((y2 - y0, y1 - y0), (x1 - x0, x2 - x0));
+        let fast = (|| {
+            // Cramer's rule: ∂v/∂x = nx/det, ∂v/∂y = ny/det per internal unit.
+            let nx = d1.checked_mul(ex.0)?.checked_sub(d2.checked_mul(ex.1)?)?;
+            let ny = d2.checked_mul(ey.0)?.checked_sub(d1.checked_mul(ey.1)?)?;
+            let gx = div_round_i64(nx.checked_mul(one)?, det);
+            let gy = div_round_i64(ny.checked_mul(one)?, det);
+            let off = nx.checked_mul(px)?.checked_add(ny.checked_mul(py)?)?;
+            Some((gx, gy, div_round_i64(off, det)))
+        })();
+        let (gx, gy, off) = fast.unwrap_or_else(|| {
+            let w = |a: i64, b: i64| a as i128 * b as i128;
+            let nx = w(d1, ex.0) - w(d2, ex.1);
+            let ny = w(d2, ey.0) - w(d1, ey.1);
+            let det = det as i128;
+            // Truncation to i64 wraps; evaluation is modular (module docs).
+            let gx = div_round_i128(nx * one as i128, det) as i64;
+            let gy = div_round_i128(ny * one as i128, det) as i64;
+            (gx, gy, div_round_i128(nx * px as i128 + ny * py as i128, det) as i64)
+        });
+        Some(Plane { base: values[0].wrapping_add(off), gx, gy, rx, ry })
     }
 
-    /// The 16.16 value at the pixel centre `(px, py)` given in internal units,
-    /// relative to vertex 0, rounded to nearest.
+    /// The value at the centre of pixel `(x, y)`.
     #[inline]
-    pub fn at(&self, dx: i64, dy: i64) -> i32 {
-        let num = (dx as i128 * self.gx as i128 + dy as i128 * self.gy as i128) << FRAC;
-        let v = ((self.c0 as i128) << FRAC) + div_round(num, self.det as i128);
-        v.clamp(i32::MIN as i128, i32::MAX as i128) as i32
+    pub fn at(&self, x: i32, y: i32) -> i64 {
+        let (dx, dy) = ((x - self.rx) as i64, (y - self.ry) as i64);
+        self.base.wrapping_add(self.gx.wrapping_mul(dx)).wrapping_add(self.gy.wrapping_mul(dy))
     }
 
-    /// 16.16 increment per pixel along a row.
+    /// Increment per pixel to the right.
     #[inline]
-    pub fn step_x(&self) -> i32 {
-        self.step_x
+    pub fn step_x(&self) -> i64 {
+        self.gx
     }
 }
 
-/// A 16.16 accumulator converted to a channel value in `0..=max`.
+/// Fixed-point units per Gouraud channel step.
+pub(crate) const COLOR_FRAC: u32 = 20;
+
+/// A colour accumulator (channel · 2^COLOR_FRAC) as a channel in `0..=max`.
 #[inline(always)]
 pub(crate) fn channel(acc: i32, max: u8) -> u8 {
-    let v = (acc >> FRAC) + ((acc >> (FRAC - 1)) & 1); // round half up
+    let v = (acc >> COLOR_FRAC) + ((acc >> (COLOR_FRAC - 1)) & 1); // round half up
     v.clamp(0, max as i32) as u8
 }
 
 /// `n / d` rounded to nearest (ties away from zero); `d != 0`.
-fn div_round(n: i128, d: i128) -> i128 {
+fn div_round_i64(n: i64, d: i64) -> i64 {
+    div_round_i128(n as i128, d as i128) as i64
+}
+
+fn div_round_i128(n: i128, d: i128) -> i128 {
     let (n, d) = if d < 0 { (-n, -d) } else { (n, d) };
     if n >= 0 { (n + d / 2) / d } else { -((-n + d / 2) / d) }
 }
@@ -109,22 +123,44 @@ mod tests {
 
     #[test]
     fn plane_hits_vertex_values_and_steps_linearly() {
-        // A right triangle 8 px wide at S = 0 (internal unit = 1/2 px).
+        // A right triangle 8 px wide at S = 0 (internal unit = 1/2 px);
+        // pixel centres (0.5, 0.5) etc. Reference pixel (0, 0).
         let frame = PlaneFrame { v: [(0, 0), (16, 0), (0, 16)], shift: 1 };
-        let p = Plane::new(&frame, [0, 255, 100]).unwrap();
-        assert_eq!(channel(p.at(0, 0), 255), 0);
-        assert_eq!(channel(p.at(16, 0), 255), 255);
-        assert_eq!(channel(p.at(0, 16), 255), 100);
-        // 255 levels over 8 px: 31.875 per px, exactly representable in 16.16.
-        assert_eq!(p.step_x(), (31.875 * 65536.0) as i32);
-        assert!(Plane::new(&PlaneFrame { v: [(0, 0), (4, 4), (8, 8)], shift: 1 }, [0; 3]).is_none());
+        let f = 1i64 << COLOR_FRAC;
+        let p = Plane::new(&frame, [0, 255 * f, 100 * f], 0, 0).unwrap();
+        // 255 levels over 8 px in x, 100 over 8 px in y.
+        assert_eq!(p.step_x(), 255 * f / 8);
+        assert_eq!(p.at(0, 1) - p.at(0, 0), 100 * f / 8);
+        // At centre (0.5, 0.5): 255·0.5/8 + 100·0.5/8 = 22.1875 exactly.
+        assert_eq!(p.at(0, 0), (22.1875 * f as f64) as i64);
+        assert!(Plane::new(&PlaneFrame { v: [(0, 0), (4, 4), (8, 8)], shift: 1 }, [0; 3], 0, 0).is_none());
+    }
+
+    #[test]
+    fn wide_setup_agrees_with_narrow_and_wraps_correctly() {
+        // A huge sliver: gradients overflow i64, values inside stay exact.
+        let frame = PlaneFrame { v: [(1, 1), (1 << 30, 3), (5, (1 << 30) + 7)], shift: 9 };
+        let vals = [1i64 << 56, 0, -(1 << 56)];
+        let p = Plane::new(&frame, vals, 3, 2).unwrap();
+        // f64 barycentric value at pixel (3, 2)'s centre, internal (1792, 1280).
+        let [(x0, y0), (x1, y1), (x2, y2)] = frame.v.map(|(x, y)| (x as f64, y as f64));
+        let (px, py) = (1792.0, 1280.0);
+        let det = (x1 - x0) * (y2 - y0) - (x2 - x0) * (y1 - y0);
+        let l1 = ((px - x0) * (y2 - y0) - (py - y0) * (x2 - x0)) / det;
+        let l2 = ((x1 - x0) * (py - y0) - (y1 - y0) * (px - x0)) / det;
+        let v = vals.map(|v| v as f64);
+        let exact = v[0] + l1 * (v[1] - v[0]) + l2 * (v[2] - v[0]);
+        // Bound 2^13 units (module docs) plus f64's own rounding at 2^56 (2^5).
+        assert!((p.at(3, 2) as f64 - exact).abs() <= 8192.0 + 64.0);
+        assert!((p.at(4, 2) as f64 - exact - p.step_x() as f64).abs() <= 8192.0 + 64.0);
     }
 
     #[test]
     fn channel_rounds_and_clamps() {
-        assert_eq!(channel(0x7FFF, 255), 0);
-        assert_eq!(channel(0x8000, 255), 1);
-        assert_eq!(channel(-5 << 16, 31), 0);
-        assert_eq!(channel(40 << 16, 31), 31);
+        let half = 1 << (COLOR_FRAC - 1);
+        assert_eq!(channel(half - 1, 255), 0);
+        assert_eq!(channel(half, 255), 1);
+        assert_eq!(channel(-5 << COLOR_FRAC, 31), 0);
+        assert_eq!(channel(40 << COLOR_FRAC, 31), 31);
     }
 }

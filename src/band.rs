@@ -76,7 +76,12 @@ impl<C: PixelColor, const W: usize> BandView<'_, C, W> {
         self.rows.len()
     }
 
-    fn row_mut(&mut self, y: i32) -> Option<&mut [C; W]> {
+    /// First frame row of the view.
+    pub fn y0(&self) -> i32 {
+        self.y0
+    }
+
+    pub(crate) fn row_mut(&mut self, y: i32) -> Option<&mut [C; W]> {
         let i = usize::try_from(y.checked_sub(self.y0)?).ok()?;
         self.rows.get_mut(i)
     }

@@ -15,6 +15,14 @@ pub enum Error {
     CoordinateOutOfRange,
     /// The frame height is zero or larger than [`MAX_FRAME_DIM`](crate::MAX_FRAME_DIM).
     InvalidFrameSize,
+    /// A mesh index is out of range, the normals do not match the positions,
+    /// or the bounding sphere does not contain the mesh.
+    InvalidMesh,
+    /// A caller-provided buffer is smaller than the operation needs.
+    BufferTooSmall,
+    /// A parameter is outside its documented range (for example near ≥ far,
+    /// a zero aspect ratio, or too few mesh segments).
+    InvalidParameter,
 }
 
 impl fmt::Display for Error {
@@ -23,6 +31,9 @@ impl fmt::Display for Error {
             Error::NonFiniteCoordinate => "coordinate is NaN or infinite",
             Error::CoordinateOutOfRange => "coordinate outside the supported range",
             Error::InvalidFrameSize => "frame size is zero or too large",
+            Error::InvalidMesh => "mesh indices, normals or bounding sphere are inconsistent",
+            Error::BufferTooSmall => "buffer too small",
+            Error::InvalidParameter => "parameter outside its documented range",
         };
         f.write_str(text)
     }

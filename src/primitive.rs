@@ -4,7 +4,7 @@
 //! and the range of pixel rows they can touch, which lets the band renderer
 //! skip a primitive that misses a band with two comparisons.
 
-use crate::attr::{Plane, PlaneFrame, channel};
+use crate::attr::{COLOR_FRAC, Plane, PlaneFrame, channel};
 use crate::blit::Blitter;
 use crate::edge::{Cull, TriangleSpans};
 use crate::line::{line_pixels, line_rows};
@@ -88,24 +88,25 @@ impl<C: Interpolate, const S: u32> Triangle<C, S> {
     fn draw_gouraud<B: Blitter<C>>(&self, spans: TriangleSpans, cs: [C; 3], blitter: &mut B) {
         let frame =
             PlaneFrame { v: self.vertices.map(|p| (2 * p.x() as i64, 2 * p.y() as i64)), shift: S + 1 };
+        let (rx, ry) = reference_pixel(self.vertices[0]);
         let ch = cs.map(|c| c.to_channels());
         let max = C::CHANNEL_MAX;
         let mut planes = [None; 3];
         for (k, plane) in planes.iter_mut().enumerate() {
             if max[k] > 0 {
-                *plane = Plane::new(&frame, [ch[0][k], ch[1][k], ch[2][k]]);
+                let values = [0, 1, 2].map(|v| (ch[v][k] as i64) << COLOR_FRAC);
+                *plane = Plane::new(&frame, values, rx, ry);
             }
         }
-        let (one, half) = (1i64 << (S + 1), 1i64 << S);
-        let (ox, oy) = frame.v[0];
         for span in spans {
-            let (dx, dy) = (span.x as i64 * one + half - ox, span.y as i64 * one + half - oy);
             let mut acc = [0i32; 3];
             let mut step = [0i32; 3];
             for k in 0..3 {
                 if let Some(p) = &planes[k] {
-                    acc[k] = p.at(dx, dy);
-                    step[k] = p.step_x();
+                    // Inside the triangle the value is a channel (< 2^28); a step that
+                    // does not fit i32 only occurs where spans are one pixel long.
+                    acc[k] = p.at(span.x, span.y).clamp(i32::MIN as i64, i32::MAX as i64) as i32;
+                    step[k] = p.step_x().clamp(i32::MIN as i64, i32::MAX as i64) as i32;
                 }
             }
             let colors = (0..span.len).map(|_| {
@@ -205,6 +206,14 @@ impl<C, const S: u32> From<Line<C, S>> for Primitive<C, S> {
     fn from(l: Line<C, S>) -> Self {
         Primitive::Line(l)
     }
+}
+
+/// The pixel holding `v`, clamped into the frame: a reference for attribute
+/// planes that does not depend on the band (so every band height rounds the
+/// same way) and lies within 2^12 pixels of every sample (see `attr`).
+pub(crate) fn reference_pixel<const S: u32>(v: SubPoint<S>) -> (i32, i32) {
+    let max = crate::MAX_FRAME_DIM as i32 - 1;
+    ((v.x() >> S).clamp(0, max), (v.y() >> S).clamp(0, max))
 }
 
 /// Rows whose centre `y + 0.5` lies in `[lo, hi]` (subpixel units).

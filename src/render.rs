@@ -1,8 +1,9 @@
 //! The band renderer: a frame drawn band by band into a `DrawTarget`.
 
-use crate::band::Band;
-use crate::blit::Blitter;
+use crate::band::{Band, BandView};
+use crate::depth::{DepthBand, DepthFormat, DepthState};
 use crate::edge::Cull;
+use crate::raster3d::{Interpolation, ScreenTriangle, draw_triangle};
 use crate::{Error, Interpolate, MAX_FRAME_DIM, Primitive, RenderError};
 use embedded_graphics_core::prelude::{DrawTarget, Point, Size};
 use embedded_graphics_core::primitives::Rectangle;
@@ -76,6 +77,61 @@ impl<C: Interpolate> Renderer<C> {
     where
         D: DrawTarget<Color = C>,
     {
+        self.bands(band, target, |view, y0, y1| {
+            for prim in scene {
+                let (lo, hi) = prim.rows();
+                if lo < y1 && hi >= y0 {
+                    prim.draw(view, self.cull);
+                }
+            }
+        })
+    }
+
+    /// Renders screen-space triangles from the vertex stage
+    /// ([`crate::pipeline`]) with the depth buffer `depth`, cleared to far at
+    /// each band, and colour interpolation `M`
+    /// ([`Affine`](crate::raster3d::Affine) or
+    /// [`PerspectiveCorrect`](crate::raster3d::PerspectiveCorrect)).
+    /// The renderer's cull mode does not apply: the vertex stage culls.
+    ///
+    /// Errors as for [`Renderer::render`].
+    pub fn render_3d<D, F, M, const S: u32, const W: usize, const H: usize>(
+        &self,
+        triangles: &[ScreenTriangle<S>],
+        band: &mut Band<C, W, H>,
+        depth: &mut DepthBand<F, W, H>,
+        state: DepthState,
+        target: &mut D,
+    ) -> Result<(), RenderError<D::Error>>
+    where
+        D: DrawTarget<Color = C>,
+        F: DepthFormat,
+        M: Interpolation,
+    {
+        self.bands(band, target, |view, y0, y1| {
+            let rows = depth.rows_mut((y1 - y0) as usize);
+            for r in rows.iter_mut() {
+                r.fill(F::FAR);
+            }
+            for tri in triangles {
+                let (lo, hi) = tri.rows();
+                if lo < y1 && hi >= y0 {
+                    draw_triangle::<C, F, M, S, W>(tri, view, rows, state);
+                }
+            }
+        })
+    }
+
+    /// The band loop: clear each band, let `draw` fill rows `y0..y1`, send it.
+    fn bands<D, const W: usize, const H: usize>(
+        &self,
+        band: &mut Band<C, W, H>,
+        target: &mut D,
+        mut draw: impl FnMut(&mut BandView<'_, C, W>, i32, i32),
+    ) -> Result<(), RenderError<D::Error>>
+    where
+        D: DrawTarget<Color = C>,
+    {
         if self.height == 0 || self.height > MAX_FRAME_DIM {
             return Err(Error::InvalidFrameSize.into());
         }
@@ -83,15 +139,9 @@ impl<C: Interpolate> Renderer<C> {
         let mut y0 = 0i32;
         while y0 < height {
             let rows = (height - y0).min(H as i32);
-            let mut view = band.view(y0, rows as usize, self.background);
             let y1 = y0 + rows;
-            for prim in scene {
-                let (lo, hi) = prim.rows();
-                if lo < y1 && hi >= y0 {
-                    prim.draw(&mut view, self.cull);
-                }
-            }
-            debug_assert_eq!(view.clip().y1(), y1);
+            let mut view = band.view(y0, rows as usize, self.background);
+            draw(&mut view, y0, y1);
             let area = Rectangle::new(self.offset + Point::new(0, y0), Size::new(W as u32, rows as u32));
             target.fill_contiguous(&area, view.pixels()).map_err(RenderError::Target)?;
             y0 = y1;

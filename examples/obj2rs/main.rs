@@ -1,0 +1,109 @@
+//! obj2rs: converts a Wavefront OBJ file into Rust source for a `static`
+//! [`microraster::mesh::Mesh`] (arrays in flash, no RAM).
+//!
+//! ```text
+//! cargo run --example obj2rs -- INPUT.obj NAME [--mesh-type PATH] > out.rs
+//! ```
+//!
+//! Writes `NAME_POSITIONS`, `NAME_NORMALS`, `NAME_INDICES` and
+//! `NAME: Mesh<'static>` (NAME upper-cased) to standard output; `INPUT` `-`
+//! reads standard input. `--mesh-type` sets the path of `Mesh` in the output
+//! (default `microraster::mesh::Mesh`; `crate::mesh::Mesh` inside microraster).
+//! See `parse.rs` for the OBJ subset understood. Errors name the line and
+//! exit with status 1 (2 for bad arguments).
+
+mod emit;
+mod parse;
+
+use std::io::{Read, Write};
+use std::path::Path;
+use std::process::ExitCode;
+
+const USAGE: &str = "usage: obj2rs INPUT.obj NAME [--mesh-type PATH] > out.rs   (INPUT `-` = stdin)";
+
+fn main() -> ExitCode {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    match run(&args) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(Failure::Usage(msg)) => {
+            report(&format!("{msg}\n{USAGE}"));
+            ExitCode::from(2)
+        }
+        Err(Failure::Input(msg)) => {
+            report(&msg);
+            ExitCode::FAILURE
+        }
+    }
+}
+
+enum Failure {
+    Usage(String),
+    Input(String),
+}
+
+/// Writes to stderr, ignoring failure (a broken stderr must not panic).
+fn report(msg: &str) {
+    let _ = writeln!(std::io::stderr(), "obj2rs: {msg}");
+}
+
+fn run(args: &[String]) -> Result<(), Failure> {
+    let mut positional = Vec::new();
+    let mut mesh_type = emit::DEFAULT_MESH_TYPE.to_string();
+    let mut it = args.iter();
+    while let Some(a) = it.next() {
+        match a.as_str() {
+            "-h" | "--help" => {
+                let _ = writeln!(std::io::stdout(), "{USAGE}");
+                return Ok(());
+            }
+            "--mesh-type" => {
+                mesh_type =
+                    it.next().ok_or_else(|| Failure::Usage("--mesh-type needs a value".into()))?.clone();
+            }
+            s if s.starts_with("--") => return Err(Failure::Usage(format!("unknown option `{s}`"))),
+            _ => positional.push(a.as_str()),
+        }
+    }
+    let [input, name] = positional[..] else {
+        return Err(Failure::Usage("expected INPUT and NAME".into()));
+    };
+    emit::static_name(name).map_err(Failure::Usage)?;
+    if !emit::is_type_path(&mesh_type) {
+        return Err(Failure::Usage(format!("`{mesh_type}` is not a valid type path")));
+    }
+
+    let mut bytes = Vec::new();
+    let (read, source) = if input == "-" {
+        (std::io::stdin().read_to_end(&mut bytes).map(|_| ()), "<stdin>".to_string())
+    } else {
+        let file_name = Path::new(input).file_name().map(|f| f.to_string_lossy().into_owned());
+        (std::fs::read(input).map(|b| bytes = b), file_name.unwrap_or_else(|| input.to_string()))
+    };
+    let shown = if input == "-" { "<stdin>" } else { input };
+    read.map_err(|e| Failure::Input(format!("{shown}: {e}")))?;
+    // Only comments and names can be non-ASCII; numbers survive a lossy decode.
+    let text = String::from_utf8_lossy(&bytes);
+
+    let mesh = parse::parse_obj(&text).map_err(|e| Failure::Input(format!("{shown}: {e}")))?;
+    let out = emit::rust_source(&mesh, name, &source, &mesh_type).map_err(Failure::Input)?;
+    let mut stdout = std::io::stdout().lock();
+    stdout
+        .write_all(out.as_bytes())
+        .and_then(|()| stdout.flush())
+        .map_err(|e| Failure::Input(format!("stdout: {e}")))?;
+    report(&format!(
+        "{shown}: {} vertices, {} triangles; {} normals computed{}{}",
+        mesh.positions.len(),
+        mesh.indices.len(),
+        mesh.computed_normals,
+        match mesh.arbitrary_normals {
+            0 => String::new(),
+            n => format!(" ({n} without any non-degenerate triangle set to +z)"),
+        },
+        match mesh.dropped_triangles {
+            0 => String::new(),
+            n => format!(", {n} degenerate triangles dropped"),
+        },
+    ));
+    Ok(())
+}

@@ -1,0 +1,326 @@
+//! The two numeric paths of the vertex stage: `f32` and 16.16 fixed point.
+//!
+//! [`Scalar`] is sealed: it is implemented for `f32` (for parts with an FPU,
+//! maths through `micromath` so host and target give identical bits) and for
+//! [`Fx`] (16.16 fixed point from the `fixed` crate, for parts without one).
+//!
+//! [`Fx`] arithmetic **saturates** instead of overflowing: results beyond
+//! ±32768 clamp to [`Fx::MAX`]/[`Fx::MIN`], and division by zero gives the
+//! saturated value with the dividend's sign (`0/0 = 0`). Range ±32768,
+//! resolution 2^-16 ≈ 1.5·10^-5; `+ − ×` are exact or correctly rounded down
+//! (truncation, error < 2^-16), `÷` truncates toward zero (error < 2^-16).
+
+use core::fmt::Debug;
+use core::ops::{Add, Div, Mul, Neg, Sub};
+use fixed::types::I16F16;
+
+mod sealed {
+    pub trait Sealed {}
+    impl Sealed for f32 {}
+    impl Sealed for super::Fx {}
+}
+
+/// A number type of the vertex stage: `f32` or [`Fx`].
+pub trait Scalar:
+    Copy
+    + Debug
+    + PartialEq
+    + PartialOrd
+    + Add<Output = Self>
+    + Sub<Output = Self>
+    + Mul<Output = Self>
+    + Div<Output = Self>
+    + Neg<Output = Self>
+    + sealed::Sealed
+{
+    /// 0.
+    const ZERO: Self;
+    /// 1.
+    const ONE: Self;
+    /// The nearest value to `v` (saturating for [`Fx`]; NaN becomes 0 there).
+    fn from_f32(v: f32) -> Self;
+    /// The value as `f32` (exact for [`Fx`] values below 2^8 in magnitude,
+    /// otherwise rounded to nearest).
+    fn to_f32(self) -> f32;
+    /// Square root; negative inputs give 0.
+    fn sqrt(self) -> Self;
+    /// Sine and cosine of an angle in radians.
+    fn sin_cos(self) -> (Self, Self);
+    /// Absolute value (saturating for [`Fx`]).
+    fn abs(self) -> Self;
+    /// False for NaN and infinities (always true for [`Fx`]).
+    fn is_finite(self) -> bool;
+    /// The value times `2^s`, rounded to nearest (ties to even), or `None` if
+    /// it is not finite or its magnitude exceeds 2^28: the snapping step into
+    /// [`SubPoint`](crate::SubPoint) units.
+    fn to_subpixels(self, s: u32) -> Option<i32>;
+}
+
+impl Scalar for f32 {
+    const ZERO: Self = 0.0;
+    const ONE: Self = 1.0;
+    #[inline]
+    fn from_f32(v: f32) -> Self {
+        v
+    }
+    #[inline]
+    fn to_f32(self) -> f32 {
+        self
+    }
+    #[inline]
+    fn sqrt(self) -> Self {
+        sqrt_f32(self)
+    }
+    #[inline]
+    fn sin_cos(self) -> (Self, Self) {
+        sin_cos_f32(self)
+    }
+    #[inline]
+    fn abs(self) -> Self {
+        micromath::F32Ext::abs(self)
+    }
+    #[inline]
+    fn is_finite(self) -> bool {
+        f32::is_finite(self)
+    }
+    fn to_subpixels(self, s: u32) -> Option<i32> {
+        // Same rounding as SubPoint::from_f32.
+        crate::subpixel::snap_f32_bits(self, s).ok()
+    }
+}
+
+/// Square root to within about an ulp: `micromath`'s estimate (≈5 % error)
+/// refined by Newton steps, in plain `f32` arithmetic so host and target agree
+/// bit for bit. Non-positive inputs (and NaN) give 0, infinity gives infinity.
+pub(crate) fn sqrt_f32(x: f32) -> f32 {
+    if x.is_nan() || x <= 0.0 {
+        return 0.0;
+    }
+    if x == f32::INFINITY {
+        return x;
+    }
+    if x < f32::MIN_POSITIVE {
+        // Subnormal: the bit-trick estimate is poor there; scale by 2^48.
+        return sqrt_f32(x * 281_474_976_710_656.0) / 16_777_216.0;
+    }
+    let mut y = micromath::F32Ext::sqrt(x);
+    // Quadratic convergence: 6e-2 → 2e-3 → 2e-6 → rounding.
+    for _ in 0..4 {
+        y = 0.5 * (y + x / y);
+    }
+    y
+}
+
+/// Sine and cosine in `f32`: Cody–Waite reduction by π/2 (a two-part
+/// constant), then the same Taylor polynomials as the fixed-point path on
+/// `[-π/4, π/4]`. Absolute error below 2·10^-7 (plus 10^-10·|a|) for
+/// `|a| ≤ 2^13` rad; beyond
+/// 2^20 rad the reduction is meaningless and `(0, 1)` is returned (a
+/// documented clamp, not a panic). micromath's own sin/cos err by up to 2·10^-3,
+/// too much for rotation matrices.
+fn sin_cos_f32(a: f32) -> (f32, f32) {
+    if !a.is_finite() {
+        return (f32::NAN, f32::NAN);
+    }
+    if micromath::F32Ext::abs(a) > 1_048_576.0 {
+        return (0.0, 1.0);
+    }
+    // π/2 = A + B + C with A (8 bits) and B (11 bits) short enough that k·A and
+    // k·B are exact for |k| < 2^13: the reduction loses nothing there.
+    const A: f32 = 1.570_312_5;
+    const B: f32 = 4.837_513e-4;
+    const C: f32 = 7.549_79e-8;
+    let k = a * core::f32::consts::FRAC_2_PI;
+    let k = if k >= 0.0 { (k + 0.5) as i32 } else { (k - 0.5) as i32 };
+    let kf = k as f32;
+    let r = ((a - kf * A) - kf * B) - kf * C;
+    let r2 = r * r;
+    // Taylor to r^9 / r^10: truncation below 2·10^-9 on [-π/4, π/4].
+    let s = r * (1.0 - r2 / 6.0 * (1.0 - r2 / 20.0 * (1.0 - r2 / 42.0 * (1.0 - r2 / 72.0))));
+    let c = 1.0 - r2 / 2.0 * (1.0 - r2 / 12.0 * (1.0 - r2 / 30.0 * (1.0 - r2 / 56.0 * (1.0 - r2 / 90.0))));
+    match k.rem_euclid(4) {
+        0 => (s, c),
+        1 => (c, -s),
+        2 => (-s, -c),
+        _ => (-c, s),
+    }
+}
+
+/// 16.16 fixed point with saturating arithmetic (see the module docs).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Default, Hash)]
+pub struct Fx(pub I16F16);
+
+impl Fx {
+    /// Largest value, 32768 − 2^-16.
+    pub const MAX: Fx = Fx(I16F16::MAX);
+    /// Smallest value, −32768.
+    pub const MIN: Fx = Fx(I16F16::MIN);
+    /// The raw 16.16 bits.
+    pub const fn to_bits(self) -> i32 {
+        self.0.to_bits()
+    }
+    /// From raw 16.16 bits.
+    pub const fn from_bits(b: i32) -> Self {
+        Fx(I16F16::from_bits(b))
+    }
+}
+
+impl Add for Fx {
+    type Output = Fx;
+    #[inline]
+    fn add(self, o: Fx) -> Fx {
+        Fx(self.0.saturating_add(o.0))
+    }
+}
+impl Sub for Fx {
+    type Output = Fx;
+    #[inline]
+    fn sub(self, o: Fx) -> Fx {
+        Fx(self.0.saturating_sub(o.0))
+    }
+}
+impl Mul for Fx {
+    type Output = Fx;
+    #[inline]
+    fn mul(self, o: Fx) -> Fx {
+        Fx(self.0.saturating_mul(o.0))
+    }
+}
+impl Div for Fx {
+    type Output = Fx;
+    #[inline]
+    fn div(self, o: Fx) -> Fx {
+        if o.0 == I16F16::ZERO {
+            match self.0.cmp(&I16F16::ZERO) {
+                core::cmp::Ordering::Greater => Fx::MAX,
+                core::cmp::Ordering::Less => Fx::MIN,
+                core::cmp::Ordering::Equal => Fx(I16F16::ZERO),
+            }
+        } else {
+            Fx(self.0.saturating_div(o.0))
+        }
+    }
+}
+impl Neg for Fx {
+    type Output = Fx;
+    #[inline]
+    fn neg(self) -> Fx {
+        Fx(self.0.saturating_neg())
+    }
+}
+
+impl Scalar for Fx {
+    const ZERO: Self = Fx(I16F16::ZERO);
+    const ONE: Self = Fx(I16F16::ONE);
+    fn from_f32(v: f32) -> Self {
+        if v.is_nan() { Fx::ZERO } else { Fx(I16F16::saturating_from_num(v)) }
+    }
+    fn to_f32(self) -> f32 {
+        self.0.to_num::<f32>()
+    }
+    fn sqrt(self) -> Self {
+        Fx(self.0.checked_sqrt().unwrap_or(I16F16::ZERO))
+    }
+    fn sin_cos(self) -> (Self, Self) {
+        fixed_sin_cos(self)
+    }
+    fn abs(self) -> Self {
+        Fx(self.0.saturating_abs())
+    }
+    fn is_finite(self) -> bool {
+        true
+    }
+    fn to_subpixels(self, s: u32) -> Option<i32> {
+        let v = crate::subpixel::shift_round_even(self.to_bits() as i64, s as i32 - 16);
+        if v.abs() <= 1 << 28 { Some(v as i32) } else { None }
+    }
+}
+
+/// Sine and cosine in 16.16: reduce to `[-π/4, π/4]` by quadrant, then Taylor
+/// polynomials to x^9/x^10 evaluated in 2.30 fixed point (truncation error
+/// < 2·10^-9 on that interval, far below the 16.16 resolution).
+fn fixed_sin_cos(a: Fx) -> (Fx, Fx) {
+    use core::f64::consts::FRAC_PI_2;
+    const HALF_PI: i64 = (FRAC_PI_2 * 65536.0 * 65536.0) as i64; // 2^32 scale
+    // Angle in 32.32, quadrant k = round(a / (π/2)), remainder r in [-π/4, π/4].
+    let a32 = (a.to_bits() as i64) << 16;
+    let k = (a32 + a32.signum() * HALF_PI / 2) / HALF_PI;
+    let r32 = a32 - k * HALF_PI; // |r| ≤ π/4 · 2^32
+    let r = r32 >> 2; // 2.30 fixed point
+    let mul = |x: i64, y: i64| (x * y) >> 30;
+    let r2 = mul(r, r);
+    const ONE: i64 = 1 << 30;
+    // sin r = r(1 − r²/6(1 − r²/20(1 − r²/42))), cos r = 1 − r²/2(1 − r²/12(1 − r²/30(1 − r²/56)))
+    let s = mul(r, ONE - mul(r2, (ONE - mul(r2, (ONE - mul(r2, ONE - r2 / 72) / 42) / 20)) / 6));
+    let c =
+        ONE - mul(r2, (ONE - mul(r2, (ONE - mul(r2, (ONE - mul(r2, ONE - r2 / 90) / 56) / 30)) / 12)) / 2);
+    let (s, c) = match k.rem_euclid(4) {
+        0 => (s, c),
+        1 => (c, -s),
+        2 => (-s, -c),
+        _ => (-c, s),
+    };
+    let to_fx = |v: i64| Fx::from_bits(((v + (1 << 13)) >> 14) as i32);
+    (to_fx(s), to_fx(c))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn fixed_ops_saturate_instead_of_panicking() {
+        let big = Fx::from_f32(30000.0);
+        assert_eq!(big + big, Fx::MAX);
+        assert_eq!(-big - big, Fx::MIN);
+        assert_eq!(big * big, Fx::MAX);
+        assert_eq!(Fx::ONE / Fx::ZERO, Fx::MAX);
+        assert_eq!(-Fx::ONE / Fx::ZERO, Fx::MIN);
+        assert_eq!(Fx::ZERO / Fx::ZERO, Fx::ZERO);
+        assert_eq!(-Fx::MIN, Fx::MAX);
+        assert_eq!(Fx::from_f32(f32::NAN), Fx::ZERO);
+        assert_eq!(Fx::from_f32(f32::INFINITY), Fx::MAX);
+        assert_eq!(Fx::from_f32(-4.0).sqrt(), Fx::ZERO);
+    }
+
+    #[test]
+    fn f32_sqrt_and_sin_cos_within_bound_of_f64() {
+        let mut n = 0;
+        for i in 1..200_000 {
+            let x = i as f32 * 0.013_7;
+            let r = f64::from(sqrt_f32(x));
+            assert!((r - f64::from(x).sqrt()).abs() <= f64::from(x).sqrt() * 2.4e-7, "sqrt({x})");
+            let a = (i as f32 - 100_000.0) * 0.041; // ±4100 rad
+            let (s, c) = sin_cos_f32(a);
+            let a64 = f64::from(a);
+            assert!(
+                (f64::from(s) - a64.sin()).abs() <= 2e-7 + a64.abs() * 1e-10,
+                "sin({a}) = {s} vs {}",
+                a64.sin()
+            );
+            assert!((f64::from(c) - a64.cos()).abs() <= 2e-7 + a64.abs() * 1e-10, "cos({a})");
+            n += 1;
+        }
+        assert_eq!(n, 199_999);
+        assert_eq!(sqrt_f32(-1.0), 0.0);
+        assert!(sin_cos_f32(f32::NAN).0.is_nan());
+    }
+
+    #[test]
+    fn fixed_sin_cos_within_bound_of_f64() {
+        // Bound: polynomial error < 2e-9, a few 2^-30 steps of 2.30
+        // arithmetic and the final rounding to 16.16 (≤ 2^-17).
+        let bound = 2e-9 + 8.0 * 2.0f64.powi(-30) + 2.0f64.powi(-17);
+        let mut n = 0;
+        for i in -20000..=20000 {
+            let a = Fx::from_bits(i * 97); // ±29.6 rad
+            let x = f64::from(a.to_bits()) / 65536.0;
+            let (s, c) = a.sin_cos();
+            let (s, c) = (f64::from(s.to_bits()) / 65536.0, f64::from(c.to_bits()) / 65536.0);
+            assert!((s - x.sin()).abs() <= bound, "sin({x}) = {s}");
+            assert!((c - x.cos()).abs() <= bound, "cos({x}) = {c}");
+            n += 1;
+        }
+        assert_eq!(n, 40001);
+    }
+}

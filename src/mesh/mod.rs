@@ -1,0 +1,335 @@
+//! Indexed triangle meshes in borrowed (typically flash-resident) data, and
+//! allocation-free generators of demo shapes.
+//!
+//! A [`Mesh`] borrows its vertex and index arrays, so a model converted ahead
+//! of time (with the `obj2rs` example: `cargo run --example obj2rs --
+//! model.obj NAME > model.rs`) lives in `static` arrays in flash and costs no
+//! RAM. The generators [`cube`], [`icosphere`] and [`torus`] write into
+//! caller-provided buffers whose exact sizes are given by `const fn`s
+//! ([`cube_vertex_count`], [`icosphere_triangle_count`], …), so the buffers
+//! can be plain arrays.
+//!
+//! # Conventions
+//!
+//! * Right-handed coordinates.
+//! * Triangles wind **counter-clockwise when seen from outside** the solid
+//!   (from the side the normals point to); all generated meshes are closed,
+//!   2-manifold and consistently oriented.
+//! * Normals are per vertex, of unit length and point outward. A mesh may have
+//!   no normals at all (an empty slice); the 3D pipeline then computes flat
+//!   per-face normals ([`Mesh::face_normal`]).
+//! * The bounding sphere contains every position; the 3D pipeline uses it to
+//!   cull whole meshes against the view volume before any vertex work.
+//!
+//! The generators use `micromath` for `sin`/`cos` and a Newton-refined
+//! `micromath` square root, so they produce bit-identical results on the host
+//! and on Cortex-M targets.
+
+mod cube;
+mod icosphere;
+mod torus;
+
+#[cfg(test)]
+mod tests;
+
+pub use cube::{cube, cube_triangle_count, cube_vertex_count};
+pub use icosphere::{
+    ICOSPHERE_MAX_SUBDIVISIONS, icosphere, icosphere_triangle_count, icosphere_vertex_count,
+};
+pub use torus::{torus, torus_triangle_count, torus_vertex_count};
+
+use crate::error::Error;
+
+/// An index is out of range, the normals do not match the positions, or the
+/// bounding sphere does not contain the mesh.
+const INVALID_MESH: Error = Error::InvalidMesh;
+/// A caller-provided buffer is smaller than the generator needs.
+const BUFFER_TOO_SMALL: Error = Error::BufferTooSmall;
+/// A generator parameter (subdivisions, segments, radii) is out of range.
+const INVALID_PARAMETER: Error = Error::InvalidParameter;
+
+/// Most vertices a mesh can index with `u16` indices (65536).
+pub const MAX_VERTICES: usize = u16::MAX as usize + 1;
+
+/// Relative tolerance on the bounding-sphere radius used by [`Mesh::validate`].
+pub const SPHERE_TOLERANCE: f32 = 1.0e-5;
+
+/// An indexed triangle list in borrowed data.
+///
+/// The fields are public so meshes can be built in any way; the constructor is
+/// a `const fn` so a mesh can be a `static`. Nothing is checked on
+/// construction: the 3D pipeline calls [`validate`](Mesh::validate), which
+/// rejects any mesh that breaks the invariants documented on the fields.
+///
+/// ```
+/// use microraster::mesh::{Mesh, bounding_sphere};
+///
+/// // A tetrahedron: counter-clockwise seen from outside, no normals.
+/// static POSITIONS: [[f32; 3]; 4] =
+///     [[1.0, 1.0, 1.0], [1.0, -1.0, -1.0], [-1.0, 1.0, -1.0], [-1.0, -1.0, 1.0]];
+/// static INDICES: [[u16; 3]; 4] = [[0, 1, 2], [0, 2, 3], [0, 3, 1], [1, 3, 2]];
+/// static TETRA: Mesh<'static> = Mesh::new(&POSITIONS, &[], &INDICES, ([0.0; 3], 1.7320508));
+///
+/// TETRA.validate()?;
+/// assert_eq!((TETRA.vertex_count(), TETRA.triangle_count()), (4, 4));
+/// assert!(!TETRA.has_normals());
+/// assert_eq!(bounding_sphere(&POSITIONS), TETRA.bounding_sphere);
+/// # Ok::<(), microraster::Error>(())
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Mesh<'a> {
+    /// Vertex positions (finite).
+    pub positions: &'a [[f32; 3]],
+    /// Unit vertex normals, one per position, or empty (the pipeline then uses
+    /// flat per-face normals). Finite.
+    pub normals: &'a [[f32; 3]],
+    /// Triangles as indices into `positions`, counter-clockwise when seen from
+    /// outside (from the front).
+    pub indices: &'a [[u16; 3]],
+    /// `(centre, radius)` of a sphere containing every position (within
+    /// [`SPHERE_TOLERANCE`]); see [`bounding_sphere`].
+    pub bounding_sphere: ([f32; 3], f32),
+}
+
+impl<'a> Mesh<'a> {
+    /// A mesh from its parts (unchecked; see [`validate`](Mesh::validate)).
+    pub const fn new(
+        positions: &'a [[f32; 3]],
+        normals: &'a [[f32; 3]],
+        indices: &'a [[u16; 3]],
+        bounding_sphere: ([f32; 3], f32),
+    ) -> Self {
+        Mesh { positions, normals, indices, bounding_sphere }
+    }
+
+    /// Number of vertices (positions).
+    pub const fn vertex_count(&self) -> usize {
+        self.positions.len()
+    }
+
+    /// Number of triangles.
+    pub const fn triangle_count(&self) -> usize {
+        self.indices.len()
+    }
+
+    /// Whether the mesh has per-vertex normals.
+    pub const fn has_normals(&self) -> bool {
+        !self.normals.is_empty()
+    }
+
+    /// Checks the invariants the 3D pipeline relies on, in O(vertices +
+    /// triangles) without allocating:
+    ///
+    /// * every index is less than the number of positions,
+    /// * `normals` is empty or exactly as long as `positions`,
+    /// * every position, normal and the bounding sphere are finite,
+    /// * the radius is non-negative, its square is finite (the radius is below
+    ///   about 1.8·10¹⁹), and every position lies within
+    ///   `radius · (1 + SPHERE_TOLERANCE)` of the centre.
+    ///
+    /// Normals are not checked for unit length.
+    ///
+    /// # Errors
+    ///
+    /// [`Error::NonFiniteCoordinate`] if a value is NaN or infinite;
+    /// [`Error::InvalidMesh`] for inconsistent indices, normals or sphere;
+    /// [`Error::CoordinateOutOfRange`] for a radius too large to square.
+    ///
+    /// ```
+    /// use microraster::{Error, mesh::Mesh};
+    /// let positions = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]];
+    /// let sphere = ([0.5, 0.5, 0.0], 0.71);
+    /// assert!(Mesh::new(&positions, &[], &[[0, 1, 2]], sphere).validate().is_ok());
+    /// assert!(Mesh::new(&positions, &[], &[[0, 1, 3]], sphere).validate().is_err());
+    /// let nan = [[0.0, 0.0, f32::NAN], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]];
+    /// assert_eq!(
+    ///     Mesh::new(&nan, &[], &[[0, 1, 2]], sphere).validate(),
+    ///     Err(Error::NonFiniteCoordinate)
+    /// );
+    /// ```
+    pub fn validate(&self) -> Result<(), Error> {
+        if !self.normals.is_empty() && self.normals.len() != self.positions.len() {
+            return Err(INVALID_MESH);
+        }
+        let n = self.positions.len();
+        if self.indices.iter().flatten().any(|&i| usize::from(i) >= n) {
+            return Err(INVALID_MESH);
+        }
+        if self.normals.iter().any(|v| !is_finite3(*v)) {
+            return Err(Error::NonFiniteCoordinate);
+        }
+        let (centre, radius) = self.bounding_sphere;
+        if !is_finite3(centre) || !radius.is_finite() {
+            return Err(Error::NonFiniteCoordinate);
+        }
+        if radius < 0.0 {
+            return Err(INVALID_MESH);
+        }
+        let r = radius * (1.0 + SPHERE_TOLERANCE);
+        let r2 = r * r;
+        if r2 == f32::INFINITY {
+            return Err(Error::CoordinateOutOfRange);
+        }
+        for &p in self.positions {
+            if !is_finite3(p) {
+                return Err(Error::NonFiniteCoordinate);
+            }
+            // Finite inputs give no NaN; an overflow to infinity fails.
+            if dist2(p, centre) > r2 {
+                return Err(INVALID_MESH);
+            }
+        }
+        Ok(())
+    }
+
+    /// The positions of triangle `i`, or `None` if `i` or one of its indices
+    /// is out of range.
+    pub fn triangle(&self, i: usize) -> Option<[[f32; 3]; 3]> {
+        let [a, b, c] = *self.indices.get(i)?;
+        let p = |k: u16| self.positions.get(usize::from(k)).copied();
+        Some([p(a)?, p(b)?, p(c)?])
+    }
+
+    /// The unit normal of triangle `i` from its winding (the flat normal, the
+    /// side from which the triangle is seen counter-clockwise), or `None` if
+    /// `i` is out of range or the triangle is degenerate (zero area).
+    ///
+    /// ```
+    /// use microraster::mesh::Mesh;
+    /// let positions = [[0.0, 0.0, 0.0], [2.0, 0.0, 0.0], [0.0, 2.0, 0.0]];
+    /// let mesh = Mesh::new(&positions, &[], &[[0, 1, 2]], ([1.0, 1.0, 0.0], 1.5));
+    /// assert_eq!(mesh.face_normal(0), Some([0.0, 0.0, 1.0]));
+    /// ```
+    pub fn face_normal(&self, i: usize) -> Option<[f32; 3]> {
+        let [a, b, c] = self.triangle(i)?;
+        let n = cross(sub(b, a), sub(c, a));
+        let len = sqrt(dot(n, n));
+        if len > 0.0 && len.is_finite() { Some(n.map(|x| x / len)) } else { None }
+    }
+}
+
+/// A bounding sphere of `positions`, for [`Mesh::bounding_sphere`]; the
+/// generators and the `obj2rs` converter use it.
+///
+/// The centre is the better of two candidates, the centre of the axis-aligned
+/// bounding box and the centre found by Ritter's algorithm; the radius is the
+/// smallest `f32` with `|p − centre|² ≤ radius²` (evaluated in `f32`) for
+/// every position. This is not the minimal enclosing sphere, but usually
+/// within a few percent of it. O(n), no allocation.
+///
+/// An empty slice gives `([0.0; 3], 0.0)`. If a position is not finite, or
+/// squared distances overflow `f32` (coordinates beyond about 10¹⁹), the radius
+/// is infinite, which [`Mesh::validate`] rejects.
+///
+/// ```
+/// use microraster::mesh::bounding_sphere;
+/// let (centre, radius) = bounding_sphere(&[[1.0, 0.0, 0.0], [3.0, 0.0, 0.0], [2.0, 1.0, 0.0]]);
+/// assert_eq!((centre, radius), ([2.0, 0.0, 0.0], 1.0));
+/// ```
+pub fn bounding_sphere(positions: &[[f32; 3]]) -> ([f32; 3], f32) {
+    let Some(&first) = positions.first() else {
+        return ([0.0; 3], 0.0);
+    };
+    if !positions.iter().all(|&p| is_finite3(p)) {
+        return ([0.0; 3], f32::INFINITY);
+    }
+    let (mut lo, mut hi) = (first, first);
+    for p in positions {
+        for k in 0..3 {
+            lo[k] = lo[k].min(p[k]);
+            hi[k] = hi[k].max(p[k]);
+        }
+    }
+    // Halves first: `lo + hi` could overflow.
+    let aabb = [0, 1, 2].map(|k| lo[k] * 0.5 + hi[k] * 0.5);
+    let ritter = ritter_centre(positions, first);
+    let (ra, rr) = (radius_about(positions, aabb), radius_about(positions, ritter));
+    if rr < ra { (ritter, rr) } else { (aabb, ra) }
+}
+
+/// Centre of Ritter's bounding sphere: the sphere on the diameter between an
+/// extreme pair, grown to take in every outlier in one pass.
+fn ritter_centre(positions: &[[f32; 3]], first: [f32; 3]) -> [f32; 3] {
+    let farthest = |from: [f32; 3]| {
+        positions.iter().copied().max_by(|&a, &b| dist2(a, from).total_cmp(&dist2(b, from))).unwrap_or(from)
+    };
+    let y = farthest(first);
+    let z = farthest(y);
+    let mut c = [0, 1, 2].map(|k| y[k] * 0.5 + z[k] * 0.5);
+    let mut r = sqrt(dist2(y, z)) * 0.5;
+    for &p in positions {
+        let d2 = dist2(p, c);
+        if d2 > r * r {
+            let d = sqrt(d2);
+            let grown = (r + d) * 0.5;
+            let t = (d - grown) / d;
+            c = add(c, sub(p, c).map(|x| x * t));
+            r = grown;
+        }
+    }
+    c
+}
+
+/// The smallest `f32` radius `r` with `|p − centre|² ≤ r²` in `f32` for every
+/// position (infinity if the squares overflow).
+fn radius_about(positions: &[[f32; 3]], centre: [f32; 3]) -> f32 {
+    let max_d2 = positions.iter().map(|&p| dist2(p, centre)).fold(0.0f32, f32::max);
+    if !max_d2.is_finite() {
+        return f32::INFINITY;
+    }
+    let mut r = sqrt(max_d2);
+    // `sqrt` is within an ulp or two: step to the smallest radius that works.
+    while r * r < max_d2 {
+        r = r.next_up();
+    }
+    while r > 0.0 && r.next_down() * r.next_down() >= max_d2 {
+        r = r.next_down();
+    }
+    r
+}
+
+/// The sphere about the origin, for the generated (origin-centred) shapes.
+fn sphere_about_origin(positions: &[[f32; 3]]) -> ([f32; 3], f32) {
+    ([0.0; 3], radius_about(positions, [0.0; 3]))
+}
+
+fn is_finite3(v: [f32; 3]) -> bool {
+    v.iter().all(|x| x.is_finite())
+}
+
+fn sub(a: [f32; 3], b: [f32; 3]) -> [f32; 3] {
+    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
+}
+
+fn add(a: [f32; 3], b: [f32; 3]) -> [f32; 3] {
+    [a[0] + b[0], a[1] + b[1], a[2] + b[2]]
+}
+
+fn dot(a: [f32; 3], b: [f32; 3]) -> f32 {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+}
+
+fn cross(a: [f32; 3], b: [f32; 3]) -> [f32; 3] {
+    [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+}
+
+fn dist2(a: [f32; 3], b: [f32; 3]) -> f32 {
+    let d = sub(a, b);
+    dot(d, d)
+}
+
+/// `v / |v|` (unchanged if `|v|` is zero).
+fn normalize(v: [f32; 3]) -> [f32; 3] {
+    let len = sqrt(dot(v, v));
+    if len > 0.0 { v.map(|x| x / len) } else { v }
+}
+
+use crate::math::scalar::sqrt_f32 as sqrt;
+
+/// Unit vector `(cos a, sin a)`: `micromath`'s estimates (error ≤ 0.002)
+/// renormalised, so the point lies on the unit circle to within rounding.
+fn cos_sin(a: f32) -> (f32, f32) {
+    let (c, s) = (micromath::F32Ext::cos(a), micromath::F32Ext::sin(a));
+    let len = sqrt(c * c + s * s);
+    (c / len, s / len)
+}
