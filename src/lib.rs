@@ -17,13 +17,16 @@ pub mod color;
 pub mod depth;
 pub mod edge;
 pub mod error;
+pub mod light;
 pub mod line;
 pub mod math;
 pub mod mesh;
+pub mod pipeline;
 pub mod primitive;
 pub mod raster3d;
 pub mod render;
 pub mod scenes;
+pub mod scenes3d;
 pub mod subpixel;
 
 pub use band::Band;

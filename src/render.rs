@@ -77,7 +77,7 @@ impl<C: Interpolate> Renderer<C> {
     where
         D: DrawTarget<Color = C>,
     {
-        self.bands(band, target, |view, y0, y1| {
+        self.render_with(band, target, |view, y0, y1| {
             for prim in scene {
                 let (lo, hi) = prim.rows();
                 if lo < y1 && hi >= y0 {
@@ -88,7 +88,7 @@ impl<C: Interpolate> Renderer<C> {
     }
 
     /// Renders screen-space triangles from the vertex stage
-    /// ([`crate::pipeline`]) with the depth buffer `depth`, cleared to far at
+    /// ([`pipeline`](crate::pipeline)) with the depth buffer `depth`, cleared to far at
     /// each band, and colour interpolation `M`
     /// ([`Affine`](crate::raster3d::Affine) or
     /// [`PerspectiveCorrect`](crate::raster3d::PerspectiveCorrect)).
@@ -108,7 +108,7 @@ impl<C: Interpolate> Renderer<C> {
         F: DepthFormat,
         M: Interpolation,
     {
-        self.bands(band, target, |view, y0, y1| {
+        self.render_with(band, target, |view, y0, y1| {
             let rows = depth.rows_mut((y1 - y0) as usize);
             for r in rows.iter_mut() {
                 r.fill(F::FAR);
@@ -122,8 +122,16 @@ impl<C: Interpolate> Renderer<C> {
         })
     }
 
-    /// The band loop: clear each band, let `draw` fill rows `y0..y1`, send it.
-    fn bands<D, const W: usize, const H: usize>(
+    /// The band loop itself, for custom passes: for each band, clear it to the
+    /// background, call `draw(view, y0, y1)` to fill frame rows `y0..y1`
+    /// (mix 2D [`Primitive`]s, [`draw_triangle`] calls with your own
+    /// [`DepthBand`], or anything that writes through the
+    /// [`Blitter`](crate::blit::Blitter) trait), then send the band with one
+    /// `fill_contiguous`. [`Renderer::render`] and [`Renderer::render_3d`] are
+    /// built on it.
+    ///
+    /// Errors as for [`Renderer::render`].
+    pub fn render_with<D, const W: usize, const H: usize>(
         &self,
         band: &mut Band<C, W, H>,
         target: &mut D,

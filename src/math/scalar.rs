@@ -54,6 +54,15 @@ pub trait Scalar:
     /// it is not finite or its magnitude exceeds 2^28: the snapping step into
     /// [`SubPoint`](crate::SubPoint) units.
     fn to_subpixels(self, s: u32) -> Option<i32>;
+    /// `round(self / den · scale)` for `den > 0` and `|scale| ≤ 2^40`, or `None`
+    /// if the operands are not finite, `den ≤ 0`, or the result exceeds 2^40:
+    /// the perspective divide and viewport scale in one step, so [`Fx`] keeps
+    /// its full precision (one `i64` division) instead of rounding `self/den`
+    /// to 16 fractional bits first. `f32` rounds to nearest, ties to even.
+    fn div_scaled(self, den: Self, scale: i64) -> Option<i64>;
+    /// The value in `[0, 1]` (clamped; NaN gives 0) times `max`, rounded to
+    /// nearest: a colour channel from an intensity.
+    fn to_channel(self, max: u8) -> u8;
 }
 
 impl Scalar for f32 {
@@ -86,6 +95,32 @@ impl Scalar for f32 {
     fn to_subpixels(self, s: u32) -> Option<i32> {
         // Same rounding as SubPoint::from_f32.
         crate::subpixel::snap_f32_bits(self, s).ok()
+    }
+    fn div_scaled(self, den: Self, scale: i64) -> Option<i64> {
+        if !(self.is_finite() && den.is_finite() && den > 0.0) {
+            return None;
+        }
+        let v = self / den * scale as f32;
+        // NaN fails this test too.
+        if v.is_nan() || v.abs() > (1u64 << 40) as f32 {
+            return None;
+        }
+        // |v| ≤ 2^40: the cast is exact after rounding; ties to even as in snapping.
+        let t = v as i64;
+        let frac = v - t as f32;
+        let step = if v < 0.0 { -1 } else { 1 };
+        let r = if frac.abs() > 0.5 || (frac.abs() == 0.5 && t & 1 == 1) { t + step } else { t };
+        Some(r)
+    }
+    fn to_channel(self, max: u8) -> u8 {
+        let c = if self > 1.0 {
+            1.0
+        } else if self > 0.0 {
+            self
+        } else {
+            0.0
+        };
+        (c * max as f32 + 0.5) as u8
     }
 }
 
@@ -234,6 +269,21 @@ impl Scalar for Fx {
         let v = crate::subpixel::shift_round_even(self.to_bits() as i64, s as i32 - 16);
         if v.abs() <= 1 << 28 { Some(v as i32) } else { None }
     }
+    fn div_scaled(self, den: Self, scale: i64) -> Option<i64> {
+        let d = den.to_bits() as i64;
+        if d <= 0 || scale.abs() > 1 << 40 {
+            return None;
+        }
+        // |bits · scale| ≤ 2^31 · 2^40: i128 only when i64 would overflow.
+        let n = self.to_bits() as i128 * scale as i128;
+        let (d, half) = (d as i128, d as i128 / 2);
+        let q = if n >= 0 { (n + half) / d } else { -((-n + half) / d) };
+        if q.abs() <= 1 << 40 { Some(q as i64) } else { None }
+    }
+    fn to_channel(self, max: u8) -> u8 {
+        let b = self.to_bits().clamp(0, 1 << 16) as u32;
+        ((b * max as u32 + (1 << 15)) >> 16) as u8
+    }
 }
 
 /// Sine and cosine in 16.16: reduce to `[-π/4, π/4]` by quadrant, then Taylor
@@ -267,6 +317,33 @@ fn fixed_sin_cos(a: Fx) -> (Fx, Fx) {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn div_scaled_and_to_channel_agree_between_paths() {
+        let mut n = 0;
+        for i in -300..300 {
+            for w in [0.25f32, 1.0, 3.7, 100.0] {
+                let x = i as f32 * 0.731;
+                let exact = f64::from(x) / f64::from(w) * 40960.0;
+                let a = x.div_scaled(w, 40960).unwrap();
+                assert!((a as f64 - exact).abs() <= 0.5 + exact.abs() * 2.4e-7, "f32 {x}/{w}");
+                let (fx, fw) = (Fx::from_f32(x), Fx::from_f32(w));
+                let ex = f64::from(fx.to_bits()) / f64::from(fw.to_bits()) * 40960.0;
+                let b = fx.div_scaled(fw, 40960).unwrap();
+                assert!((b as f64 - ex).abs() <= 0.5, "Fx {x}/{w}");
+                n += 1;
+            }
+        }
+        assert_eq!(n, 2400);
+        assert_eq!(1.0f32.div_scaled(0.0, 10), None);
+        assert_eq!(f32::NAN.div_scaled(1.0, 10), None);
+        assert_eq!(Fx::ONE.div_scaled(Fx::ZERO, 10), None);
+        assert_eq!(Fx::ONE.div_scaled(-Fx::ONE, 10), None);
+        for (v, max, want) in [(0.5f32, 255u8, 128u8), (1.5, 31, 31), (-1.0, 63, 0), (f32::NAN, 255, 0)] {
+            assert_eq!(v.to_channel(max), want);
+            assert_eq!(Fx::from_f32(v).to_channel(max), want);
+        }
+    }
 
     #[test]
     fn fixed_ops_saturate_instead_of_panicking() {

@@ -1,0 +1,119 @@
+//! Lighting: ambient plus one directional light, Lambert diffuse and optional
+//! Blinn–Phong specular, evaluated per face (flat) or per vertex (Gouraud).
+//!
+//! All vectors are in eye space (the camera at the origin looking down −z).
+//! Intensities are unitless factors on the material colour; the result is
+//! clamped to `[0, 1]` per channel before it becomes a colour channel.
+
+use crate::math::{Scalar, Vec3};
+
+/// A `Copy` lighting setup.
+///
+/// ```
+/// use microraster::light::Lighting;
+/// use microraster::math::Vec3;
+/// let l = Lighting::<f32>::new(0.2, Vec3::new(0.0, 0.0, 1.0), 0.8);
+/// // A surface facing the light gets ambient + diffuse = 1.0.
+/// let c = l.shade(Vec3::new(0.0, 0.0, 1.0), Vec3::new(0.0, 0.0, -5.0), [0.5, 1.0, 0.25]);
+/// assert!((c[0] - 0.5).abs() < 1e-6 && (c[1] - 1.0).abs() < 1e-6);
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Lighting<T> {
+    /// Ambient factor.
+    pub ambient: T,
+    /// Unit direction *towards* the light, eye space.
+    pub direction: Vec3<T>,
+    /// Diffuse (Lambert) factor.
+    pub diffuse: T,
+    /// Specular factor and Blinn–Phong exponent (`None`: no specular term).
+    pub specular: Option<(T, u32)>,
+}
+
+impl<T: Scalar> Lighting<T> {
+    /// No lighting: every surface shows its material colour.
+    pub const UNLIT: Option<Lighting<T>> = None;
+
+    /// Ambient plus a directional light towards `direction` (normalised here).
+    pub fn new(ambient: T, direction: Vec3<T>, diffuse: T) -> Self {
+        Lighting { ambient, direction: direction.normalize(), diffuse, specular: None }
+    }
+
+    /// The same lighting with a Blinn–Phong specular term.
+    pub fn with_specular(self, strength: T, exponent: u32) -> Self {
+        Lighting { specular: Some((strength, exponent)), ..self }
+    }
+
+    /// Colour factors for a unit normal `n` at eye-space position `p`, on a
+    /// material with channel factors `base` (each in `[0, 1]`).
+    pub fn shade(&self, n: Vec3<T>, p: Vec3<T>, base: [T; 3]) -> [T; 3] {
+        let lambert = positive(n.dot(self.direction));
+        let k = self.ambient + self.diffuse * lambert;
+        let spec = match self.specular {
+            Some((strength, exp)) if lambert > T::ZERO => {
+                // Half vector between the light and the viewer (at the origin).
+                let h = (self.direction + (-p).normalize()).normalize();
+                strength * powi(positive(n.dot(h)), exp)
+            }
+            _ => T::ZERO,
+        };
+        base.map(|b| b * k + spec)
+    }
+}
+
+fn positive<T: Scalar>(v: T) -> T {
+    if v > T::ZERO { v } else { T::ZERO }
+}
+
+/// `x^e` by repeated squaring (`x` in `[0, 1]`, so nothing grows).
+fn powi<T: Scalar>(mut x: T, mut e: u32) -> T {
+    let mut r = T::ONE;
+    while e > 0 {
+        if e & 1 == 1 {
+            r = r * x;
+        }
+        x = x * x;
+        e >>= 1;
+    }
+    r
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::math::Fx;
+
+    #[test]
+    fn lambert_and_blinn_phong_match_f64() {
+        let mut n_checked = 0;
+        for i in 0..400 {
+            let a = i as f32 * 0.0157; // 0 .. 2π
+            let n = Vec3::new(a.cos(), a.sin(), 0.0);
+            let light = Lighting::<f32>::new(0.1, Vec3::new(1.0, 0.0, 0.0), 0.7).with_specular(0.5, 16);
+            let p = Vec3::new(0.0, 0.0, -4.0);
+            let got = light.shade(n, p, [1.0, 0.5, 0.0]);
+            // f64 reference.
+            let (nx, ny) = (f64::from(a).cos(), f64::from(a).sin());
+            let lam = nx.max(0.0);
+            // Half vector of light (1,0,0) and view (0,0,1).
+            let h = (0.5f64.sqrt(), 0.0, 0.5f64.sqrt());
+            let spec = if lam > 0.0 { 0.5 * (nx * h.0 + ny * h.1).max(0.0).powi(16) } else { 0.0 };
+            let want = [1.0, 0.5, 0.0].map(|b: f64| b * (0.1 + 0.7 * lam) + spec);
+            for k in 0..3 {
+                assert!((f64::from(got[k]) - want[k]).abs() < 1e-5, "{a}: {got:?} vs {want:?}");
+            }
+            let fx = Lighting::<Fx>::new(
+                Fx::from_f32(0.1),
+                Vec3::new(Fx::ONE, Fx::ZERO, Fx::ZERO),
+                Fx::from_f32(0.7),
+            )
+            .with_specular(Fx::from_f32(0.5), 16);
+            let gf =
+                fx.shade(Vec3::from_f32([n.x, n.y, 0.0]), Vec3::from_f32([0.0, 0.0, -4.0]), [Fx::ONE; 3]);
+            let wf = 0.1 + 0.7 * lam + spec;
+            // Fx: each product rounds at 2^-16; 16 squarings and a few products.
+            assert!((f64::from(gf[0].to_f32()) - wf).abs() < 40.0 / 65536.0, "Fx {a}");
+            n_checked += 1;
+        }
+        assert_eq!(n_checked, 400);
+    }
+}

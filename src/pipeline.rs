@@ -1,0 +1,269 @@
+//! The vertex stage: meshes in, screen-space triangles out.
+//!
+//! For each mesh: view-volume culling of the whole mesh by its bounding
+//! sphere (before any vertex work); per triangle the model-view-projection
+//! transform, lighting (flat per face or Gouraud per vertex), homogeneous
+//! clipping ([`crate::clip3d`]: near, far and a guard band, so only `w > 0`
+//! reaches the divide), the perspective divide and viewport transform straight
+//! into snapped [`SubPoint`]s, and back-face culling from the signed area
+//! *after* snapping, so culling and coverage always agree (as in D3D11).
+//! The result goes into a caller-owned `heapless::Vec` of [`ScreenTriangle`]s
+//! (the frame's bins), which [`Renderer::render_3d`](crate::Renderer::render_3d)
+//! draws band by band.
+//!
+//! `T` is the numeric path: `f32` (FPU parts) or [`Fx`](crate::math::Fx)
+//! (16.16 fixed point, parts without an FPU).
+
+use crate::clip3d::{ClipPlanes, ClipVertex, clip_triangle};
+use crate::edge::{Cull, signed_area2};
+use crate::light::Lighting;
+use crate::math::{Mat3, Mat4, Scalar, Vec3, Vec4, transform};
+use crate::mesh::Mesh;
+use crate::raster3d::{ScreenTriangle, ScreenVertex};
+use crate::{Error, Interpolate, MAX_FRAME_DIM, SubPoint};
+
+/// Per-face or per-vertex lighting.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Shade {
+    /// One colour per triangle, lit with the face normal.
+    Flat,
+    /// A colour per vertex, lit with the vertex normals (face normals when the
+    /// mesh has none) and interpolated across the triangle.
+    #[default]
+    Gouraud,
+}
+
+/// What happened to one mesh's triangles.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct MeshStats {
+    /// The whole mesh was outside the view volume (no vertex work done).
+    pub mesh_culled: bool,
+    /// Triangles that crossed a clip plane and were clipped.
+    pub clipped: u32,
+    /// Triangles (after clipping) dropped as back faces.
+    pub back_faces: u32,
+    /// Triangles dropped because they had zero area after snapping.
+    pub degenerate: u32,
+    /// Screen triangles written to the bins.
+    pub emitted: u32,
+}
+
+/// The vertex-stage settings of a frame: camera, viewport, clipping, culling
+/// and lighting. `S` is the subpixel precision of the output.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Pipeline<T: Scalar, const S: u32> {
+    view: Mat4<T>,
+    projection: Mat4<T>,
+    w_ref: T,
+    origin: (i64, i64),
+    size: (u32, u32),
+    /// Clip planes (default: a guard band that keeps every triangle in the
+    /// rasterizer's `i32` fast path, [`ClipPlanes::for_viewport_fast_path`]).
+    pub clip: ClipPlanes,
+    /// Which screen winding to drop; front faces (counter-clockwise seen from
+    /// outside) appear clockwise on screen, so back faces are
+    /// [`Cull::CounterClockwise`], the default.
+    pub cull: Cull,
+    /// Lighting; `None` shows material colours unlit.
+    pub lighting: Option<Lighting<T>>,
+    /// Flat or Gouraud.
+    pub shade: Shade,
+}
+
+impl<T: Scalar, const S: u32> Pipeline<T, S> {
+    /// A pipeline with the given view and projection matrices and a viewport
+    /// of `width × height` pixels at the frame's origin. `w_ref` is a clip `w`
+    /// that no visible vertex goes below (the near distance for a perspective
+    /// projection, 1 for orthographic); it scales the `1/w` values passed to
+    /// perspective-correct interpolation.
+    ///
+    /// Errors: [`Error::InvalidFrameSize`] for a zero or too large viewport,
+    /// [`Error::InvalidParameter`] for `w_ref ≤ 0`.
+    pub fn new(view: Mat4<T>, projection: Mat4<T>, w_ref: T, width: u32, height: u32) -> Result<Self, Error> {
+        if width == 0 || height == 0 || width > MAX_FRAME_DIM || height > MAX_FRAME_DIM {
+            return Err(Error::InvalidFrameSize);
+        }
+        if !w_ref.is_finite() || w_ref <= T::ZERO {
+            return Err(Error::InvalidParameter);
+        }
+        Ok(Pipeline {
+            view,
+            projection,
+            w_ref,
+            origin: (0, 0),
+            size: (width, height),
+            clip: ClipPlanes::for_viewport_fast_path(width, height, S),
+            cull: Cull::CounterClockwise,
+            lighting: None,
+            shade: Shade::Gouraud,
+        })
+    }
+
+    /// A perspective camera: `view` (for example from
+    /// [`transform::look_at`]), vertical field of view `fov_y` in radians and
+    /// near/far distances, with the aspect ratio of the viewport.
+    pub fn perspective(
+        view: Mat4<T>,
+        fov_y: T,
+        near: T,
+        far: T,
+        width: u32,
+        height: u32,
+    ) -> Result<Self, Error> {
+        let aspect = T::from_f32(width as f32 / height.max(1) as f32);
+        let projection = transform::perspective(fov_y, aspect, near, far)?;
+        Self::new(view, projection, near, width, height)
+    }
+
+    /// The same pipeline with the viewport's top-left corner at pixel `(x, y)`.
+    pub fn with_origin(self, x: i32, y: i32) -> Self {
+        Pipeline { origin: (x as i64, y as i64), ..self }
+    }
+
+    /// The same pipeline with lighting.
+    pub fn with_lighting(self, lighting: Lighting<T>) -> Self {
+        Pipeline { lighting: Some(lighting), ..self }
+    }
+
+    /// The view matrix.
+    pub fn view(&self) -> Mat4<T> {
+        self.view
+    }
+
+    /// Transforms, lights, clips, snaps and culls `mesh` placed by `model`,
+    /// with material colour `color`, appending the visible triangles to `bins`.
+    ///
+    /// Errors: [`Error::InvalidMesh`] if an index is out of range;
+    /// [`Error::BufferTooSmall`] if `bins` fills up (the triangles that fit
+    /// are kept); [`Error::InvalidParameter`] if `model` is singular.
+    pub fn draw_mesh<C: Interpolate, const N: usize>(
+        &self,
+        mesh: &Mesh<'_>,
+        model: &Mat4<T>,
+        color: C,
+        bins: &mut heapless::Vec<ScreenTriangle<S>, N>,
+    ) -> Result<MeshStats, Error> {
+        let mut stats = MeshStats::default();
+        let model_view = self.view * *model;
+        let mvp = self.projection * model_view;
+        if !self.sphere_visible(&mvp, mesh.bounding_sphere) {
+            stats.mesh_culled = true;
+            return Ok(stats);
+        }
+        let normal_matrix = model_view.normal_matrix().ok_or(Error::InvalidParameter)?;
+        let max = C::CHANNEL_MAX;
+        let ch = color.to_channels();
+        let base =
+            [0, 1, 2].map(|k| if max[k] == 0 { T::ZERO } else { T::from_f32(ch[k] as f32 / max[k] as f32) });
+        let ctx = VertexCtx { mv: model_view, mvp, nm: normal_matrix, base, lighting: self.lighting };
+
+        for (i, idx) in mesh.indices.iter().enumerate() {
+            let pos = mesh.triangle(i).ok_or(Error::InvalidMesh)?;
+            let flat = self.shade == Shade::Flat || mesh.normals.is_empty();
+            let face_n = if flat { mesh.face_normal(i) } else { None };
+            let corner = |k: usize| {
+                let n = if flat { face_n } else { mesh.normals.get(idx[k] as usize).copied() };
+                ctx.vertex(pos[k], n)
+            };
+            let mut v = [corner(0), corner(1), corner(2)];
+            if self.shade == Shade::Flat {
+                // One lit colour per face: vertex 0 lit with the face normal.
+                v[1].attr = v[0].attr;
+                v[2].attr = v[0].attr;
+            }
+            let poly = clip_triangle(v, self.clip);
+            if poly.vertices().len() != 3 || poly.vertices() != v {
+                stats.clipped += u32::from(!poly.is_empty());
+            }
+            for tri in poly.triangles() {
+                let Some(sv) = self.snap_vertices(tri, max) else {
+                    stats.degenerate += 1;
+                    continue;
+                };
+                let det = signed_area2(sv.map(|v| (v.pos.x() as i64, v.pos.y() as i64)));
+                let culled = match self.cull {
+                    Cull::None => false,
+                    Cull::Clockwise => det > 0,
+                    Cull::CounterClockwise => det < 0,
+                };
+                if det == 0 {
+                    stats.degenerate += 1;
+                } else if culled {
+                    stats.back_faces += 1;
+                } else {
+                    bins.push(ScreenTriangle { v: sv, flat: self.shade == Shade::Flat })
+                        .map_err(|_| Error::BufferTooSmall)?;
+                    stats.emitted += 1;
+                }
+            }
+        }
+        Ok(stats)
+    }
+
+    /// False if the sphere lies entirely outside one plane of the view volume.
+    fn sphere_visible(&self, mvp: &Mat4<T>, (c, r): ([f32; 3], f32)) -> bool {
+        let row = |i: usize| Vec4::new(mvp.cols[0][i], mvp.cols[1][i], mvp.cols[2][i], mvp.cols[3][i]);
+        let (x, y, z, w) = (row(0), row(1), row(2), row(3));
+        let mut planes = [w + x, w - x, w + y, w - y, z, w - z];
+        if !self.clip.far() {
+            planes[5] = planes[4]; // no far plane: test near twice
+        }
+        let centre = Vec4::new(T::from_f32(c[0]), T::from_f32(c[1]), T::from_f32(c[2]), T::ONE);
+        let radius = T::from_f32(r);
+        planes.iter().all(|p| p.dot(centre) >= -(radius * p.xyz().length()))
+    }
+
+    /// Clip space to snapped screen vertices; `None` if a coordinate is out of
+    /// the rasterizer's range (the guard band prevents this) or not finite.
+    fn snap_vertices(&self, v: [ClipVertex<T, 3>; 3], max: [u8; 3]) -> Option<[ScreenVertex<S>; 3]> {
+        let mut out = [ScreenVertex::default(); 3];
+        for (o, cv) in out.iter_mut().zip(v) {
+            let [x, y, z, w] = cv.pos;
+            let px = self.ndc_to_sub(x, w, self.size.0, self.origin.0, false)?;
+            let py = self.ndc_to_sub(y, w, self.size.1, self.origin.1, true)?;
+            *o = ScreenVertex {
+                pos: SubPoint::new(i32::try_from(px).ok()?, i32::try_from(py).ok()?).ok()?,
+                depth: z.div_scaled(w, 1 << 32)?.clamp(0, u32::MAX as i64) as u32,
+                inv_w: self.w_ref.div_scaled(w, 1 << 30)?.clamp(1, u32::MAX as i64) as u32,
+                color: [0, 1, 2].map(|k| cv.attr[k].to_channel(max[k])),
+            };
+        }
+        Some(out)
+    }
+
+    /// `origin + (1 ± ndc)·size/2` in subpixels, `ndc = c/w` (y flipped).
+    fn ndc_to_sub(&self, c: T, w: T, size: u32, origin: i64, flip: bool) -> Option<i64> {
+        let full = (size as i64) << S; // viewport extent in subpixels
+        let c = if flip { -c } else { c };
+        // Halve exactly when possible; only S = 0 with an odd size rounds twice.
+        let t = if full % 2 == 0 { c.div_scaled(w, full / 2)? } else { (c.div_scaled(w, full)? + 1) >> 1 };
+        Some((origin << S) + full / 2 + t)
+    }
+}
+
+/// Per-mesh constants of the vertex computation.
+struct VertexCtx<T: Scalar> {
+    mv: Mat4<T>,
+    mvp: Mat4<T>,
+    nm: Mat3<T>,
+    base: [T; 3],
+    lighting: Option<Lighting<T>>,
+}
+
+impl<T: Scalar> VertexCtx<T> {
+    fn vertex(&self, p: [f32; 3], normal: Option<[f32; 3]>) -> ClipVertex<T, 3> {
+        let p = Vec3::from_f32(p);
+        let clip = self.mvp.transform_point(p);
+        let attr = match (self.lighting, normal) {
+            (Some(l), Some(n)) => {
+                let n_eye = (self.nm * Vec3::from_f32(n)).normalize();
+                let p_eye = self.mv.transform_point(p).xyz();
+                l.shade(n_eye, p_eye, self.base)
+            }
+            // No light, or a degenerate face without a normal: ambient only.
+            (Some(l), None) => self.base.map(|b| b * l.ambient),
+            (None, _) => self.base,
+        };
+        ClipVertex { pos: [clip.x, clip.y, clip.z, clip.w], attr }
+    }
+}
