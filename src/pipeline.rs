@@ -68,6 +68,11 @@ pub struct Pipeline<T: Scalar, const S: u32> {
     pub lighting: Option<Lighting<T>>,
     /// Flat or Gouraud.
     pub shade: Shade,
+    /// Keep only triangles that touch these frame rows (inclusive); `None`
+    /// keeps all. Set per band when the vertex stage runs once per band
+    /// ([`Renderer::render_3d_per_band`](crate::Renderer::render_3d_per_band))
+    /// so the bins only need to hold one band's triangles.
+    pub rows: Option<(i32, i32)>,
 }
 
 impl<T: Scalar, const S: u32> Pipeline<T, S> {
@@ -96,6 +101,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
             cull: Cull::CounterClockwise,
             lighting: None,
             shade: Shade::Gouraud,
+            rows: None,
         })
     }
 
@@ -191,9 +197,12 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
                 } else if culled {
                     stats.back_faces += 1;
                 } else {
-                    bins.push(ScreenTriangle { v: sv, flat: self.shade == Shade::Flat })
-                        .map_err(|_| Error::BufferTooSmall)?;
-                    stats.emitted += 1;
+                    let tri = ScreenTriangle { v: sv, flat: self.shade == Shade::Flat };
+                    let (lo, hi) = tri.rows();
+                    if self.rows.is_none_or(|(y0, y1)| lo <= y1 && hi >= y0) {
+                        bins.push(tri).map_err(|_| Error::BufferTooSmall)?;
+                        stats.emitted += 1;
+                    }
                 }
             }
         }

@@ -109,17 +109,49 @@ impl<C: Interpolate> Renderer<C> {
         M: Interpolation,
     {
         self.render_with(band, target, |view, y0, y1| {
-            let rows = depth.rows_mut((y1 - y0) as usize);
-            for r in rows.iter_mut() {
-                r.fill(F::FAR);
-            }
-            for tri in triangles {
-                let (lo, hi) = tri.rows();
-                if lo < y1 && hi >= y0 {
-                    draw_triangle::<C, F, M, S, W>(tri, view, rows, state);
-                }
-            }
+            draw_band::<C, F, M, S, W, H>(triangles, view, depth, state, y0, y1)
         })
+    }
+
+    /// Like [`Renderer::render_3d`], but runs the vertex stage once per band
+    /// instead of once per frame, for parts whose RAM cannot hold a whole
+    /// frame's bins: for each band `geometry(y0, y1, bins)` must append the
+    /// triangles touching rows `y0..y1` (set [`Pipeline::rows`](crate::pipeline::Pipeline::rows)
+    /// to `Some((y0, y1 − 1))` and call `draw_mesh`); `bins` is cleared before
+    /// each band. Vertex work grows with the number of bands; the image is the
+    /// same as [`Renderer::render_3d`]'s.
+    ///
+    /// Errors as for [`Renderer::render`], plus [`RenderError::Input`] with the
+    /// first error `geometry` returns (the remaining bands are not drawn).
+    #[allow(clippy::too_many_arguments)]
+    pub fn render_3d_per_band<D, F, M, G, const S: u32, const W: usize, const H: usize, const N: usize>(
+        &self,
+        bins: &mut heapless::Vec<ScreenTriangle<S>, N>,
+        mut geometry: G,
+        band: &mut Band<C, W, H>,
+        depth: &mut DepthBand<F, W, H>,
+        state: DepthState,
+        target: &mut D,
+    ) -> Result<(), RenderError<D::Error>>
+    where
+        D: DrawTarget<Color = C>,
+        F: DepthFormat,
+        M: Interpolation,
+        G: FnMut(i32, i32, &mut heapless::Vec<ScreenTriangle<S>, N>) -> Result<(), Error>,
+    {
+        let mut failed = None;
+        self.render_with(band, target, |view, y0, y1| {
+            if failed.is_some() {
+                return;
+            }
+            bins.clear();
+            if let Err(e) = geometry(y0, y1, bins) {
+                failed = Some(e);
+                return;
+            }
+            draw_band::<C, F, M, S, W, H>(bins, view, depth, state, y0, y1);
+        })?;
+        failed.map_or(Ok(()), |e| Err(RenderError::Input(e)))
     }
 
     /// The band loop itself, for custom passes: for each band, clear it to the
@@ -155,5 +187,30 @@ impl<C: Interpolate> Renderer<C> {
             y0 = y1;
         }
         Ok(())
+    }
+}
+
+/// Clears the band's depth to far and draws the triangles touching `y0..y1`.
+fn draw_band<C, F, M, const S: u32, const W: usize, const H: usize>(
+    triangles: &[ScreenTriangle<S>],
+    view: &mut BandView<'_, C, W>,
+    depth: &mut DepthBand<F, W, H>,
+    state: DepthState,
+    y0: i32,
+    y1: i32,
+) where
+    C: Interpolate,
+    F: DepthFormat,
+    M: Interpolation,
+{
+    let rows = depth.rows_mut((y1 - y0) as usize);
+    for r in rows.iter_mut() {
+        r.fill(F::FAR);
+    }
+    for tri in triangles {
+        let (lo, hi) = tri.rows();
+        if lo < y1 && hi >= y0 {
+            draw_triangle::<C, F, M, S, W>(tri, view, rows, state);
+        }
     }
 }

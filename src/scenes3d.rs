@@ -3,10 +3,10 @@
 //! into the torus (interpenetrating, so painter's-algorithm ordering would
 //! fail), in perspective, lit by one directional light.
 //!
-//! The meshes are generated into a caller-owned [`Scene3d`] (no allocation;
-//! [`Scene3d::new`] is `const`, so it can be a `static`), then
-//! [`Scene3d::draw`] runs the vertex stage for a given frame size and animation
-//! angle into the caller's bins.
+//! The meshes are `static` data generated ahead of time from the procedural
+//! generators ([`generate`]), so they cost flash, not RAM. [`Scene3d::draw`]
+//! runs the vertex stage for a given frame size and animation angle into the
+//! caller's bins.
 
 use crate::light::Lighting;
 use crate::math::{Mat4, Scalar, Vec3, transform};
@@ -17,6 +17,8 @@ use crate::mesh::{
 use crate::pipeline::{MeshStats, Pipeline, Shade};
 use crate::raster3d::ScreenTriangle;
 use crate::{Error, Interpolate};
+
+mod meshes;
 
 const SPHERE_SUBDIV: u32 = 2;
 const TORUS_SEGMENTS: (usize, usize) = (28, 14);
@@ -32,7 +34,17 @@ pub const TRIANGLES: usize = ST + TT + CT;
 
 /// Bins large enough for every triangle the standard scene can emit at any
 /// angle (front faces plus clipped fans stay well below this; tested).
-pub const BINS: usize = 1024;
+pub const BINS: usize = 768;
+
+/// Caller-owned storage for generating the standard scene's meshes at run
+/// time (about 20 KB); only [`generate`] needs it. [`Scene3d`] itself draws the
+/// same meshes from flash (`meshes.rs`, written by
+/// `cargo run --example gen_scene_meshes` and checked against [`generate`]).
+pub struct MeshBuffers {
+    sphere: Buffers<SV, ST>,
+    torus: Buffers<TV, TT>,
+    cube: Buffers<CV, CT>,
+}
 
 struct Buffers<const V: usize, const T: usize> {
     positions: [[f32; 3]; V],
@@ -44,53 +56,50 @@ impl<const V: usize, const T: usize> Buffers<V, T> {
     const fn new() -> Self {
         Buffers { positions: [[0.0; 3]; V], normals: [[0.0; 3]; V], indices: [[0; 3]; T] }
     }
-
-    fn mesh(&self, sphere: ([f32; 3], f32)) -> Mesh<'_> {
-        Mesh::new(&self.positions, &self.normals, &self.indices, sphere)
-    }
 }
 
-/// Mesh storage for the standard scene (about 27 KB).
-pub struct Scene3d {
-    sphere: Buffers<SV, ST>,
-    torus: Buffers<TV, TT>,
-    cube: Buffers<CV, CT>,
-    spheres: Option<[([f32; 3], f32); 3]>,
-}
-
-/// Statistics of one [`Scene3d::draw`] call, summed over the meshes.
-pub type Stats = MeshStats;
-
-impl Default for Scene3d {
+impl Default for MeshBuffers {
     fn default() -> Self {
         Self::new()
     }
 }
 
-impl Scene3d {
-    /// Empty storage; the meshes are generated on the first [`Scene3d::draw`].
+impl MeshBuffers {
+    /// Zeroed storage.
     pub const fn new() -> Self {
-        Scene3d { sphere: Buffers::new(), torus: Buffers::new(), cube: Buffers::new(), spheres: None }
+        MeshBuffers { sphere: Buffers::new(), torus: Buffers::new(), cube: Buffers::new() }
+    }
+}
+
+/// Generates the standard scene's sphere, torus and cube into `bufs`.
+pub fn generate(bufs: &mut MeshBuffers) -> Result<[Mesh<'_>; 3], Error> {
+    let s = &mut bufs.sphere;
+    let sphere = icosphere(SPHERE_SUBDIV, &mut s.positions, &mut s.normals, &mut s.indices)?;
+    let t = &mut bufs.torus;
+    let (m, n) = TORUS_SEGMENTS;
+    let torus = torus(m, n, 1.6, 0.45, &mut t.positions, &mut t.normals, &mut t.indices)?;
+    let c = &mut bufs.cube;
+    let cube = cube(&mut c.positions, &mut c.normals, &mut c.indices)?;
+    Ok([sphere, torus, cube])
+}
+
+/// The standard 3D scene. Its meshes are `static` (flash on a
+/// microcontroller): the type holds no data.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct Scene3d;
+
+/// Statistics of one [`Scene3d::draw`] call, summed over the meshes.
+pub type Stats = MeshStats;
+
+impl Scene3d {
+    /// The scene.
+    pub const fn new() -> Self {
+        Scene3d
     }
 
-    /// The three meshes, generated on first use (once; later frames reuse them).
-    pub fn meshes(&mut self) -> Result<[Mesh<'_>; 3], Error> {
-        let spheres = match self.spheres {
-            Some(b) => b,
-            None => {
-                let s = &mut self.sphere;
-                let a = icosphere(SPHERE_SUBDIV, &mut s.positions, &mut s.normals, &mut s.indices)?;
-                let t = &mut self.torus;
-                let (m, n) = TORUS_SEGMENTS;
-                let b = torus(m, n, 1.6, 0.45, &mut t.positions, &mut t.normals, &mut t.indices)?;
-                let c = &mut self.cube;
-                let c = cube(&mut c.positions, &mut c.normals, &mut c.indices)?;
-                let b = [a.bounding_sphere, b.bounding_sphere, c.bounding_sphere];
-                self.spheres = Some(b);
-                b
-            }
-        };
-        Ok([self.sphere.mesh(spheres[0]), self.torus.mesh(spheres[1]), self.cube.mesh(spheres[2])])
+    /// The three meshes: sphere, torus, cube.
+    pub fn meshes(&self) -> [Mesh<'static>; 3] {
+        [meshes::SPHERE, meshes::TORUS, meshes::CUBE]
     }
 
     /// The camera and lighting of the standard scene for a `width × height`
@@ -98,7 +107,7 @@ impl Scene3d {
     pub fn pipeline<T: Scalar, const S: u32>(width: u32, height: u32) -> Result<Pipeline<T, S>, Error> {
         let f = T::from_f32;
         let view = transform::look_at(
-            Vec3::new(f(0.0), f(2.2), f(6.5)),
+            Vec3::new(f(0.0), f(1.9), f(5.6)),
             Vec3::new(f(0.0), f(0.0), f(0.0)),
             Vec3::new(f(0.0), f(1.0), f(0.0)),
         )?;
@@ -112,7 +121,7 @@ impl Scene3d {
     /// Runs the vertex stage of the standard scene at animation angle
     /// `angle` (radians) into `bins`, with colours of type `C`.
     pub fn draw<T: Scalar, C: Interpolate, const S: u32, const N: usize>(
-        &mut self,
+        &self,
         pipeline: &Pipeline<T, S>,
         angle: f32,
         bins: &mut heapless::Vec<ScreenTriangle<S>, N>,
@@ -124,18 +133,18 @@ impl Scene3d {
         };
         let models: [(Mat4<T>, C); 3] = [
             (
-                transform::rotation_y(f(angle)) * transform::scaling(Vec3::new(f(1.25), f(1.25), f(1.25))),
+                transform::rotation_y(f(angle)) * transform::scaling(Vec3::new(f(1.45), f(1.45), f(1.45))),
                 color([0.9, 0.35, 0.2]),
             ),
-            (transform::rotation_y(f(angle * 0.5)) * transform::rotation_x(f(0.9)), color([0.25, 0.6, 0.95])),
+            (transform::rotation_y(f(angle * 0.5)) * transform::rotation_x(f(0.45)), color([0.25, 0.6, 0.95])),
             (
-                transform::translation(Vec3::new(f(1.6), f(-0.2), f(0.4)))
+                transform::translation(Vec3::new(f(1.05), f(-0.5), f(1.25)))
                     * transform::rotation_y(f(-angle))
-                    * transform::scaling(Vec3::new(f(0.6), f(0.6), f(0.6))),
+                    * transform::scaling(Vec3::new(f(0.55), f(0.55), f(0.55))),
                 color([0.95, 0.85, 0.3]),
             ),
         ];
-        let meshes = self.meshes()?;
+        let meshes = self.meshes();
         let mut total = Stats::default();
         for (mesh, (model, c)) in meshes.iter().zip(models) {
             let s = pipeline.draw_mesh(mesh, &model, c, bins)?;
@@ -145,5 +154,43 @@ impl Scene3d {
             total.emitted += s.emitted;
         }
         Ok(total)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    extern crate std;
+    use super::*;
+    use embedded_graphics_core::pixelcolor::Rgb565;
+
+    #[test]
+    fn flash_meshes_equal_the_generators_bit_for_bit() {
+        let mut bufs = std::boxed::Box::new(MeshBuffers::new());
+        let generated = generate(&mut bufs).unwrap();
+        for (g, s) in generated.iter().zip(Scene3d.meshes()) {
+            assert_eq!(g.positions, s.positions);
+            assert_eq!(g.normals, s.normals);
+            assert_eq!(g.indices, s.indices);
+            assert_eq!(g.bounding_sphere, s.bounding_sphere);
+            s.validate().unwrap();
+        }
+        assert_eq!(generated.iter().map(|m| m.triangle_count()).sum::<usize>(), TRIANGLES);
+        const { assert!(TRIANGLES >= 1000) };
+    }
+
+    #[test]
+    fn bins_hold_every_angle_for_both_vertex_paths() {
+        let p = Scene3d::pipeline::<f32, 4>(320, 240).unwrap();
+        let q = Scene3d::pipeline::<crate::math::Fx, 4>(320, 240).unwrap();
+        let mut most = 0;
+        for i in 0..96 {
+            let angle = i as f32 * core::f32::consts::TAU / 96.0;
+            let mut bins = heapless::Vec::<_, BINS>::new();
+            most = most.max(Scene3d.draw::<f32, Rgb565, 4, BINS>(&p, angle, &mut bins).unwrap().emitted);
+            bins.clear();
+            most = most.max(Scene3d.draw::<_, Rgb565, 4, BINS>(&q, angle, &mut bins).unwrap().emitted);
+        }
+        std::println!("standard scene: at most {most} triangles emitted over 96 angles (bins: {BINS})");
+        assert!(most as usize <= BINS && most > 400);
     }
 }

@@ -11,6 +11,7 @@
 //! - `gouraud`: Gouraud colour vs an `f64` barycentric reference.
 //! - `bands`: identical images for every band height; one `fill_contiguous` per band.
 //! - `mock_display`: embedded-graphics `MockDisplay` pattern tests (overdraw panics).
+//! - `per_band`: the per-band vertex stage draws what the per-frame one draws.
 //! - `framebuffer`: a recording host `DrawTarget` used by the suites above.
 
 mod bands;
@@ -18,6 +19,7 @@ mod framebuffer;
 mod gouraud;
 mod lines;
 mod mock_display;
+mod per_band;
 mod reference;
 mod triangles_exact;
 mod triangles_float;

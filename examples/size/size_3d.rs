@@ -1,0 +1,49 @@
+//! The same program with the standard 3D scene: vertex stage, clipping,
+//! 16-bit depth, perspective-correct colour. Built by `scripts/code-size.sh`.
+
+use core::hint::black_box;
+use embedded_graphics_core::pixelcolor::Rgb565;
+use embedded_graphics_core::prelude::*;
+use embedded_graphics_core::primitives::Rectangle;
+use microraster::depth::{Depth16, DepthBand, DepthState};
+use microraster::raster3d::PerspectiveCorrect;
+use microraster::scenes3d::{BINS, Scene3d};
+use microraster::{Band, Renderer};
+
+/// A target that only checksums what it receives.
+struct Sink(u32);
+impl OriginDimensions for Sink {
+    fn size(&self) -> Size {
+        Size::new(320, 240)
+    }
+}
+impl DrawTarget for Sink {
+    type Color = Rgb565;
+    type Error = core::convert::Infallible;
+    fn draw_iter<I: IntoIterator<Item = Pixel<Rgb565>>>(&mut self, it: I) -> Result<(), Self::Error> {
+        it.into_iter().for_each(|Pixel(_, c)| self.0 = self.0.rotate_left(5) ^ c.into_storage() as u32);
+        Ok(())
+    }
+    fn fill_contiguous<I: IntoIterator<Item = Rgb565>>(&mut self, _: &Rectangle, c: I) -> Result<(), Self::Error> {
+        c.into_iter().for_each(|c| self.0 = self.0.rotate_left(5) ^ c.into_storage() as u32);
+        Ok(())
+    }
+}
+
+fn main() {
+    let scene = Scene3d::new();
+    let Ok(pipeline) = Scene3d::pipeline::<f32, 4>(320, 240) else { return };
+    let mut bins = Box::new(heapless::Vec::<_, BINS>::new());
+    let _ = scene.draw::<f32, Rgb565, 4, BINS>(&pipeline, black_box(0.6), &mut bins);
+    let mut band = Band::<Rgb565, 320, 16>::new(Rgb565::BLACK);
+    let mut depth = DepthBand::<Depth16, 320, 16>::new();
+    let mut sink = Sink(0);
+    let _ = Renderer::new(240, Rgb565::BLACK).render_3d::<_, _, PerspectiveCorrect, 4, 320, 16>(
+        black_box(&bins),
+        &mut band,
+        &mut depth,
+        DepthState::LESS_WRITE,
+        &mut sink,
+    );
+    println!("{:08x}", black_box(sink.0));
+}

@@ -1,0 +1,34 @@
+#!/usr/bin/env bash
+# Shows that a scene pays only for what it uses: builds a 2D-only program and
+# the same program with the standard 3D scene (examples/size/), then lists the
+# microraster code each one links, by module. Run: bash scripts/code-size.sh
+set -euo pipefail
+cd "$(dirname "$0")/.."
+cargo build --quiet --release --example size_2d --example size_3d
+
+sizes() { # bytes of microraster code per module in binary $1
+  nm -C --size-sort -S "target/release/examples/$1" | grep ' microraster::' | while read -r _ size _ name; do
+    module=${name#microraster::}
+    module=${module%%::*}
+    module=${module%%<*}
+    echo "$module $((16#$size))"
+  done | sort | awk '{s[$1]+=$2} END {for (m in s) print m, s[m]}' | sort
+}
+
+sizes size_2d > target/size_2d.txt
+sizes size_3d > target/size_3d.txt
+echo "| module | 2D-only build (bytes of code and static data) | 3D build (bytes) |"
+echo "|---|---|---|"
+join -a1 -a2 -e 0 -o 0,1.2,2.2 target/size_2d.txt target/size_3d.txt | while read -r m a b; do
+  echo "| $m | $a | $b |"
+done
+total() { awk '{s+=$2} END {print s+0}' "$1"; }
+echo "| **total** | $(total target/size_2d.txt) | $(total target/size_3d.txt) |"
+for m in clip3d depth raster3d pipeline; do
+  if grep -q "^$m " target/size_2d.txt; then
+    echo "FAIL: the 2D-only build links microraster::$m" >&2
+    exit 1
+  fi
+done
+echo
+echo "The 2D-only build links no clip3d, depth, raster3d or pipeline code (checked)."

@@ -1,0 +1,82 @@
+//! The per-band vertex stage (for parts that cannot hold a frame's bins)
+//! draws exactly what the per-frame one draws.
+
+use crate::framebuffer::Framebuffer;
+use embedded_graphics_core::pixelcolor::Rgb565;
+use embedded_graphics_core::prelude::RgbColor;
+use microraster::depth::{Depth16, DepthBand, DepthState};
+use microraster::math::{Fx, Scalar};
+use microraster::raster3d::{Affine, PerspectiveCorrect};
+use microraster::scenes3d::{BINS, Scene3d};
+use microraster::{Band, Renderer};
+
+const W: usize = 160;
+const H: u32 = 120;
+
+fn per_frame<T: Scalar>(angle: f32) -> Vec<Rgb565> {
+    let pipeline = Scene3d::pipeline::<T, 4>(W as u32, H).unwrap();
+    let mut bins = heapless::Vec::<_, BINS>::new();
+    Scene3d.draw::<T, Rgb565, 4, BINS>(&pipeline, angle, &mut bins).unwrap();
+    let mut fb = Framebuffer::new(W as u32, H, Rgb565::BLACK);
+    let (mut band, mut depth) = (Band::<Rgb565, W, 8>::new(Rgb565::BLACK), DepthBand::<Depth16, W, 8>::new());
+    Renderer::new(H, Rgb565::BLACK)
+        .render_3d::<_, _, PerspectiveCorrect, 4, W, 8>(&bins, &mut band, &mut depth, DepthState::LESS_WRITE, &mut fb)
+        .unwrap();
+    fb.pixels
+}
+
+fn per_band<T: Scalar, const N: usize>(angle: f32) -> (Vec<Rgb565>, usize) {
+    let mut pipeline = Scene3d::pipeline::<T, 4>(W as u32, H).unwrap();
+    let mut bins = heapless::Vec::<_, N>::new();
+    let mut fb = Framebuffer::new(W as u32, H, Rgb565::BLACK);
+    let (mut band, mut depth) = (Band::<Rgb565, W, 8>::new(Rgb565::BLACK), DepthBand::<Depth16, W, 8>::new());
+    let mut most = 0;
+    Renderer::new(H, Rgb565::BLACK)
+        .render_3d_per_band::<_, _, PerspectiveCorrect, _, 4, W, 8, N>(
+            &mut bins,
+            |y0, y1, bins| {
+                pipeline.rows = Some((y0, y1 - 1));
+                Scene3d.draw::<T, Rgb565, 4, N>(&pipeline, angle, bins)?;
+                most = most.max(bins.len());
+                Ok(())
+            },
+            &mut band,
+            &mut depth,
+            DepthState::LESS_WRITE,
+            &mut fb,
+        )
+        .unwrap();
+    (fb.pixels, most)
+}
+
+#[test]
+fn per_band_vertex_stage_matches_per_frame() {
+    let mut frames = 0;
+    for i in 0..6 {
+        let angle = i as f32 * 1.1;
+        let (img, most) = per_band::<f32, 256>(angle);
+        assert_eq!(img, per_frame::<f32>(angle), "f32, angle {angle}");
+        let (img, most_fx) = per_band::<Fx, 256>(angle);
+        assert_eq!(img, per_frame::<Fx>(angle), "Fx, angle {angle}");
+        println!("angle {angle:.1}: at most {most} (f32) / {most_fx} (Fx) triangles in one 8-row band");
+        frames += 2;
+    }
+    assert_eq!(frames, 12);
+}
+
+#[test]
+fn per_band_reports_full_bins_as_an_error() {
+    let pipeline = Scene3d::pipeline::<f32, 4>(W as u32, H).unwrap();
+    let mut bins = heapless::Vec::<_, 4>::new();
+    let mut fb = Framebuffer::new(W as u32, H, Rgb565::BLACK);
+    let (mut band, mut depth) = (Band::<Rgb565, W, 8>::new(Rgb565::BLACK), DepthBand::<Depth16, W, 8>::new());
+    let r = Renderer::new(H, Rgb565::BLACK).render_3d_per_band::<_, _, Affine, _, 4, W, 8, 4>(
+        &mut bins,
+        |_, _, bins| Scene3d.draw::<f32, Rgb565, 4, 4>(&pipeline, 0.3, bins).map(|_| ()),
+        &mut band,
+        &mut depth,
+        DepthState::LESS_WRITE,
+        &mut fb,
+    );
+    assert_eq!(r, Err(microraster::RenderError::Input(microraster::Error::BufferTooSmall)));
+}
