@@ -361,8 +361,9 @@ impl<F: DepthFormat, const W: usize, const H: usize> DepthBand<F, W, H> {
         self.fill(rows, F::from_u32(z));
     }
 
-    /// The first `rows` rows (at most `H`).
-    pub(crate) fn rows_mut(&mut self, rows: usize) -> &mut [[F::Storage; W]] {
+    /// The first `rows` rows (at most `H`) for writing, as
+    /// [`draw_triangle`](crate::raster3d::draw_triangle) takes them.
+    pub fn rows_mut(&mut self, rows: usize) -> &mut [[F::Storage; W]] {
         &mut self.rows[..rows.min(H)]
     }
 

@@ -60,9 +60,9 @@ pub struct Pipeline<T: Scalar, const S: u32> {
     /// Clip planes (default: a guard band that keeps every triangle in the
     /// rasterizer's `i32` fast path, [`ClipPlanes::for_viewport_fast_path`]).
     pub clip: ClipPlanes,
-    /// Which screen winding to drop; front faces (counter-clockwise seen from
-    /// outside) appear clockwise on screen, so back faces are
-    /// [`Cull::CounterClockwise`], the default.
+    /// Which screen winding to drop. Front faces (counter-clockwise seen from
+    /// outside) still run counter-clockwise as seen on screen, so back faces
+    /// are the clockwise ones: the default is [`Cull::Clockwise`].
     pub cull: Cull,
     /// Lighting; `None` shows material colours unlit.
     pub lighting: Option<Lighting<T>>,
@@ -98,7 +98,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
             origin: (0, 0),
             size: (width, height),
             clip: ClipPlanes::for_viewport_fast_path(width, height, S),
-            cull: Cull::CounterClockwise,
+            cull: Cull::Clockwise,
             lighting: None,
             shade: Shade::Gouraud,
             rows: None,

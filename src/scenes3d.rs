@@ -34,7 +34,7 @@ pub const TRIANGLES: usize = ST + TT + CT;
 
 /// Bins large enough for every triangle the standard scene can emit at any
 /// angle (front faces plus clipped fans stay well below this; tested).
-pub const BINS: usize = 768;
+pub const BINS: usize = 576;
 
 /// Caller-owned storage for generating the standard scene's meshes at run
 /// time (about 20 KB); only [`generate`] needs it. [`Scene3d`] itself draws the
@@ -136,7 +136,10 @@ impl Scene3d {
                 transform::rotation_y(f(angle)) * transform::scaling(Vec3::new(f(1.45), f(1.45), f(1.45))),
                 color([0.9, 0.35, 0.2]),
             ),
-            (transform::rotation_y(f(angle * 0.5)) * transform::rotation_x(f(0.45)), color([0.25, 0.6, 0.95])),
+            (
+                transform::rotation_y(f(angle * 0.5)) * transform::rotation_x(f(0.45)),
+                color([0.25, 0.6, 0.95]),
+            ),
             (
                 transform::translation(Vec3::new(f(1.05), f(-0.5), f(1.25)))
                     * transform::rotation_y(f(-angle))

@@ -1,5 +1,6 @@
-//! Host simulator: renders the standard scenes (`microraster::scenes`) with
-//! the band renderer into an in-memory display and writes them as PNGs.
+//! Host simulator: renders the standard scenes (`microraster::scenes` and,
+//! in [`scene3d`], `microraster::scenes3d`) with the band renderer into an
+//! in-memory display and writes them as PNGs.
 //!
 //! ```text
 //! cargo run --example demo [-- <out_dir>]     # default out/
@@ -14,6 +15,8 @@ use microraster::{Band, Primitive, Renderer, SubPoint, scenes};
 use std::convert::Infallible;
 use std::error::Error;
 use std::path::{Path, PathBuf};
+
+mod scene3d;
 
 /// Subpixel bits: 1/16 px.
 const S: u32 = 4;
@@ -76,7 +79,8 @@ fn main() -> Result<()> {
         Band::<Rgb565, 320, BAND_ROWS>::BYTES,
         bytes(240),
     );
-    Ok(())
+
+    scene3d::run(&out)
 }
 
 /// Runs a scene for a `W × height` frame into a fixed-capacity list.
