@@ -4,7 +4,7 @@
 //! `src/scenes3d.rs` checks the file against the generators bit for bit.
 //!
 //! ```text
-//! cargo run --example gen_scene_meshes > src/scenes3d/meshes.rs
+//! cargo run --example gen_scene_meshes > src/scenes3d/meshes.rs && rustfmt src/scenes3d/meshes.rs
 //! ```
 
 #[path = "obj2rs/emit.rs"]
@@ -14,7 +14,7 @@ mod emit;
 #[allow(dead_code)]
 mod parse;
 
-use microraster::scenes3d::{generate, MeshBuffers};
+use microraster::scenes3d::{MeshBuffers, generate};
 
 fn main() -> Result<(), String> {
     let mut bufs = MeshBuffers::new();

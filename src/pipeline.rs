@@ -232,8 +232,10 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
             let py = self.ndc_to_sub(y, w, self.size.1, self.origin.1, true)?;
             *o = ScreenVertex {
                 pos: SubPoint::new(i32::try_from(px).ok()?, i32::try_from(py).ok()?).ok()?,
-                depth: z.div_scaled(w, 1 << 32)?.clamp(0, u32::MAX as i64) as u32,
-                inv_w: self.w_ref.div_scaled(w, 1 << 30)?.clamp(1, u32::MAX as i64) as u32,
+                depth: z.div_scaled(w, u32::MAX as i64)?.clamp(0, u32::MAX as i64) as u32,
+                // Only ratios of 1/w matter; a vertex nearer than w_ref/4 (which
+                // the w_ref contract excludes) saturates rather than vanishing.
+                inv_w: self.w_ref.div_scaled(w, 1 << 30).unwrap_or(i64::MAX).clamp(1, u32::MAX as i64) as u32,
                 color: [0, 1, 2].map(|k| cv.attr[k].to_channel(max[k])),
             };
         }

@@ -43,7 +43,8 @@ const Q_BITS: u32 = 23;
 pub struct ScreenVertex<const S: u32> {
     /// Snapped screen position.
     pub pos: SubPoint<S>,
-    /// Depth `z/w ∈ [0, 1]` as `round(z/w · 2^32)`, saturated at `u32::MAX`.
+    /// Depth `z/w ∈ [0, 1]` as `round(z/w · (2^32 − 1))`: 0 at the near plane,
+    /// `u32::MAX` at the far plane.
     pub depth: u32,
     /// `1/w` up to a factor common to the frame (the pipeline uses
     /// `2^30 · n / w` with `n` the near distance); only ratios matter.
@@ -118,9 +119,9 @@ pub fn draw_triangle<C, F, M, const S: u32, const W: usize>(
     let plane = |values: [i64; 3]| Plane::new(&frame, values, rx, ry);
     let y0 = color.y0();
 
-    // Depth plane, in 2^-DEPTH_FRAC depth steps: d·MAX·2^16 = (depth·MAX) >> 16.
+    // Depth plane, in 2^-DEPTH_FRAC depth steps.
     let zplane = if F::ENABLED {
-        match plane(tri.v.map(|v| ((v.depth as u64 * F::MAX as u64) >> (32 - DEPTH_FRAC)) as i64)) {
+        match plane(tri.v.map(|v| depth_steps(v.depth, F::MAX))) {
             Some(p) => Some(p),
             None => return,
         }
@@ -161,6 +162,16 @@ pub fn draw_triangle<C, F, M, const S: u32, const W: usize>(
             }
         }
     }
+}
+
+/// `depth / (2^32 − 1) · max · 2^DEPTH_FRAC`: a vertex depth in depth steps
+/// of a format with largest value `max`, so 0 → 0 and `u32::MAX` → `max`
+/// exactly. Division by `2^32 − 1` as the series `y·2^-32·(1 + 2^-32 + 2^-64)`
+/// (shifts and adds only; the truncated terms are below one unit).
+fn depth_steps(depth: u32, max: u32) -> i64 {
+    let y = (depth as u128 * max as u128) << DEPTH_FRAC;
+    // Rounding up by one unit makes u32::MAX land on max·2^16 exactly.
+    (((y + (y >> 32) + (y >> 64)) >> 32) + 1).min((max as u128) << DEPTH_FRAC) as i64
 }
 
 /// Colour set-up for one triangle.
@@ -251,6 +262,29 @@ impl<M: Interpolation> ShadeSpan<M> {
         if self.flat.is_none() {
             for (acc, step) in self.acc.iter_mut().zip(self.step) {
                 *acc = acc.wrapping_add(step);
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn depth_steps_maps_ends_exactly_and_is_monotonic() {
+        for max in [0xFF, 0xFFFF, 0xFF_FFFF, u32::MAX] {
+            assert_eq!(depth_steps(0, max), 1.min((max as i64) << DEPTH_FRAC));
+            assert_eq!(depth_steps(u32::MAX, max), (max as i64) << DEPTH_FRAC);
+            let mut last = 0;
+            for i in 0..=4096u64 {
+                let d = (i * (u32::MAX as u64) / 4096) as u32;
+                let v = depth_steps(d, max);
+                // Exact value d·max·2^16/(2^32−1), within one unit (plus the +1).
+                let exact = (d as f64) * (max as f64) * 65536.0 / (u32::MAX as f64);
+                assert!((v as f64 - exact).abs() <= 2.0 + exact * 1e-15, "{d} {max}: {v} vs {exact}");
+                assert!(v >= last);
+                last = v;
             }
         }
     }

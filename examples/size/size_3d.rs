@@ -24,7 +24,11 @@ impl DrawTarget for Sink {
         it.into_iter().for_each(|Pixel(_, c)| self.0 = self.0.rotate_left(5) ^ c.into_storage() as u32);
         Ok(())
     }
-    fn fill_contiguous<I: IntoIterator<Item = Rgb565>>(&mut self, _: &Rectangle, c: I) -> Result<(), Self::Error> {
+    fn fill_contiguous<I: IntoIterator<Item = Rgb565>>(
+        &mut self,
+        _: &Rectangle,
+        c: I,
+    ) -> Result<(), Self::Error> {
         c.into_iter().for_each(|c| self.0 = self.0.rotate_left(5) ^ c.into_storage() as u32);
         Ok(())
     }

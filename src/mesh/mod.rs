@@ -58,8 +58,12 @@ pub const SPHERE_TOLERANCE: f32 = 1.0e-5;
 ///
 /// The fields are public so meshes can be built in any way; the constructor is
 /// a `const fn` so a mesh can be a `static`. Nothing is checked on
-/// construction: the 3D pipeline calls [`validate`](Mesh::validate), which
-/// rejects any mesh that breaks the invariants documented on the fields.
+/// construction. [`validate`](Mesh::validate) checks every invariant
+/// documented on the fields; call it once (say, at start-up) for meshes from
+/// untrusted sources. The 3D pipeline does not re-validate every frame, but it
+/// never indexes out of range: a bad index is [`Error::InvalidMesh`], a
+/// missing normal lights the vertex with ambient light only, and a bounding
+/// sphere that is too small can only cull a mesh too early.
 ///
 /// ```
 /// use microraster::mesh::{Mesh, bounding_sphere};

@@ -15,13 +15,21 @@
 //! - `framebuffer`: a recording host `DrawTarget` used by the suites above.
 
 mod bands;
+mod clip3d_raster;
+mod clip3d_ref;
+mod depth3d;
 mod framebuffer;
 mod gouraud;
+mod interpenetrate;
 mod lines;
 mod mock_display;
 mod per_band;
+mod perspective;
+mod pipeline3d;
+mod ref3d;
 mod reference;
 mod triangles_exact;
 mod triangles_float;
 mod triangles_skia;
 mod watertight;
+mod zfight;

@@ -20,7 +20,13 @@ fn per_frame<T: Scalar>(angle: f32) -> Vec<Rgb565> {
     let mut fb = Framebuffer::new(W as u32, H, Rgb565::BLACK);
     let (mut band, mut depth) = (Band::<Rgb565, W, 8>::new(Rgb565::BLACK), DepthBand::<Depth16, W, 8>::new());
     Renderer::new(H, Rgb565::BLACK)
-        .render_3d::<_, _, PerspectiveCorrect, 4, W, 8>(&bins, &mut band, &mut depth, DepthState::LESS_WRITE, &mut fb)
+        .render_3d::<_, _, PerspectiveCorrect, 4, W, 8>(
+            &bins,
+            &mut band,
+            &mut depth,
+            DepthState::LESS_WRITE,
+            &mut fb,
+        )
         .unwrap();
     fb.pixels
 }
