@@ -37,7 +37,7 @@ pub(crate) struct PlaneFrame {
 }
 
 /// One interpolated value, in the caller's fixed-point units.
-#[derive(Debug, Clone, Copy)]
+#[derive(Debug, Clone, Copy, Default)]
 pub(crate) struct Plane {
     base: i64,
     gx: i64,

@@ -168,10 +168,23 @@ pub fn draw_triangle<C, F, M, const S: u32, const W: usize>(
 /// of a format with largest value `max`, so 0 → 0 and `u32::MAX` → `max`
 /// exactly. Division by `2^32 − 1` as the series `y·2^-32·(1 + 2^-32 + 2^-64)`
 /// (shifts and adds only; the truncated terms are below one unit).
-fn depth_steps(depth: u32, max: u32) -> i64 {
+pub(crate) fn depth_steps(depth: u32, max: u32) -> i64 {
     let y = (depth as u128 * max as u128) << DEPTH_FRAC;
     // Rounding up by one unit makes u32::MAX land on max·2^16 exactly.
     (((y + (y >> 32) + (y >> 64)) >> 32) + 1).min((max as u128) << DEPTH_FRAC) as i64
+}
+
+/// The triangle's `1/w` values scaled by a common power of two so the largest
+/// has `bits` bits (rounding only if a value must shift right): ratios are all
+/// that matter, and the products with interpolated values stay bounded.
+pub(crate) fn normalised_q<const S: u32>(tri: &ScreenTriangle<S>, bits: u32) -> [i64; 3] {
+    let qmax = tri.v.iter().map(|v| v.inv_w).max().unwrap_or(0).max(1);
+    let shift = bits as i32 - (32 - qmax.leading_zeros()) as i32;
+    tri.v.map(|v| {
+        let q = v.inv_w as u64;
+        let q = if shift >= 0 { q << shift } else { (q + (1 << (-shift - 1))) >> -shift };
+        q.max(1) as i64
+    })
 }
 
 /// Colour set-up for one triangle.
@@ -199,14 +212,8 @@ impl<M: Interpolation> Shading<M> {
         }
         let mut planes = [None; 4];
         if M::PERSPECTIVE {
-            // Normalise q so the largest vertex value has Q_BITS bits: ratios
-            // are all that matter, and c·q then fits u32 (c ≤ 255).
-            let qmax = tri.v.iter().map(|v| v.inv_w).max().unwrap_or(0).max(1);
-            let shift = Q_BITS as i32 - (32 - qmax.leading_zeros()) as i32;
-            let q = tri.v.map(|v| {
-                let q = if shift >= 0 { (v.inv_w as u64) << shift } else { (v.inv_w as u64) >> -shift };
-                q.max(1) as i64
-            });
+            // 23 bits keep c·q within u32 for a channel c ≤ 255.
+            let q = normalised_q(tri, Q_BITS);
             planes[3] = plane(q.map(|q| q << DEPTH_FRAC));
             for (k, p) in planes.iter_mut().take(3).enumerate() {
                 if max[k] > 0 {

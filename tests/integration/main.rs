@@ -12,6 +12,8 @@
 //! - `bands`: identical images for every band height; one `fill_contiguous` per band.
 //! - `mock_display`: embedded-graphics `MockDisplay` pattern tests (overdraw panics).
 //! - `per_band`: the per-band vertex stage draws what the per-frame one draws.
+//! - `varyings`: per-vertex value vectors vs f64; the fragment hook's coverage.
+//! - 3D: `depth3d`, `zfight`, `perspective`, `clip3d_raster`, `interpenetrate`, `pipeline3d` (references in `ref3d`, `clip3d_ref`).
 //! - `framebuffer`: a recording host `DrawTarget` used by the suites above.
 
 mod bands;
@@ -31,5 +33,6 @@ mod reference;
 mod triangles_exact;
 mod triangles_float;
 mod triangles_skia;
+mod varyings;
 mod watertight;
 mod zfight;

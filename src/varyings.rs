@@ -1,0 +1,168 @@
+//! Varyings: a small fixed-size vector of per-vertex values (normals, texture
+//! coordinates, …) interpolated over a screen triangle, affine or
+//! perspective-correct, and a depth-tested fragment hook to consume them.
+//!
+//! [`draw_triangle`](crate::raster3d::draw_triangle) shades with per-vertex
+//! colour only; [`Varyings`] and [`draw_fragments`] are for custom passes
+//! (inside [`Renderer::render_with`](crate::Renderer::render_with)), and cost
+//! nothing when unused.
+//!
+//! # Range and error
+//! Values are integers (any fixed-point scale the caller chooses) with
+//! `|v| ≤ 2^23`. Planes are exact to within 2^13 of their own units (`attr`).
+//! * Affine: planes in units of 2^-20 of a value unit, so the rounded result
+//!   is within **½ + 2^-7** of the screen-linear value.
+//! * Perspective-correct: `q = 1/w` (normalised per triangle so the largest
+//!   has 30 bits, exactly unless a vertex is nearer than `w_ref`) is a plane
+//!   in units of 2^-16 and `v·q` one in units of 2^-3; each pixel divides
+//!   `v = (v·q)/q`. With `Q` the pixel's normalised `q` (at least
+//!   `2^29 · w_min/w_max` over the triangle's vertices), the result is within
+//!   **½ + (2^10 + |v|/8)/(Q − 1/8)** of the exact value: for a triangle whose
+//!   depth range is `w_max/w_min ≤ 16`, within ½ + 0.04.
+
+use crate::attr::{Plane, PlaneFrame};
+use crate::band::BandView;
+use crate::depth::{DepthFormat, DepthState};
+use crate::edge::{Cull, TriangleSpans};
+use crate::primitive::reference_pixel;
+use crate::raster3d::{DEPTH_FRAC, Interpolation, ScreenTriangle, depth_steps, normalised_q};
+use crate::{Error, Interpolate};
+
+/// Largest accepted magnitude of a varying (2^23).
+pub const MAX_VARYING: i32 = 1 << 23;
+
+const AFFINE_FRAC: u32 = 20;
+const PERSP_FRAC: u32 = 3;
+const Q_BITS: u32 = 30;
+
+/// `A` values interpolated over one triangle.
+///
+/// ```
+/// use microraster::raster3d::{Affine, ScreenTriangle, ScreenVertex};
+/// use microraster::varyings::Varyings;
+/// use microraster::SubPoint;
+/// let v = |x, y| ScreenVertex { pos: SubPoint::<4>::from_pixels(x, y).unwrap(), inv_w: 1 << 30, ..Default::default() };
+/// let tri = ScreenTriangle { v: [v(0, 0), v(16, 0), v(0, 16)], flat: false };
+/// // u runs 0 → 1600 from left to right.
+/// let uv = Varyings::<2>::new::<Affine, 4>(&tri, [[0, 0], [1600, 0], [0, 1600]])?.unwrap();
+/// assert_eq!(uv.at(7, 0)[0], 750); // centre x = 7.5 px → 7.5 · 100
+/// # Ok::<(), microraster::Error>(())
+/// ```
+#[derive(Debug, Clone, Copy)]
+pub struct Varyings<const A: usize> {
+    planes: [Plane; A],
+    q: Option<Plane>,
+}
+
+impl<const A: usize> Varyings<A> {
+    /// Planes through `values[i]` at vertex `i` of `tri`, interpolated as `M`
+    /// says. `Ok(None)` for a zero-area triangle;
+    /// [`Error::CoordinateOutOfRange`] for a value beyond [`MAX_VARYING`].
+    pub fn new<M: Interpolation, const S: u32>(
+        tri: &ScreenTriangle<S>,
+        values: [[i32; A]; 3],
+    ) -> Result<Option<Self>, Error> {
+        if values.iter().flatten().any(|v| v.unsigned_abs() > MAX_VARYING as u32) {
+            return Err(Error::CoordinateOutOfRange);
+        }
+        let frame =
+            PlaneFrame { v: tri.v.map(|v| (2 * v.pos.x() as i64, 2 * v.pos.y() as i64)), shift: S + 1 };
+        let (rx, ry) = reference_pixel(tri.v[0].pos);
+        let plane = |vals: [i64; 3]| Plane::new(&frame, vals, rx, ry);
+        let (q, scale) = if M::PERSPECTIVE {
+            let q = normalised_q(tri, Q_BITS);
+            let Some(qp) = plane(q.map(|q| q << DEPTH_FRAC)) else { return Ok(None) };
+            (Some(qp), q.map(|q| q << PERSP_FRAC))
+        } else {
+            (None, [1 << AFFINE_FRAC; 3])
+        };
+        let mut planes = [Plane::default(); A];
+        for (k, p) in planes.iter_mut().enumerate() {
+            match plane([0, 1, 2].map(|i| values[i][k] as i64 * scale[i])) {
+                Some(plane) => *p = plane,
+                None => return Ok(None),
+            }
+        }
+        Ok(Some(Varyings { planes, q }))
+    }
+
+    /// The values at the centre of pixel `(x, y)`, rounded to nearest.
+    #[inline]
+    pub fn at(&self, x: i32, y: i32) -> [i32; A] {
+        match &self.q {
+            None => self.planes.map(|p| round_shift(p.at(x, y), AFFINE_FRAC) as i32),
+            Some(q) => {
+                let q = q.at(x, y).max(1);
+                self.planes.map(|p| {
+                    // v·q·2^3 ≤ 2^56 needs i128 once shifted to q's 2^-16 units.
+                    let n = (p.at(x, y) as i128) << (DEPTH_FRAC - PERSP_FRAC);
+                    let q = q as i128;
+                    let r = if n >= 0 { (n + q / 2) / q } else { -((-n + q / 2) / q) };
+                    r.clamp(-(MAX_VARYING as i128), MAX_VARYING as i128) as i32
+                })
+            }
+        }
+    }
+}
+
+fn round_shift(v: i64, s: u32) -> i64 {
+    (v + (1 << (s - 1))) >> s
+}
+
+/// Rasterizes `tri` with the depth test of `state`, calling
+/// `shade(x, y)` for every fragment that passes; the returned colour (if any)
+/// is written. The depth is written (if `state.write`) before `shade` runs, so
+/// a fragment that returns `None` still occludes (use the colour band's
+/// existing value to emulate discard, or `DepthState::READ_ONLY`).
+pub fn draw_fragments<C, F, const S: u32, const W: usize>(
+    tri: &ScreenTriangle<S>,
+    color: &mut BandView<'_, C, W>,
+    depth: &mut [[F::Storage; W]],
+    state: DepthState,
+    mut shade: impl FnMut(i32, i32) -> Option<C>,
+) where
+    C: Interpolate,
+    F: DepthFormat,
+{
+    use crate::blit::Blitter;
+    let spans = TriangleSpans::new(tri.v.map(|v| v.pos), color.clip(), Cull::None);
+    let frame = PlaneFrame { v: tri.v.map(|v| (2 * v.pos.x() as i64, 2 * v.pos.y() as i64)), shift: S + 1 };
+    let (rx, ry) = reference_pixel(tri.v[0].pos);
+    let zplane = if F::ENABLED {
+        match Plane::new(&frame, tri.v.map(|v| depth_steps(v.depth, F::MAX)), rx, ry) {
+            Some(p) => Some(p),
+            None => return,
+        }
+    } else {
+        None
+    };
+    let zmax = (F::MAX as i64) << DEPTH_FRAC;
+    let y0 = color.y0();
+    for span in spans {
+        let (x0, len) = (span.x as usize, span.len as usize);
+        let Some(cspan) = color.row_mut(span.y).and_then(|r| r.get_mut(x0..x0 + len)) else { continue };
+        let mut drow = depth.get_mut((span.y - y0) as usize).and_then(|r| r.get_mut(x0..x0 + len));
+        let (mut z, dz) = zplane.map_or((0, 0), |p| (p.at(span.x, span.y), p.step_x()));
+        for (i, p) in cspan.iter_mut().enumerate() {
+            let pass = match (&mut drow, F::ENABLED) {
+                (Some(d), true) => {
+                    let zq = ((z.clamp(0, zmax) + (1 << (DEPTH_FRAC - 1))) >> DEPTH_FRAC) as u32;
+                    let slot = &mut d[i];
+                    let ok = state.test.passes(zq, F::to_u32(*slot));
+                    if ok && state.write {
+                        *slot = F::from_u32(zq);
+                    }
+                    ok
+                }
+                (None, true) => false,
+                (_, false) => true,
+            };
+            if pass {
+                if let Some(c) = shade(span.x + i as i32, span.y) {
+                    *p = c;
+                }
+            }
+            z = z.wrapping_add(dz);
+        }
+    }
+}
