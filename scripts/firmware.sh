@@ -1,0 +1,270 @@
+#!/usr/bin/env bash
+# Firmware for Cortex-M4F and Cortex-M0: build it, run it under QEMU, and check
+# that the target renders bands bit-identical to the host's.
+#
+#   bash scripts/firmware.sh setup          install what is missing (idempotent)
+#   bash scripts/firmware.sh build m4f|m0   build the firmware ELF, print its path
+#   bash scripts/firmware.sh run m4f|m0     build and run it under QEMU (prints its records)
+#   bash scripts/firmware.sh check          both targets: run under QEMU, diff the records
+#                                           with the host's (`cargo run --example firmware -- m4f|m0`)
+#   bash scripts/firmware.sh size           flash and static RAM of both ELFs
+#   bash scripts/firmware.sh qemu ELF       run an ELF under QEMU (cargo's runner)
+#   bash scripts/firmware.sh toolchain      which toolchain builds the firmware
+#
+# Targets. m4f: thumbv7em-none-eabihf (Cortex-M4F), linked with memory.x
+# (STM32F405) and run on QEMU's netduinoplus2 (an STM32F405); with
+# MICRORASTER_BOARD=mps2-an386, linked for and run on QEMU's mps2-an386.
+# m0: thumbv6m-none-eabi (Cortex-M0), linked with memory/microbit.x and run on
+# QEMU's microbit (nRF51822, 16 KB RAM). build.rs picks the memory layout.
+#
+# The firmware prints one record per band, `scene band y0 rows crc32 pixels`,
+# and a frame record per scene; lines starting with `#` are notes (the stack
+# high-water mark) and are not compared. Files go to target/firmware/.
+#
+# Toolchain. With rustup's targets installed
+# (`rustup target add thumbv7em-none-eabihf thumbv6m-none-eabi`) plain cargo
+# builds the firmware (`cargo fw-m4`, `cargo fw-m0` work too, see
+# .cargo/config.toml). Without them (no download from the Rust servers),
+# `setup` fetches Debian's rustc-web with its library source into
+# target/rustc-web/ (unpacked, not installed: it conflicts with rustup) and
+# the build compiles `core` itself (-Zbuild-std=core), linking with Debian's
+# ld.lld-19. `setup` installs qemu-system-arm (and lld-19 for the fallback)
+# with apt-get when missing.
+#
+# Environment: MICRORASTER_BOARD (see build.rs), MICRORASTER_QEMU_TIMEOUT
+# (seconds per QEMU run, default 300), MICRORASTER_RUSTC_WEB (fallback
+# toolchain folder, default target/rustc-web).
+set -euo pipefail
+shopt -s inherit_errexit
+ROOT=$(cd "$(dirname "$0")/.." && pwd)
+cd "$ROOT"
+FW_DIR=$ROOT/target/firmware # cargo target folder of the firmware builds, and logs
+RW=${MICRORASTER_RUSTC_WEB:-$ROOT/target/rustc-web}
+TIMEOUT=${MICRORASTER_QEMU_TIMEOUT:-300}
+TARGETS=(m4f m0)
+SUDO=
+if [ "$(id -u)" -ne 0 ] && command -v sudo >/dev/null; then SUDO=sudo; fi
+mkdir -p "$FW_DIR"
+
+die() {
+  echo "firmware.sh: $*" >&2
+  exit 1
+}
+
+triple() {
+  case $1 in
+    m4f | thumbv7em-none-eabihf) echo thumbv7em-none-eabihf ;;
+    m0 | thumbv6m-none-eabi) echo thumbv6m-none-eabi ;;
+    *) die "unknown target '$1' (m4f or m0)" ;;
+  esac
+}
+
+# The QEMU machine for an ELF built for triple $1.
+machine() {
+  case $1 in
+    thumbv6m-none-eabi)
+      case ${MICRORASTER_BOARD:-microbit} in
+        microbit) echo microbit ;;
+        *) die "no QEMU machine for MICRORASTER_BOARD=$MICRORASTER_BOARD on $1" ;;
+      esac
+      ;;
+    thumbv7em-none-eabihf)
+      case ${MICRORASTER_BOARD:-stm32f405} in
+        stm32f405) echo netduinoplus2 ;;
+        mps2-an386) echo mps2-an386 ;;
+        *) die "no QEMU machine for MICRORASTER_BOARD=$MICRORASTER_BOARD on $1" ;;
+      esac
+      ;;
+  esac
+}
+
+# True if the active Rust toolchain has the standard library for triple $1.
+has_target() {
+  [ -d "$(rustc --print sysroot)/lib/rustlib/$1/lib" ]
+}
+
+apt_updated=
+apt_install() { # apt_install PACKAGE... (only the missing ones)
+  local missing=() p
+  for p in "$@"; do
+    dpkg -s "$p" >/dev/null 2>&1 || missing+=("$p")
+  done
+  [ ${#missing[@]} -eq 0 ] && return 0
+  apt_update
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" \
+    >"$FW_DIR/apt.log" 2>&1 || {
+    cat "$FW_DIR/apt.log" >&2
+    die "apt-get install ${missing[*]} failed"
+  }
+}
+
+apt_update() {
+  [ -n "$apt_updated" ] && return 0
+  $SUDO apt-get update -qq >"$FW_DIR/apt.log" 2>&1 || {
+    cat "$FW_DIR/apt.log" >&2
+    die "apt-get update failed"
+  }
+  apt_updated=1
+}
+
+# Debian's rustc-web 1.9x, its host std (for build scripts), its library
+# source (for -Zbuild-std) and LLVM, unpacked into $RW.
+fetch_rustc_web() {
+  [ -x "$RW/usr/bin/rustc" ] && return 0
+  apt_update
+  local std llvm tmp deb src
+  std=$(apt-cache depends libstd-rust-web-dev | awk '$1 == "Depends:" && $2 ~ /^libstd-rust-web-[0-9.]+$/ { print $2; exit }')
+  [ -n "$std" ] || die "Debian's rustc-web is not available from apt; install rustup's thumb targets instead"
+  llvm=$(apt-cache depends "$std" | awk '$1 == "Depends:" && $2 ~ /^libllvm[0-9]+$/ { print $2; exit }')
+  [ -n "$llvm" ] || die "cannot tell which libllvm $std needs"
+  tmp=$(mktemp -d "$ROOT/target/rustc-web.XXXXXX")
+  (cd "$tmp" && apt-get download rustc-web rust-web-src libstd-rust-web-dev "$std" "$llvm") \
+    >"$FW_DIR/apt.log" 2>&1 || {
+    cat "$FW_DIR/apt.log" >&2
+    rm -rf "$tmp"
+    die "apt-get download of Debian's rustc-web failed"
+  }
+  for deb in "$tmp"/*.deb; do
+    dpkg -x "$deb" "$tmp/root"
+  done
+  # Keep the compiler, its libraries, the host std and library/ of the source.
+  rm -rf "$tmp/root/usr/share" "$tmp/root/usr/libexec"
+  for src in "$tmp"/root/usr/src/rustc-*; do
+    find "$src" -mindepth 1 -maxdepth 1 ! -name library -exec rm -rf {} +
+  done
+  rm -rf "$RW"
+  mkdir -p "$(dirname "$RW")"
+  mv "$tmp/root" "$RW"
+  rm -rf "$tmp"
+  (fallback_env && "$RUSTC" -vV >/dev/null) || die "the Debian toolchain in $RW does not run"
+}
+
+# Environment that makes cargo build with the Debian toolchain in $RW.
+fallback_env() {
+  export RUSTC="$RW/usr/bin/rustc"
+  export LD_LIBRARY_PATH="$RW/usr/lib/x86_64-linux-gnu${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
+  export RUSTC_BOOTSTRAP=1 # -Zbuild-std on a stable compiler
+  export CARGO_TARGET_THUMBV7EM_NONE_EABIHF_LINKER=ld.lld-19
+  export CARGO_TARGET_THUMBV6M_NONE_EABI_LINKER=ld.lld-19
+}
+
+uses_fallback() {
+  local t
+  for t in "${TARGETS[@]}"; do
+    has_target "$(triple "$t")" || return 0
+  done
+  return 1
+}
+
+setup() {
+  local pkgs=(qemu-system-arm)
+  if uses_fallback; then pkgs+=(lld-19); fi
+  apt_install "${pkgs[@]}"
+  if uses_fallback; then fetch_rustc_web; fi
+}
+
+build() { # build TARGET: prints the ELF's path
+  local t
+  t=$(triple "$1")
+  if has_target "$t"; then
+    CARGO_TARGET_DIR="$FW_DIR" cargo build --quiet --release --target "$t" --example firmware >&2
+  else
+    [ -x "$RW/usr/bin/rustc" ] || die "no $t standard library: run 'bash scripts/firmware.sh setup' (or rustup target add $t)"
+    (
+      fallback_env
+      CARGO_TARGET_DIR="$FW_DIR" cargo build --quiet --release --target "$t" --example firmware -Zbuild-std=core >&2
+    )
+  fi
+  echo "$FW_DIR/$t/release/examples/firmware"
+}
+
+qemu() { # qemu ELF: runs it; output and exit status through semihosting
+  local elf=$1 t m status
+  case $elf in
+    */thumbv6m-none-eabi/*) t=thumbv6m-none-eabi ;;
+    */thumbv7em-none-eabihf/*) t=thumbv7em-none-eabihf ;;
+    *) die "cannot tell the target of $elf" ;;
+  esac
+  m=$(machine "$t")
+  command -v qemu-system-arm >/dev/null || die "qemu-system-arm is missing: run 'bash scripts/firmware.sh setup'"
+  status=0
+  timeout "$TIMEOUT" qemu-system-arm -machine "$m" -nographic -monitor none -serial null \
+    -semihosting-config enable=on,target=native -kernel "$elf" || status=$?
+  case $status in
+    0) ;;
+    124) die "$elf timed out after ${TIMEOUT}s on QEMU $m" ;;
+    *) die "$elf failed on QEMU $m (exit status $status)" ;;
+  esac
+}
+
+run() {
+  local elf
+  elf=$(build "$1")
+  qemu "$elf"
+}
+
+size_of() { # size_of ELF: "flash RAM" in bytes (flash: text + data, static RAM: data + bss)
+  local tool=size
+  command -v size >/dev/null || tool="llvm-size"
+  "$tool" "$1" | awk 'NR == 2 { print $1 + $2, $2 + $3 }'
+}
+
+sizes() {
+  local t elf
+  echo "| target | flash (bytes) | static RAM (bytes) |"
+  echo "|---|---|---|"
+  for t in "${TARGETS[@]}"; do
+    elf=$(build "$t")
+    read -r flash ram < <(size_of "$elf")
+    echo "| $t ($(triple "$t")) | $flash | $ram |"
+  done
+}
+
+check() {
+  setup
+  local t tr elf lines notes failed=0 start
+  for t in "${TARGETS[@]}"; do
+    start=$SECONDS
+    tr=$(triple "$t")
+    elf=$(build "$t")
+    qemu "$elf" >"$FW_DIR/qemu-$t.log"
+    grep -v '^#' "$FW_DIR/qemu-$t.log" >"$FW_DIR/qemu-$t.txt" || true # records; '#' lines are notes
+    notes=$(grep '^#' "$FW_DIR/qemu-$t.log" | sed 's/^# *//' | paste -sd ';' -) || true
+    cargo run --quiet --example firmware -- "$t" >"$FW_DIR/host-$t.txt"
+    lines=$(wc -l <"$FW_DIR/host-$t.txt")
+    read -r flash ram < <(size_of "$elf")
+    if [ "$lines" -gt 0 ] && diff -u "$FW_DIR/host-$t.txt" "$FW_DIR/qemu-$t.txt" >"$FW_DIR/diff-$t.txt"; then
+      echo "firmware $t ($tr, QEMU $(machine "$tr")): $lines band CRC records identical to the host's;" \
+        "flash $flash B, static RAM $ram B${notes:+, $notes}; $((SECONDS - start)) s"
+    else
+      echo "firmware $t ($tr): QEMU output differs from the host's:" >&2
+      cat "$FW_DIR/diff-$t.txt" >&2
+      failed=1
+    fi
+  done
+  return $failed
+}
+
+toolchain() {
+  local t
+  for t in "${TARGETS[@]}"; do
+    if has_target "$(triple "$t")"; then
+      echo "$t: $(rustc -V) with the installed $(triple "$t") target"
+    elif [ -x "$RW/usr/bin/rustc" ]; then
+      echo "$t: $(fallback_env && "$RUSTC" -V) from $RW, -Zbuild-std=core, ld.lld-19"
+    else
+      echo "$t: none yet (run 'bash scripts/firmware.sh setup')"
+    fi
+  done
+}
+
+case ${1:-} in
+  setup) setup ;;
+  build) build "${2:?build m4f|m0}" ;;
+  run) run "${2:?run m4f|m0}" ;;
+  check) check ;;
+  size) sizes ;;
+  qemu) qemu "${2:?qemu ELF}" ;;
+  toolchain) toolchain ;;
+  *) sed -n '2,/^set -euo/p' "$0" | sed '$d' | sed 's/^# \{0,1\}//' >&2 && exit 2 ;;
+esac
