@@ -96,6 +96,8 @@ pub trait DepthFormat: sealed::Sealed {
     const MAX: u32;
     /// The value a cleared buffer holds: `MAX`, the far plane.
     const FAR: Self::Storage;
+    /// The value 0 (the near plane).
+    const ZERO: Self::Storage;
     /// The stored form of `v`, which should be in `0..=MAX`; larger values
     /// clamp to `MAX`.
     fn from_u32(v: u32) -> Self::Storage;
@@ -114,6 +116,7 @@ impl DepthFormat for NoDepth {
     const ENABLED: bool = false;
     const MAX: u32 = 0;
     const FAR: () = ();
+    const ZERO: () = ();
     #[inline(always)]
     fn from_u32(_: u32) {}
     #[inline(always)]
@@ -135,6 +138,7 @@ macro_rules! formats {
             const ENABLED: bool = true;
             const MAX: u32 = u32::MAX >> (32 - $bits);
             const FAR: $storage = Self::MAX as $storage;
+            const ZERO: $storage = 0;
             #[inline(always)]
             fn from_u32(v: u32) -> $storage {
                 // In range after the clamp, so the cast never truncates.
@@ -326,6 +330,15 @@ impl<F: DepthFormat, const W: usize, const H: usize> DepthBand<F, W, H> {
     pub const fn new() -> Self {
         let () = Self::CHECK;
         DepthBand { rows: [[F::FAR; W]; H] }
+    }
+
+    /// A band with every value 0. The renderers clear each band to far before
+    /// drawing, so this is as good as [`DepthBand::new`] for them, and as a
+    /// `static` it goes to `.bss` (zero-initialised RAM) instead of costing
+    /// its size in flash as well.
+    pub const fn zeroed() -> Self {
+        let () = Self::CHECK;
+        DepthBand { rows: [[F::ZERO; W]; H] }
     }
 
     /// The rows of stored depth.
