@@ -8,7 +8,7 @@
 
 use crate::ClipRect;
 use crate::edge::Span;
-use embedded_graphics_core::prelude::{DrawTarget, PixelColor, Point, Size};
+use embedded_graphics_core::prelude::{DrawTarget, Pixel, PixelColor, Point, Size};
 use embedded_graphics_core::primitives::Rectangle;
 
 /// A sink for pixels. Implementors provide [`Blitter::clip`] and
@@ -86,7 +86,10 @@ impl<D: DrawTarget> Blitter<D::Color> for TargetBlitter<'_, D> {
     }
 
     fn set_pixel(&mut self, x: i32, y: i32, color: D::Color) {
-        self.fill_span(Span { y, x, len: 1 }, color);
+        if self.error.is_none() {
+            let r = self.target.draw_iter(core::iter::once(Pixel(Point::new(x, y), color)));
+            self.keep(r);
+        }
     }
 
     fn fill_span(&mut self, span: Span, color: D::Color) {

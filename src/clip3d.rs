@@ -255,6 +255,37 @@ impl<T: Scalar, const A: usize> Iterator for Triangles<'_, T, A> {
 
 impl<T: Scalar, const A: usize> ExactSizeIterator for Triangles<'_, T, A> {}
 
+/// What clipping would do to a triangle, from its positions alone.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Class {
+    /// Inside every plane: [`clip_triangle`] returns it unchanged.
+    Inside,
+    /// Outside one plane, or invalid (NaN, infinity, beyond ±2^64):
+    /// [`clip_triangle`] returns nothing.
+    Outside,
+    /// Crosses a plane: [`clip_triangle`] cuts it.
+    Crossing,
+}
+
+/// Classifies a triangle by its clip-space positions exactly as
+/// [`clip_triangle`] does, so a caller can skip per-vertex work (lighting)
+/// for triangles that need no clipping and turn out to be back faces.
+pub fn classify<T: Scalar>(pos: [[T; 4]; 3], planes: ClipPlanes) -> Class {
+    let lim = T::from_f32(INPUT_LIMIT);
+    if !pos.iter().flatten().all(|c| c.is_finite() && c.abs() <= lim) {
+        return Class::Outside;
+    }
+    let c = Ctx::new(planes);
+    let codes = pos.map(|p| c.outcode(&p));
+    if codes[0] & codes[1] & codes[2] != 0 {
+        Class::Outside
+    } else if codes[0] | codes[1] | codes[2] == 0 {
+        Class::Inside
+    } else {
+        Class::Crossing
+    }
+}
+
 /// Clips a triangle against `planes` (Sutherland–Hodgman; see the module docs
 /// for the guarantees). Inside all planes: returned unchanged; outside one
 /// plane, with invalid input (NaN, infinity, beyond ±2^64) or degenerate

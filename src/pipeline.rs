@@ -14,7 +14,7 @@
 //! `T` is the numeric path: `f32` (FPU parts) or [`Fx`](crate::math::Fx)
 //! (16.16 fixed point, parts without an FPU).
 
-use crate::clip3d::{ClipPlanes, ClipVertex, clip_triangle};
+use crate::clip3d::{Class, ClipPlanes, ClipVertex, classify, clip_triangle};
 use crate::edge::{Cull, signed_area2};
 use crate::light::Lighting;
 use crate::math::{Mat3, Mat4, Scalar, Vec3, Vec4, transform};
@@ -38,7 +38,8 @@ pub enum Shade {
 pub struct MeshStats {
     /// The whole mesh was outside the view volume (no vertex work done).
     pub mesh_culled: bool,
-    /// Triangles that crossed a clip plane and were clipped.
+    /// Triangles that crossed a clip plane and were clipped (triangles wholly
+    /// outside are dropped without being counted).
     pub clipped: u32,
     /// Triangles (after clipping) dropped as back faces.
     pub back_faces: u32,
@@ -163,46 +164,44 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
             [0, 1, 2].map(|k| if max[k] == 0 { T::ZERO } else { T::from_f32(ch[k] as f32 / max[k] as f32) });
         let ctx = VertexCtx { mv: model_view, mvp, nm: normal_matrix, base, lighting: self.lighting };
 
+        let flat = self.shade == Shade::Flat || mesh.normals.is_empty();
         for (i, idx) in mesh.indices.iter().enumerate() {
             let pos = mesh.triangle(i).ok_or(Error::InvalidMesh)?;
-            let flat = self.shade == Shade::Flat || mesh.normals.is_empty();
+            let clip = pos.map(|p| ctx.position(p));
+            let class = classify(clip, self.clip);
+            if class == Class::Outside {
+                continue;
+            }
+            // Colours are computed only for triangles that survive culling.
             let face_n = if flat { mesh.face_normal(i) } else { None };
-            let corner = |k: usize| {
-                let n = if flat { face_n } else { mesh.normals.get(idx[k] as usize).copied() };
-                ctx.vertex(pos[k], n)
+            let colors = || -> [[T; 3]; 3] {
+                let c = |k: usize| {
+                    let n = if flat { face_n } else { mesh.normals.get(idx[k] as usize).copied() };
+                    ctx.color(pos[k], n)
+                };
+                // Flat: one lit colour per face, vertex 0 lit with the face normal.
+                if self.shade == Shade::Flat { [c(0); 3] } else { [c(0), c(1), c(2)] }
             };
-            let mut v = [corner(0), corner(1), corner(2)];
-            if self.shade == Shade::Flat {
-                // One lit colour per face: vertex 0 lit with the face normal.
-                v[1].attr = v[0].attr;
-                v[2].attr = v[0].attr;
-            }
-            let poly = clip_triangle(v, self.clip);
-            if poly.vertices().len() != 3 || poly.vertices() != v {
-                stats.clipped += u32::from(!poly.is_empty());
-            }
-            for tri in poly.triangles() {
-                let Some(sv) = self.snap_vertices(tri, max) else {
+            if class == Class::Inside {
+                let Some(at) = self.snap_positions(clip) else {
                     stats.degenerate += 1;
                     continue;
                 };
-                let det = signed_area2(sv.map(|v| (v.pos.x() as i64, v.pos.y() as i64)));
-                let culled = match self.cull {
-                    Cull::None => false,
-                    Cull::Clockwise => det > 0,
-                    Cull::CounterClockwise => det < 0,
-                };
-                if det == 0 {
+                if self.keep(&at, &mut stats) {
+                    self.emit(at, colors(), max, bins, &mut stats)?;
+                }
+                continue;
+            }
+            stats.clipped += 1;
+            let cs = colors();
+            let v = [0, 1, 2].map(|k| ClipVertex { pos: clip[k], attr: cs[k] });
+            for tri in clip_triangle(v, self.clip).triangles() {
+                let Some(at) = self.snap_positions(tri.map(|v| v.pos)) else {
                     stats.degenerate += 1;
-                } else if culled {
-                    stats.back_faces += 1;
-                } else {
-                    let tri = ScreenTriangle { v: sv, flat: self.shade == Shade::Flat };
-                    let (lo, hi) = tri.rows();
-                    if self.rows.is_none_or(|(y0, y1)| lo <= y1 && hi >= y0) {
-                        bins.push(tri).map_err(|_| Error::BufferTooSmall)?;
-                        stats.emitted += 1;
-                    }
+                    continue;
+                };
+                if self.keep(&at, &mut stats) {
+                    self.emit(at, tri.map(|v| v.attr), max, bins, &mut stats)?;
                 }
             }
         }
@@ -222,12 +221,12 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         planes.iter().all(|p| p.dot(centre) >= -(radius * p.xyz().length()))
     }
 
-    /// Clip space to snapped screen vertices; `None` if a coordinate is out of
-    /// the rasterizer's range (the guard band prevents this) or not finite.
-    fn snap_vertices(&self, v: [ClipVertex<T, 3>; 3], max: [u8; 3]) -> Option<[ScreenVertex<S>; 3]> {
+    /// Clip space to snapped screen positions, depth and `1/w` (colour left
+    /// 0); `None` if a coordinate is out of the rasterizer's range (the guard
+    /// band prevents this) or not finite.
+    fn snap_positions(&self, clip: [[T; 4]; 3]) -> Option<[ScreenVertex<S>; 3]> {
         let mut out = [ScreenVertex::default(); 3];
-        for (o, cv) in out.iter_mut().zip(v) {
-            let [x, y, z, w] = cv.pos;
+        for (o, [x, y, z, w]) in out.iter_mut().zip(clip) {
             let px = self.ndc_to_sub(x, w, self.size.0, self.origin.0, false)?;
             let py = self.ndc_to_sub(y, w, self.size.1, self.origin.1, true)?;
             *o = ScreenVertex {
@@ -236,10 +235,49 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
                 // Only ratios of 1/w matter; a vertex nearer than w_ref/4 (which
                 // the w_ref contract excludes) saturates rather than vanishing.
                 inv_w: self.w_ref.div_scaled(w, 1 << 30).unwrap_or(i64::MAX).clamp(1, u32::MAX as i64) as u32,
-                color: [0, 1, 2].map(|k| cv.attr[k].to_channel(max[k])),
+                color: [0; 3],
             };
         }
         Some(out)
+    }
+
+    /// The snapped-area tests: zero area and back faces are dropped (and
+    /// counted), as are triangles outside [`Pipeline::rows`].
+    fn keep(&self, v: &[ScreenVertex<S>; 3], stats: &mut MeshStats) -> bool {
+        let det = signed_area2(v.map(|v| (v.pos.x() as i64, v.pos.y() as i64)));
+        let culled = match self.cull {
+            Cull::None => false,
+            Cull::Clockwise => det > 0,
+            Cull::CounterClockwise => det < 0,
+        };
+        if det == 0 {
+            stats.degenerate += 1;
+            return false;
+        }
+        if culled {
+            stats.back_faces += 1;
+            return false;
+        }
+        let (lo, hi) = ScreenTriangle { v: *v, flat: false }.rows();
+        self.rows.is_none_or(|(y0, y1)| lo <= y1 && hi >= y0)
+    }
+
+    /// Colours the vertices and appends the triangle to `bins`.
+    fn emit<const N: usize>(
+        &self,
+        mut v: [ScreenVertex<S>; 3],
+        colors: [[T; 3]; 3],
+        max: [u8; 3],
+        bins: &mut heapless::Vec<ScreenTriangle<S>, N>,
+        stats: &mut MeshStats,
+    ) -> Result<(), Error> {
+        for (v, c) in v.iter_mut().zip(colors) {
+            v.color = [0, 1, 2].map(|k| c[k].to_channel(max[k]));
+        }
+        bins.push(ScreenTriangle { v, flat: self.shade == Shade::Flat })
+            .map_err(|_| Error::BufferTooSmall)?;
+        stats.emitted += 1;
+        Ok(())
     }
 
     /// `origin + (1 ± ndc)·size/2` in subpixels, `ndc = c/w` (y flipped).
@@ -262,19 +300,21 @@ struct VertexCtx<T: Scalar> {
 }
 
 impl<T: Scalar> VertexCtx<T> {
-    fn vertex(&self, p: [f32; 3], normal: Option<[f32; 3]>) -> ClipVertex<T, 3> {
-        let p = Vec3::from_f32(p);
-        let clip = self.mvp.transform_point(p);
-        let attr = match (self.lighting, normal) {
+    fn position(&self, p: [f32; 3]) -> [T; 4] {
+        let c = self.mvp.transform_point(Vec3::from_f32(p));
+        [c.x, c.y, c.z, c.w]
+    }
+
+    fn color(&self, p: [f32; 3], normal: Option<[f32; 3]>) -> [T; 3] {
+        match (self.lighting, normal) {
             (Some(l), Some(n)) => {
                 let n_eye = (self.nm * Vec3::from_f32(n)).normalize();
-                let p_eye = self.mv.transform_point(p).xyz();
+                let p_eye = self.mv.transform_point(Vec3::from_f32(p)).xyz();
                 l.shade(n_eye, p_eye, self.base)
             }
             // No light, or a degenerate face without a normal: ambient only.
             (Some(l), None) => self.base.map(|b| b * l.ambient),
             (None, _) => self.base,
-        };
-        ClipVertex { pos: [clip.x, clip.y, clip.z, clip.w], attr }
+        }
     }
 }

@@ -32,12 +32,18 @@ pub enum Shading<C> {
 pub struct Triangle<C, const S: u32> {
     vertices: [SubPoint<S>; 3],
     shading: Shading<C>,
+    // Computed once here: the band renderer asks for it in every band.
+    rows: (i32, i32),
 }
 
 impl<C: Interpolate, const S: u32> Triangle<C, S> {
     /// A triangle with the given shading.
     pub const fn new(vertices: [SubPoint<S>; 3], shading: Shading<C>) -> Self {
-        Triangle { vertices, shading }
+        let [a, b, c] = [vertices[0].y(), vertices[1].y(), vertices[2].y()];
+        let lo = if a < b { a } else { b };
+        let hi = if a > b { a } else { b };
+        let rows = center_rows::<S>(if lo < c { lo } else { c }, if hi > c { hi } else { c });
+        Triangle { vertices, shading, rows }
     }
 
     /// A flat-coloured triangle.
@@ -71,9 +77,8 @@ impl<C: Interpolate, const S: u32> Triangle<C, S> {
 
     /// Inclusive range of pixel rows whose centres lie within the vertical
     /// extent of the triangle (empty if `.0 > .1`).
-    pub fn rows(&self) -> (i32, i32) {
-        let ys = self.vertices.map(|v| v.y());
-        center_rows::<S>(ys[0].min(ys[1]).min(ys[2]), ys[0].max(ys[1]).max(ys[2]))
+    pub const fn rows(&self) -> (i32, i32) {
+        self.rows
     }
 
     /// Rasterizes into `blitter` (clipped to its clip rectangle).
@@ -217,7 +222,7 @@ pub(crate) fn reference_pixel<const S: u32>(v: SubPoint<S>) -> (i32, i32) {
 }
 
 /// Rows whose centre `y + 0.5` lies in `[lo, hi]` (subpixel units).
-fn center_rows<const S: u32>(lo: i32, hi: i32) -> (i32, i32) {
+pub(crate) const fn center_rows<const S: u32>(lo: i32, hi: i32) -> (i32, i32) {
     let (lo, hi) = (2 * lo as i64, 2 * hi as i64);
     let (one, half) = (1i64 << (S + 1), 1i64 << S);
     (((lo - half + one - 1) >> (S + 1)) as i32, ((hi - half) >> (S + 1)) as i32)

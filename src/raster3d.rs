@@ -29,7 +29,7 @@ use crate::attr::{COLOR_FRAC, Plane, PlaneFrame, channel};
 use crate::band::BandView;
 use crate::depth::{DepthFormat, DepthState};
 use crate::edge::{Cull, TriangleSpans};
-use crate::primitive::reference_pixel;
+use crate::primitive::{center_rows, reference_pixel};
 use crate::{Interpolate, SubPoint};
 
 /// Fixed-point units per depth step in the depth plane.
@@ -68,9 +68,7 @@ impl<const S: u32> ScreenTriangle<S> {
     /// Inclusive range of pixel rows the triangle can touch.
     pub fn rows(&self) -> (i32, i32) {
         let ys = self.v.map(|v| v.pos.y());
-        let (lo, hi) = (2 * ys[0].min(ys[1]).min(ys[2]) as i64, 2 * ys[0].max(ys[1]).max(ys[2]) as i64);
-        let (one, half) = (1i64 << (S + 1), 1i64 << S);
-        (((lo - half + one - 1) >> (S + 1)) as i32, ((hi - half) >> (S + 1)) as i32)
+        center_rows::<S>(ys[0].min(ys[1]).min(ys[2]), ys[0].max(ys[1]).max(ys[2]))
     }
 }
 
