@@ -59,8 +59,9 @@ pub struct TargetBlitter<'a, D: DrawTarget> {
 }
 
 impl<'a, D: DrawTarget> TargetBlitter<'a, D> {
-    /// Blits into `target`, clipped to its bounding box (pixels at negative
-    /// coordinates are never drawn).
+    /// Blits into `target`, clipped to its bounding box and to
+    /// `0..MAX_FRAME_DIM` on both axes (the rasterizers' pixel range; pixels at
+    /// negative coordinates are never drawn).
     pub fn new(target: &'a mut D) -> Self {
         let b = target.bounding_box();
         let (w, h) = (b.size.width.min(i32::MAX as u32) as i32, b.size.height.min(i32::MAX as u32) as i32);

@@ -53,14 +53,17 @@ pub struct Span {
     pub len: u32,
 }
 
-/// Largest bounding-box side, in whole pixels, for which a triangle at `S`
-/// subpixel bits takes the `i32` fast path (larger ones use `i64`).
+/// Largest bounding-box side, in whole pixels, for which a triangle at `s`
+/// subpixel bits takes the `i32` fast path (larger ones use `i64`); `s` above
+/// [`MAX_SUBPIXEL_BITS`](crate::MAX_SUBPIXEL_BITS) is clamped to it.
 ///
 /// ```
 /// // A whole 480×320 screen takes the fast path even at 8 subpixel bits.
 /// assert!(microraster::edge::fast_path_extent_px(8) >= 480);
 /// ```
 pub const fn fast_path_extent_px(s: u32) -> i64 {
+    // Beyond MAX_SUBPIXEL_BITS no SubPoint exists; clamp rather than overflow.
+    let s = if s > crate::MAX_SUBPIXEL_BITS { crate::MAX_SUBPIXEL_BITS } else { s };
     fast_ext_internal(s) / (1i64 << (s + 1)) - 1
 }
 

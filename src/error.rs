@@ -13,7 +13,8 @@ pub enum Error {
     /// A coordinate lies outside the supported range
     /// (see [`SubPoint::MAX_SUBPIXELS`](crate::SubPoint::MAX_SUBPIXELS)).
     CoordinateOutOfRange,
-    /// The frame height is zero or larger than [`MAX_FRAME_DIM`](crate::MAX_FRAME_DIM).
+    /// A frame or viewport width or height is zero or larger than
+    /// [`MAX_FRAME_DIM`](crate::MAX_FRAME_DIM).
     InvalidFrameSize,
     /// A mesh index is out of range, the normals do not match the positions,
     /// or the bounding sphere does not contain the mesh.

@@ -14,7 +14,7 @@
 //! `T` is the numeric path: `f32` (FPU parts) or [`Fx`](crate::math::Fx)
 //! (16.16 fixed point, parts without an FPU).
 
-use crate::clip3d::{Class, ClipPlanes, ClipVertex, classify, clip_triangle};
+use crate::clip3d::{Class, ClipPlanes, ClipVertex, classify, clip_triangle, guard_band_for_range};
 use crate::edge::{Cull, signed_area2};
 use crate::light::Lighting;
 use crate::math::{Mat3, Mat4, Scalar, Vec3, Vec4, transform};
@@ -65,7 +65,8 @@ pub struct Pipeline<T: Scalar, const S: u32> {
     /// outside) still run counter-clockwise as seen on screen, so back faces
     /// are the clockwise ones: the default is [`Cull::Clockwise`].
     pub cull: Cull,
-    /// Lighting; `None` shows material colours unlit.
+    /// Lighting; `None` shows material colours unlit. A non-finite lighting
+    /// result (NaN parameters) gives channel 0, a documented clamp.
     pub lighting: Option<Lighting<T>>,
     /// Flat or Gouraud.
     pub shade: Shade,
@@ -84,13 +85,17 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     /// perspective-correct interpolation.
     ///
     /// Errors: [`Error::InvalidFrameSize`] for a zero or too large viewport,
-    /// [`Error::InvalidParameter`] for `w_ref ≤ 0`.
+    /// [`Error::InvalidParameter`] for `w_ref ≤ 0`,
+    /// [`Error::NonFiniteCoordinate`] for a NaN or infinite matrix entry.
     pub fn new(view: Mat4<T>, projection: Mat4<T>, w_ref: T, width: u32, height: u32) -> Result<Self, Error> {
         if width == 0 || height == 0 || width > MAX_FRAME_DIM || height > MAX_FRAME_DIM {
             return Err(Error::InvalidFrameSize);
         }
         if !w_ref.is_finite() || w_ref <= T::ZERO {
             return Err(Error::InvalidParameter);
+        }
+        if !view.cols.iter().chain(projection.cols.iter()).flatten().all(|v| v.is_finite()) {
+            return Err(Error::NonFiniteCoordinate);
         }
         Ok(Pipeline {
             view,
@@ -122,9 +127,21 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         Self::new(view, projection, near, width, height)
     }
 
-    /// The same pipeline with the viewport's top-left corner at pixel `(x, y)`.
+    /// The same pipeline with the viewport's top-left corner at pixel `(x, y)`
+    /// of the frame, confined to the viewport ([`Pipeline::confined`]).
+    /// Coordinates are clamped to `0..=MAX_FRAME_DIM`.
     pub fn with_origin(self, x: i32, y: i32) -> Self {
-        Pipeline { origin: (x as i64, y as i64), ..self }
+        let c = |v: i32| v.clamp(0, MAX_FRAME_DIM as i32) as i64;
+        Pipeline { origin: (c(x), c(y)), ..self }.confined()
+    }
+
+    /// The same pipeline clipping x and y exactly at the viewport's edges
+    /// (guard band 1) instead of at the guard band, so nothing is drawn
+    /// outside a viewport smaller than the frame. More triangles are clipped;
+    /// the rasterizer's scissor to the frame makes this unnecessary when the
+    /// viewport is the whole frame (the default).
+    pub fn confined(self) -> Self {
+        Pipeline { clip: self.clip.with_guard_band(1.0), ..self }
     }
 
     /// The same pipeline with lighting.
@@ -140,7 +157,9 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     /// Transforms, lights, clips, snaps and culls `mesh` placed by `model`,
     /// with material colour `color`, appending the visible triangles to `bins`.
     ///
-    /// Errors: [`Error::InvalidMesh`] if an index is out of range;
+    /// Errors: the errors of [`Mesh::validate`] (out-of-range index, normals
+    /// that do not match, a bounding sphere that does not contain the mesh,
+    /// non-finite data);
     /// [`Error::BufferTooSmall`] if `bins` fills up (the triangles that fit
     /// are kept); [`Error::InvalidParameter`] if `model` is singular.
     pub fn draw_mesh<C: Interpolate, const N: usize>(
@@ -150,6 +169,9 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         color: C,
         bins: &mut heapless::Vec<ScreenTriangle<S>, N>,
     ) -> Result<MeshStats, Error> {
+        // O(vertices), a few percent of the vertex work: a bad mesh is an
+        // error, never a silent cull or an out-of-range index.
+        mesh.validate()?;
         let mut stats = MeshStats::default();
         let model_view = self.view * *model;
         let mvp = self.projection * model_view;
@@ -158,6 +180,10 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
             return Ok(stats);
         }
         let normal_matrix = model_view.normal_matrix().ok_or(Error::InvalidParameter)?;
+        // A guard band beyond what snapping can represent would drop visible
+        // triangles; clamp it (the `clip` field is public).
+        let range = guard_band_for_range(self.size.0, self.size.1, S);
+        let planes = self.clip.with_guard_band(self.clip.guard_band().min(range));
         let max = C::CHANNEL_MAX;
         let ch = color.to_channels();
         let base =
@@ -168,7 +194,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         for (i, idx) in mesh.indices.iter().enumerate() {
             let pos = mesh.triangle(i).ok_or(Error::InvalidMesh)?;
             let clip = pos.map(|p| ctx.position(p));
-            let class = classify(clip, self.clip);
+            let class = classify(clip, planes);
             if class == Class::Outside {
                 continue;
             }
@@ -177,7 +203,9 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
             let colors = || -> [[T; 3]; 3] {
                 let c = |k: usize| {
                     let n = if flat { face_n } else { mesh.normals.get(idx[k] as usize).copied() };
-                    ctx.color(pos[k], n)
+                    // Documented clamp: a non-finite lighting result is channel 0
+                    // (the clipper would otherwise discard the triangle).
+                    ctx.color(pos[k], n).map(|c| if c.is_finite() { c } else { T::ZERO })
                 };
                 // Flat: one lit colour per face, vertex 0 lit with the face normal.
                 if self.shade == Shade::Flat { [c(0); 3] } else { [c(0), c(1), c(2)] }
@@ -195,7 +223,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
             stats.clipped += 1;
             let cs = colors();
             let v = [0, 1, 2].map(|k| ClipVertex { pos: clip[k], attr: cs[k] });
-            for tri in clip_triangle(v, self.clip).triangles() {
+            for tri in clip_triangle(v, planes).triangles() {
                 let Some(at) = self.snap_positions(tri.map(|v| v.pos)) else {
                     stats.degenerate += 1;
                     continue;

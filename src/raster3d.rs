@@ -99,7 +99,9 @@ impl Interpolation for PerspectiveCorrect {
     const PERSPECTIVE: bool = true;
 }
 
-/// Rasterizes `tri` into a band's colour and depth rows.
+/// Rasterizes `tri` into a band's colour and depth rows. `depth` holds the
+/// depth rows of the view's rows, first to last; a row the slice lacks is not
+/// drawn (for [`NoDepth`](crate::depth::NoDepth) pass any slice).
 pub fn draw_triangle<C, F, M, const S: u32, const W: usize>(
     tri: &ScreenTriangle<S>,
     color: &mut BandView<'_, C, W>,

@@ -66,8 +66,9 @@ impl<C: Interpolate> Renderer<C> {
     /// Renders `scene` through `band` into `target`.
     ///
     /// Errors: [`Error::InvalidFrameSize`] if the height is 0 or above
-    /// [`MAX_FRAME_DIM`]; [`RenderError::Target`] if the target fails (the
-    /// remaining bands are not sent).
+    /// [`MAX_FRAME_DIM`]; [`Error::CoordinateOutOfRange`] if the offset puts
+    /// the frame beyond `i32` coordinates; [`RenderError::Target`] if the
+    /// target fails (the remaining bands are not sent).
     pub fn render<D, const S: u32, const W: usize, const H: usize>(
         &self,
         scene: &[Primitive<C, S>],
@@ -174,6 +175,11 @@ impl<C: Interpolate> Renderer<C> {
     {
         if self.height == 0 || self.height > MAX_FRAME_DIM {
             return Err(Error::InvalidFrameSize.into());
+        }
+        // Every band rectangle must be addressable: offset + frame within i32.
+        if self.offset.x.checked_add(W as i32).is_none() || self.offset.y.checked_add(self.height as i32).is_none()
+        {
+            return Err(Error::CoordinateOutOfRange.into());
         }
         let height = self.height as i32;
         let mut y0 = 0i32;

@@ -35,7 +35,7 @@ pub const MAX_SUBPIXEL_BITS: u32 = 8;
 /// assert_eq!((p.x(), p.y()), (2637, 640)); // 10.3 * 256 = 2636.8 → 2637
 /// assert!(SubPoint::<8>::from_f32(f32::NAN, 0.0).is_err());
 /// ```
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub struct SubPoint<const S: u32> {
     x: i32,
     y: i32,
@@ -131,6 +131,14 @@ impl<const S: u32> SubPoint<S> {
     pub fn to_f64(self) -> (f64, f64) {
         let one = f64::from(Self::ONE);
         (f64::from(self.x) / one, f64::from(self.y) / one)
+    }
+}
+
+impl<const S: u32> Default for SubPoint<S> {
+    /// The origin. Written out (not derived) so `S > 8` is rejected here too.
+    fn default() -> Self {
+        let () = Self::CHECK;
+        SubPoint { x: 0, y: 0 }
     }
 }
 

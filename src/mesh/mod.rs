@@ -59,11 +59,9 @@ pub const SPHERE_TOLERANCE: f32 = 1.0e-5;
 /// The fields are public so meshes can be built in any way; the constructor is
 /// a `const fn` so a mesh can be a `static`. Nothing is checked on
 /// construction. [`validate`](Mesh::validate) checks every invariant
-/// documented on the fields; call it once (say, at start-up) for meshes from
-/// untrusted sources. The 3D pipeline does not re-validate every frame, but it
-/// never indexes out of range: a bad index is [`Error::InvalidMesh`], a
-/// missing normal lights the vertex with ambient light only, and a bounding
-/// sphere that is too small can only cull a mesh too early.
+/// documented on the fields; the 3D pipeline calls it on every
+/// [`draw_mesh`](crate::pipeline::Pipeline::draw_mesh) (O(vertices), a few
+/// percent of the vertex work), so a bad mesh is an error, never a silent cull.
 ///
 /// ```
 /// use microraster::mesh::{Mesh, bounding_sphere};

@@ -1,0 +1,20 @@
+// error: mismatched types
+use embedded_graphics::mock_display::MockDisplay;
+use embedded_graphics_core::pixelcolor::Gray8;
+use microraster::depth::{Depth8, DepthBand, DepthState};
+use microraster::raster3d::{PerspectiveCorrect, ScreenTriangle};
+use microraster::{Band, Renderer};
+
+fn main() {
+    let mut band = Band::<Gray8, 32, 16>::new(Gray8::new(0));
+    let mut depth = DepthBand::<Depth8, 64, 16>::new();
+    let mut display = MockDisplay::<Gray8>::new();
+    let tris: [ScreenTriangle<4>; 0] = [];
+    let _ = Renderer::new(16, Gray8::new(0)).render_3d::<_, Depth8, PerspectiveCorrect, 4, 32, 16>(
+        &tris,
+        &mut band,
+        &mut depth,
+        DepthState::LESS_WRITE,
+        &mut display,
+    );
+}
