@@ -8,9 +8,30 @@
 #   bash scripts/firmware.sh check          both targets: run under QEMU, diff the records
 #                                           with the host's (`cargo run --example firmware -- m4f|m0`)
 #   bash scripts/firmware.sh size           flash and static RAM of both ELFs
+#   bash scripts/firmware.sh table          the README's table: instructions per frame
+#                                           (QEMU -icount), static RAM, flash, stack,
+#                                           per scene and target (examples/fw_bench)
+#   bash scripts/firmware.sh build-st7789   build the ST7789 display example (its own
+#                                           package: examples/st7789, STM32F405), print
+#                                           its path; flash it with probe-rs (see there)
 #   bash scripts/firmware.sh qemu ELF       run an ELF under QEMU (cargo's runner)
 #   bash scripts/firmware.sh toolchain      which toolchain builds the firmware
 #
+# `check` also builds the ST7789 example and runs the benchmark (it prints the
+# table), so CI covers all of it.
+#
+# Instruction counts (`table`). examples/fw_bench renders each configuration
+# of its lists (examples/fw_bench/benches.rs: one line per configuration)
+# under QEMU with `-icount shift=0`, where virtual time advances 1 ns per
+# executed instruction, and reads a timer around each frame: on the Cortex-M4F
+# SysTick of QEMU's mps2-an386 (25 MHz core clock: 40 instructions per tick;
+# the ELF is linked for that board with MICRORASTER_BOARD=mps2-an386), on the
+# Cortex-M0 the nRF51's TIMER0 on QEMU's microbit (16 MHz: 62.5 instructions
+# per tick). The firmware calibrates the ratio with a loop of known
+# instruction count and fails if it is off; every frame's CRC must equal the
+# host's. Static RAM comes from the ELF symbols (nm), flash and total RAM from
+# `size`, the stack from painting it before each frame. QEMU counts
+# instructions, not cycles: no wait states, no pipeline, no bus.
 # Targets. m4f: thumbv7em-none-eabihf (Cortex-M4F), linked with memory.x
 # (STM32F405) and run on QEMU's netduinoplus2 (an STM32F405); with
 # MICRORASTER_BOARD=mps2-an386, linked for and run on QEMU's mps2-an386.
@@ -163,19 +184,19 @@ setup() {
   if uses_fallback; then fetch_rustc_web; fi
 }
 
-build() { # build TARGET: prints the ELF's path
-  local t
+build() { # build TARGET [EXAMPLE]: prints the ELF's path (EXAMPLE: firmware by default)
+  local t example=${2:-firmware}
   t=$(triple "$1")
   if has_target "$t"; then
-    CARGO_TARGET_DIR="$FW_DIR" cargo build --quiet --release --target "$t" --example firmware >&2
+    CARGO_TARGET_DIR="$FW_DIR" cargo build --quiet --release --target "$t" --example "$example" >&2
   else
     [ -x "$RW/usr/bin/rustc" ] || die "no $t standard library: run 'bash scripts/firmware.sh setup' (or rustup target add $t)"
     (
       fallback_env
-      CARGO_TARGET_DIR="$FW_DIR" cargo build --quiet --release --target "$t" --example firmware -Zbuild-std=core >&2
+      CARGO_TARGET_DIR="$FW_DIR" cargo build --quiet --release --target "$t" --example "$example" -Zbuild-std=core >&2
     )
   fi
-  echo "$FW_DIR/$t/release/examples/firmware"
+  echo "$FW_DIR/$t/release/examples/$example"
 }
 
 qemu() { # qemu ELF: runs it; output and exit status through semihosting
@@ -188,8 +209,9 @@ qemu() { # qemu ELF: runs it; output and exit status through semihosting
   m=$(machine "$t")
   command -v qemu-system-arm >/dev/null || die "qemu-system-arm is missing: run 'bash scripts/firmware.sh setup'"
   status=0
+  # shellcheck disable=SC2086 # MICRORASTER_QEMU_ARGS: extra words, e.g. -icount shift=0
   timeout "$TIMEOUT" qemu-system-arm -machine "$m" -nographic -monitor none -serial null \
-    -semihosting-config enable=on,target=native -kernel "$elf" || status=$?
+    -semihosting-config enable=on,target=native ${MICRORASTER_QEMU_ARGS:-} -kernel "$elf" || status=$?
   case $status in
     0) ;;
     124) die "$elf timed out after ${TIMEOUT}s on QEMU $m" ;;
@@ -220,6 +242,91 @@ sizes() {
   done
 }
 
+# The board each target's benchmark is linked for and timed on.
+bench_board() {
+  case $1 in
+    m4f) echo mps2-an386 ;; # SysTick counts instructions there (netduinoplus2's does not)
+    m0) echo microbit ;;
+  esac
+}
+
+# Runs the benchmark on both targets and collects what the table needs into
+# $FW_DIR/table-input.txt (lines `TARGET bench|#|sym|size|fact ...`).
+bench_collect() {
+  local input=$FW_DIR/table-input.txt t tr board elf fw log start
+  : >"$input.tmp"
+  for t in "${TARGETS[@]}"; do
+    start=$SECONDS
+    tr=$(triple "$t")
+    board=$(bench_board "$t")
+    fw=$(build "$t") # first, while it is still built for its own board (as `check` left it)
+    elf=$(MICRORASTER_BOARD=$board build "$t" fw_bench)
+    log=$FW_DIR/bench-$t.log
+    MICRORASTER_BOARD=$board MICRORASTER_QEMU_ARGS="-icount shift=0" qemu "$elf" >"$log" || {
+      cat "$log" >&2
+      die "the benchmark failed on $t"
+    }
+    {
+      echo "$t fact machine $(MICRORASTER_BOARD=$board machine "$tr")"
+      sed "s/^/$t /" "$log"
+      # The static buffers, from the ELF's symbols (cortex-m-rt names them
+      # <example>::firmware::__cortex_m_rt_main_trampoline::NAME); size in hex.
+      nm -C -S "$elf" | awk -v t="$t" '$4 ~ /::(BAND|DEPTH|BINS|PRIMS)$/ {
+        n = split($4, p, "::"); print t, "sym", p[n], $2 }'
+      echo "$t size firmware (CRC demo, $(board_name "$t")) $(size_words "$fw")"
+      echo "$t size fw_bench (benchmark, $(MICRORASTER_BOARD=$board board_name "$t")) $(size_words "$elf")"
+    } >>"$input.tmp"
+    echo "benchmark $t ($tr, QEMU $(MICRORASTER_BOARD=$board machine "$tr") -icount shift=0): $((SECONDS - start)) s" >&2
+  done
+  mv "$input.tmp" "$input"
+}
+
+board_name() { # the memory layout an ELF for target $1 is linked with
+  case ${MICRORASTER_BOARD:-} in
+    mps2-an386) echo "mps2-an386 layout" ;;
+    microbit | "") [ "$1" = m0 ] && echo "micro:bit layout" || echo "STM32F405 layout" ;;
+    *) echo "$MICRORASTER_BOARD layout" ;;
+  esac
+}
+
+size_words() { # size_words ELF: "text data bss"
+  local tool=size
+  command -v size >/dev/null || tool="llvm-size"
+  "$tool" "$1" | awk 'NR == 2 { print $1, $2, $3 }'
+}
+
+table() {
+  setup
+  bench_collect
+  # The host side (dev profile, as `check` builds it): triangles, covered pixels,
+  # frame CRCs, and the table.
+  cargo run --quiet --example fw_bench -- table "$FW_DIR/table-input.txt"
+}
+
+# The ST7789 display example is a package of its own (examples/st7789/, see
+# its Cargo.toml), with its own lock file: built for thumbv7em-none-eabihf in a
+# target folder of its own (sharing one with the other firmware would rebuild
+# the crates both use at every switch), and checked on the host, where it is a
+# trivial program.
+build_st7789() { # prints the ELF's path
+  local t=thumbv7em-none-eabihf elf start=$SECONDS dir=$FW_DIR/st7789
+  local cargo_args=(--quiet --release --target "$t" --manifest-path "$ROOT/examples/st7789/Cargo.toml")
+  if has_target "$t"; then
+    CARGO_TARGET_DIR="$dir" cargo build "${cargo_args[@]}" >&2
+  else
+    [ -x "$RW/usr/bin/rustc" ] || die "no $t standard library: run 'bash scripts/firmware.sh setup' (or rustup target add $t)"
+    (
+      fallback_env
+      CARGO_TARGET_DIR="$dir" cargo build "${cargo_args[@]}" -Zbuild-std=core >&2
+    )
+  fi
+  CARGO_TARGET_DIR="$dir" cargo check --quiet --manifest-path "$ROOT/examples/st7789/Cargo.toml" >&2
+  elf=$dir/$t/release/microraster-st7789
+  echo "st7789 example ($t, STM32F405, mipidsi 0.10 + stm32f4xx-hal 0.23): builds;" \
+    "flash $(size_of "$elf" | awk '{ print $1 " B, static RAM " $2 " B" }'); $((SECONDS - start)) s" >&2
+  echo "$elf"
+}
+
 check() {
   setup
   local t tr elf lines notes failed=0 start
@@ -242,6 +349,11 @@ check() {
       failed=1
     fi
   done
+  build_st7789 >/dev/null
+  start=$SECONDS
+  table >"$FW_DIR/table.md" || failed=1
+  cat "$FW_DIR/table.md"
+  echo "benchmark table: $((SECONDS - start)) s (also in $FW_DIR/table.md)"
   return $failed
 }
 
@@ -260,7 +372,9 @@ toolchain() {
 
 case ${1:-} in
   setup) setup ;;
-  build) build "${2:?build m4f|m0}" ;;
+  build) build "${2:?build m4f|m0 [EXAMPLE]}" "${3:-firmware}" ;;
+  build-st7789) build_st7789 ;;
+  table) table ;;
   run) run "${2:?run m4f|m0}" ;;
   check) check ;;
   size) sizes ;;

@@ -109,7 +109,13 @@ pub(crate) fn channel(acc: i32, max: u8) -> u8 {
 
 /// `n / d` rounded to nearest (ties away from zero); `d != 0`.
 fn div_round_i64(n: i64, d: i64) -> i64 {
-    div_round_i128(n as i128, d as i128) as i64
+    // Native i64 where nothing can overflow: an i128 division is a slow
+    // library call on Cortex-M.
+    if n.unsigned_abs() >= 1 << 62 || d.unsigned_abs() >= 1 << 62 {
+        return div_round_i128(n as i128, d as i128) as i64;
+    }
+    let (n, d) = if d < 0 { (-n, -d) } else { (n, d) };
+    if n >= 0 { (n + d / 2) / d } else { -((-n + d / 2) / d) }
 }
 
 fn div_round_i128(n: i128, d: i128) -> i128 {

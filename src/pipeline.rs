@@ -129,9 +129,10 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
 
     /// The same pipeline with the viewport's top-left corner at pixel `(x, y)`
     /// of the frame, confined to the viewport ([`Pipeline::confined`]).
-    /// Coordinates are clamped to `0..=MAX_FRAME_DIM`.
+    /// Coordinates are clamped to `±MAX_FRAME_DIM` (a viewport may hang off
+    /// the frame's edges; what lies outside the frame is never drawn).
     pub fn with_origin(self, x: i32, y: i32) -> Self {
-        let c = |v: i32| v.clamp(0, MAX_FRAME_DIM as i32) as i64;
+        let c = |v: i32| v.clamp(-(MAX_FRAME_DIM as i32), MAX_FRAME_DIM as i32) as i64;
         Pipeline { origin: (c(x), c(y)), ..self }.confined()
     }
 

@@ -254,10 +254,12 @@ impl<M: Interpolation> ShadeSpan<M> {
             return c;
         }
         if M::PERSPECTIVE {
-            let q = (self.acc[3] >> DEPTH_FRAC).max(1) as u64;
+            // q < 2^24 and c·q < 2^31 inside the triangle: 32-bit divisions,
+            // which Cortex-M3/M4 do in hardware (the clamps only guard rounding).
+            let q = (self.acc[3] >> DEPTH_FRAC).clamp(1, 1 << 24) as u32;
             [0, 1, 2].map(|k| {
-                let p = (self.acc[k] >> DEPTH_FRAC).max(0) as u64;
-                ((p + q / 2) / q).min(max[k] as u64) as u8
+                let p = (self.acc[k] >> DEPTH_FRAC).clamp(0, 1 << 31) as u32;
+                ((p + q / 2) / q).min(max[k] as u32) as u8
             })
         } else {
             [0, 1, 2].map(|k| channel(self.acc[k].clamp(i32::MIN as i64, i32::MAX as i64) as i32, max[k]))

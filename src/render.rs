@@ -177,7 +177,8 @@ impl<C: Interpolate> Renderer<C> {
             return Err(Error::InvalidFrameSize.into());
         }
         // Every band rectangle must be addressable: offset + frame within i32.
-        if self.offset.x.checked_add(W as i32).is_none() || self.offset.y.checked_add(self.height as i32).is_none()
+        if self.offset.x.checked_add(W as i32).is_none()
+            || self.offset.y.checked_add(self.height as i32).is_none()
         {
             return Err(Error::CoordinateOutOfRange.into());
         }

@@ -19,7 +19,12 @@
 mod workload;
 
 #[cfg(target_os = "none")]
+#[path = "stack.rs"]
+mod stack;
+
+#[cfg(target_os = "none")]
 mod firmware {
+    use crate::stack;
     use crate::workload::*;
     use cortex_m_rt::entry;
     use cortex_m_semihosting::{debug, hprintln};
@@ -40,11 +45,12 @@ mod firmware {
     #[entry]
     fn main() -> ! {
         // cortex-m-rt turns these into `&'static mut` references. Each buffer
-        // is its own static, so the size tool shows them and the zeroed ones
-        // cost no flash (.bss); the depth band starts at "far" (.data).
+        // is its own static, so the size tool shows them; all are zeroed, so
+        // they cost no flash (.bss: the renderer clears the depth band to far
+        // at every band anyway).
         static mut PRIMS: heapless::Vec<Primitive<Rgb565, S>, { scenes::MIXED_LEN }> = heapless::Vec::new();
         static mut BAND: Band<Rgb565, { M4F_SIZE.0 }, M4F_BAND> = Band::new(BACKGROUND);
-        static mut DEPTH: DepthBand<Depth16, { M4F_SIZE.0 }, M4F_BAND> = DepthBand::new();
+        static mut DEPTH: DepthBand<Depth16, { M4F_SIZE.0 }, M4F_BAND> = DepthBand::zeroed();
         static mut BINS: heapless::Vec<ScreenTriangle<S>, { scenes3d::BINS }> = heapless::Vec::new();
         stack::paint();
         finish(m4f(M4fBuffers { prims: PRIMS, band: BAND, depth: DEPTH, bins: BINS }, &mut print))
@@ -55,7 +61,7 @@ mod firmware {
     #[entry]
     fn main() -> ! {
         static mut BAND: Band<Rgb565, { M0_SIZE.0 }, M0_BAND> = Band::new(BACKGROUND);
-        static mut DEPTH: DepthBand<Depth16, { M0_SIZE.0 }, M0_BAND> = DepthBand::new();
+        static mut DEPTH: DepthBand<Depth16, { M0_SIZE.0 }, M0_BAND> = DepthBand::zeroed();
         static mut BINS: heapless::Vec<ScreenTriangle<S>, BAND_BINS> = heapless::Vec::new();
         stack::paint();
         finish(m0(M0Buffers { band: BAND, depth: DEPTH, bins: BINS }, &mut print))
@@ -77,45 +83,6 @@ mod firmware {
         debug::exit(code);
         #[allow(clippy::empty_loop)]
         loop {}
-    }
-
-    /// Stack high-water mark: the free RAM between the statics and the stack
-    /// pointer is painted before rendering and scanned afterwards.
-    mod stack {
-        const PAINT: u32 = 0x5AA5_C33C;
-
-        unsafe extern "C" {
-            /// End of the statics (cortex-m-rt's linker script).
-            static __sheap: u32;
-            /// Top of the stack (cortex-m-rt's linker script).
-            static _stack_start: u32;
-        }
-
-        fn bottom() -> usize {
-            (&raw const __sheap) as usize
-        }
-
-        pub fn paint() {
-            let sp = cortex_m::register::msp::read() as usize;
-            let mut p = bottom();
-            while p + 64 < sp {
-                // SAFETY: word-aligned RAM between the statics and the stack
-                // pointer, in use by nothing (no interrupts are enabled).
-                unsafe { (p as *mut u32).write_volatile(PAINT) };
-                p += 4;
-            }
-        }
-
-        /// `(bytes of stack ever used, bytes of room for the stack)`.
-        pub fn high_water() -> (usize, usize) {
-            let top = (&raw const _stack_start) as usize;
-            let mut p = bottom();
-            // SAFETY: reads of RAM below the stack pointer.
-            while p < top && unsafe { (p as *const u32).read_volatile() } == PAINT {
-                p += 4;
-            }
-            (top - p, top - bottom())
-        }
     }
 }
 

@@ -274,11 +274,22 @@ impl Scalar for Fx {
         if d <= 0 || scale.abs() > 1 << 40 {
             return None;
         }
-        // |bits · scale| ≤ 2^31 · 2^40: i128 only when i64 would overflow.
-        let n = self.to_bits() as i128 * scale as i128;
-        let (d, half) = (d as i128, d as i128 / 2);
-        let q = if n >= 0 { (n + half) / d } else { -((-n + half) / d) };
-        if q.abs() <= 1 << 40 { Some(q as i64) } else { None }
+        // |bits · scale| ≤ 2^31 · 2^40: i128 only when i64 would overflow
+        // (an i128 division is a slow library call on Cortex-M).
+        let q = match (self.to_bits() as i64).checked_mul(scale) {
+            Some(n) if n.unsigned_abs() < 1 << 62 => {
+                if n >= 0 {
+                    (n + d / 2) / d
+                } else {
+                    -((-n + d / 2) / d)
+                }
+            }
+            _ => {
+                let (n, d) = (self.to_bits() as i128 * scale as i128, d as i128);
+                (if n >= 0 { (n + d / 2) / d } else { -((-n + d / 2) / d) }) as i64
+            }
+        };
+        if q.abs() <= 1 << 40 { Some(q) } else { None }
     }
     fn to_channel(self, max: u8) -> u8 {
         let b = self.to_bits().clamp(0, 1 << 16) as u32;

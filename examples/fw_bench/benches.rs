@@ -1,0 +1,422 @@
+//! What the firmware benchmark times: one list of configurations per target
+//! ([`M4F`], [`M0`]), shared word for word by the firmware (timed under QEMU
+//! with instruction counting) and by the host run (which counts triangles
+//! and covered pixels and checks that each frame's CRC equals the target's).
+//!
+//! Adding a configuration is one line in [`M4F`] or [`M0`]: a name (the
+//! scene) and a [`Work`] (what runs). 2D scenes are any
+//! [`scenes::Scene`] function (`fn(width, height, sink)`); 3D work runs the
+//! standard scene ([`Scene3d`]) on a vertex path ([`Vertex`]) with a colour
+//! interpolation ([`Interp`]).
+//!
+//! The buffers are those of the CRC firmware (`examples/firmware/workload.rs`):
+//! Cortex-M4F 320 × 240 in 16-row bands with all the frame's triangles
+//! binned ([`BINS`]) and room for [`PRIMS`] primitives; Cortex-M0 160 × 128
+//! in 4-row bands with one band's triangles ([`BAND_BINS`]) and no primitive
+//! storage (2D scenes are generated again for every band). A 2D scene with
+//! more primitives than [`PRIMS`] needs [`Work::Streamed2d`] (or a larger
+//! [`PRIMS`]: on QEMU's mps2-an386, where the Cortex-M4F is timed, RAM is
+//! 4 MB; the table's RAM column shows the buffer's size).
+
+use core::convert::Infallible;
+use core::hint::black_box;
+
+use embedded_graphics_core::pixelcolor::Rgb565;
+use embedded_graphics_core::prelude::*;
+use embedded_graphics_core::primitives::Rectangle;
+use microraster::depth::{Depth16, DepthBand};
+use microraster::edge::Cull;
+use microraster::math::{Fx, Scalar};
+use microraster::raster3d::{Affine, Interpolation, PerspectiveCorrect, ScreenTriangle};
+use microraster::scenes3d::Scene3d;
+use microraster::{Band, Error, Primitive, RenderError, Renderer, scenes};
+
+use crate::workload::{ANGLE, Crc32, DEPTH_STATE, S};
+#[allow(unused_imports)] // each target uses its own
+pub use crate::workload::{BACKGROUND, BAND_BINS, M0_BAND, M0_SIZE, M4F_BAND, M4F_SIZE};
+#[allow(unused_imports)]
+pub use microraster::scenes3d::BINS;
+
+/// A 2D scene function.
+pub type Scene2d = scenes::Scene<Rgb565, S>;
+
+/// The vertex path of the 3D scene.
+#[derive(Clone, Copy, Debug)]
+pub enum Vertex {
+    /// `f32` (hardware floating point on the Cortex-M4F, soft float on the M0).
+    F32,
+    /// 16.16 fixed point ([`Fx`]).
+    Fx,
+}
+
+/// Colour interpolation of the 3D scene.
+#[derive(Clone, Copy, Debug)]
+pub enum Interp {
+    /// Screen-space linear ([`Affine`]).
+    Affine,
+    /// Perspective-correct ([`PerspectiveCorrect`]).
+    Perspective,
+}
+
+/// What one configuration runs for one frame.
+#[derive(Clone, Copy)]
+pub enum Work {
+    /// The band loop alone: each band cleared and handed to the display.
+    /// Every other row includes this cost.
+    Clear,
+    /// A 2D scene collected once into the primitive buffer, then
+    /// [`Renderer::render`]. Scene generation is outside the timed frame.
+    Frame2d(Scene2d),
+    /// A 2D scene generated again for every band and drawn straight into it
+    /// (no primitive storage; generation is inside the timed frame).
+    Streamed2d(Scene2d),
+    /// The standard 3D scene's vertex stage alone, once per frame, into the
+    /// frame's bins (nothing rasterized).
+    Vertex3d(Vertex),
+    /// The vertex stage once per band, keeping the band's triangles, nothing
+    /// rasterized.
+    VertexPerBand3d(Vertex),
+    /// The vertex stage once per frame, then [`Renderer::render_3d`].
+    Frame3d(Vertex, Interp),
+    /// [`Renderer::render_3d_per_band`]: the vertex stage once per band.
+    PerBand3d(Vertex, Interp),
+}
+
+/// One timed configuration.
+#[derive(Clone, Copy)]
+pub struct Bench {
+    /// The scene, as the table names it.
+    pub scene: &'static str,
+    /// What runs.
+    pub work: Work,
+}
+
+const fn bench(scene: &'static str, work: Work) -> Bench {
+    Bench { scene, work }
+}
+
+use Interp::{Affine as Aff, Perspective as Persp};
+use Vertex::{F32, Fx as Fix};
+
+/// Cortex-M4F (320 × 240, 16-row bands, frame bins): one line per configuration.
+pub const M4F: &[Bench] = &[
+    bench("band loop", Work::Clear),
+    bench("mixed", Work::Frame2d(scenes::mixed)),
+    bench("scene3d", Work::Frame3d(F32, Persp)),
+    bench("scene3d", Work::Frame3d(Fix, Persp)),
+    bench("scene3d", Work::Frame3d(F32, Aff)),
+    bench("scene3d", Work::Vertex3d(F32)),
+    bench("scene3d", Work::Vertex3d(Fix)),
+];
+
+/// Cortex-M0 (160 × 128, 4-row bands, one band's bins): one line per configuration.
+pub const M0: &[Bench] = &[
+    bench("band loop", Work::Clear),
+    bench("mixed", Work::Streamed2d(scenes::mixed)),
+    bench("scene3d", Work::PerBand3d(Fix, Aff)),
+    bench("scene3d", Work::PerBand3d(F32, Aff)),
+    bench("scene3d", Work::VertexPerBand3d(Fix)),
+    bench("scene3d", Work::VertexPerBand3d(F32)),
+];
+
+/// Primitives the Cortex-M4F configuration can hold ([`Work::Frame2d`]).
+pub const PRIMS: usize = scenes::MIXED_LEN;
+
+impl Work {
+    /// How the frame is produced, for the table.
+    pub fn describe(&self) -> &'static str {
+        match self {
+            Work::Clear => "clear + send each band",
+            Work::Frame2d(_) => "primitives in RAM",
+            Work::Streamed2d(_) => "regenerated per band",
+            Work::Vertex3d(F32) => "f32 vertex stage only",
+            Work::Vertex3d(Fix) => "Fx vertex stage only",
+            Work::VertexPerBand3d(F32) => "f32 vertex stage only, per band",
+            Work::VertexPerBand3d(Fix) => "Fx vertex stage only, per band",
+            Work::Frame3d(F32, Persp) => "f32, persp.-correct",
+            Work::Frame3d(F32, Aff) => "f32, affine",
+            Work::Frame3d(Fix, Persp) => "Fx, persp.-correct",
+            Work::Frame3d(Fix, Aff) => "Fx, affine",
+            Work::PerBand3d(F32, Persp) => "f32 per band, persp.-correct",
+            Work::PerBand3d(F32, Aff) => "f32 per band, affine",
+            Work::PerBand3d(Fix, Persp) => "Fx per band, persp.-correct",
+            Work::PerBand3d(Fix, Aff) => "Fx per band, affine",
+        }
+    }
+
+    /// The buffers it uses (names of the firmware's statics).
+    pub fn buffers(&self) -> &'static str {
+        match self {
+            Work::Clear | Work::Streamed2d(_) => "BAND",
+            Work::Frame2d(_) => "BAND,PRIMS",
+            Work::Vertex3d(_) | Work::VertexPerBand3d(_) => "BINS",
+            Work::Frame3d(..) | Work::PerBand3d(..) => "BAND,DEPTH,BINS",
+        }
+    }
+
+    /// Whether it sends pixels (a frame CRC and covered pixels mean something).
+    pub fn draws(&self) -> bool {
+        !matches!(self, Work::Vertex3d(_) | Work::VertexPerBand3d(_))
+    }
+}
+
+/// The display of the benchmark: it receives each band and does the least a
+/// display driver must do with it, reading every pixel once
+/// ([`Mode::Consume`]); or it checksums the frame ([`Mode::Crc`]) or counts
+/// the pixels that differ from a background ([`Mode::Covered`]), both
+/// outside the timed frame.
+pub struct Sink {
+    size: Size,
+    mode: Mode,
+    crc: Crc32,
+    /// Pixels that differ from the background of [`Mode::Covered`].
+    pub covered: u32,
+    /// Pixels received.
+    pub pixels: u32,
+}
+
+/// What the [`Sink`] does with the pixels.
+#[derive(Clone, Copy, PartialEq, Eq)]
+pub enum Mode {
+    /// Read them (summed into a value kept with `black_box`): the timed frame.
+    #[cfg_attr(not(target_os = "none"), allow(dead_code))]
+    Consume,
+    /// CRC-32 of the frame (as in `workload::CrcTarget`).
+    Crc,
+    /// Count those that differ from this colour.
+    Covered(Rgb565),
+}
+
+impl Sink {
+    /// A display of `width × height` pixels.
+    pub fn new(width: u32, height: u32, mode: Mode) -> Self {
+        Sink { size: Size::new(width, height), mode, crc: Crc32::new(), covered: 0, pixels: 0 }
+    }
+
+    /// CRC-32 of the frame ([`Mode::Crc`]).
+    pub fn crc(&self) -> u32 {
+        self.crc.value()
+    }
+}
+
+impl OriginDimensions for Sink {
+    fn size(&self) -> Size {
+        self.size
+    }
+}
+
+impl DrawTarget for Sink {
+    type Color = Rgb565;
+    type Error = Infallible;
+
+    fn draw_iter<I: IntoIterator<Item = Pixel<Rgb565>>>(&mut self, pixels: I) -> Result<(), Infallible> {
+        // The renderer sends whole bands only; count strays so a host run
+        // would notice (pixels then exceed width × height).
+        for p in pixels {
+            black_box(p);
+            self.pixels += 1;
+        }
+        Ok(())
+    }
+
+    fn fill_contiguous<I: IntoIterator<Item = Rgb565>>(
+        &mut self,
+        area: &Rectangle,
+        colors: I,
+    ) -> Result<(), Infallible> {
+        match self.mode {
+            Mode::Consume => {
+                let mut sum = 0u32;
+                for c in colors {
+                    sum = sum.wrapping_add(u32::from(c.into_storage()));
+                }
+                black_box(sum);
+            }
+            Mode::Crc => {
+                for c in colors {
+                    self.crc.update(&c.into_storage().to_le_bytes());
+                }
+            }
+            Mode::Covered(bg) => {
+                for c in colors {
+                    self.covered += u32::from(c != bg);
+                }
+            }
+        }
+        self.pixels += area.size.width * area.size.height;
+        Ok(())
+    }
+}
+
+/// Everything a configuration may use; on the target each buffer is its own
+/// `static`. `W`/`H`: band width (= frame width) and rows; `N`: bins;
+/// `P`: primitives.
+pub struct Buffers<'a, const W: usize, const H: usize, const N: usize, const P: usize> {
+    /// 2D primitives ([`Work::Frame2d`]).
+    pub prims: &'a mut heapless::Vec<Primitive<Rgb565, S>, P>,
+    /// Colour band.
+    pub band: &'a mut Band<Rgb565, W, H>,
+    /// Depth band.
+    pub depth: &'a mut DepthBand<Depth16, W, H>,
+    /// Screen triangles (the frame's, or one band's).
+    pub bins: &'a mut heapless::Vec<ScreenTriangle<S>, N>,
+}
+
+fn input(e: RenderError<Infallible>) -> Error {
+    match e {
+        RenderError::Input(e) => e,
+        RenderError::Target(never) => match never {},
+    }
+}
+
+/// Prepares `work` (outside the timed frame: collects a [`Work::Frame2d`]
+/// scene into the primitive buffer).
+pub fn prepare<const W: usize, const H: usize, const N: usize, const P: usize>(
+    work: Work,
+    height: u32,
+    b: &mut Buffers<'_, W, H, N, P>,
+) -> Result<(), Error> {
+    if let Work::Frame2d(scene) = work {
+        b.prims.clear();
+        if scenes::collect(scene, W as u32, height, b.prims)? != 0 {
+            return Err(Error::BufferTooSmall);
+        }
+    }
+    Ok(())
+}
+
+/// Renders one frame of `work` (after [`prepare`]) into `sink` with background `bg`:
+/// what the firmware times.
+pub fn frame<const W: usize, const H: usize, const N: usize, const P: usize>(
+    work: Work,
+    height: u32,
+    bg: Rgb565,
+    b: &mut Buffers<'_, W, H, N, P>,
+    sink: &mut Sink,
+) -> Result<(), Error> {
+    let r = Renderer::new(height, bg);
+    match work {
+        Work::Clear => r.render_with(b.band, sink, |_, _, _| {}).map_err(input),
+        Work::Frame2d(_) => r.render(b.prims, b.band, sink).map_err(input),
+        Work::Streamed2d(scene) => {
+            let mut result = Ok(());
+            r.render_with(b.band, sink, |view, y0, y1| {
+                let s = scene(W as u32, height, &mut |p| {
+                    let (lo, hi) = p.rows();
+                    if lo < y1 && hi >= y0 {
+                        p.draw(view, Cull::None);
+                    }
+                });
+                if result.is_ok() {
+                    result = s;
+                }
+            })
+            .map_err(input)?;
+            result
+        }
+        Work::Vertex3d(F32) => vertex3d::<f32, W, N>(height, b.bins),
+        Work::Vertex3d(Fix) => vertex3d::<Fx, W, N>(height, b.bins),
+        Work::VertexPerBand3d(F32) => vertex3d_per_band::<f32, W, H, N>(height, b.bins, |_, _| ()),
+        Work::VertexPerBand3d(Fix) => vertex3d_per_band::<Fx, W, H, N>(height, b.bins, |_, _| ()),
+        Work::Frame3d(F32, Persp) => frame3d::<f32, PerspectiveCorrect, W, H, N, P>(r, b, sink),
+        Work::Frame3d(F32, Aff) => frame3d::<f32, Affine, W, H, N, P>(r, b, sink),
+        Work::Frame3d(Fix, Persp) => frame3d::<Fx, PerspectiveCorrect, W, H, N, P>(r, b, sink),
+        Work::Frame3d(Fix, Aff) => frame3d::<Fx, Affine, W, H, N, P>(r, b, sink),
+        Work::PerBand3d(F32, Persp) => per_band3d::<f32, PerspectiveCorrect, W, H, N, P>(r, b, sink),
+        Work::PerBand3d(F32, Aff) => per_band3d::<f32, Affine, W, H, N, P>(r, b, sink),
+        Work::PerBand3d(Fix, Persp) => per_band3d::<Fx, PerspectiveCorrect, W, H, N, P>(r, b, sink),
+        Work::PerBand3d(Fix, Aff) => per_band3d::<Fx, Affine, W, H, N, P>(r, b, sink),
+    }
+}
+
+fn vertex3d<T: Scalar, const W: usize, const N: usize>(
+    height: u32,
+    bins: &mut heapless::Vec<ScreenTriangle<S>, N>,
+) -> Result<(), Error> {
+    let pipeline = Scene3d::pipeline::<T, S>(W as u32, height)?;
+    bins.clear();
+    black_box(Scene3d.draw::<T, Rgb565, S, N>(&pipeline, ANGLE, bins)?);
+    Ok(())
+}
+
+/// The vertex stage once per band of `H` rows; `each(y0, bins)` sees each
+/// band's triangles.
+fn vertex3d_per_band<T: Scalar, const W: usize, const H: usize, const N: usize>(
+    height: u32,
+    bins: &mut heapless::Vec<ScreenTriangle<S>, N>,
+    mut each: impl FnMut(i32, &[ScreenTriangle<S>]),
+) -> Result<(), Error> {
+    let mut pipeline = Scene3d::pipeline::<T, S>(W as u32, height)?;
+    let mut y0 = 0;
+    while y0 < height as i32 {
+        let y1 = (y0 + H as i32).min(height as i32);
+        pipeline.rows = Some((y0, y1 - 1));
+        bins.clear();
+        black_box(Scene3d.draw::<T, Rgb565, S, N>(&pipeline, ANGLE, bins)?);
+        each(y0, bins);
+        y0 = y1;
+    }
+    Ok(())
+}
+
+fn frame3d<T: Scalar, M: Interpolation, const W: usize, const H: usize, const N: usize, const P: usize>(
+    r: Renderer<Rgb565>,
+    b: &mut Buffers<'_, W, H, N, P>,
+    sink: &mut Sink,
+) -> Result<(), Error> {
+    let height = r.height();
+    let pipeline = Scene3d::pipeline::<T, S>(W as u32, height)?;
+    b.bins.clear();
+    Scene3d.draw::<T, Rgb565, S, N>(&pipeline, ANGLE, b.bins)?;
+    r.render_3d::<_, Depth16, M, S, W, H>(b.bins, b.band, b.depth, DEPTH_STATE, sink).map_err(input)
+}
+
+fn per_band3d<T: Scalar, M: Interpolation, const W: usize, const H: usize, const N: usize, const P: usize>(
+    r: Renderer<Rgb565>,
+    b: &mut Buffers<'_, W, H, N, P>,
+    sink: &mut Sink,
+) -> Result<(), Error> {
+    let mut pipeline = Scene3d::pipeline::<T, S>(W as u32, r.height())?;
+    let geometry = |y0: i32, y1: i32, bins: &mut heapless::Vec<ScreenTriangle<S>, N>| {
+        pipeline.rows = Some((y0, y1 - 1));
+        Scene3d.draw::<T, Rgb565, S, N>(&pipeline, ANGLE, bins).map(|_| ())
+    };
+    r.render_3d_per_band::<_, Depth16, M, _, S, W, H, N>(b.bins, geometry, b.band, b.depth, DEPTH_STATE, sink)
+        .map_err(input)
+}
+
+/// Triangles and lines of one frame of `work` (each triangle counted once,
+/// in the band of its top row, when the vertex stage runs per band).
+pub fn primitives<const W: usize, const H: usize, const N: usize, const P: usize>(
+    work: Work,
+    height: u32,
+    b: &mut Buffers<'_, W, H, N, P>,
+) -> Result<(u32, u32), Error> {
+    let mut tris = 0u32;
+    let mut count_2d = |scene: Scene2d| -> Result<(u32, u32), Error> {
+        let mut lines = 0;
+        scene(W as u32, height, &mut |p| match p {
+            Primitive::Triangle(_) => tris += 1,
+            Primitive::Line(_) => lines += 1,
+        })?;
+        Ok((tris, lines))
+    };
+    let mut count_3d = |t: Vertex| {
+        let mut tris = 0u32;
+        let mut each = |y0: i32, bins: &[ScreenTriangle<S>]| {
+            tris += bins.iter().filter(|t| t.rows().0.max(0) / H as i32 == y0 / H as i32).count() as u32;
+        };
+        match t {
+            F32 => vertex3d_per_band::<f32, W, H, N>(height, b.bins, &mut each),
+            Fix => vertex3d_per_band::<Fx, W, H, N>(height, b.bins, &mut each),
+        }
+        .map(|()| (tris, 0))
+    };
+    match work {
+        Work::Clear => Ok((0, 0)),
+        Work::Frame2d(scene) | Work::Streamed2d(scene) => count_2d(scene),
+        Work::Vertex3d(t) | Work::VertexPerBand3d(t) | Work::Frame3d(t, _) | Work::PerBand3d(t, _) => {
+            count_3d(t)
+        }
+    }
+}

@@ -1,0 +1,272 @@
+//! Host side of the firmware benchmark: what each configuration draws
+//! (triangles, lines, covered pixels, frame CRC), and the table that joins
+//! it with the target runs (instructions, stack) and the ELF sizes.
+
+use std::collections::BTreeMap;
+use std::fmt::{self, Write as _};
+
+use embedded_graphics_core::pixelcolor::Rgb565;
+use microraster::depth::DepthBand;
+use microraster::{Band, Error};
+
+use crate::benches::{self, BACKGROUND, Bench, Buffers, Mode, Sink};
+
+/// What the host knows of one configuration.
+pub struct HostRecord {
+    /// Index in the target's list.
+    pub index: usize,
+    /// The configuration.
+    pub bench: Bench,
+    /// Triangles drawn in a frame (each counted once).
+    pub triangles: u32,
+    /// Lines drawn in a frame.
+    pub lines: u32,
+    /// Frame pixels that differ from the background (none for work that
+    /// draws nothing).
+    pub covered: Option<u32>,
+    /// Frame pixels.
+    pub pixels: u32,
+    /// CRC-32 of the frame.
+    pub crc: u32,
+}
+
+impl fmt::Display for HostRecord {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let covered = self.covered.map_or("-".to_string(), |c| c.to_string());
+        write!(
+            f,
+            "host {} triangles={} lines={} covered={} pixels={} crc={:08x} # {} / {}",
+            self.index,
+            self.triangles,
+            self.lines,
+            covered,
+            self.pixels,
+            self.crc,
+            self.bench.scene,
+            self.bench.work.describe()
+        )
+    }
+}
+
+/// Two backgrounds that no scene draws (checked: the covered counts with
+/// either must agree).
+const SENTINELS: [Rgb565; 2] = [Rgb565::new(31, 0, 31), Rgb565::new(0, 63, 1)];
+
+fn records<const W: usize, const H: usize, const N: usize, const P: usize>(
+    list: &[Bench],
+    height: u32,
+) -> Result<Vec<HostRecord>, String> {
+    let mut prims = Box::new(heapless::Vec::new());
+    let mut band = Box::new(Band::new(BACKGROUND));
+    let mut depth = Box::new(DepthBand::new());
+    let mut bins = Box::new(heapless::Vec::new());
+    let mut b: Buffers<'_, W, H, N, P> =
+        Buffers { prims: &mut prims, band: &mut band, depth: &mut depth, bins: &mut bins };
+    let mut out = Vec::new();
+    for (index, &bench) in list.iter().enumerate() {
+        let fail =
+            |e: Error| format!("configuration {index} ({}, {}): {e}", bench.scene, bench.work.describe());
+        benches::prepare(bench.work, height, &mut b).map_err(fail)?;
+        let (triangles, lines) = benches::primitives(bench.work, height, &mut b).map_err(fail)?;
+        let mut crc = Sink::new(W as u32, height, Mode::Crc);
+        benches::frame(bench.work, height, BACKGROUND, &mut b, &mut crc).map_err(fail)?;
+        let mut covered = [0; 2];
+        for (c, bg) in covered.iter_mut().zip(SENTINELS) {
+            let mut sink = Sink::new(W as u32, height, Mode::Covered(bg));
+            benches::frame(bench.work, height, bg, &mut b, &mut sink).map_err(fail)?;
+            *c = sink.covered;
+        }
+        if covered[0] != covered[1] {
+            return Err(fail(Error::InvalidParameter) + ": a scene draws a sentinel background colour");
+        }
+        let pixels = W as u32 * height;
+        if bench.work.draws() && crc.pixels != pixels {
+            return Err(format!("configuration {index}: {} pixels sent, not {pixels}", crc.pixels));
+        }
+        let covered = bench.work.draws().then_some(covered[0]);
+        out.push(HostRecord { index, bench, triangles, lines, covered, pixels, crc: crc.crc() });
+    }
+    Ok(out)
+}
+
+/// The host records of target `m4f` or `m0`.
+pub fn host(target: &str) -> Result<Vec<HostRecord>, String> {
+    use benches::*;
+    match target {
+        "m4f" => records::<{ M4F_SIZE.0 }, M4F_BAND, BINS, PRIMS>(M4F, M4F_SIZE.1),
+        "m0" => records::<{ M0_SIZE.0 }, M0_BAND, BAND_BINS, 0>(M0, M0_SIZE.1),
+        _ => Err(format!("unknown target {target}")),
+    }
+}
+
+/// One target's measurements, as `scripts/firmware.sh table` collects them.
+#[derive(Default)]
+struct TargetRun {
+    /// `bench` lines: index → fields.
+    benches: BTreeMap<usize, BTreeMap<String, String>>,
+    /// `#` notes of the run.
+    notes: Vec<String>,
+    /// Static buffer sizes from the ELF's symbols (`nm -S`, hexadecimal).
+    symbols: BTreeMap<String, u64>,
+    /// `size` of each ELF: name → (text, data, bss).
+    sizes: Vec<(String, u64, u64, u64)>,
+    /// `key value` facts: the QEMU machine.
+    facts: BTreeMap<String, String>,
+}
+
+fn parse(input: &str) -> Result<BTreeMap<String, TargetRun>, String> {
+    let mut runs: BTreeMap<String, TargetRun> = BTreeMap::new();
+    for line in input.lines().filter(|l| !l.trim().is_empty()) {
+        let bad = || format!("cannot read {line:?}");
+        let (target, rest) = line.split_once(' ').ok_or_else(bad)?;
+        let run = runs.entry(target.to_string()).or_default();
+        let mut words = rest.split_whitespace();
+        match words.next().ok_or_else(bad)? {
+            "bench" => {
+                let index = words.next().and_then(|w| w.parse().ok()).ok_or_else(bad)?;
+                let fields = words
+                    .map(|w| w.split_once('=').map(|(k, v)| (k.to_string(), v.to_string())).ok_or_else(bad))
+                    .collect::<Result<_, _>>()?;
+                run.benches.insert(index, fields);
+            }
+            "#" => run.notes.push(rest[1..].trim().to_string()),
+            "sym" => {
+                let name = words.next().ok_or_else(bad)?;
+                let size = words.next().and_then(|w| u64::from_str_radix(w, 16).ok()).ok_or_else(bad)?;
+                run.symbols.insert(name.to_string(), size);
+            }
+            "size" => {
+                // `size NAME... TEXT DATA BSS`
+                let w: Vec<&str> = words.collect();
+                let n = w.len().checked_sub(3).filter(|&n| n > 0).ok_or_else(bad)?;
+                let v: Vec<u64> =
+                    w[n..].iter().map(|x| x.parse().map_err(|_| bad())).collect::<Result<_, _>>()?;
+                run.sizes.push((w[..n].join(" "), v[0], v[1], v[2]));
+            }
+            "fact" => {
+                let key = words.next().ok_or_else(bad)?;
+                run.facts.insert(key.to_string(), words.collect::<Vec<_>>().join(" "));
+            }
+            "error:" => return Err(format!("{target}: {rest}")),
+            other => return Err(format!("{target}: unexpected {other:?} in {line:?}")),
+        }
+    }
+    Ok(runs)
+}
+
+/// `1234567` → `1,234,567`.
+fn group(n: u64) -> String {
+    let s = n.to_string();
+    let mut out = String::new();
+    for (i, c) in s.chars().enumerate() {
+        if i > 0 && (s.len() - i).is_multiple_of(3) {
+            out.push(',');
+        }
+        out.push(c);
+    }
+    out
+}
+
+/// A ratio with one decimal below 100, none above.
+fn per(n: u64, d: u64) -> String {
+    if d == 0 {
+        return "–".to_string();
+    }
+    let x = n as f64 / d as f64;
+    if x < 100.0 { format!("{x:.1}") } else { group(x.round() as u64) }
+}
+
+/// The README table from the collected target runs (`input`).
+pub fn table(input: &str) -> Result<String, String> {
+    let runs = parse(input)?;
+    let mut out = String::new();
+    let w = &mut out;
+    let targets = [("m4f", "Cortex-M4F"), ("m0", "Cortex-M0")];
+    writeln!(
+        w,
+        "| target | scene | configuration | instructions / frame | triangles | instr. / triangle \
+         | covered px | instr. / covered px | static RAM (B) | stack (B) |"
+    )
+    .unwrap();
+    writeln!(w, "|---|---|---|--:|--:|--:|--:|--:|--:|--:|").unwrap();
+    for (t, label) in targets {
+        let run = runs.get(t).ok_or_else(|| format!("no run for {t}"))?;
+        let host = host(t)?;
+        if run.benches.len() != host.len() {
+            return Err(format!(
+                "{t}: {} configurations on the target, {} on the host",
+                run.benches.len(),
+                host.len()
+            ));
+        }
+        let frame = match t {
+            "m4f" => format!("{}×{}", benches::M4F_SIZE.0, benches::M4F_SIZE.1),
+            _ => format!("{}×{}", benches::M0_SIZE.0, benches::M0_SIZE.1),
+        };
+        for h in &host {
+            let f = run.benches.get(&h.index).ok_or_else(|| format!("{t}: no record {}", h.index))?;
+            let get = |k: &str| f.get(k).ok_or_else(|| format!("{t} record {}: no {k}", h.index));
+            let crc = u32::from_str_radix(get("crc")?, 16).map_err(|e| e.to_string())?;
+            if h.bench.work.draws() && crc != h.crc {
+                return Err(format!(
+                    "{t}: configuration {} ({} / {}): target frame CRC {crc:08x}, host {:08x}",
+                    h.index,
+                    h.bench.scene,
+                    h.bench.work.describe(),
+                    h.crc
+                ));
+            }
+            let instr: u64 = get("instr")?.parse().map_err(|_| format!("{t}: bad instr"))?;
+            let stack: u64 = get("stack")?.parse().map_err(|_| format!("{t}: bad stack"))?;
+            let ram = h.bench.work.buffers().split(',').try_fold(0, |sum, name| {
+                run.symbols
+                    .get(name)
+                    .map(|s| sum + s)
+                    .ok_or_else(|| format!("{t}: no symbol size for {name}"))
+            })?;
+            let prims = u64::from(h.triangles + h.lines);
+            let triangles = match (h.triangles, h.lines) {
+                (0, 0) => "–".to_string(),
+                (t, 0) => group(t.into()),
+                (t, l) => format!("{} + {} lines", group(t.into()), group(l.into())),
+            };
+            let (covered, per_px) = match h.covered {
+                Some(c) if c > 0 => (group(c.into()), per(instr, c.into())),
+                _ => ("–".to_string(), "–".to_string()),
+            };
+            writeln!(
+                w,
+                "| {label} | {} {frame} | {} | {} | {triangles} | {} | {covered} | {per_px} | {} | {} |",
+                h.bench.scene,
+                h.bench.work.describe(),
+                group(instr),
+                per(instr, prims),
+                group(ram),
+                group(stack),
+            )
+            .unwrap();
+        }
+    }
+    writeln!(w).unwrap();
+    writeln!(w, "| target | ELF | flash: text + data (B) | static RAM: data + bss (B) | buffers (B) |")
+        .unwrap();
+    writeln!(w, "|---|---|--:|--:|---|").unwrap();
+    for (t, label) in targets {
+        let run = &runs[t];
+        let buffers =
+            run.symbols.iter().map(|(k, v)| format!("{k} {}", group(*v))).collect::<Vec<_>>().join(", ");
+        for (name, text, data, bss) in &run.sizes {
+            writeln!(w, "| {label} | {name} | {} | {} | {buffers} |", group(text + data), group(data + bss))
+                .unwrap();
+        }
+    }
+    writeln!(w).unwrap();
+    for (t, label) in targets {
+        let run = &runs[t];
+        let machine = run.facts.get("machine").map_or("?", String::as_str);
+        for n in &run.notes {
+            writeln!(w, "- {label} (QEMU `{machine}`): {n}").unwrap();
+        }
+    }
+    Ok(out)
+}
