@@ -268,9 +268,17 @@ fn run<T: Scalar, const S: u32>(inp: &mut Input) {
     let color = Rgb565::new(inp.u8(), inp.u8(), inp.u8());
     let mut bins = heapless::Vec::<ScreenTriangle<S>, BINS>::new();
     let bad_index = indices.iter().flatten().any(|&i| usize::from(i) >= n);
+    let valid = mesh.validate();
+    assert!(!bad_index || valid == Err(Error::InvalidMesh), "bad index passed validate");
     match p.draw_mesh(&mesh, &model, color, &mut bins) {
-        Ok(st) => assert_eq!(st.emitted as usize, bins.len()),
-        Err(Error::InvalidMesh) => assert!(bad_index, "InvalidMesh without a bad index"),
+        Ok(st) => {
+            assert_eq!(valid, Ok(()), "draw_mesh accepted a mesh validate rejects");
+            assert_eq!(st.emitted as usize, bins.len())
+        }
+        // draw_mesh validates the mesh first: exactly validate's error.
+        Err(e @ (Error::InvalidMesh | Error::NonFiniteCoordinate | Error::CoordinateOutOfRange)) => {
+            assert_eq!(valid, Err(e), "draw_mesh error {e:?} without validate's")
+        }
         Err(Error::BufferTooSmall) => assert_eq!(bins.len(), BINS),
         Err(Error::InvalidParameter) => {}
         Err(e) => panic!("draw_mesh: undocumented error {e:?}"),
