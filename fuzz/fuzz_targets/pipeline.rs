@@ -220,6 +220,9 @@ fn run<T: Scalar, const S: u32>(inp: &mut Input) {
         _ => (inp.i32(), inp.i32()),
     };
     p = p.with_origin(origin.0, origin.1);
+    // `with_origin` clamps the origin to ±MAX_FRAME_DIM (documented).
+    let lim = microraster::MAX_FRAME_DIM as i32;
+    let origin = (origin.0.clamp(-lim, lim), origin.1.clamp(-lim, lim));
     match inp.u8() % 6 {
         0 => p.clip = p.clip.with_guard_band(inp.f32()),
         1 => p.clip = p.clip.with_w_min(inp.f32()),
