@@ -65,6 +65,20 @@ pub struct ScreenTriangle<const S: u32> {
 }
 
 impl<const S: u32> ScreenTriangle<S> {
+    /// The attribute plane through `values` at the vertices, referenced at a
+    /// band-independent pixel (see `attr`); `None` for zero area.
+    pub(crate) fn plane(&self, values: [i64; 3]) -> Option<Plane> {
+        let frame =
+            PlaneFrame { v: self.v.map(|v| (2 * v.pos.x() as i64, 2 * v.pos.y() as i64)), shift: S + 1 };
+        let (rx, ry) = reference_pixel(self.v[0].pos);
+        Plane::new(&frame, values, rx, ry)
+    }
+
+    /// The depth plane in 2^-[`DEPTH_FRAC`] steps of format `F`.
+    pub(crate) fn depth_plane<F: DepthFormat>(&self) -> Option<Plane> {
+        self.plane(self.v.map(|v| depth_steps(v.depth, F::MAX)))
+    }
+
     /// Inclusive range of pixel rows the triangle can touch.
     pub fn rows(&self) -> (i32, i32) {
         let ys = self.v.map(|v| v.pos.y());
@@ -114,14 +128,10 @@ pub fn draw_triangle<C, F, M, const S: u32, const W: usize>(
 {
     use crate::blit::Blitter;
     let spans = TriangleSpans::new(tri.v.map(|v| v.pos), color.clip(), Cull::None);
-    let frame = PlaneFrame { v: tri.v.map(|v| (2 * v.pos.x() as i64, 2 * v.pos.y() as i64)), shift: S + 1 };
-    let (rx, ry) = reference_pixel(tri.v[0].pos);
-    let plane = |values: [i64; 3]| Plane::new(&frame, values, rx, ry);
+    let plane = |values: [i64; 3]| tri.plane(values);
     let y0 = color.y0();
-
-    // Depth plane, in 2^-DEPTH_FRAC depth steps.
     let zplane = if F::ENABLED {
-        match plane(tri.v.map(|v| depth_steps(v.depth, F::MAX))) {
+        match tri.depth_plane::<F>() {
             Some(p) => Some(p),
             None => return,
         }
@@ -130,7 +140,6 @@ pub fn draw_triangle<C, F, M, const S: u32, const W: usize>(
     };
     let max = C::CHANNEL_MAX;
     let shading = Shading::<M>::new(tri, max, &plane);
-    let zmax = (F::MAX as i64) << DEPTH_FRAC;
 
     for span in spans {
         let (x0, len) = (span.x as usize, span.len as usize);
@@ -142,8 +151,7 @@ pub fn draw_triangle<C, F, M, const S: u32, const W: usize>(
                 let Some(dspan) = drow else { continue };
                 let (mut z, dz) = (zp.at(span.x, span.y), zp.step_x());
                 for (p, slot) in cspan.iter_mut().zip(dspan.iter_mut()) {
-                    // Round to nearest depth step; the clamp only matters at ±rounding.
-                    let zq = ((z.clamp(0, zmax) + (1 << (DEPTH_FRAC - 1))) >> DEPTH_FRAC) as u32;
+                    let zq = depth_value::<F>(z);
                     if state.test.passes(zq, F::to_u32(*slot)) {
                         if state.write {
                             *slot = F::from_u32(zq);
@@ -162,6 +170,13 @@ pub fn draw_triangle<C, F, M, const S: u32, const W: usize>(
             }
         }
     }
+}
+
+/// A depth-plane value rounded to the nearest step of `F`; the clamp only
+/// matters at ± rounding.
+#[inline(always)]
+pub(crate) fn depth_value<F: DepthFormat>(z: i64) -> u32 {
+    ((z.clamp(0, (F::MAX as i64) << DEPTH_FRAC) + (1 << (DEPTH_FRAC - 1))) >> DEPTH_FRAC) as u32
 }
 
 /// `depth / (2^32 − 1) · max · 2^DEPTH_FRAC`: a vertex depth in depth steps

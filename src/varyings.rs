@@ -20,12 +20,11 @@
 //!   **½ + (2^10 + |v|/8)/(Q − 1/8)** of the exact value: for a triangle whose
 //!   depth range is `w_max/w_min ≤ 16`, within ½ + 0.04.
 
-use crate::attr::{Plane, PlaneFrame};
+use crate::attr::Plane;
 use crate::band::BandView;
 use crate::depth::{DepthFormat, DepthState};
 use crate::edge::{Cull, TriangleSpans};
-use crate::primitive::reference_pixel;
-use crate::raster3d::{DEPTH_FRAC, Interpolation, ScreenTriangle, depth_steps, normalised_q};
+use crate::raster3d::{DEPTH_FRAC, Interpolation, ScreenTriangle, depth_value, normalised_q};
 use crate::{Error, Interpolate};
 
 /// Largest accepted magnitude of a varying (2^23).
@@ -65,10 +64,7 @@ impl<const A: usize> Varyings<A> {
         if values.iter().flatten().any(|v| v.unsigned_abs() > MAX_VARYING as u32) {
             return Err(Error::CoordinateOutOfRange);
         }
-        let frame =
-            PlaneFrame { v: tri.v.map(|v| (2 * v.pos.x() as i64, 2 * v.pos.y() as i64)), shift: S + 1 };
-        let (rx, ry) = reference_pixel(tri.v[0].pos);
-        let plane = |vals: [i64; 3]| Plane::new(&frame, vals, rx, ry);
+        let plane = |vals: [i64; 3]| tri.plane(vals);
         let (q, scale) = if M::PERSPECTIVE {
             let q = normalised_q(tri, Q_BITS);
             let Some(qp) = plane(q.map(|q| q << DEPTH_FRAC)) else { return Ok(None) };
@@ -126,17 +122,14 @@ pub fn draw_fragments<C, F, const S: u32, const W: usize>(
 {
     use crate::blit::Blitter;
     let spans = TriangleSpans::new(tri.v.map(|v| v.pos), color.clip(), Cull::None);
-    let frame = PlaneFrame { v: tri.v.map(|v| (2 * v.pos.x() as i64, 2 * v.pos.y() as i64)), shift: S + 1 };
-    let (rx, ry) = reference_pixel(tri.v[0].pos);
     let zplane = if F::ENABLED {
-        match Plane::new(&frame, tri.v.map(|v| depth_steps(v.depth, F::MAX)), rx, ry) {
+        match tri.depth_plane::<F>() {
             Some(p) => Some(p),
             None => return,
         }
     } else {
         None
     };
-    let zmax = (F::MAX as i64) << DEPTH_FRAC;
     let y0 = color.y0();
     for span in spans {
         let (x0, len) = (span.x as usize, span.len as usize);
@@ -146,7 +139,7 @@ pub fn draw_fragments<C, F, const S: u32, const W: usize>(
         for (i, p) in cspan.iter_mut().enumerate() {
             let pass = match (&mut drow, F::ENABLED) {
                 (Some(d), true) => {
-                    let zq = ((z.clamp(0, zmax) + (1 << (DEPTH_FRAC - 1))) >> DEPTH_FRAC) as u32;
+                    let zq = depth_value::<F>(z);
                     let slot = &mut d[i];
                     let ok = state.test.passes(zq, F::to_u32(*slot));
                     if ok && state.write {
