@@ -14,6 +14,8 @@
 //! | `mps2-an386` | `memory/mps2-an386.x` | QEMU `mps2-an386` (instruction counting) |
 //! | `microbit` (default on thumbv6m) | `memory/microbit.x` | BBC micro:bit v1 (nRF51822); QEMU `microbit` |
 //!
+//! The examples also see `cfg(microraster_board = "…")` with the chosen value.
+//!
 //! The chosen file is copied to `OUT_DIR/memory.x`, which goes on the link
 //! search path. The linker, though, looks for an `INCLUDE`d file in its
 //! working directory (the package root, where the real board's `memory.x`
@@ -28,6 +30,10 @@ fn main() {
     // Without this line Cargo would rerun the script, and so rebuild the
     // library, whenever any file of the package changes.
     println!("cargo:rerun-if-changed=build.rs");
+    // The firmware examples pick their timer by board (examples/fw_bench/clock.rs).
+    println!(
+        "cargo:rustc-check-cfg=cfg(microraster_board, values(\"stm32f405\", \"mps2-an386\", \"microbit\"))"
+    );
     if env::var("CARGO_CFG_TARGET_OS").as_deref() != Ok("none") {
         return;
     }
@@ -42,6 +48,7 @@ fn main() {
         other => panic!("MICRORASTER_BOARD={other}: expected stm32f405, mps2-an386 or microbit"),
     };
     println!("cargo:rerun-if-changed={file}");
+    println!("cargo:rustc-cfg=microraster_board=\"{board}\"");
     let root = PathBuf::from(env::var_os("CARGO_MANIFEST_DIR").expect("cargo sets CARGO_MANIFEST_DIR"));
     let out = PathBuf::from(env::var_os("OUT_DIR").expect("cargo sets OUT_DIR"));
     fs::copy(root.join(file), out.join("memory.x")).expect("copy the memory layout");

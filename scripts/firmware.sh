@@ -11,6 +11,10 @@
 #   bash scripts/firmware.sh table          the README's table: instructions per frame
 #                                           (QEMU -icount), static RAM, flash, stack,
 #                                           per scene and target (examples/fw_bench)
+#   bash scripts/firmware.sh sweep          Cortex-M4F and Cortex-M0 instruction counts of the
+#                                           speed/accuracy report's configurations into
+#                                           docs/data/cortex-m.tsv (examples/fw_sweep); then
+#                                           `cargo run --release --example report`
 #   bash scripts/firmware.sh build-st7789   build the ST7789 display example (its own
 #                                           package: examples/st7789, STM32F405), print
 #                                           its path; flash it with probe-rs (see there)
@@ -32,6 +36,12 @@
 # host's. Static RAM comes from the ELF symbols (nm), flash and total RAM from
 # `size`, the stack from painting it before each frame. QEMU counts
 # instructions, not cycles: no wait states, no pipeline, no bus.
+# The report's counts (`sweep`). examples/fw_sweep runs every configuration
+# of the report (its key column) at 320×240: built for both triples, linked
+# for QEMU's mps2-an386 (4 MB of RAM; the micro:bit's 16 KB cannot hold a
+# 320×240 band set or a framebuffer) and timed by SysTick there. The
+# mps2-an386's Cortex-M4 executes the thumbv6m build instruction for
+# instruction, so its counts are the Cortex-M0's. Frames must equal the host's.
 # Targets. m4f: thumbv7em-none-eabihf (Cortex-M4F), linked with memory.x
 # (STM32F405) and run on QEMU's netduinoplus2 (an STM32F405); with
 # MICRORASTER_BOARD=mps2-an386, linked for and run on QEMU's mps2-an386.
@@ -86,6 +96,7 @@ machine() {
     thumbv6m-none-eabi)
       case ${MICRORASTER_BOARD:-microbit} in
         microbit) echo microbit ;;
+        mps2-an386) echo mps2-an386 ;; # its Cortex-M4 runs ARMv6-M code unchanged (fw_sweep)
         *) die "no QEMU machine for MICRORASTER_BOARD=$MICRORASTER_BOARD on $1" ;;
       esac
       ;;
@@ -357,6 +368,25 @@ check() {
   return $failed
 }
 
+# The report's Cortex-M counts: both triples on mps2-an386, frames checked
+# against the host's, written to docs/data/cortex-m.tsv.
+sweep() {
+  setup
+  local t elf start logs=()
+  for t in "${TARGETS[@]}"; do
+    start=$SECONDS
+    elf=$(MICRORASTER_BOARD=mps2-an386 build "$t" fw_sweep)
+    MICRORASTER_BOARD=mps2-an386 MICRORASTER_QEMU_ARGS="-icount shift=0" qemu "$elf" >"$FW_DIR/sweep-$t.log" || {
+      cat "$FW_DIR/sweep-$t.log" >&2
+      die "the sweep failed on $t"
+    }
+    logs+=("$FW_DIR/sweep-$t.log")
+    echo "sweep $t ($(triple "$t"), QEMU mps2-an386 -icount shift=0): $((SECONDS - start)) s" >&2
+  done
+  mkdir -p "$ROOT/docs/data"
+  cargo run --quiet --release --example fw_sweep -- tsv "$ROOT/docs/data/cortex-m.tsv" "${logs[@]}"
+}
+
 toolchain() {
   local t
   for t in "${TARGETS[@]}"; do
@@ -375,6 +405,7 @@ case ${1:-} in
   build) build "${2:?build m4f|m0 [EXAMPLE]}" "${3:-firmware}" ;;
   build-st7789) build_st7789 ;;
   table) table ;;
+  sweep) sweep ;;
   run) run "${2:?run m4f|m0}" ;;
   check) check ;;
   size) sizes ;;

@@ -1,12 +1,13 @@
-//! Hook for the Cortex-M instruction counts (issue 5, part 2).
+//! The Cortex-M instruction counts (issue 5, part 2).
 //!
-//! The QEMU instruction-counting harness is to write `docs/data/cortex-m.tsv`,
-//! one measurement per line, tab-separated, `#` comments allowed:
+//! `bash scripts/firmware.sh sweep` (`examples/fw_sweep`) writes
+//! `docs/data/cortex-m.tsv`, one measurement per line, tab-separated, `#`
+//! comments allowed:
 //!
 //! ```text
 //! # core  key                                        instructions_per_frame
-//! m4f     mesh3d/f32/D16/persp/band16/S4             2913337
-//! m0      scatter/band16/S4/flat                     8123456
+//! m4f     mesh3d/f32/D16/persp/band16/S4             12345678
+//! m0      scatter/band16/S4/flat                     23456789
 //! ```
 //!
 //! `core` is `m4f` or `m0`; `key` is one of the configuration keys printed

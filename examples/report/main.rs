@@ -11,8 +11,8 @@
 //! Timing: a median of repeated runs ([`timing`]); the criterion benchmarks
 //! (`cargo bench --bench peers`) measure the same renderers
 //! (`benches/common/mod.rs`, included below) with criterion. Cortex-M
-//! instruction counts are read from `docs/data/cortex-m.tsv` when the QEMU
-//! harness has written it ([`cortex`]).
+//! instruction counts are read from `docs/data/cortex-m.tsv`, which
+//! `bash scripts/firmware.sh sweep` writes (`examples/fw_sweep`, [`cortex`]).
 
 use embedded_graphics_core::pixelcolor::{Rgb565, RgbColor};
 use microraster::Band;
@@ -171,7 +171,7 @@ fn main() -> Res<()> {
     eprintln!("report: charts and tables");
     let doc = document(&cpu, memset_ns, ceiling, &peers, &breakdown, &s2, &s3, &setups, &counts);
     std::fs::write(out.join("tradeoffs.md"), doc)?;
-    draw_charts(&charts_dir, ceiling, &peers, &s2, &s3)?;
+    draw_charts(&charts_dir, ceiling, &peers, &s2, &s3, &counts)?;
     eprintln!("report: wrote {} and {}", out.join("tradeoffs.md").display(), charts_dir.display());
     Ok(())
 }
@@ -406,7 +406,10 @@ fn document(
     let _ = writeln!(
         w,
         "| scene 4 on Cortex-M4F, 16-row bands: ≤ 3 M instructions per frame | {} | {} |",
-        m4.map_or("pending (QEMU harness)".into(), |n| n.to_string()),
+        m4.map_or("pending (`bash scripts/firmware.sh sweep`)".into(), |n| {
+            let v = counts.get("m4f", "mesh3d/vertex/f32").map_or("?".into(), |v| v.to_string());
+            format!("{n} (vertex stage alone: {v})")
+        }),
         m4.map_or("pending", |n| if n <= 3_000_000 { "**met**" } else { "**missed**" })
     );
     let (f0, x0) = (counts.get("m0", "mesh3d/vertex/f32"), counts.get("m0", "mesh3d/vertex/Fx"));
@@ -414,8 +417,9 @@ fn document(
         w,
         "| Cortex-M0: Fx vertex path ≥ 3× fewer instructions than f32 | {} | {} |\n",
         match (f0, x0) {
-            (Some(a), Some(b)) => format!("{:.2}×", a as f64 / b as f64),
-            _ => "pending (QEMU harness)".into(),
+            (Some(a), Some(b)) =>
+                format!("{:.2}× (vertex stage of scene 4: f32 {a}, Fx {b})", a as f64 / b as f64),
+            _ => "pending (`bash scripts/firmware.sh sweep`)".into(),
         },
         match (f0, x0) {
             (Some(a), Some(b)) => verdict(a as f64 / b as f64 >= 3.0),
@@ -529,8 +533,11 @@ fn document(
         w,
         "Each knob varied alone from the baseline: S = 4 subpixel bits, 16-bit depth, 16-row bands, \
          perspective-correct colour, f32 vertex math. Cost is host time per frame; the Cortex-M columns are \
-         instructions per frame from the QEMU harness (`docs/data/cortex-m.tsv`, see `examples/report/cortex.rs`), \
-         \"pending\" until it has run. Errors:\n\n\
+         instructions per frame of the same configuration built for the Cortex-M4F (`thumbv7em-none-eabihf`, \
+         hardware f32) and the Cortex-M0 (`thumbv6m-none-eabi`: soft float, no divider), counted under QEMU with \
+         `-icount shift=0` by `bash scripts/firmware.sh sweep` (`examples/fw_sweep`, frames checked identical to the \
+         host's, written to `docs/data/cortex-m.tsv`), \"pending\" until it has run. Instructions, not cycles: no \
+         wait states, no bus. Errors:\n\n\
          * **2D mismatches**: pixels of scene 1 whose top triangle differs from an f64 rasterizer on the \
          unsnapped vertices (scene 1 before snapping, `scenes::scatter_fine`, vertices at 1/65536 px; rate = \
          mismatches ÷ pixels the reference covers);\n\
@@ -713,10 +720,17 @@ fn document(
         );
     }
     let _ = writeln!(w, "\n![cost per pixel](charts/cost_per_pixel.png)\n");
+    if counts.any() {
+        let _ = writeln!(
+            w,
+            "![Cortex-M4F instructions per pixel](charts/instructions_per_pixel_m4f.png)\n\n\
+             ![Cortex-M0 instructions per pixel](charts/instructions_per_pixel_m0.png)\n"
+        );
+    }
     if !counts.any() {
         let _ = writeln!(
             w,
-            "Cortex-M instruction counts: **pending**. The QEMU instruction-counting harness writes \
+            "Cortex-M instruction counts: **pending**. `bash scripts/firmware.sh sweep` writes \
              `docs/data/cortex-m.tsv` (format in `examples/report/cortex.rs`); rerun this command to fill the \
              columns above.\n"
         );
@@ -761,7 +775,14 @@ fn cost_rows(peers: &[Peer], s3: &[Row3d]) -> Vec<CostRow> {
     rows
 }
 
-fn draw_charts(dir: &Path, ceiling: f64, peers: &[Peer], s2: &[Row2d], s3: &[Row3d]) -> Res<()> {
+fn draw_charts(
+    dir: &Path,
+    ceiling: f64,
+    peers: &[Peer],
+    s2: &[Row2d],
+    s3: &[Row3d],
+    counts: &cortex::Counts,
+) -> Res<()> {
     // Peers: how many times longer each peer takes than microraster.
     let mut bars = Vec::new();
     for p in peers {
@@ -798,6 +819,24 @@ fn draw_charts(dir: &Path, ceiling: f64, peers: &[Peer], s2: &[Row2d], s3: &[Row
         true,
         None,
     )?;
+
+    // Cortex-M instructions per pixel written, where counted.
+    for (core, name) in [("m4f", "Cortex-M4F"), ("m0", "Cortex-M0")] {
+        let bars: Vec<(String, f64)> = cost_rows(peers, s3)
+            .into_iter()
+            .filter_map(|r| counts.get(core, &r.key).map(|n| (r.label, n as f64 / r.pixels as f64)))
+            .collect();
+        if !bars.is_empty() {
+            charts::bar_chart(
+                &dir.join(format!("instructions_per_pixel_{core}.png")),
+                &format!("{name} instructions per pixel written (QEMU count)"),
+                "instructions per pixel (log)",
+                &bars,
+                true,
+                None,
+            )?;
+        }
+    }
 
     let pts = |rows: Vec<(String, f64, f64)>| -> Vec<Point2> {
         rows.into_iter().map(|(label, x, y)| Point2 { label, x, y }).collect()
