@@ -169,8 +169,13 @@ fn main() -> Res<()> {
     };
 
     eprintln!("report: charts and tables");
-    let doc = document(&cpu, memset_ns, ceiling, &peers, &breakdown, &s2, &s3, &setups, &counts);
+    let (doc, targets) = document(&cpu, memset_ns, ceiling, &peers, &breakdown, &s2, &s3, &setups, &counts);
     std::fs::write(out.join("tradeoffs.md"), doc)?;
+    // The README quotes the targets table; keep it in step when writing docs/.
+    let readme = out.join("../README.md");
+    if out.ends_with("docs") && readme.exists() {
+        update_readme(&readme, &targets)?;
+    }
     draw_charts(&charts_dir, ceiling, &peers, &s2, &s3, &counts)?;
     eprintln!("report: wrote {} and {}", out.join("tradeoffs.md").display(), charts_dir.display());
     Ok(())
@@ -352,7 +357,7 @@ fn document(
     s3: &[Row3d],
     setups: &[(usize, usize)],
     counts: &cortex::Counts,
-) -> String {
+) -> (String, String) {
     let mut d = String::new();
     let w = &mut d;
     let _ = writeln!(w, "# Speed and accuracy: measurements\n");
@@ -383,19 +388,21 @@ fn document(
         .find(|b| b.scene == "large")
         .zip(find(peers, "large/band16/S4/flat"))
         .map_or(f64::NAN, |(b, p)| p.covered as f64 / (b.full - b.empty) / ceiling);
-    let _ = writeln!(w, "| target | measured | verdict |\n|---|---|---|");
+    let mut targets = String::new();
+    let t = &mut targets;
+    let _ = writeln!(t, "| target | measured | verdict |\n|---|---|---|");
     let _ = writeln!(
-        w,
+        t,
         "| scene 1: ≥ 5× faster than embedded-graphics' triangle fill | {eg_slice:.2}× (16-row bands vs e-g, both into a slice framebuffer); {eg_fb:.2}× (both into e-g's `Framebuffer`); {eg_direct:.2}× (direct drawing, slice) | {} |",
         verdict(eg_slice >= 5.0 && eg_fb >= 5.0)
     );
     let _ = writeln!(
-        w,
+        t,
         "| scene 1: ≥ 1.5× faster than tiny-skia without anti-aliasing | {sk:.2}× (16-row bands); {sk_direct:.2}× (direct drawing) | {} |",
         verdict(sk >= 1.5)
     );
     let _ = writeln!(
-        w,
+        t,
         "| scene 2: flat fill ≥ 50% of the slice-fill ceiling | {:.0}% (16-row bands, whole frame incl. band clear and send); {:.0}% (16-row bands, without the band clear and send); {:.0}% (direct drawing) | {} |",
         fill_band * 100.0,
         fill_spans * 100.0,
@@ -404,7 +411,7 @@ fn document(
     );
     let m4 = counts.get("m4f", "mesh3d/f32/D16/persp/band16/S4");
     let _ = writeln!(
-        w,
+        t,
         "| scene 4 on Cortex-M4F, 16-row bands: ≤ 3 M instructions per frame | {} | {} |",
         m4.map_or("pending (`bash scripts/firmware.sh sweep`)".into(), |n| {
             let v = counts.get("m4f", "mesh3d/vertex/f32").map_or("?".into(), |v| v.to_string());
@@ -414,8 +421,8 @@ fn document(
     );
     let (f0, x0) = (counts.get("m0", "mesh3d/vertex/f32"), counts.get("m0", "mesh3d/vertex/Fx"));
     let _ = writeln!(
-        w,
-        "| Cortex-M0: Fx vertex path ≥ 3× fewer instructions than f32 | {} | {} |\n",
+        t,
+        "| Cortex-M0: Fx vertex path ≥ 3× fewer instructions than f32 | {} | {} |",
         match (f0, x0) {
             (Some(a), Some(b)) =>
                 format!("{:.2}× (vertex stage of scene 4: f32 {a}, Fx {b})", a as f64 / b as f64),
@@ -426,6 +433,8 @@ fn document(
             _ => "pending",
         }
     );
+    w.push_str(&targets);
+    w.push('\n');
     let _ = writeln!(
         w,
         "Slice-fill ceiling: `fill` of the whole {W} × {H} `Rgb565` buffer takes {} µs, {:.2} pixels per ns. \
@@ -735,7 +744,22 @@ fn document(
              columns above.\n"
         );
     }
-    d
+    (d, targets)
+}
+
+/// Replaces the README's targets table (between its `<!-- targets:begin -->`
+/// and `<!-- targets:end -->` markers) with this run's.
+fn update_readme(path: &Path, targets: &str) -> Res<()> {
+    let text = std::fs::read_to_string(path)?;
+    let (begin, end) = ("<!-- targets:begin -->", "<!-- targets:end -->");
+    let (Some(a), Some(b)) = (text.find(begin), text.find(end)) else {
+        return Err(format!("{}: no {begin} … {end} markers", path.display()).into());
+    };
+    let table = format!(
+        "{begin}\nFrom `docs/tradeoffs.md` (written with this table by `cargo run --release --example report`):\n\n{targets}"
+    );
+    std::fs::write(path, format!("{}{table}{}", &text[..a], &text[b..]))?;
+    Ok(())
 }
 
 struct CostRow {
