@@ -10,6 +10,7 @@
 
 mod attr;
 pub mod band;
+pub mod blend;
 pub mod blit;
 pub mod clip;
 pub mod clip3d;

@@ -8,6 +8,7 @@
 //! - `triangles_skia`: against tiny-skia's non-anti-aliased fill.
 //! - `watertight`: meshes tiling a region hit every pixel exactly once.
 //! - `lines`: midpoint lines vs an `f64` reference and embedded-graphics' `Line`.
+//! - `blend`: every blend mode × colour format vs an `f64` reference; translucent drawing; depth sort.
 //! - `gouraud`: Gouraud colour vs an `f64` barycentric reference.
 //! - `bands`: identical images for every band height; one `fill_contiguous` per band.
 //! - `mock_display`: embedded-graphics `MockDisplay` pattern tests (overdraw panics).
@@ -17,6 +18,7 @@
 //! - `framebuffer`: a recording host `DrawTarget` used by the suites above.
 
 mod bands;
+mod blend;
 mod clip3d_raster;
 mod clip3d_ref;
 mod depth3d;
