@@ -20,6 +20,7 @@ pub mod edge;
 pub mod error;
 pub mod light;
 pub mod line;
+pub mod line_aa;
 pub mod math;
 pub mod mesh;
 pub mod pipeline;
