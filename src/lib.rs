@@ -10,6 +10,7 @@
 
 mod attr;
 pub mod band;
+pub mod blend;
 pub mod blit;
 pub mod clip;
 pub mod clip3d;
@@ -19,6 +20,7 @@ pub mod edge;
 pub mod error;
 pub mod light;
 pub mod line;
+pub mod line_aa;
 pub mod math;
 pub mod mesh;
 pub mod pipeline;

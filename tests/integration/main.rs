@@ -8,6 +8,8 @@
 //! - `triangles_skia`: against tiny-skia's non-anti-aliased fill.
 //! - `watertight`: meshes tiling a region hit every pixel exactly once.
 //! - `lines`: midpoint lines vs an `f64` reference and embedded-graphics' `Line`.
+//! - `line_aa`: anti-aliased lines vs an `f64` Wu reference; band invariance.
+//! - `blend`: every blend mode × colour format vs an `f64` reference; translucent drawing; depth sort.
 //! - `gouraud`: Gouraud colour vs an `f64` barycentric reference.
 //! - `bands`: identical images for every band height; one `fill_contiguous` per band.
 //! - `mock_display`: embedded-graphics `MockDisplay` pattern tests (overdraw panics).
@@ -17,6 +19,7 @@
 //! - `framebuffer`: a recording host `DrawTarget` used by the suites above.
 
 mod bands;
+mod blend;
 mod clip3d_raster;
 mod clip3d_ref;
 mod depth3d;
@@ -24,6 +27,7 @@ mod framebuffer;
 mod gouraud;
 mod interpenetrate;
 mod limits;
+mod line_aa;
 mod lines;
 mod mock_display;
 mod per_band;
