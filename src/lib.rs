@@ -30,6 +30,7 @@ pub mod render;
 pub mod scenes;
 pub mod scenes3d;
 pub mod subpixel;
+pub mod texture;
 pub mod varyings;
 
 pub use band::Band;

@@ -15,6 +15,7 @@
 //! - `mock_display`: embedded-graphics `MockDisplay` pattern tests (overdraw panics).
 //! - `per_band`: the per-band vertex stage draws what the per-frame one draws.
 //! - `varyings`: per-vertex value vectors vs f64; the fragment hook's coverage.
+//! - `texture`: texture sampling vs f64; textured triangles (affine and perspective-correct).
 //! - 3D: `depth3d`, `zfight`, `perspective`, `clip3d_raster`, `interpenetrate`, `pipeline3d` (references in `ref3d`, `clip3d_ref`).
 //! - `framebuffer`: a recording host `DrawTarget` used by the suites above.
 
@@ -38,6 +39,7 @@ mod props3d;
 mod ref3d;
 mod reference;
 mod regressions;
+mod texture;
 mod triangles_exact;
 mod triangles_float;
 mod triangles_skia;

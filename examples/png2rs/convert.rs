@@ -1,0 +1,102 @@
+//! Pixel conversion for `png2rs`, every value rounded once to nearest from
+//! the source's full precision.
+//!
+//! * `rgb565`: each channel `round(v·m/max)` with `m` 31, 63, 31 and `max`
+//!   255 or 65535 (odd, so there are no ties), packed as `embedded-graphics`'
+//!   raw `Rgb565` bits (red 15–11, green 10–5, blue 4–0).
+//! * `gray8`: a grey source keeps its level, `round(v·255/max)`; a colour
+//!   source becomes its Rec. 601 luma `0.299 r + 0.587 g + 0.114 b` (on the
+//!   channels scaled to 0–255), computed exactly in integers and rounded
+//!   half up.
+//! * Alpha: textures have none. Images whose every pixel is opaque convert;
+//!   any other pixel is an error unless alpha is ignored (`--ignore-alpha`),
+//!   which keeps each pixel's colour and drops its alpha.
+
+use crate::decode::Image;
+
+/// The texel format to emit.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Format {
+    /// `u16` raw Rgb565 bits.
+    Rgb565,
+    /// `u8` grey levels.
+    Gray8,
+}
+
+impl Format {
+    /// The format named on the command line (`rgb565`, `gray8`).
+    pub fn parse(s: &str) -> Option<Format> {
+        match s {
+            "rgb565" => Some(Format::Rgb565),
+            "gray8" => Some(Format::Gray8),
+            _ => None,
+        }
+    }
+}
+
+/// Converted texels.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum Texels {
+    /// Raw Rgb565 bits, row by row.
+    Rgb565(Vec<u16>),
+    /// Grey levels, row by row.
+    Gray8(Vec<u8>),
+}
+
+/// How pixels that are not fully opaque are handled.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Alpha {
+    /// They are an error.
+    Reject,
+    /// Their alpha is dropped.
+    Ignore,
+}
+
+/// `round(v·m/max)` for `v ≤ max`, `max` odd (no ties).
+fn scale(v: u16, m: u32, max: u16) -> u32 {
+    let (v, max) = (u32::from(v), u32::from(max));
+    (2 * v * m + max) / (2 * max)
+}
+
+/// Converts `image` to `format`; the second value counts pixels that were
+/// not fully opaque (0 unless alpha is ignored).
+pub fn convert(image: &Image, format: Format, alpha: Alpha) -> Result<(Texels, usize), String> {
+    let translucent = image.pixels.iter().filter(|p| p[3] != image.max).count();
+    if translucent > 0 && alpha == Alpha::Reject {
+        let first = image.pixels.iter().position(|p| p[3] != image.max).unwrap_or(0);
+        let (x, y) = (first as u32 % image.width, first as u32 / image.width);
+        return Err(format!(
+            "{translucent} pixels are not fully opaque (the first at x {x}, y {y}); textures have no \
+             alpha: pass --ignore-alpha to drop it"
+        ));
+    }
+    let max = image.max;
+    let texels = match format {
+        Format::Rgb565 => Texels::Rgb565(
+            image
+                .pixels
+                .iter()
+                .map(|&[r, g, b, _]| {
+                    ((scale(r, 31, max) << 11) | (scale(g, 63, max) << 5) | scale(b, 31, max)) as u16
+                })
+                .collect(),
+        ),
+        Format::Gray8 => Texels::Gray8(
+            image
+                .pixels
+                .iter()
+                .map(|&[r, g, b, _]| {
+                    if image.gray {
+                        scale(r, 255, max) as u8
+                    } else {
+                        // Exactly, in integers: 255·(299 r + 587 g + 114 b)/(1000·max).
+                        let [r, g, b, max] = [r, g, b, max].map(u64::from);
+                        let num = 255 * (299 * r + 587 * g + 114 * b);
+                        ((2 * num + 1000 * max) / (2000 * max)) as u8
+                    }
+                })
+                .collect(),
+        ),
+    };
+    Ok((texels, translucent))
+}

@@ -1,0 +1,64 @@
+//! Texel formats: how a texel is stored in flash and expanded to 8-bit
+//! channels.
+
+use core::fmt::Debug;
+use embedded_graphics_core::pixelcolor::{Gray8, Rgb565};
+
+mod sealed {
+    pub trait Sealed {}
+    impl Sealed for embedded_graphics_core::pixelcolor::Rgb565 {}
+    impl Sealed for embedded_graphics_core::pixelcolor::Gray8 {}
+}
+
+/// A texel format. Sealed: implemented by the `embedded-graphics` colour
+/// types [`Rgb565`] (a `u16` per texel) and [`Gray8`] (a `u8`), so a texture
+/// reads as `Texture<'static, Rgb565>`.
+///
+/// ```
+/// use embedded_graphics_core::pixelcolor::{Gray8, Rgb565};
+/// use microraster::texture::TexelFormat;
+/// // 5/6/5 bits expanded to 8 by bit replication: full scale stays full scale.
+/// assert_eq!(Rgb565::expand(0xFFFF), [255, 255, 255]);
+/// assert_eq!(Rgb565::expand(0b10000_100000_00001), [132, 130, 8]);
+/// assert_eq!(Gray8::expand(77), [77, 77, 77]);
+/// ```
+pub trait TexelFormat: sealed::Sealed {
+    /// One stored texel: `u16` raw bits for [`Rgb565`] (red in bits 15–11,
+    /// green 10–5, blue 4–0: `embedded-graphics`' `RawU16`), `u8` for
+    /// [`Gray8`].
+    type Storage: Copy + Default + Debug + PartialEq + 'static;
+
+    /// Channels that carry information (3 for [`Rgb565`], 1 for [`Gray8`]);
+    /// filters only compute these and copy channel 0 to the others.
+    const CHANNELS: usize;
+
+    /// The texel's channels at 8 bits. [`Rgb565`]: each channel by bit
+    /// replication (`r8 = r5·2^3 + r5/2^2`, `g8 = g6·2^2 + g6/2^4`), which maps
+    /// 0 to 0 and the maximum to 255 and is within 0.72 of the exact
+    /// `c·255/max` (0.68 for the 5-bit channels; it is the rounded value for
+    /// all but 4 of 32 and 10 of 64 inputs). [`Gray8`]: the grey level in all
+    /// three channels.
+    fn expand(texel: Self::Storage) -> [u8; 3];
+}
+
+impl TexelFormat for Rgb565 {
+    type Storage = u16;
+    const CHANNELS: usize = 3;
+
+    #[inline]
+    fn expand(t: u16) -> [u8; 3] {
+        // Fields are at most 6 bits wide, so the casts cannot truncate.
+        let (r, g, b) = ((t >> 11) as u8, ((t >> 5) & 0x3F) as u8, (t & 0x1F) as u8);
+        [(r << 3) | (r >> 2), (g << 2) | (g >> 4), (b << 3) | (b >> 2)]
+    }
+}
+
+impl TexelFormat for Gray8 {
+    type Storage = u8;
+    const CHANNELS: usize = 1;
+
+    #[inline]
+    fn expand(t: u8) -> [u8; 3] {
+        [t; 3]
+    }
+}

@@ -1,0 +1,468 @@
+//! Texture sampling against an f64 reference, and textured triangles
+//! (`Varyings<2>` + `draw_fragments`) against an f64 perspective-correct
+//! reference per pixel centre.
+//!
+//! The reference is written from the documented conventions of
+//! `src/texture/mod.rs`, not from its code: `u` in units of 2^-16 of the
+//! texture; texel `i` covers `[i, i + 1)` in `p = u·size`; nearest takes
+//! texel `⌊p⌋`, bilinear blends texels `⌊p − ½⌋` and `⌊p − ½⌋ + 1` by the
+//! fraction of `p − ½`; wrap takes indices modulo the size, clamp clamps them
+//! to `[0, size − 1]`; Rgb565 channels widen to 8 bits by bit replication.
+//!
+//! Stated bounds checked here: nearest exact; bilinear within ½ + 2^-9 of the
+//! exact blend. Through a triangle, the `Varyings` bound `δ` on `(u, v)`
+//! (src/varyings.rs) adds `255 · size · δ / 2^16` per axis to bilinear's
+//! bound (the exact blend changes by at most 255 per texel of motion, and is
+//! continuous in both addressing modes), and lets nearest pick any texel
+//! within `δ` of the exact coordinate.
+
+use crate::ref3d::bary;
+use crate::reference::Rng;
+use embedded_graphics_core::pixelcolor::{Gray8, Rgb565, Rgb888, RgbColor};
+use microraster::depth::{DepthBand, DepthState, NoDepth};
+use microraster::raster3d::{Affine, Interpolation, PerspectiveCorrect, ScreenTriangle, ScreenVertex};
+use microraster::texture::{
+    Address, Bilinear, Filter, Nearest, Sampler, TexelFormat, Texture, UV_ONE, from_rgb8,
+};
+use microraster::varyings::{Varyings, draw_fragments};
+use microraster::{Band, SubPoint};
+
+const BILINEAR_BOUND: f64 = 0.5 + 1.0 / 512.0;
+
+/// A texture with its texels widened to 8 bits by the reference rule.
+struct RefTexture {
+    w: i64,
+    h: i64,
+    texels: Vec<[f64; 3]>,
+}
+
+/// Bit replication, written as the widening it is: `c·2^(8−b) + ⌊c/2^(2b−8)⌋`.
+fn widen(c: u16, bits: u32) -> f64 {
+    f64::from(c) * 2f64.powi(8 - bits as i32) + (f64::from(c) / 2f64.powi(2 * bits as i32 - 8)).floor()
+}
+
+impl RefTexture {
+    fn rgb565(raw: &[u16], w: i64, h: i64) -> Self {
+        let texels =
+            raw.iter().map(|&t| [widen(t >> 11, 5), widen((t >> 5) & 63, 6), widen(t & 31, 5)]).collect();
+        RefTexture { w, h, texels }
+    }
+    fn gray8(raw: &[u8], w: i64, h: i64) -> Self {
+        RefTexture { w, h, texels: raw.iter().map(|&t| [f64::from(t); 3]).collect() }
+    }
+    fn index(n: i64, i: i64, a: Address) -> i64 {
+        match a {
+            Address::Wrap => i.rem_euclid(n),
+            Address::Clamp => i.clamp(0, n - 1),
+        }
+    }
+    fn at(&self, i: i64, j: i64, a: [Address; 2]) -> [f64; 3] {
+        let (i, j) = (Self::index(self.w, i, a[0]), Self::index(self.h, j, a[1]));
+        self.texels[(j * self.w + i) as usize]
+    }
+    /// Texel-space position of a coordinate (exact in f64: |u·n| < 2^44).
+    fn pos(u: f64, n: i64) -> f64 {
+        u / f64::from(UV_ONE) * n as f64
+    }
+    fn nearest(&self, uv: [f64; 2], a: [Address; 2]) -> [f64; 3] {
+        let (p, q) = (Self::pos(uv[0], self.w), Self::pos(uv[1], self.h));
+        self.at(p.floor() as i64, q.floor() as i64, a)
+    }
+    fn bilinear(&self, uv: [f64; 2], a: [Address; 2]) -> [f64; 3] {
+        let (p, q) = (Self::pos(uv[0], self.w) - 0.5, Self::pos(uv[1], self.h) - 0.5);
+        let (i, j) = (p.floor(), q.floor());
+        let (fx, fy) = (p - i, q - j);
+        let (i, j) = (i as i64, j as i64);
+        let t = [self.at(i, j, a), self.at(i + 1, j, a), self.at(i, j + 1, a), self.at(i + 1, j + 1, a)];
+        [0, 1, 2].map(|k| {
+            (1.0 - fy) * ((1.0 - fx) * t[0][k] + fx * t[1][k]) + fy * ((1.0 - fx) * t[2][k] + fx * t[3][k])
+        })
+    }
+}
+
+/// Texture sizes: powers of two (shift path) and others (multiply path).
+const SIZES: [(u32, u32); 9] =
+    [(1, 1), (2, 4), (3, 5), (16, 16), (7, 64), (64, 1), (100, 3), (37, 41), (4096, 1)];
+
+/// A coordinate: often near a texel boundary or centre of an axis with
+/// `n` texels, sometimes anywhere in `i32`, sometimes at the extremes.
+fn coordinate(rng: &mut Rng, n: u32) -> i32 {
+    let one = i64::from(UV_ONE);
+    match rng.below(6) {
+        0 => rng.range(i64::from(i32::MIN), i64::from(i32::MAX)) as i32,
+        1 => [i32::MIN, i32::MIN + 1, -1, 0, 1, UV_ONE - 1, UV_ONE, i32::MAX - 1, i32::MAX]
+            [rng.below(9) as usize],
+        2 | 3 => {
+            // (k + ½·c)/n repeats away, ± a few units: edges and centres.
+            let k = rng.range(-3 * i64::from(n), 4 * i64::from(n));
+            let c = rng.range(0, 1);
+            let exact = ((2 * k + c) * one) as f64 / (2.0 * f64::from(n));
+            (exact.round() as i64 + rng.range(-2, 2)) as i32
+        }
+        _ => rng.range(-5 * one, 6 * one) as i32,
+    }
+}
+
+/// Samples `tex` against the reference at random coordinates with every
+/// addressing combination; returns (samples, worst bilinear error).
+fn sample_against_reference<F: TexelFormat>(
+    rng: &mut Rng,
+    tex: &Texture<'_, F>,
+    reference: &RefTexture,
+    samples: usize,
+) -> (usize, f64) {
+    let (w, h) = (tex.width(), tex.height());
+    let mut worst = 0f64;
+    for _ in 0..samples {
+        let uv = [coordinate(rng, w), coordinate(rng, h)];
+        let a = [Address::Wrap, Address::Clamp];
+        let address = [a[rng.below(2) as usize], a[rng.below(2) as usize]];
+        let ruv = uv.map(f64::from);
+        let nearest = tex.sample(Sampler::NEAREST_WRAP.with_address(address[0], address[1]), uv);
+        assert_eq!(
+            nearest.map(f64::from),
+            reference.nearest(ruv, address),
+            "nearest {w}×{h} {uv:?} {address:?}"
+        );
+        let got = tex.sample(Sampler::BILINEAR_WRAP.with_address(address[0], address[1]), uv);
+        let want = reference.bilinear(ruv, address);
+        for k in 0..3 {
+            let e = (f64::from(got[k]) - want[k]).abs();
+            assert!(e <= BILINEAR_BOUND + 1e-9, "bilinear {w}×{h} {uv:?} {address:?}: {got:?} vs {want:?}");
+            worst = worst.max(e);
+        }
+    }
+    (samples, worst)
+}
+
+#[test]
+fn nearest_exact_and_bilinear_within_bound_any_size_and_coordinate() {
+    let mut rng = Rng::new(0x07e4_70e5);
+    let (mut total, mut worst) = (0, 0f64);
+    for (w, h) in SIZES {
+        let n = (w * h) as usize;
+        let raw: Vec<u16> = (0..n).map(|_| rng.below(1 << 16) as u16).collect();
+        let tex = Texture::<Rgb565>::new(&raw, w, h).unwrap();
+        let (s, e) =
+            sample_against_reference(&mut rng, &tex, &RefTexture::rgb565(&raw, w.into(), h.into()), 40_000);
+        total += s;
+        worst = worst.max(e);
+        // Grey: the same positions, the other format (and transposed sizes).
+        let raw: Vec<u8> = (0..n).map(|_| rng.below(256) as u8).collect();
+        let tex = Texture::<Gray8>::new(&raw, h, w).unwrap();
+        let (s, e) =
+            sample_against_reference(&mut rng, &tex, &RefTexture::gray8(&raw, h.into(), w.into()), 40_000);
+        total += s;
+        worst = worst.max(e);
+    }
+    println!(
+        "texture sampling: {total} samples per filter, nearest exact, worst bilinear error {worst:.5} (bound {BILINEAR_BOUND:.5})"
+    );
+    // Rounding to 8 bits alone costs up to ½; a much smaller worst would mean
+    // the test never reached the interesting cases.
+    assert!(worst > 0.49, "{worst}");
+}
+
+#[test]
+fn bilinear_reproduces_texels_at_their_centres_and_blends_across_the_wrap_seam() {
+    let raw: Vec<u8> = (0..5 * 3).map(|i| (i * 17) as u8).collect();
+    let tex = Texture::<Gray8>::new(&raw, 5, 3).unwrap();
+    let r = RefTexture::gray8(&raw, 5, 3);
+    for j in 0..3i64 {
+        for i in 0..5i64 {
+            // Texel centres are not representable for n = 5 (2^16/10 is not
+            // an integer): the nearest coordinate is within ½ unit.
+            let uv = [((2 * i + 1) * 65536) as f64 / 10.0, ((2 * j + 1) * 65536) as f64 / 6.0];
+            let got = tex.sample(Sampler::BILINEAR_CLAMP, uv.map(|c| c.round() as i32));
+            let t = r.at(i, j, [Address::Clamp; 2])[0];
+            assert!((f64::from(got[0]) - t).abs() <= 1.0, "{i},{j}: {got:?} vs {t}");
+        }
+    }
+    // Power of two: centres are exact, so is the texel.
+    let raw: Vec<u8> = (0..16).map(|i| (i * 13) as u8).collect();
+    let tex = Texture::<Gray8>::new(&raw, 4, 4).unwrap();
+    for j in 0..4 {
+        for i in 0..4 {
+            let uv = [(2 * i + 1) * UV_ONE / 8, (2 * j + 1) * UV_ONE / 8];
+            for s in [Sampler::BILINEAR_CLAMP, Sampler::BILINEAR_WRAP] {
+                assert_eq!(tex.sample(s, uv), [raw[(j * 4 + i) as usize]; 3]);
+            }
+        }
+    }
+    // u = 0: half-way between the last and the first texel when wrapping,
+    // the first texel alone when clamping.
+    let row = [0u8, 0, 0, 200];
+    let tex = Texture::<Gray8>::new(&row, 4, 1).unwrap();
+    assert_eq!(tex.sample(Sampler::BILINEAR_WRAP, [0, 0]), [100; 3]);
+    assert_eq!(tex.sample(Sampler::BILINEAR_WRAP, [UV_ONE * 7, 0]), [100; 3]);
+    assert_eq!(tex.sample(Sampler::BILINEAR_CLAMP, [0, 0]), [0; 3]);
+    assert_eq!(tex.sample(Sampler::BILINEAR_CLAMP, [i32::MAX, i32::MIN]), [200; 3]);
+}
+
+// ---------------------------------------------------------------------------
+// Textured triangles.
+
+const W: usize = 80;
+const H: usize = 64;
+
+/// The `Varyings` bound (src/varyings.rs) on a value with exact value `v`:
+/// affine ½ + 2^-7 of the screen-linear value; perspective-correct
+/// ½ + (2^10 + |v|/8)/(Q − 1/8) with `Q` the normalised `1/w` of the
+/// pixel, at least the smallest normalised vertex value.
+fn varying_bound<M: Interpolation>(tri: &ScreenTriangle<4>, v: f64) -> f64 {
+    if !M::PERSPECTIVE {
+        return 0.5 + 1.0 / 128.0 + 1e-6;
+    }
+    let qmax = tri.v.iter().map(|v| v.inv_w).max().unwrap();
+    let scale = 2f64.powi(30 - (32 - qmax.leading_zeros()) as i32);
+    let q_lo = tri.v.iter().map(|v| f64::from(v.inv_w)).fold(f64::MAX, f64::min) * scale;
+    0.5 + (1024.0 + v.abs() / 8.0) / (q_lo - 0.125) + 1e-6
+}
+
+/// The exact `(u, v)` at the centre of `(x, y)`: perspective-correct, and
+/// screen-linear. `None` unless the centre is strictly inside the triangle
+/// (edge pixels follow the fill rule, tested elsewhere).
+fn reference_uv(tri: &ScreenTriangle<4>, uv: &[[i32; 2]; 3], x: i32, y: i32) -> Option<([f64; 2], [f64; 2])> {
+    let (num, det) = bary(tri.v.map(|v| v.pos), x, y)?;
+    if num.iter().any(|&n| n == 0 || (n < 0) != (det < 0)) {
+        return None;
+    }
+    let l = num.map(|n| n as f64 / det as f64);
+    let q = tri.v.map(|v| f64::from(v.inv_w));
+    let den: f64 = (0..3).map(|i| l[i] * q[i]).sum();
+    let persp = [0, 1].map(|k| (0..3).map(|i| l[i] * q[i] * f64::from(uv[i][k])).sum::<f64>() / den);
+    let lin = [0, 1].map(|k| (0..3).map(|i| l[i] * f64::from(uv[i][k])).sum::<f64>());
+    Some((persp, lin))
+}
+
+/// Draws `tri` textured with `tex` through `Varyings<2>` (`M`) and
+/// `draw_fragments`, into an Rgb888 band (8-bit channels kept exactly).
+fn draw_textured<M: Interpolation, Fi: Filter>(
+    tri: &ScreenTriangle<4>,
+    uv: [[i32; 2]; 3],
+    tex: &Texture<'_, Rgb565>,
+    sampler: Sampler<Fi>,
+) -> Option<Box<Band<Rgb888, W, H>>> {
+    let varyings = Varyings::<2>::new::<M, 4>(tri, uv).unwrap()?;
+    let mut band = Box::new(Band::<Rgb888, W, H>::new(Rgb888::BLACK));
+    let mut depth = DepthBand::<NoDepth, W, H>::new();
+    draw_fragments::<Rgb888, NoDepth, 4, W>(
+        tri,
+        &mut band.view(0, H, Rgb888::BLACK),
+        depth.rows_mut(H),
+        DepthState::DISABLED,
+        |x, y| Some(from_rgb8(tex.sample(sampler, varyings.at(x, y)))),
+    );
+    Some(band)
+}
+
+/// Error statistics of one mode over many pixels.
+#[derive(Default, Debug)]
+struct Stats {
+    pixels: usize,
+    /// Bilinear: worst |error| per channel and worst error/bound ratio.
+    worst: f64,
+    worst_ratio: f64,
+    /// Nearest: pixels whose reference coordinate was within δ of a texel edge.
+    ambiguous: usize,
+}
+
+/// Checks every covered pixel of a textured triangle against the reference
+/// at the exact coordinate of mode `M` (perspective-correct or linear).
+#[allow(clippy::too_many_arguments)]
+fn check_triangle<M: Interpolation>(
+    tri: &ScreenTriangle<4>,
+    uv: [[i32; 2]; 3],
+    tex: &Texture<'_, Rgb565>,
+    reference: &RefTexture,
+    address: [Address; 2],
+    nearest: &mut Stats,
+    bilinear: &mut Stats,
+) {
+    let s = Sampler::NEAREST_WRAP.with_address(address[0], address[1]);
+    let (Some(bn), Some(bb)) = (
+        draw_textured::<M, Nearest>(tri, uv, tex, s),
+        draw_textured::<M, Bilinear>(
+            tri,
+            uv,
+            tex,
+            Sampler::BILINEAR_WRAP.with_address(address[0], address[1]),
+        ),
+    ) else {
+        return;
+    };
+    let size = [tex.width(), tex.height()].map(f64::from);
+    for y in 0..H as i32 {
+        for x in 0..W as i32 {
+            let Some((persp, lin)) = reference_uv(tri, &uv, x, y) else { continue };
+            let exact = if M::PERSPECTIVE { persp } else { lin };
+            let delta = exact.map(|v| varying_bound::<M>(tri, v));
+            let got_b = bb.rows()[y as usize][x as usize];
+            let got_n = bn.rows()[y as usize][x as usize];
+            // A covered pixel is drawn (the hook returns a colour); the
+            // background is black, a possible texel, so coverage is checked
+            // by the varyings suite, not here.
+            // Bilinear: Lipschitz bound from the coordinate error.
+            let want = reference.bilinear(exact, address);
+            let bound = BILINEAR_BOUND + 255.0 * (size[0] * delta[0] + size[1] * delta[1]) / 65536.0 + 1e-9;
+            let got = [got_b.r(), got_b.g(), got_b.b()];
+            for k in 0..3 {
+                let e = (f64::from(got[k]) - want[k]).abs();
+                assert!(e <= bound, "bilinear {e} > {bound} at ({x},{y}) {tri:?} {uv:?}");
+                bilinear.worst = bilinear.worst.max(e);
+                bilinear.worst_ratio = bilinear.worst_ratio.max(e / bound);
+            }
+            bilinear.pixels += 1;
+            // Nearest: one of the texels within δ of the exact coordinate.
+            let range = |k: usize| {
+                let p = |v: f64| RefTexture::pos(v, size[k] as i64).floor() as i64;
+                p(exact[k] - delta[k])..=p(exact[k] + delta[k])
+            };
+            let (ri, rj) = (range(0), range(1));
+            if ri.clone().count() > 1 || rj.clone().count() > 1 {
+                nearest.ambiguous += 1;
+            }
+            let got = [got_n.r(), got_n.g(), got_n.b()].map(f64::from);
+            let ok = ri.clone().any(|i| rj.clone().any(|j| reference.at(i, j, address) == got));
+            assert!(ok, "nearest at ({x},{y}): {got:?} not a texel within δ of {exact:?} {tri:?} {uv:?}");
+            nearest.pixels += 1;
+        }
+    }
+}
+
+fn random_textured_triangle(rng: &mut Rng, depth_ratio: f64) -> (ScreenTriangle<4>, [[i32; 2]; 3]) {
+    let v = |rng: &mut Rng| ScreenVertex {
+        pos: SubPoint::new(
+            rng.range(-160, (W as i64 + 10) << 4) as i32,
+            rng.range(-160, (H as i64 + 10) << 4) as i32,
+        )
+        .unwrap(),
+        depth: 0,
+        inv_w: ((1u64 << 30) as f64 / rng.log_uniform(1.0, depth_ratio)) as u32,
+        color: [0; 3],
+    };
+    let tri = ScreenTriangle { v: [v(rng), v(rng), v(rng)], flat: false };
+    // Up to 3 repeats either way (negative coordinates included).
+    let uv =
+        [0, 1, 2].map(|_| [0, 1].map(|_| rng.range(-3 * i64::from(UV_ONE), 3 * i64::from(UV_ONE)) as i32));
+    (tri, uv)
+}
+
+fn textured_triangles<M: Interpolation>(seed: u64) -> (Stats, Stats) {
+    let mut rng = Rng::new(seed);
+    let (mut nearest, mut bilinear) = (Stats::default(), Stats::default());
+    for t in 0..600 {
+        // Powers of two and not, small and large (16 px of screen per texel
+        // down to several texels per pixel).
+        let (w, h) = [(8, 8), (5, 12), (64, 32), (3, 100)][t % 4];
+        let raw: Vec<u16> = (0..w * h).map(|_| rng.below(1 << 16) as u16).collect();
+        let tex = Texture::<Rgb565>::new(&raw, w, h).unwrap();
+        let reference = RefTexture::rgb565(&raw, w.into(), h.into());
+        let (tri, uv) = random_textured_triangle(&mut rng, 16.0);
+        let address = [[Address::Wrap; 2], [Address::Clamp; 2], [Address::Wrap, Address::Clamp]][t % 3];
+        check_triangle::<M>(&tri, uv, &tex, &reference, address, &mut nearest, &mut bilinear);
+    }
+    (nearest, bilinear)
+}
+
+#[test]
+fn perspective_correct_textured_triangles_within_derived_bounds() {
+    let (n, b) = textured_triangles::<PerspectiveCorrect>(0x7e47_0e50);
+    println!(
+        "textured, perspective-correct: {} px; bilinear worst {:.4} (worst error/bound {:.3}); nearest all within δ, {} px ambiguous",
+        b.pixels, b.worst, b.worst_ratio, n.ambiguous
+    );
+    assert!(b.pixels > 200_000, "{}", b.pixels);
+    assert!(n.ambiguous * 50 < n.pixels, "{n:?}");
+}
+
+#[test]
+fn affine_textured_triangles_within_derived_bounds() {
+    let (n, b) = textured_triangles::<Affine>(0x7e47_0e51);
+    println!(
+        "textured, affine (vs screen-linear uv): {} px; bilinear worst {:.4} (worst error/bound {:.3}); nearest {} px ambiguous",
+        b.pixels, b.worst, b.worst_ratio, n.ambiguous
+    );
+    assert!(b.pixels > 200_000, "{}", b.pixels);
+    assert!(n.ambiguous * 50 < n.pixels, "{n:?}");
+}
+
+/// A floor receding from w = 1 to w = 20 (as in `perspective.rs`), textured
+/// with 4 × 20 repeats of an 8 × 8 texture: affine texture coordinates drift
+/// by texels, perspective-correct ones stay within their bound.
+#[test]
+fn affine_swims_on_a_receding_floor_perspective_correct_does_not() {
+    let fy = 1.0 / 0.5f64.tan();
+    let fx = fy * H as f64 / W as f64;
+    let corner = |x: f64, w: f64| {
+        let sx = W as f64 / 2.0 * (1.0 + fx * x / w);
+        let sy = H as f64 / 2.0 * (1.0 + fy / w);
+        let pos = SubPoint::new((sx * 16.0).round() as i32, (sy * 16.0).round() as i32).unwrap();
+        ScreenVertex { pos, depth: 0, inv_w: (1073741824.0 / w).round() as u32, color: [0; 3] }
+    };
+    let v = [corner(-3.0, 1.0), corner(3.0, 1.0), corner(3.0, 20.0), corner(-3.0, 20.0)];
+    let uvs = [[0, 0], [4 * UV_ONE, 0], [4 * UV_ONE, 20 * UV_ONE], [0, 20 * UV_ONE]];
+    let mut rng = Rng::new(5);
+    let raw: Vec<u16> = (0..64).map(|_| rng.below(1 << 16) as u16).collect();
+    let tex = Texture::<Rgb565>::new(&raw, 8, 8).unwrap();
+    let reference = RefTexture::rgb565(&raw, 8, 8);
+    // Worst texture-coordinate error in texels, and worst colour error,
+    // against the perspective-correct reference.
+    let mut worst = [(0f64, 0f64); 2];
+    let mut pixels = 0;
+    for [a, b, c] in [[0, 1, 2], [0, 2, 3]] {
+        let tri = ScreenTriangle { v: [v[a], v[b], v[c]], flat: false };
+        let uv = [uvs[a], uvs[b], uvs[c]];
+        let p = Varyings::<2>::new::<PerspectiveCorrect, 4>(&tri, uv).unwrap().unwrap();
+        let l = Varyings::<2>::new::<Affine, 4>(&tri, uv).unwrap().unwrap();
+        let bands = [
+            draw_textured::<PerspectiveCorrect, Bilinear>(&tri, uv, &tex, Sampler::BILINEAR_WRAP).unwrap(),
+            draw_textured::<Affine, Bilinear>(&tri, uv, &tex, Sampler::BILINEAR_WRAP).unwrap(),
+        ];
+        let mut p_nearest = Stats::default();
+        let mut p_bilinear = Stats::default();
+        // The perspective-correct image passes the general check.
+        check_triangle::<PerspectiveCorrect>(
+            &tri,
+            uv,
+            &tex,
+            &reference,
+            [Address::Wrap; 2],
+            &mut p_nearest,
+            &mut p_bilinear,
+        );
+        for y in 0..H as i32 {
+            for x in 0..W as i32 {
+                let Some((exact, _)) = reference_uv(&tri, &uv, x, y) else { continue };
+                let want = reference.bilinear(exact, [Address::Wrap; 2]);
+                // The perspective-correct coordinates stay within the
+                // `Varyings` bound.
+                let pc = p.at(x, y);
+                for k in 0..2 {
+                    let bound = varying_bound::<PerspectiveCorrect>(&tri, exact[k]);
+                    assert!((f64::from(pc[k]) - exact[k]).abs() <= bound, "({x},{y}) {pc:?} {exact:?}");
+                }
+                for (m, got_uv) in [pc, l.at(x, y)].into_iter().enumerate() {
+                    let du = (0..2)
+                        .map(|k| (f64::from(got_uv[k]) - exact[k]).abs() * 8.0 / 65536.0)
+                        .fold(0f64, f64::max);
+                    let c = bands[m].rows()[y as usize][x as usize];
+                    let e = [c.r(), c.g(), c.b()]
+                        .iter()
+                        .zip(want)
+                        .map(|(&g, w)| (f64::from(g) - w).abs())
+                        .fold(0f64, f64::max);
+                    worst[m] = (worst[m].0.max(du), worst[m].1.max(e));
+                }
+                pixels += 1;
+            }
+        }
+    }
+    println!(
+        "floor, {pixels} px: perspective-correct worst uv error {:.5} texel, colour {:.2}; affine {:.2} texels, colour {:.1}",
+        worst[0].0, worst[0].1, worst[1].0, worst[1].1
+    );
+    assert!(pixels > 1500, "{pixels}");
+    assert!(worst[1].0 > 100.0 * worst[0].0 && worst[1].0 > 1.0, "affine not clearly worse: {worst:?}");
+    assert!(worst[1].1 > 20.0 * worst[0].1, "affine colour not clearly worse: {worst:?}");
+}
