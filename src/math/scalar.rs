@@ -216,9 +216,91 @@ impl Sub for Fx {
 }
 impl Mul for Fx {
     type Output = Fx;
+    /// `⌊a·b⌋` in 16.16 (rounded toward −∞, error < 2^-16), saturating:
+    /// bit-identical to `I16F16::saturating_mul` ([`saturating_mul_bits`]).
     #[inline]
     fn mul(self, o: Fx) -> Fx {
-        Fx(self.0.saturating_mul(o.0))
+        Fx::from_bits(saturating_mul_bits(self.to_bits(), o.to_bits()))
+    }
+}
+
+/// The 16.16 product of two raw 16.16 values, `⌊a·b / 2^16⌋` clamped to the
+/// `i32` range: exact up to the rounding toward −∞ (error in `[0, 2^-16)`),
+/// saturating with the sign of the exact product. Bit-identical to
+/// `I16F16::saturating_mul` of the `fixed` crate (tested).
+///
+/// Parts without a 32×32→64 multiply (Cortex-M0: `__aeabi_lmul`, and the
+/// `fixed` crate's overflow-checked 64-bit product) use
+/// [`saturating_mul_bits_16`]; elsewhere one widening multiply.
+#[inline]
+pub(crate) fn saturating_mul_bits(a: i32, b: i32) -> i32 {
+    if cfg!(all(target_arch = "arm", not(target_feature = "thumb2"))) {
+        saturating_mul_bits_16(a, b)
+    } else {
+        let p = (a as i64 * b as i64) >> 16; // |a·b| ≤ 2^62: no overflow
+        p.clamp(i32::MIN as i64, i32::MAX as i64) as i32
+    }
+}
+
+/// [`saturating_mul_bits`] from four 16×16-bit products, each of which fits
+/// an `i32`/`u32` (`|ah·bh| ≤ 2^30`, `|ah·bl| < 2^31`, `al·bl < 2^32`); only
+/// additions and shifts are 64-bit (inline on every target). With
+/// `a = ah·2^16 + al` (`al` unsigned): `⌊a·b/2^16⌋ = ah·bh·2^16 + ah·bl +
+/// al·bh + ⌊al·bl/2^16⌋` exactly.
+#[inline]
+pub(crate) fn saturating_mul_bits_16(a: i32, b: i32) -> i32 {
+    let (ah, al) = (a >> 16, a & 0xFFFF);
+    let (bh, bl) = (b >> 16, b & 0xFFFF);
+    let low = ((al as u32 * bl as u32) >> 16) as i64;
+    let p = (((ah * bh) as i64) << 16) + (ah * bl) as i64 + (al * bh) as i64 + low;
+    p.clamp(i32::MIN as i64, i32::MAX as i64) as i32
+}
+
+/// The raw 16.16 value nearest to `v` (ties to even), saturating at the
+/// `i32` range, NaN giving 0: bit-identical to
+/// `I16F16::saturating_from_num(v)` of the `fixed` crate (tested), but with
+/// 32-bit integer operations only (the `fixed` crate goes through 128-bit
+/// intermediates, slow on Cortex-M).
+pub(crate) fn fx_bits_from_f32(v: f32) -> i32 {
+    let bits = v.to_bits();
+    let neg = bits >> 31 != 0;
+    let exp = ((bits >> 23) & 0xFF) as i32;
+    let man = bits & 0x7F_FFFF;
+    let sat = if neg { i32::MIN } else { i32::MAX };
+    if exp == 0xFF {
+        return if man != 0 { 0 } else { sat };
+    }
+    // |v| = m · 2^e exactly; the 16.16 value is m · 2^(e + 16).
+    let (m, e) = if exp == 0 { (man, -149) } else { (man | 1 << 23, exp - 150) };
+    let sh = e + 16;
+    let mag: u32 = if sh >= 0 {
+        // m < 2^24: anything shifted by more than 8 is at least 2^31 (or m = 0).
+        if sh > 8 {
+            if m == 0 {
+                return 0;
+            }
+            return sat;
+        }
+        let wide = (m as u64) << sh;
+        if wide > 1 << 31 {
+            return sat;
+        }
+        wide as u32 // ≤ 2^31
+    } else {
+        let k = -sh;
+        if k > 25 {
+            return 0; // below half of 2^-16 (m < 2^24 ≤ 2^(k−2))
+        }
+        let (q, rem, half) = (m >> k, m & ((1 << k) - 1), 1u32 << (k - 1));
+        if rem > half || (rem == half && q & 1 == 1) { q + 1 } else { q }
+    };
+    if neg {
+        // mag ≤ 2^31: −2^31 is representable.
+        (mag as i64).wrapping_neg() as i32
+    } else if mag > i32::MAX as u32 {
+        i32::MAX
+    } else {
+        mag as i32
     }
 }
 impl Div for Fx {
@@ -248,7 +330,7 @@ impl Scalar for Fx {
     const ZERO: Self = Fx(I16F16::ZERO);
     const ONE: Self = Fx(I16F16::ONE);
     fn from_f32(v: f32) -> Self {
-        if v.is_nan() { Fx::ZERO } else { Fx(I16F16::saturating_from_num(v)) }
+        Fx::from_bits(fx_bits_from_f32(v))
     }
     fn to_f32(self) -> f32 {
         self.0.to_num::<f32>()
@@ -354,6 +436,65 @@ mod tests {
             assert_eq!(v.to_channel(max), want);
             assert_eq!(Fx::from_f32(v).to_channel(max), want);
         }
+    }
+
+    #[test]
+    fn mul_and_from_f32_are_bit_identical_to_the_fixed_crate() {
+        let mut rng = crate::math::vec::tests::Rng(0x5eed_1234_abcd_ef01);
+        let edge = [
+            0,
+            1,
+            -1,
+            2,
+            0xFFFF,
+            0x1_0000,
+            -0x1_0000,
+            0x7FFF_FFFF,
+            i32::MIN,
+            i32::MIN + 1,
+            0x8000,
+            46341 << 8,
+        ];
+        let mut n = 0;
+        for i in 0..400_000u32 {
+            let r = rng.next();
+            let (mut a, mut b) = (r as i32, (r >> 32) as i32);
+            // Mix in small operands and edge values (most products of random
+            // 32-bit values saturate).
+            match i % 4 {
+                0 => (a, b) = (a >> (i % 31), b >> (i / 4 % 31)),
+                1 => a = edge[(i / 4) as usize % edge.len()],
+                _ => {}
+            }
+            let want = I16F16::from_bits(a).saturating_mul(I16F16::from_bits(b)).to_bits();
+            assert_eq!(saturating_mul_bits_16(a, b), want, "{a} * {b}");
+            assert_eq!(saturating_mul_bits(a, b), want, "{a} * {b}");
+            let f = f32::from_bits(r as u32);
+            let f = if i % 2 == 0 { f } else { (a as f32) * 2f32.powi(-((i % 40) as i32)) };
+            let want = if f.is_nan() { 0 } else { I16F16::saturating_from_num(f).to_bits() };
+            assert_eq!(fx_bits_from_f32(f), want, "{f:e}");
+            n += 1;
+        }
+        for f in [
+            0.0f32,
+            -0.0,
+            0.5 / 65536.0,
+            1.5 / 65536.0,
+            -0.5 / 65536.0,
+            32767.99999,
+            32768.0,
+            -32768.0,
+            -32768.5,
+            f32::MIN_POSITIVE,
+            1e-45,
+            f32::INFINITY,
+            f32::NEG_INFINITY,
+            f32::MAX,
+            f32::MIN,
+        ] {
+            assert_eq!(fx_bits_from_f32(f), I16F16::saturating_from_num(f).to_bits(), "{f:e}");
+        }
+        assert_eq!(n, 400_000);
     }
 
     #[test]
