@@ -176,8 +176,12 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         let mut stats = MeshStats::default();
         let model_view = self.view * *model;
         let mvp = self.projection * model_view;
+        let band = self.band_bounds();
         if !self.sphere_visible(&mvp, mesh.bounding_sphere) {
             stats.mesh_culled = true;
+            return Ok(stats);
+        }
+        if !band.sphere_touches(&mvp, mesh.bounding_sphere) {
             return Ok(stats);
         }
         let normal_matrix = model_view.normal_matrix().ok_or(Error::InvalidParameter)?;
@@ -193,8 +197,14 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
 
         let flat = self.shade == Shade::Flat || mesh.normals.is_empty();
         for (i, idx) in mesh.indices.iter().enumerate() {
-            let pos = mesh.triangle(i).ok_or(Error::InvalidMesh)?;
-            let clip = pos.map(|p| ctx.position(p));
+            let pos = mesh.triangle(i).ok_or(Error::InvalidMesh)?.map(Vec3::from_f32);
+            // Clip y and w first: with `rows` set most triangles lie outside
+            // the band and need nothing else.
+            let yw = pos.map(|p| ctx.yw(p));
+            if band.excludes(yw) {
+                continue;
+            }
+            let clip = [0, 1, 2].map(|k| ctx.position(pos[k], yw[k]));
             let class = classify(clip, planes);
             if class == Class::Outside {
                 continue;
@@ -248,6 +258,20 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         let centre = Vec4::new(T::from_f32(c[0]), T::from_f32(c[1]), T::from_f32(c[2]), T::ONE);
         let radius = T::from_f32(r);
         planes.iter().all(|p| p.dot(centre) >= -(radius * p.xyz().length()))
+    }
+
+    /// The clip-space test of [`Pipeline::rows`] ([`Band`]).
+    fn band_bounds(&self) -> Band<T> {
+        let Some((y0, y1)) = self.rows else { return Band::ALL };
+        let (h, oy) = (self.size.1 as f32, self.origin.1);
+        // Pixel row `r` lies at NDC y = 1 − 2·(r − oy)/h (y flipped). The
+        // bounds are used only where they are small, so their Fx rounding
+        // (2^-17) stays far below the margin.
+        let k = |row: i64| {
+            let k = 1.0 - 2.0 * ((row - oy) as f32) / h;
+            if k.abs() <= 4.0 { Some(T::from_f32(k)) } else { None }
+        };
+        Band { above: k(y0 as i64 - 1), below: k(y1 as i64 + 2), w_min: T::from_f32(0.125) }
     }
 
     /// Clip space to snapped screen positions, depth and `1/w` (colour left
@@ -319,6 +343,63 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     }
 }
 
+/// The rows of [`Pipeline::rows`] as a division-free test in clip space,
+/// with a margin of a pixel above and two below the band (so the snapping
+/// of the exact test cannot disagree).
+///
+/// A vertex with `w > 0` lies above pixel row `y0 − 1` when `y > above·w`
+/// and below row `y1 + 2` when `y < below·w`. A triangle is dropped early
+/// only if all three vertices have `w ≥ w_min` (1/8) and all lie on the same
+/// side. Error: `above`/`below` are within 2^-17 of the exact NDC bound
+/// (Fx rounding; f32 within 2^-21) and `k·w` is within 2^-16 (Fx truncation;
+/// f32 relative 2^-24), so the test is off by at most `2^-17 + 2^-16/w ≤
+/// 2^-12.9` in NDC, that is below 0.06 px for any viewport height up to
+/// [`MAX_FRAME_DIM`], against a margin of a pixel; the snapped position
+/// rounds by at most half a subpixel. So a triangle dropped here has no row
+/// in the band, exactly as the test after snapping would find. (With `y`
+/// and `w` as evaluated: clipping only moves vertices along the triangle, a
+/// convex combination that stays on the same side.)
+#[derive(Clone, Copy)]
+struct Band<T> {
+    above: Option<T>,
+    below: Option<T>,
+    w_min: T,
+}
+
+impl<T: Scalar> Band<T> {
+    /// No band: every triangle passes.
+    const ALL: Self = Band { above: None, below: None, w_min: T::ZERO };
+
+    /// True if the triangle (clip `(y, w)` of its vertices) is certainly
+    /// outside the band.
+    #[inline]
+    fn excludes(&self, yw: [(T, T); 3]) -> bool {
+        if self.above.is_none() && self.below.is_none() {
+            return false;
+        }
+        if !yw.iter().all(|&(_, w)| w >= self.w_min) {
+            return false;
+        }
+        let above = self.above.is_some_and(|k| yw.iter().all(|&(y, w)| y > k * w));
+        above || self.below.is_some_and(|k| yw.iter().all(|&(y, w)| y < k * w))
+    }
+
+    /// False if the mesh's bounding sphere lies entirely above or below the
+    /// band (planes `above·w − y ≥ 0` and `y − below·w ≥ 0`), with a slack of
+    /// `2^-8·(1 + r·|plane|)` in clip units for the rounding of the test.
+    fn sphere_touches(&self, mvp: &Mat4<T>, (c, r): ([f32; 3], f32)) -> bool {
+        let row = |i: usize| Vec4::new(mvp.cols[0][i], mvp.cols[1][i], mvp.cols[2][i], mvp.cols[3][i]);
+        let (y, w) = (row(1), row(3));
+        let centre = Vec4::new(T::from_f32(c[0]), T::from_f32(c[1]), T::from_f32(c[2]), T::ONE);
+        let (radius, slack) = (T::from_f32(r), T::from_f32(1.0 / 256.0));
+        let outside = |p: Vec4<T>| {
+            let reach = radius * p.xyz().length();
+            p.dot(centre) < -(reach + reach * slack + slack)
+        };
+        !(self.above.is_some_and(|k| outside(w * k - y)) || self.below.is_some_and(|k| outside(y - w * k)))
+    }
+}
+
 /// Per-mesh constants of the vertex computation.
 struct VertexCtx<T: Scalar> {
     mv: Mat4<T>,
@@ -329,16 +410,31 @@ struct VertexCtx<T: Scalar> {
 }
 
 impl<T: Scalar> VertexCtx<T> {
-    fn position(&self, p: [f32; 3]) -> [T; 4] {
-        let c = self.mvp.transform_point(Vec3::from_f32(p));
-        [c.x, c.y, c.z, c.w]
+    /// Row `r` of `mvp · (p, 1)`, bit-identical to
+    /// [`Mat4::transform_point`] (`d·1` is exact).
+    #[inline]
+    fn row(&self, r: usize, p: Vec3<T>) -> T {
+        let [a, b, c, d] = &self.mvp.cols;
+        a[r] * p.x + b[r] * p.y + c[r] * p.z + d[r]
     }
 
-    fn color(&self, p: [f32; 3], normal: Option<[f32; 3]>) -> [T; 3] {
+    /// Clip `(y, w)` of `p`.
+    #[inline]
+    fn yw(&self, p: Vec3<T>) -> (T, T) {
+        (self.row(1, p), self.row(3, p))
+    }
+
+    /// The clip position of `p`, given its [`VertexCtx::yw`].
+    #[inline]
+    fn position(&self, p: Vec3<T>, (y, w): (T, T)) -> [T; 4] {
+        [self.row(0, p), y, self.row(2, p), w]
+    }
+
+    fn color(&self, p: Vec3<T>, normal: Option<[f32; 3]>) -> [T; 3] {
         match (self.lighting, normal) {
             (Some(l), Some(n)) => {
                 let n_eye = (self.nm * Vec3::from_f32(n)).normalize();
-                let p_eye = self.mv.transform_point(Vec3::from_f32(p)).xyz();
+                let p_eye = self.mv.transform_point(p).xyz();
                 l.shade(n_eye, p_eye, self.base)
             }
             // No light, or a degenerate face without a normal: ambient only.
