@@ -18,7 +18,7 @@ use crate::clip3d::{Class, ClipPlanes, ClipVertex, classify, clip_triangle, guar
 use crate::edge::{Cull, signed_area2};
 use crate::light::Lighting;
 use crate::math::{Mat3, Mat4, Scalar, Vec3, Vec4, transform};
-use crate::mesh::Mesh;
+use crate::mesh::{Mesh, ValidMesh};
 use crate::raster3d::{ScreenTriangle, ScreenVertex};
 use crate::{Error, Interpolate, MAX_FRAME_DIM, SubPoint};
 
@@ -170,9 +170,25 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         color: C,
         bins: &mut heapless::Vec<ScreenTriangle<S>, N>,
     ) -> Result<MeshStats, Error> {
-        // O(vertices), a few percent of the vertex work: a bad mesh is an
-        // error, never a silent cull or an out-of-range index.
-        mesh.validate()?;
+        // A bad mesh is an error, never a silent cull or an out-of-range index.
+        self.draw_valid_mesh(&ValidMesh::new(*mesh)?, model, color, bins)
+    }
+
+    /// [`Pipeline::draw_mesh`] for a mesh checked once beforehand
+    /// ([`ValidMesh`], possibly at compile time): the same result without the
+    /// O(vertices) check on every call (every band, when the vertex stage
+    /// runs per band).
+    ///
+    /// Errors: [`Error::BufferTooSmall`] if `bins` fills up (the triangles
+    /// that fit are kept); [`Error::InvalidParameter`] if `model` is singular.
+    pub fn draw_valid_mesh<C: Interpolate, const N: usize>(
+        &self,
+        mesh: &ValidMesh<'_>,
+        model: &Mat4<T>,
+        color: C,
+        bins: &mut heapless::Vec<ScreenTriangle<S>, N>,
+    ) -> Result<MeshStats, Error> {
+        let mesh = mesh.mesh();
         let mut stats = MeshStats::default();
         let model_view = self.view * *model;
         let mvp = self.projection * model_view;

@@ -11,7 +11,7 @@
 use crate::light::Lighting;
 use crate::math::{Mat4, Scalar, Vec3, transform};
 use crate::mesh::{
-    Mesh, cube, cube_triangle_count, cube_vertex_count, icosphere, icosphere_triangle_count,
+    Mesh, ValidMesh, cube, cube_triangle_count, cube_vertex_count, icosphere, icosphere_triangle_count,
     icosphere_vertex_count, torus, torus_triangle_count, torus_vertex_count,
 };
 use crate::pipeline::{MeshStats, Pipeline, Shade};
@@ -83,6 +83,16 @@ pub fn generate(bufs: &mut MeshBuffers) -> Result<[Mesh<'_>; 3], Error> {
     Ok([sphere, torus, cube])
 }
 
+/// The scene's meshes, validated at compile time.
+static VALID: [ValidMesh<'static>; 3] = [valid(meshes::SPHERE), valid(meshes::TORUS), valid(meshes::CUBE)];
+
+const fn valid(mesh: Mesh<'static>) -> ValidMesh<'static> {
+    match ValidMesh::new(mesh) {
+        Ok(m) => m,
+        Err(_) => panic!("a standard scene mesh is invalid"), // a build error (const evaluation)
+    }
+}
+
 /// The standard 3D scene. Its meshes are `static` (flash on a
 /// microcontroller): the type holds no data.
 #[derive(Debug, Clone, Copy, Default)]
@@ -147,10 +157,9 @@ impl Scene3d {
                 color([0.95, 0.85, 0.3]),
             ),
         ];
-        let meshes = self.meshes();
         let mut total = Stats::default();
-        for (mesh, (model, c)) in meshes.iter().zip(models) {
-            let s = pipeline.draw_mesh(mesh, &model, c, bins)?;
+        for (mesh, (model, c)) in VALID.iter().zip(models) {
+            let s = pipeline.draw_valid_mesh(mesh, &model, c, bins)?;
             total.clipped += s.clipped;
             total.back_faces += s.back_faces;
             total.degenerate += s.degenerate;

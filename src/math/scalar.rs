@@ -100,10 +100,32 @@ impl Scalar for f32 {
         if !(self.is_finite() && den.is_finite() && den > 0.0) {
             return None;
         }
-        let v = self / den * scale as f32;
+        // `as f32` of an i32 rounds like that of the same i64 value, without
+        // the 64-bit conversion (a library call on 32-bit targets).
+        let s = match (i32::try_from(scale), u32::try_from(scale)) {
+            (Ok(s), _) => s as f32,
+            (_, Ok(s)) => s as f32,
+            _ => scale as f32,
+        };
+        let v = self / den * s;
         // NaN fails this test too.
         if v.is_nan() || v.abs() > (1u64 << 40) as f32 {
             return None;
+        }
+        if (0.0..4_294_967_296.0).contains(&v) {
+            // The same rounding in u32 (t ≤ 2^32 − 256, so t + 1 fits).
+            let t = v as u32;
+            let frac = v - t as f32;
+            let r = if frac > 0.5 || (frac == 0.5 && t & 1 == 1) { t + 1 } else { t };
+            return Some(r as i64);
+        }
+        if v.abs() < 2_147_483_648.0 {
+            // The same rounding in i32 (|t| ≤ 2^31 − 128, so t ± 1 fits).
+            let t = v as i32;
+            let frac = v - t as f32;
+            let step = if v < 0.0 { -1 } else { 1 };
+            let r = if frac.abs() > 0.5 || (frac.abs() == 0.5 && t & 1 == 1) { t + step } else { t };
+            return Some(r as i64);
         }
         // |v| ≤ 2^40: the cast is exact after rounding; ties to even as in snapping.
         let t = v as i64;
