@@ -278,6 +278,63 @@ pub(crate) fn saturating_mul_bits_16(a: i32, b: i32) -> i32 {
     p.clamp(i32::MIN as i64, i32::MAX as i64) as i32
 }
 
+/// The 16.16 quotient of two raw 16.16 values, `a·2^16 / b` truncated
+/// toward zero (error < 2^-16), saturating with the sign of the exact
+/// quotient; `b ≠ 0`. Bit-identical to `I16F16::saturating_div` of the
+/// `fixed` crate (tested), but with at most one 32-bit division (none when
+/// `|a| < |b|`, as in normalising) and 16 shift-subtract steps instead of a
+/// 64-bit division (a slow library call on Cortex-M).
+fn saturating_div_bits(a: i32, b: i32) -> i32 {
+    let neg = (a < 0) != (b < 0);
+    let (ua, ub) = (a.unsigned_abs(), b.unsigned_abs());
+    // Integer part and remainder, then 16 fraction bits by restoring division
+    // (r < ub ≤ 2^31, so 2r fits a u32).
+    let (ip, mut r) = if ua < ub { (0, ua) } else { (ua / ub, ua % ub) };
+    // |quotient| > 2^15 · 2^16 = 2^31 saturates.
+    if ip > 1 << 15 {
+        return if neg { i32::MIN } else { i32::MAX };
+    }
+    let mut q = ip;
+    for _ in 0..16 {
+        r <<= 1;
+        q <<= 1;
+        if r >= ub {
+            r -= ub;
+            q |= 1;
+        }
+    }
+    // q < (2^15 + 1)·2^16 fits a u32.
+    if neg {
+        if q > 1 << 31 { i32::MIN } else { (q as i64).wrapping_neg() as i32 }
+    } else if q > i32::MAX as u32 {
+        i32::MAX
+    } else {
+        q as i32
+    }
+}
+
+/// `round(n / d)` (ties away from zero) for `0 ≤ n < 2^63` and
+/// `0 < d < 2^31`, exactly, with at most one 32-bit division and 32
+/// shift-subtract steps (a 64-bit division is a slow library call on
+/// Cortex-M).
+fn div_round_u64_u32(n: u64, d: u32) -> u64 {
+    let n = n + (d / 2) as u64; // < 2^63 + 2^30: no overflow
+    let (hi, mut lo) = ((n >> 32) as u32, n as u32);
+    let (qh, mut r) = if hi < d { (0, hi) } else { (hi / d, hi % d) };
+    let mut ql = 0u32;
+    for _ in 0..32 {
+        // r < d < 2^31: (r << 1) | bit fits a u32.
+        r = (r << 1) | (lo >> 31);
+        lo <<= 1;
+        ql <<= 1;
+        if r >= d {
+            r -= d;
+            ql |= 1;
+        }
+    }
+    ((qh as u64) << 32) | ql as u64
+}
+
 /// The raw 16.16 value nearest to `v` (ties to even), saturating at the
 /// `i32` range, NaN giving 0: bit-identical to
 /// `I16F16::saturating_from_num(v)` of the `fixed` crate (tested), but with
@@ -336,7 +393,7 @@ impl Div for Fx {
                 core::cmp::Ordering::Equal => Fx(I16F16::ZERO),
             }
         } else {
-            Fx(self.0.saturating_div(o.0))
+            Fx::from_bits(saturating_div_bits(self.to_bits(), o.to_bits()))
         }
     }
 }
@@ -382,11 +439,9 @@ impl Scalar for Fx {
         // (an i128 division is a slow library call on Cortex-M).
         let q = match (self.to_bits() as i64).checked_mul(scale) {
             Some(n) if n.unsigned_abs() < 1 << 62 => {
-                if n >= 0 {
-                    (n + d / 2) / d
-                } else {
-                    -((-n + d / 2) / d)
-                }
+                // 0 < d < 2^31; the same rounding as (|n| + d/2)/d.
+                let q = div_round_u64_u32(n.unsigned_abs(), d as u32) as i64;
+                if n >= 0 { q } else { -q }
             }
             _ => {
                 let (n, d) = (self.to_bits() as i128 * scale as i128, d as i128);
@@ -461,7 +516,7 @@ mod tests {
     }
 
     #[test]
-    fn mul_and_from_f32_are_bit_identical_to_the_fixed_crate() {
+    fn mul_div_and_from_f32_are_bit_identical_to_the_fixed_crate() {
         let mut rng = crate::math::vec::tests::Rng(0x5eed_1234_abcd_ef01);
         let edge = [
             0,
@@ -496,6 +551,31 @@ mod tests {
             let want = if f.is_nan() { 0 } else { I16F16::saturating_from_num(f).to_bits() };
             assert_eq!(fx_bits_from_f32(f), want, "{f:e}");
             n += 1;
+        }
+        for i in 0..400_000u32 {
+            let r = rng.next();
+            let (mut a, mut b) = (r as i32, (r >> 32) as i32);
+            match i % 4 {
+                0 => b >>= i % 31,
+                1 => a = edge[(i / 4) as usize % edge.len()],
+                2 => b = edge[(i / 4) as usize % edge.len()],
+                _ => (a, b) = (a >> (i % 17), b.max(a.saturating_abs())), // |a| ≤ |b| (normalising)
+            }
+            if b == 0 {
+                continue;
+            }
+            let want = I16F16::from_bits(a).saturating_div(I16F16::from_bits(b)).to_bits();
+            assert_eq!(saturating_div_bits(a, b), want, "{a} / {b}");
+            let n = rng.next() >> (1 + i % 40);
+            let d = (((r >> 33) as u32) >> (i % 31)).max(1);
+            let want = (u128::from(n) + u128::from(d / 2)) / u128::from(d);
+            assert_eq!(u128::from(div_round_u64_u32(n, d)), want, "{n} / {d}");
+        }
+        for (a, b) in
+            [(i32::MIN, 1 << 16), (i32::MIN, -(1 << 16)), (1 << 15, 1), (-(1 << 15), 1), (i32::MAX, i32::MIN)]
+        {
+            let want = I16F16::from_bits(a).saturating_div(I16F16::from_bits(b)).to_bits();
+            assert_eq!(saturating_div_bits(a, b), want, "{a} / {b}");
         }
         for f in [
             0.0f32,
