@@ -393,7 +393,13 @@ impl Div for Fx {
                 core::cmp::Ordering::Equal => Fx(I16F16::ZERO),
             }
         } else {
-            Fx::from_bits(saturating_div_bits(self.to_bits(), o.to_bits()))
+            // Parts with a hardware divide (Thumb-2) divide in 64 bits; the
+            // Cortex-M0 has none and uses the shift-subtract form.
+            if cfg!(all(target_arch = "arm", not(target_feature = "thumb2"))) {
+                Fx::from_bits(saturating_div_bits(self.to_bits(), o.to_bits()))
+            } else {
+                Fx(self.0.saturating_div(o.0))
+            }
         }
     }
 }
@@ -440,7 +446,12 @@ impl Scalar for Fx {
         let q = match (self.to_bits() as i64).checked_mul(scale) {
             Some(n) if n.unsigned_abs() < 1 << 62 => {
                 // 0 < d < 2^31; the same rounding as (|n| + d/2)/d.
-                let q = div_round_u64_u32(n.unsigned_abs(), d as u32) as i64;
+                let (m, d) = (n.unsigned_abs(), d as u32);
+                let q = if cfg!(all(target_arch = "arm", not(target_feature = "thumb2"))) {
+                    div_round_u64_u32(m, d)
+                } else {
+                    (m + (d / 2) as u64) / d as u64
+                } as i64;
                 if n >= 0 { q } else { -q }
             }
             _ => {
