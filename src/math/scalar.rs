@@ -239,7 +239,8 @@ impl Sub for Fx {
 impl Mul for Fx {
     type Output = Fx;
     /// `⌊a·b⌋` in 16.16 (rounded toward −∞, error < 2^-16), saturating:
-    /// bit-identical to `I16F16::saturating_mul` ([`saturating_mul_bits`]).
+    /// bit-identical to `I16F16::saturating_mul` (without its 64-bit product
+    /// on the Cortex-M0: four 16×16-bit products).
     #[inline]
     fn mul(self, o: Fx) -> Fx {
         Fx::from_bits(saturating_mul_bits(self.to_bits(), o.to_bits()))
