@@ -286,6 +286,45 @@ pub fn classify<T: Scalar>(pos: [[T; 4]; 3], planes: ClipPlanes) -> Class {
     }
 }
 
+/// Per-vertex form of [`classify`], for callers that share vertices between
+/// triangles: [`VertexClass::code`] of each vertex, then
+/// [`VertexClass::class`] of three codes gives exactly [`classify`]'s result.
+pub(crate) struct VertexClass<T>(Ctx<T>);
+
+/// Set in a [`VertexClass::code`] for a vertex that makes its triangle
+/// invalid (NaN, infinity, beyond ±2^64).
+const INVALID: u8 = 0x80;
+const _: () = assert!(PLANES.len() < 8);
+
+impl<T: Scalar> VertexClass<T> {
+    /// The code of an invalid vertex.
+    pub(crate) const INVALID_CODE: u8 = INVALID;
+
+    pub(crate) fn new(planes: ClipPlanes) -> Self {
+        VertexClass(Ctx::new(planes))
+    }
+
+    /// The outcode of `pos` (bit `i`: outside `PLANES[i]`), or `INVALID`.
+    pub(crate) fn code(&self, pos: &[T; 4]) -> u8 {
+        let lim = T::from_f32(INPUT_LIMIT);
+        if !pos.iter().all(|c| c.is_finite() && c.abs() <= lim) {
+            return INVALID;
+        }
+        self.0.outcode(pos)
+    }
+
+    /// The class of a triangle from its vertices' codes.
+    pub(crate) fn class(codes: [u8; 3]) -> Class {
+        if (codes[0] | codes[1] | codes[2]) & INVALID != 0 || codes[0] & codes[1] & codes[2] != 0 {
+            Class::Outside
+        } else if codes[0] | codes[1] | codes[2] == 0 {
+            Class::Inside
+        } else {
+            Class::Crossing
+        }
+    }
+}
+
 /// Clips a triangle against `planes` (Sutherland–Hodgman; see the module docs
 /// for the guarantees). Inside all planes: returned unchanged; outside one
 /// plane, with invalid input (NaN, infinity, beyond ±2^64) or degenerate

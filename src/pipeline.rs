@@ -14,11 +14,13 @@
 //! `T` is the numeric path: `f32` (FPU parts) or [`Fx`](crate::math::Fx)
 //! (16.16 fixed point, parts without an FPU).
 
-use crate::clip3d::{Class, ClipPlanes, ClipVertex, classify, clip_triangle, guard_band_for_range};
+use crate::clip3d::{
+    Class, ClipPlanes, ClipVertex, VertexClass, classify, clip_triangle, guard_band_for_range,
+};
 use crate::edge::{Cull, signed_area2};
 use crate::light::Lighting;
 use crate::math::{Mat3, Mat4, Scalar, Vec3, Vec4, transform};
-use crate::mesh::Mesh;
+use crate::mesh::{Mesh, ValidMesh};
 use crate::raster3d::{ScreenTriangle, ScreenVertex};
 use crate::{Error, Interpolate, MAX_FRAME_DIM, SubPoint};
 
@@ -170,14 +172,34 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         color: C,
         bins: &mut heapless::Vec<ScreenTriangle<S>, N>,
     ) -> Result<MeshStats, Error> {
-        // O(vertices), a few percent of the vertex work: a bad mesh is an
-        // error, never a silent cull or an out-of-range index.
-        mesh.validate()?;
+        // A bad mesh is an error, never a silent cull or an out-of-range index.
+        self.draw_valid_mesh(&ValidMesh::new(*mesh)?, model, color, bins)
+    }
+
+    /// [`Pipeline::draw_mesh`] for a mesh checked once beforehand
+    /// ([`ValidMesh`], possibly at compile time): the same result without the
+    /// O(vertices) check on every call (every band, when the vertex stage
+    /// runs per band).
+    ///
+    /// Errors: [`Error::BufferTooSmall`] if `bins` fills up (the triangles
+    /// that fit are kept); [`Error::InvalidParameter`] if `model` is singular.
+    pub fn draw_valid_mesh<C: Interpolate, const N: usize>(
+        &self,
+        mesh: &ValidMesh<'_>,
+        model: &Mat4<T>,
+        color: C,
+        bins: &mut heapless::Vec<ScreenTriangle<S>, N>,
+    ) -> Result<MeshStats, Error> {
+        let mesh = mesh.mesh();
         let mut stats = MeshStats::default();
         let model_view = self.view * *model;
         let mvp = self.projection * model_view;
+        let band = self.band_bounds();
         if !self.sphere_visible(&mvp, mesh.bounding_sphere) {
             stats.mesh_culled = true;
+            return Ok(stats);
+        }
+        if !band.sphere_touches(&mvp, mesh.bounding_sphere) {
             return Ok(stats);
         }
         let normal_matrix = model_view.normal_matrix().ok_or(Error::InvalidParameter)?;
@@ -193,8 +215,14 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
 
         let flat = self.shade == Shade::Flat || mesh.normals.is_empty();
         for (i, idx) in mesh.indices.iter().enumerate() {
-            let pos = mesh.triangle(i).ok_or(Error::InvalidMesh)?;
-            let clip = pos.map(|p| ctx.position(p));
+            let pos = mesh.triangle(i).ok_or(Error::InvalidMesh)?.map(Vec3::from_f32);
+            // Clip y and w first: with `rows` set most triangles lie outside
+            // the band and need nothing else.
+            let yw = pos.map(|p| ctx.yw(p));
+            if band.excludes(yw) {
+                continue;
+            }
+            let clip = [0, 1, 2].map(|k| ctx.position(pos[k], yw[k]));
             let class = classify(clip, planes);
             if class == Class::Outside {
                 continue;
@@ -237,6 +265,152 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         Ok(stats)
     }
 
+    /// [`Pipeline::draw_valid_mesh`] with a vertex cache: each mesh vertex
+    /// is transformed, classified, snapped and lit at most once instead of
+    /// once per triangle corner (about six times). Bit-identical output.
+    ///
+    /// Errors: those of [`Pipeline::draw_valid_mesh`], and
+    /// [`Error::BufferTooSmall`] if the mesh has more than `V` vertices.
+    pub fn draw_valid_mesh_cached<C: Interpolate, const V: usize, const N: usize>(
+        &self,
+        mesh: &ValidMesh<'_>,
+        model: &Mat4<T>,
+        color: C,
+        cache: &mut VertexCache<T, S, V>,
+        bins: &mut heapless::Vec<ScreenTriangle<S>, N>,
+    ) -> Result<MeshStats, Error> {
+        let mesh = mesh.mesh();
+        if mesh.vertex_count() > V {
+            return Err(Error::BufferTooSmall);
+        }
+        let mut stats = MeshStats::default();
+        let model_view = self.view * *model;
+        let mvp = self.projection * model_view;
+        let band = self.band_bounds();
+        if !self.sphere_visible(&mvp, mesh.bounding_sphere) {
+            stats.mesh_culled = true;
+            return Ok(stats);
+        }
+        if !band.sphere_touches(&mvp, mesh.bounding_sphere) {
+            return Ok(stats);
+        }
+        let normal_matrix = model_view.normal_matrix().ok_or(Error::InvalidParameter)?;
+        let range = guard_band_for_range(self.size.0, self.size.1, S);
+        let planes = self.clip.with_guard_band(self.clip.guard_band().min(range));
+        let max = C::CHANNEL_MAX;
+        let ch = color.to_channels();
+        let base =
+            [0, 1, 2].map(|k| if max[k] == 0 { T::ZERO } else { T::from_f32(ch[k] as f32 / max[k] as f32) });
+        let ctx = VertexCtx { mv: model_view, mvp, nm: normal_matrix, base, lighting: self.lighting };
+        let coder = VertexClass::<T>::new(planes);
+        let flat = self.shade == Shade::Flat || mesh.normals.is_empty();
+
+        // Clip y and w and the band test of every vertex; the rest on demand.
+        let cv = &mut cache.v[..mesh.vertex_count()];
+        for (c, p) in cv.iter_mut().zip(mesh.positions) {
+            let pos = Vec3::from_f32(*p);
+            let (y, w) = ctx.yw(pos);
+            c.clip = [T::ZERO, y, T::ZERO, w];
+            c.state = band.side((y, w));
+        }
+        let v = |c: &mut Cached<T, S>, i: usize| -> u8 {
+            if c.state & Cached::<T, S>::CLIP == 0 {
+                let p = Vec3::from_f32(mesh.positions[i]);
+                c.clip = ctx.position(p, (c.clip[1], c.clip[3]));
+                c.code = coder.code(&c.clip);
+                c.state |= Cached::<T, S>::CLIP;
+            }
+            c.code
+        };
+        for (i, idx) in mesh.indices.iter().enumerate() {
+            let [a, b, c] = idx.map(usize::from);
+            // Indices are in range (ValidMesh); `get` keeps it panic-free.
+            let (Some(&sa), Some(&sb), Some(&sc)) = (cv.get(a), cv.get(b), cv.get(c)) else {
+                return Err(Error::InvalidMesh);
+            };
+            if sa.state & sb.state & sc.state & (Band::<T>::ABOVE | Band::<T>::BELOW) != 0 {
+                continue;
+            }
+            let mut codes = [0u8; 3];
+            for (k, &j) in [a, b, c].iter().enumerate() {
+                codes[k] = cv.get_mut(j).map_or(VertexClass::<T>::INVALID_CODE, |e| v(e, j));
+            }
+            let class = VertexClass::<T>::class(codes);
+            if class == Class::Outside {
+                continue;
+            }
+            let clip = [cv[a].clip, cv[b].clip, cv[c].clip];
+            let pos = || [a, b, c].map(|j| Vec3::from_f32(mesh.positions[j]));
+            let face_n = if flat { mesh.face_normal(i) } else { None };
+            let light = |k: usize, p: Vec3<T>| {
+                let n = if flat { face_n } else { mesh.normals.get([a, b, c][k]).copied() };
+                ctx.color(p, n).map(|c| if c.is_finite() { c } else { T::ZERO })
+            };
+            if class == Class::Inside {
+                let mut at = [ScreenVertex::default(); 3];
+                let mut ok = true;
+                for (k, &j) in [a, b, c].iter().enumerate() {
+                    let e = &mut cv[j];
+                    if e.state & Cached::<T, S>::SNAP == 0 {
+                        e.screen = self.snap_vertex(e.clip);
+                        e.state |= Cached::<T, S>::SNAP;
+                    }
+                    match e.screen {
+                        Some(s) => at[k] = s,
+                        None => ok = false,
+                    }
+                }
+                if !ok {
+                    stats.degenerate += 1;
+                    continue;
+                }
+                if !self.keep(&at, &mut stats) {
+                    continue;
+                }
+                if flat {
+                    // Lit with the face normal: per triangle, not per vertex.
+                    let p = pos();
+                    let c0 = channels(light(0, p[0]), max);
+                    for (k, v) in at.iter_mut().enumerate() {
+                        v.color = if self.shade == Shade::Flat { c0 } else { channels(light(k, p[k]), max) };
+                    }
+                } else {
+                    for (k, &j) in [a, b, c].iter().enumerate() {
+                        let e = &mut cv[j];
+                        if e.state & Cached::<T, S>::LIT == 0 {
+                            let c = channels(light(k, Vec3::from_f32(mesh.positions[j])), max);
+                            if let Some(s) = e.screen.as_mut() {
+                                s.color = c;
+                            }
+                            e.state |= Cached::<T, S>::LIT;
+                        }
+                        at[k].color = e.screen.map_or([0; 3], |s| s.color);
+                    }
+                }
+                self.push(at, bins, &mut stats)?;
+                continue;
+            }
+            stats.clipped += 1;
+            let p = pos();
+            let cs = if self.shade == Shade::Flat {
+                [light(0, p[0]); 3]
+            } else {
+                [0, 1, 2].map(|k| light(k, p[k]))
+            };
+            let vs = [0, 1, 2].map(|k| ClipVertex { pos: clip[k], attr: cs[k] });
+            for tri in clip_triangle(vs, planes).triangles() {
+                let Some(at) = self.snap_positions(tri.map(|v| v.pos)) else {
+                    stats.degenerate += 1;
+                    continue;
+                };
+                if self.keep(&at, &mut stats) {
+                    self.emit(at, tri.map(|v| v.attr), max, bins, &mut stats)?;
+                }
+            }
+        }
+        Ok(stats)
+    }
+
     /// False if the sphere lies entirely outside one plane of the view volume.
     fn sphere_visible(&self, mvp: &Mat4<T>, (c, r): ([f32; 3], f32)) -> bool {
         let row = |i: usize| Vec4::new(mvp.cols[0][i], mvp.cols[1][i], mvp.cols[2][i], mvp.cols[3][i]);
@@ -250,24 +424,43 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         planes.iter().all(|p| p.dot(centre) >= -(radius * p.xyz().length()))
     }
 
+    /// The clip-space test of [`Pipeline::rows`] ([`Band`]).
+    fn band_bounds(&self) -> Band<T> {
+        let Some((y0, y1)) = self.rows else { return Band::ALL };
+        let (h, oy) = (self.size.1 as f32, self.origin.1);
+        // Pixel row `r` lies at NDC y = 1 − 2·(r − oy)/h (y flipped). The
+        // bounds are used only where they are small, so their Fx rounding
+        // (2^-17) stays far below the margin.
+        let k = |row: i64| {
+            let k = 1.0 - 2.0 * ((row - oy) as f32) / h;
+            if k.abs() <= 4.0 { Some(T::from_f32(k)) } else { None }
+        };
+        Band { above: k(y0 as i64 - 1), below: k(y1 as i64 + 2), w_min: T::from_f32(0.125) }
+    }
+
     /// Clip space to snapped screen positions, depth and `1/w` (colour left
     /// 0); `None` if a coordinate is out of the rasterizer's range (the guard
     /// band prevents this) or not finite.
     fn snap_positions(&self, clip: [[T; 4]; 3]) -> Option<[ScreenVertex<S>; 3]> {
         let mut out = [ScreenVertex::default(); 3];
-        for (o, [x, y, z, w]) in out.iter_mut().zip(clip) {
-            let px = self.ndc_to_sub(x, w, self.size.0, self.origin.0, false)?;
-            let py = self.ndc_to_sub(y, w, self.size.1, self.origin.1, true)?;
-            *o = ScreenVertex {
-                pos: SubPoint::new(i32::try_from(px).ok()?, i32::try_from(py).ok()?).ok()?,
-                depth: z.div_scaled(w, u32::MAX as i64)?.clamp(0, u32::MAX as i64) as u32,
-                // Only ratios of 1/w matter; a vertex nearer than w_ref/4 (which
-                // the w_ref contract excludes) saturates rather than vanishing.
-                inv_w: self.w_ref.div_scaled(w, 1 << 30).unwrap_or(i64::MAX).clamp(1, u32::MAX as i64) as u32,
-                color: [0; 3],
-            };
+        for (o, c) in out.iter_mut().zip(clip) {
+            *o = self.snap_vertex(c)?;
         }
         Some(out)
+    }
+
+    /// One vertex of [`Pipeline::snap_positions`].
+    fn snap_vertex(&self, [x, y, z, w]: [T; 4]) -> Option<ScreenVertex<S>> {
+        let px = self.ndc_to_sub(x, w, self.size.0, self.origin.0, false)?;
+        let py = self.ndc_to_sub(y, w, self.size.1, self.origin.1, true)?;
+        Some(ScreenVertex {
+            pos: SubPoint::new(i32::try_from(px).ok()?, i32::try_from(py).ok()?).ok()?,
+            depth: z.div_scaled(w, u32::MAX as i64)?.clamp(0, u32::MAX as i64) as u32,
+            // Only ratios of 1/w matter; a vertex nearer than w_ref/4 (which
+            // the w_ref contract excludes) saturates rather than vanishing.
+            inv_w: self.w_ref.div_scaled(w, 1 << 30).unwrap_or(i64::MAX).clamp(1, u32::MAX as i64) as u32,
+            color: [0; 3],
+        })
     }
 
     /// The snapped-area tests: zero area and back faces are dropped (and
@@ -301,8 +494,18 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         stats: &mut MeshStats,
     ) -> Result<(), Error> {
         for (v, c) in v.iter_mut().zip(colors) {
-            v.color = [0, 1, 2].map(|k| c[k].to_channel(max[k]));
+            v.color = channels(c, max);
         }
+        self.push(v, bins, stats)
+    }
+
+    /// Appends a coloured triangle to `bins`.
+    fn push<const N: usize>(
+        &self,
+        v: [ScreenVertex<S>; 3],
+        bins: &mut heapless::Vec<ScreenTriangle<S>, N>,
+        stats: &mut MeshStats,
+    ) -> Result<(), Error> {
         bins.push(ScreenTriangle { v, flat: self.shade == Shade::Flat })
             .map_err(|_| Error::BufferTooSmall)?;
         stats.emitted += 1;
@@ -319,6 +522,137 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     }
 }
 
+/// Colour channels from intensities.
+fn channels<T: Scalar>(c: [T; 3], max: [u8; 3]) -> [u8; 3] {
+    [0, 1, 2].map(|k| c[k].to_channel(max[k]))
+}
+
+/// The rows of [`Pipeline::rows`] as a division-free test in clip space,
+/// with a margin of a pixel above and two below the band (so the snapping
+/// of the exact test cannot disagree).
+///
+/// A vertex with `w > 0` lies above pixel row `y0 − 1` when `y > above·w`
+/// and below row `y1 + 2` when `y < below·w`. A triangle is dropped early
+/// only if all three vertices have `w ≥ w_min` (1/8) and all lie on the same
+/// side. Error: `above`/`below` are within 2^-17 of the exact NDC bound
+/// (Fx rounding; f32 within 2^-21) and `k·w` is within 2^-16 (Fx truncation;
+/// f32 relative 2^-24), so the test is off by at most `2^-17 + 2^-16/w ≤
+/// 2^-12.9` in NDC, that is below 0.06 px for any viewport height up to
+/// [`MAX_FRAME_DIM`], against a margin of a pixel; the snapped position
+/// rounds by at most half a subpixel. So a triangle dropped here has no row
+/// in the band, exactly as the test after snapping would find. (With `y`
+/// and `w` as evaluated: clipping only moves vertices along the triangle, a
+/// convex combination that stays on the same side.)
+#[derive(Clone, Copy)]
+struct Band<T> {
+    above: Option<T>,
+    below: Option<T>,
+    w_min: T,
+}
+
+impl<T: Scalar> Band<T> {
+    /// No band: every triangle passes.
+    const ALL: Self = Band { above: None, below: None, w_min: T::ZERO };
+
+    /// [`Band::excludes`] per vertex: `ABOVE` or `BELOW` if the vertex has
+    /// `w ≥ w_min` and lies on that side; a triangle whose three vertices
+    /// share a bit is excluded.
+    const ABOVE: u8 = 1 << 6;
+    const BELOW: u8 = 1 << 7;
+
+    #[inline]
+    fn side(&self, (y, w): (T, T)) -> u8 {
+        if w < self.w_min {
+            return 0;
+        }
+        let above = self.above.is_some_and(|k| y > k * w);
+        let below = self.below.is_some_and(|k| y < k * w);
+        (if above { Self::ABOVE } else { 0 }) | (if below { Self::BELOW } else { 0 })
+    }
+
+    /// True if the triangle (clip `(y, w)` of its vertices) is certainly
+    /// outside the band.
+    #[inline]
+    fn excludes(&self, yw: [(T, T); 3]) -> bool {
+        if self.above.is_none() && self.below.is_none() {
+            return false;
+        }
+        if !yw.iter().all(|&(_, w)| w >= self.w_min) {
+            return false;
+        }
+        let above = self.above.is_some_and(|k| yw.iter().all(|&(y, w)| y > k * w));
+        above || self.below.is_some_and(|k| yw.iter().all(|&(y, w)| y < k * w))
+    }
+
+    /// False if the mesh's bounding sphere lies entirely above or below the
+    /// band (planes `above·w − y ≥ 0` and `y − below·w ≥ 0`), with a slack of
+    /// `2^-8·(1 + r·|plane|)` in clip units for the rounding of the test.
+    fn sphere_touches(&self, mvp: &Mat4<T>, (c, r): ([f32; 3], f32)) -> bool {
+        let row = |i: usize| Vec4::new(mvp.cols[0][i], mvp.cols[1][i], mvp.cols[2][i], mvp.cols[3][i]);
+        let (y, w) = (row(1), row(3));
+        let centre = Vec4::new(T::from_f32(c[0]), T::from_f32(c[1]), T::from_f32(c[2]), T::ONE);
+        let (radius, slack) = (T::from_f32(r), T::from_f32(1.0 / 256.0));
+        let outside = |p: Vec4<T>| {
+            let reach = radius * p.xyz().length();
+            p.dot(centre) < -(reach + reach * slack + slack)
+        };
+        !(self.above.is_some_and(|k| outside(w * k - y)) || self.below.is_some_and(|k| outside(y - w * k)))
+    }
+}
+
+/// Caller-owned storage for [`Pipeline::draw_valid_mesh_cached`]: the
+/// per-vertex results of one mesh of up to `V` vertices (reused mesh after
+/// mesh). Size: `V ×` about 40 bytes for `f32` and [`Fx`](crate::math::Fx)
+/// (clip position, snapped screen vertex, state), `size_of` tells exactly.
+///
+/// ```
+/// use microraster::pipeline::VertexCache;
+/// let cache = VertexCache::<f32, 4, 392>::new();
+/// assert!(core::mem::size_of_val(&cache) <= 392 * 44);
+/// ```
+pub struct VertexCache<T: Scalar, const S: u32, const V: usize> {
+    v: [Cached<T, S>; V],
+}
+
+impl<T: Scalar, const S: u32, const V: usize> VertexCache<T, S, V> {
+    /// An empty cache (its contents are rebuilt on every draw).
+    pub const fn new() -> Self {
+        VertexCache { v: [Cached::EMPTY; V] }
+    }
+}
+
+impl<T: Scalar, const S: u32, const V: usize> Default for VertexCache<T, S, V> {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl<T: Scalar, const S: u32, const V: usize> core::fmt::Debug for VertexCache<T, S, V> {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        write!(f, "VertexCache<{V}>")
+    }
+}
+
+/// One vertex of a [`VertexCache`].
+#[derive(Clone, Copy)]
+struct Cached<T, const S: u32> {
+    /// Clip position (only y and w until `CLIP` is set).
+    clip: [T; 4],
+    /// `Band` side bits and the flags below.
+    state: u8,
+    /// Clip outcode (valid with `CLIP`).
+    code: u8,
+    /// Snapped vertex (valid with `SNAP`; its colour with `LIT`).
+    screen: Option<ScreenVertex<S>>,
+}
+
+impl<T: Scalar, const S: u32> Cached<T, S> {
+    const CLIP: u8 = 1;
+    const SNAP: u8 = 2;
+    const LIT: u8 = 4;
+    const EMPTY: Self = Cached { clip: [T::ZERO; 4], state: 0, code: 0, screen: None };
+}
+
 /// Per-mesh constants of the vertex computation.
 struct VertexCtx<T: Scalar> {
     mv: Mat4<T>,
@@ -329,16 +663,31 @@ struct VertexCtx<T: Scalar> {
 }
 
 impl<T: Scalar> VertexCtx<T> {
-    fn position(&self, p: [f32; 3]) -> [T; 4] {
-        let c = self.mvp.transform_point(Vec3::from_f32(p));
-        [c.x, c.y, c.z, c.w]
+    /// Row `r` of `mvp · (p, 1)`, bit-identical to
+    /// [`Mat4::transform_point`] (`d·1` is exact).
+    #[inline]
+    fn row(&self, r: usize, p: Vec3<T>) -> T {
+        let [a, b, c, d] = &self.mvp.cols;
+        a[r] * p.x + b[r] * p.y + c[r] * p.z + d[r]
     }
 
-    fn color(&self, p: [f32; 3], normal: Option<[f32; 3]>) -> [T; 3] {
+    /// Clip `(y, w)` of `p`.
+    #[inline]
+    fn yw(&self, p: Vec3<T>) -> (T, T) {
+        (self.row(1, p), self.row(3, p))
+    }
+
+    /// The clip position of `p`, given its [`VertexCtx::yw`].
+    #[inline]
+    fn position(&self, p: Vec3<T>, (y, w): (T, T)) -> [T; 4] {
+        [self.row(0, p), y, self.row(2, p), w]
+    }
+
+    fn color(&self, p: Vec3<T>, normal: Option<[f32; 3]>) -> [T; 3] {
         match (self.lighting, normal) {
             (Some(l), Some(n)) => {
                 let n_eye = (self.nm * Vec3::from_f32(n)).normalize();
-                let p_eye = self.mv.transform_point(Vec3::from_f32(p)).xyz();
+                let p_eye = self.mv.transform_point(p).xyz();
                 l.shade(n_eye, p_eye, self.base)
             }
             // No light, or a degenerate face without a normal: ambient only.

@@ -11,10 +11,10 @@
 use crate::light::Lighting;
 use crate::math::{Mat4, Scalar, Vec3, transform};
 use crate::mesh::{
-    Mesh, cube, cube_triangle_count, cube_vertex_count, icosphere, icosphere_triangle_count,
+    Mesh, ValidMesh, cube, cube_triangle_count, cube_vertex_count, icosphere, icosphere_triangle_count,
     icosphere_vertex_count, torus, torus_triangle_count, torus_vertex_count,
 };
-use crate::pipeline::{MeshStats, Pipeline, Shade};
+use crate::pipeline::{MeshStats, Pipeline, Shade, VertexCache};
 use crate::raster3d::ScreenTriangle;
 use crate::{Error, Interpolate};
 
@@ -83,6 +83,16 @@ pub fn generate(bufs: &mut MeshBuffers) -> Result<[Mesh<'_>; 3], Error> {
     Ok([sphere, torus, cube])
 }
 
+/// The scene's meshes, validated at compile time.
+static VALID: [ValidMesh<'static>; 3] = [valid(meshes::SPHERE), valid(meshes::TORUS), valid(meshes::CUBE)];
+
+const fn valid(mesh: Mesh<'static>) -> ValidMesh<'static> {
+    match ValidMesh::new(mesh) {
+        Ok(m) => m,
+        Err(_) => panic!("a standard scene mesh is invalid"), // a build error (const evaluation)
+    }
+}
+
 /// The standard 3D scene. Its meshes are `static` (flash on a
 /// microcontroller): the type holds no data.
 #[derive(Debug, Clone, Copy, Default)]
@@ -126,6 +136,19 @@ impl Scene3d {
         angle: f32,
         bins: &mut heapless::Vec<ScreenTriangle<S>, N>,
     ) -> Result<Stats, Error> {
+        let mut total = Stats::default();
+        for (mesh, (model, c)) in VALID.iter().zip(Self::models::<T, C>(angle)) {
+            let s = pipeline.draw_valid_mesh(mesh, &model, c, bins)?;
+            total.clipped += s.clipped;
+            total.back_faces += s.back_faces;
+            total.degenerate += s.degenerate;
+            total.emitted += s.emitted;
+        }
+        Ok(total)
+    }
+
+    /// Model matrices and colours of the three meshes at `angle`.
+    fn models<T: Scalar, C: Interpolate>(angle: f32) -> [(Mat4<T>, C); 3] {
         let f = T::from_f32;
         let color = |rgb: [f32; 3]| {
             let m = C::CHANNEL_MAX;
@@ -147,10 +170,36 @@ impl Scene3d {
                 color([0.95, 0.85, 0.3]),
             ),
         ];
-        let meshes = self.meshes();
+        models
+    }
+}
+
+/// Vertices of the standard scene's largest mesh: the capacity of a
+/// [`VertexCache`] for [`Scene3d::draw_cached`] (the torus, 392; about
+/// 15.7 KB for `f32` and for [`Fx`](crate::math::Fx)).
+pub const CACHE_VERTICES: usize = max3(SV, TV, CV);
+
+const fn max3(a: usize, b: usize, c: usize) -> usize {
+    let m = if a > b { a } else { b };
+    if m > c { m } else { c }
+}
+
+impl Scene3d {
+    /// [`Scene3d::draw`] with a vertex cache (each vertex transformed, snapped
+    /// and lit once: [`Pipeline::draw_valid_mesh_cached`]); the same
+    /// triangles. `V` must be at least [`CACHE_VERTICES`] (checked at
+    /// compile time).
+    pub fn draw_cached<T: Scalar, C: Interpolate, const S: u32, const V: usize, const N: usize>(
+        &self,
+        pipeline: &Pipeline<T, S>,
+        angle: f32,
+        cache: &mut VertexCache<T, S, V>,
+        bins: &mut heapless::Vec<ScreenTriangle<S>, N>,
+    ) -> Result<Stats, Error> {
+        const { assert!(V >= CACHE_VERTICES, "the vertex cache must hold CACHE_VERTICES") };
         let mut total = Stats::default();
-        for (mesh, (model, c)) in meshes.iter().zip(models) {
-            let s = pipeline.draw_mesh(mesh, &model, c, bins)?;
+        for (mesh, (model, c)) in VALID.iter().zip(Self::models::<T, C>(angle)) {
+            let s = pipeline.draw_valid_mesh_cached(mesh, &model, c, cache, bins)?;
             total.clipped += s.clipped;
             total.back_faces += s.back_faces;
             total.degenerate += s.degenerate;
@@ -179,6 +228,51 @@ mod tests {
         }
         assert_eq!(generated.iter().map(|m| m.triangle_count()).sum::<usize>(), TRIANGLES);
         const { assert!(TRIANGLES >= 1000) };
+    }
+
+    fn cached_equals_uncached<T: Scalar>() {
+        let mut cache = std::boxed::Box::new(VertexCache::<T, 4, CACHE_VERTICES>::new());
+        let (mut a, mut b) = (heapless::Vec::<_, BINS>::new(), heapless::Vec::<_, BINS>::new());
+        let mut n = 0;
+        for shade in [Shade::Gouraud, Shade::Flat] {
+            for rows in [None, Some((0, 15)), Some((100, 107)), Some((-50, 3)), Some((230, 300))] {
+                for i in 0..12 {
+                    let angle = i as f32 * 0.55;
+                    let mut p = Scene3d::pipeline::<T, 4>(320, 240).unwrap();
+                    p.shade = shade;
+                    p.rows = rows;
+                    a.clear();
+                    b.clear();
+                    let sa = Scene3d.draw::<T, Rgb565, 4, BINS>(&p, angle, &mut a).unwrap();
+                    let sb = Scene3d
+                        .draw_cached::<T, Rgb565, 4, CACHE_VERTICES, BINS>(&p, angle, &mut cache, &mut b);
+                    assert_eq!(Ok(sa), sb, "{shade:?} {rows:?} {angle}");
+                    assert!(a == b, "{shade:?} {rows:?} {angle}: {} vs {} triangles", a.len(), b.len());
+                    n += a.len();
+                }
+            }
+        }
+        assert!(n > 10_000, "{n}");
+        // A mesh without normals (face normals, per triangle) and a cache too small.
+        let sphere = Scene3d.meshes()[0];
+        let bare = ValidMesh::new(Mesh { normals: &[], ..sphere }).unwrap();
+        let p = Scene3d::pipeline::<T, 4>(320, 240).unwrap();
+        let model = Mat4::IDENTITY;
+        a.clear();
+        b.clear();
+        let sa = p.draw_valid_mesh(&bare, &model, Rgb565::new(31, 20, 5), &mut a).unwrap();
+        let sb = p.draw_valid_mesh_cached(&bare, &model, Rgb565::new(31, 20, 5), &mut cache, &mut b).unwrap();
+        assert!(sa == sb && a == b, "no normals: {sa:?} vs {sb:?}");
+        assert!(sa.emitted > 100);
+        let mut small = VertexCache::<T, 4, 100>::new();
+        let r = p.draw_valid_mesh_cached(&bare, &model, Rgb565::new(31, 20, 5), &mut small, &mut b);
+        assert_eq!(r, Err(Error::BufferTooSmall));
+    }
+
+    #[test]
+    fn vertex_cache_gives_the_same_triangles() {
+        cached_equals_uncached::<f32>();
+        cached_equals_uncached::<crate::math::Fx>();
     }
 
     #[test]

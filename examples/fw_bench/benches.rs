@@ -25,8 +25,9 @@ use embedded_graphics_core::pixelcolor::Rgb565;
 use microraster::depth::{Depth16, DepthBand};
 use microraster::edge::Cull;
 use microraster::math::{Fx, Scalar};
+use microraster::pipeline::VertexCache;
 use microraster::raster3d::{Affine, Interpolation, PerspectiveCorrect, ScreenTriangle};
-use microraster::scenes3d::Scene3d;
+use microraster::scenes3d::{CACHE_VERTICES, Scene3d};
 use microraster::{Band, Error, Primitive, RenderError, Renderer, scenes};
 
 pub use crate::sink::{Mode, Sink};
@@ -72,6 +73,9 @@ pub enum Work {
     /// The standard 3D scene's vertex stage alone, once per frame, into the
     /// frame's bins (nothing rasterized).
     Vertex3d(Vertex),
+    /// [`Work::Vertex3d`] with a vertex cache ([`Scene3d::draw_cached`]:
+    /// each vertex transformed, snapped and lit once; `f32` only, Cortex-M4F).
+    Vertex3dCached,
     /// The vertex stage once per band, keeping the band's triangles, nothing
     /// rasterized.
     VertexPerBand3d(Vertex),
@@ -106,6 +110,7 @@ pub const M4F: &[Bench] = &[
     bench("scene3d", Work::Frame3d(F32, Aff)),
     bench("scene3d", Work::Vertex3d(F32)),
     bench("scene3d", Work::Vertex3d(Fix)),
+    bench("scene3d", Work::Vertex3dCached),
 ];
 
 /// Cortex-M0 (160 × 128, 4-row bands, one band's bins): one line per configuration.
@@ -130,6 +135,7 @@ impl Work {
             Work::Streamed2d(_) => "regenerated per band",
             Work::Vertex3d(F32) => "f32 vertex stage only",
             Work::Vertex3d(Fix) => "Fx vertex stage only",
+            Work::Vertex3dCached => "f32 vertex stage only, vertex cache",
             Work::VertexPerBand3d(F32) => "f32 vertex stage only, per band",
             Work::VertexPerBand3d(Fix) => "Fx vertex stage only, per band",
             Work::Frame3d(F32, Persp) => "f32, persp.-correct",
@@ -149,13 +155,14 @@ impl Work {
             Work::Clear | Work::Streamed2d(_) => "BAND",
             Work::Frame2d(_) => "BAND,PRIMS",
             Work::Vertex3d(_) | Work::VertexPerBand3d(_) => "BINS",
+            Work::Vertex3dCached => "BINS,CACHE",
             Work::Frame3d(..) | Work::PerBand3d(..) => "BAND,DEPTH,BINS",
         }
     }
 
     /// Whether it sends pixels (a frame CRC and covered pixels mean something).
     pub fn draws(&self) -> bool {
-        !matches!(self, Work::Vertex3d(_) | Work::VertexPerBand3d(_))
+        !matches!(self, Work::Vertex3d(_) | Work::Vertex3dCached | Work::VertexPerBand3d(_))
     }
 }
 
@@ -171,7 +178,12 @@ pub struct Buffers<'a, const W: usize, const H: usize, const N: usize, const P: 
     pub depth: &'a mut DepthBand<Depth16, W, H>,
     /// Screen triangles (the frame's, or one band's).
     pub bins: &'a mut heapless::Vec<ScreenTriangle<S>, N>,
+    /// Vertex cache ([`Work::Vertex3dCached`]; none on the Cortex-M0).
+    pub cache: Option<&'a mut Cache>,
 }
+
+/// The vertex cache of [`Work::Vertex3dCached`].
+pub type Cache = VertexCache<f32, S, CACHE_VERTICES>;
 
 fn input(e: RenderError<Infallible>) -> Error {
     match e {
@@ -227,6 +239,15 @@ pub fn frame<const W: usize, const H: usize, const N: usize, const P: usize>(
         }
         Work::Vertex3d(F32) => vertex3d::<f32, W, N>(height, b.bins),
         Work::Vertex3d(Fix) => vertex3d::<Fx, W, N>(height, b.bins),
+        Work::Vertex3dCached => {
+            let cache = b.cache.as_deref_mut().ok_or(Error::BufferTooSmall)?;
+            let pipeline = Scene3d::pipeline::<f32, S>(W as u32, height)?;
+            b.bins.clear();
+            black_box(
+                Scene3d.draw_cached::<f32, Rgb565, S, CACHE_VERTICES, N>(&pipeline, ANGLE, cache, b.bins)?,
+            );
+            Ok(())
+        }
         Work::VertexPerBand3d(F32) => vertex3d_per_band::<f32, W, H, N>(height, b.bins, |_, _| ()),
         Work::VertexPerBand3d(Fix) => vertex3d_per_band::<Fx, W, H, N>(height, b.bins, |_, _| ()),
         Work::Frame3d(F32, Persp) => frame3d::<f32, PerspectiveCorrect, W, H, N, P>(r, b, sink),
@@ -326,6 +347,7 @@ pub fn primitives<const W: usize, const H: usize, const N: usize, const P: usize
     match work {
         Work::Clear => Ok((0, 0)),
         Work::Frame2d(scene) | Work::Streamed2d(scene) => count_2d(scene),
+        Work::Vertex3dCached => count_3d(F32),
         Work::Vertex3d(t) | Work::VertexPerBand3d(t) | Work::Frame3d(t, _) | Work::PerBand3d(t, _) => {
             count_3d(t)
         }

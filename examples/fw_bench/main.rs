@@ -69,7 +69,8 @@ mod firmware {
         static mut DEPTH: DepthBand<Depth16, { benches::M4F_SIZE.0 }, { benches::M4F_BAND }> =
             DepthBand::zeroed();
         static mut BINS: heapless::Vec<ScreenTriangle<S>, { benches::BINS }> = heapless::Vec::new();
-        let b = Buffers { prims: PRIMS, band: BAND, depth: DEPTH, bins: BINS };
+        static mut CACHE: benches::Cache = benches::Cache::new();
+        let b = Buffers { prims: PRIMS, band: BAND, depth: DEPTH, bins: BINS, cache: Some(CACHE) };
         finish(run(benches::M4F, benches::M4F_SIZE.1, b))
     }
 
@@ -83,7 +84,7 @@ mod firmware {
         static mut DEPTH: DepthBand<Depth16, { benches::M0_SIZE.0 }, { benches::M0_BAND }> =
             DepthBand::zeroed();
         static mut BINS: heapless::Vec<ScreenTriangle<S>, { benches::BAND_BINS }> = heapless::Vec::new();
-        let b = Buffers { prims: PRIMS, band: BAND, depth: DEPTH, bins: BINS };
+        let b = Buffers { prims: PRIMS, band: BAND, depth: DEPTH, bins: BINS, cache: None };
         finish(run(benches::M0, benches::M0_SIZE.1, b))
     }
 

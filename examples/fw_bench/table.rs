@@ -60,8 +60,14 @@ fn records<const W: usize, const H: usize, const N: usize, const P: usize>(
     let mut band = Box::new(Band::new(BACKGROUND));
     let mut depth = Box::new(DepthBand::new());
     let mut bins = Box::new(heapless::Vec::new());
-    let mut b: Buffers<'_, W, H, N, P> =
-        Buffers { prims: &mut prims, band: &mut band, depth: &mut depth, bins: &mut bins };
+    let mut cache = Box::new(benches::Cache::new());
+    let mut b: Buffers<'_, W, H, N, P> = Buffers {
+        prims: &mut prims,
+        band: &mut band,
+        depth: &mut depth,
+        bins: &mut bins,
+        cache: Some(&mut cache),
+    };
     let mut out = Vec::new();
     for (index, &bench) in list.iter().enumerate() {
         let fail =

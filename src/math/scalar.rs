@@ -100,10 +100,32 @@ impl Scalar for f32 {
         if !(self.is_finite() && den.is_finite() && den > 0.0) {
             return None;
         }
-        let v = self / den * scale as f32;
+        // `as f32` of an i32 rounds like that of the same i64 value, without
+        // the 64-bit conversion (a library call on 32-bit targets).
+        let s = match (i32::try_from(scale), u32::try_from(scale)) {
+            (Ok(s), _) => s as f32,
+            (_, Ok(s)) => s as f32,
+            _ => scale as f32,
+        };
+        let v = self / den * s;
         // NaN fails this test too.
         if v.is_nan() || v.abs() > (1u64 << 40) as f32 {
             return None;
+        }
+        if (0.0..4_294_967_296.0).contains(&v) {
+            // The same rounding in u32 (t ≤ 2^32 − 256, so t + 1 fits).
+            let t = v as u32;
+            let frac = v - t as f32;
+            let r = if frac > 0.5 || (frac == 0.5 && t & 1 == 1) { t + 1 } else { t };
+            return Some(r as i64);
+        }
+        if v.abs() < 2_147_483_648.0 {
+            // The same rounding in i32 (|t| ≤ 2^31 − 128, so t ± 1 fits).
+            let t = v as i32;
+            let frac = v - t as f32;
+            let step = if v < 0.0 { -1 } else { 1 };
+            let r = if frac.abs() > 0.5 || (frac.abs() == 0.5 && t & 1 == 1) { t + step } else { t };
+            return Some(r as i64);
         }
         // |v| ≤ 2^40: the cast is exact after rounding; ties to even as in snapping.
         let t = v as i64;
@@ -216,9 +238,149 @@ impl Sub for Fx {
 }
 impl Mul for Fx {
     type Output = Fx;
+    /// `⌊a·b⌋` in 16.16 (rounded toward −∞, error < 2^-16), saturating:
+    /// bit-identical to `I16F16::saturating_mul` (without its 64-bit product
+    /// on the Cortex-M0: four 16×16-bit products).
     #[inline]
     fn mul(self, o: Fx) -> Fx {
-        Fx(self.0.saturating_mul(o.0))
+        Fx::from_bits(saturating_mul_bits(self.to_bits(), o.to_bits()))
+    }
+}
+
+/// The 16.16 product of two raw 16.16 values, `⌊a·b / 2^16⌋` clamped to the
+/// `i32` range: exact up to the rounding toward −∞ (error in `[0, 2^-16)`),
+/// saturating with the sign of the exact product. Bit-identical to
+/// `I16F16::saturating_mul` of the `fixed` crate (tested).
+///
+/// Parts without a 32×32→64 multiply (Cortex-M0: `__aeabi_lmul`, and the
+/// `fixed` crate's overflow-checked 64-bit product) use
+/// [`saturating_mul_bits_16`]; elsewhere one widening multiply.
+#[inline]
+pub(crate) fn saturating_mul_bits(a: i32, b: i32) -> i32 {
+    if cfg!(all(target_arch = "arm", not(target_feature = "thumb2"))) {
+        saturating_mul_bits_16(a, b)
+    } else {
+        let p = (a as i64 * b as i64) >> 16; // |a·b| ≤ 2^62: no overflow
+        p.clamp(i32::MIN as i64, i32::MAX as i64) as i32
+    }
+}
+
+/// [`saturating_mul_bits`] from four 16×16-bit products, each of which fits
+/// an `i32`/`u32` (`|ah·bh| ≤ 2^30`, `|ah·bl| < 2^31`, `al·bl < 2^32`); only
+/// additions and shifts are 64-bit (inline on every target). With
+/// `a = ah·2^16 + al` (`al` unsigned): `⌊a·b/2^16⌋ = ah·bh·2^16 + ah·bl +
+/// al·bh + ⌊al·bl/2^16⌋` exactly.
+#[inline]
+pub(crate) fn saturating_mul_bits_16(a: i32, b: i32) -> i32 {
+    let (ah, al) = (a >> 16, a & 0xFFFF);
+    let (bh, bl) = (b >> 16, b & 0xFFFF);
+    let low = ((al as u32 * bl as u32) >> 16) as i64;
+    let p = (((ah * bh) as i64) << 16) + (ah * bl) as i64 + (al * bh) as i64 + low;
+    p.clamp(i32::MIN as i64, i32::MAX as i64) as i32
+}
+
+/// The 16.16 quotient of two raw 16.16 values, `a·2^16 / b` truncated
+/// toward zero (error < 2^-16), saturating with the sign of the exact
+/// quotient; `b ≠ 0`. Bit-identical to `I16F16::saturating_div` of the
+/// `fixed` crate (tested), but with at most one 32-bit division (none when
+/// `|a| < |b|`, as in normalising) and 16 shift-subtract steps instead of a
+/// 64-bit division (a slow library call on Cortex-M).
+fn saturating_div_bits(a: i32, b: i32) -> i32 {
+    let neg = (a < 0) != (b < 0);
+    let (ua, ub) = (a.unsigned_abs(), b.unsigned_abs());
+    // Integer part and remainder, then 16 fraction bits by restoring division
+    // (r < ub ≤ 2^31, so 2r fits a u32).
+    let (ip, mut r) = if ua < ub { (0, ua) } else { (ua / ub, ua % ub) };
+    // |quotient| > 2^15 · 2^16 = 2^31 saturates.
+    if ip > 1 << 15 {
+        return if neg { i32::MIN } else { i32::MAX };
+    }
+    let mut q = ip;
+    for _ in 0..16 {
+        r <<= 1;
+        q <<= 1;
+        if r >= ub {
+            r -= ub;
+            q |= 1;
+        }
+    }
+    // q < (2^15 + 1)·2^16 fits a u32.
+    if neg {
+        if q > 1 << 31 { i32::MIN } else { (q as i64).wrapping_neg() as i32 }
+    } else if q > i32::MAX as u32 {
+        i32::MAX
+    } else {
+        q as i32
+    }
+}
+
+/// `round(n / d)` (ties away from zero) for `0 ≤ n < 2^63` and
+/// `0 < d < 2^31`, exactly, with at most one 32-bit division and 32
+/// shift-subtract steps (a 64-bit division is a slow library call on
+/// Cortex-M).
+fn div_round_u64_u32(n: u64, d: u32) -> u64 {
+    let n = n + (d / 2) as u64; // < 2^63 + 2^30: no overflow
+    let (hi, mut lo) = ((n >> 32) as u32, n as u32);
+    let (qh, mut r) = if hi < d { (0, hi) } else { (hi / d, hi % d) };
+    let mut ql = 0u32;
+    for _ in 0..32 {
+        // r < d < 2^31: (r << 1) | bit fits a u32.
+        r = (r << 1) | (lo >> 31);
+        lo <<= 1;
+        ql <<= 1;
+        if r >= d {
+            r -= d;
+            ql |= 1;
+        }
+    }
+    ((qh as u64) << 32) | ql as u64
+}
+
+/// The raw 16.16 value nearest to `v` (ties to even), saturating at the
+/// `i32` range, NaN giving 0: bit-identical to
+/// `I16F16::saturating_from_num(v)` of the `fixed` crate (tested), but with
+/// 32-bit integer operations only (the `fixed` crate goes through 128-bit
+/// intermediates, slow on Cortex-M).
+pub(crate) fn fx_bits_from_f32(v: f32) -> i32 {
+    let bits = v.to_bits();
+    let neg = bits >> 31 != 0;
+    let exp = ((bits >> 23) & 0xFF) as i32;
+    let man = bits & 0x7F_FFFF;
+    let sat = if neg { i32::MIN } else { i32::MAX };
+    if exp == 0xFF {
+        return if man != 0 { 0 } else { sat };
+    }
+    // |v| = m · 2^e exactly; the 16.16 value is m · 2^(e + 16).
+    let (m, e) = if exp == 0 { (man, -149) } else { (man | 1 << 23, exp - 150) };
+    let sh = e + 16;
+    let mag: u32 = if sh >= 0 {
+        // m < 2^24: anything shifted by more than 8 is at least 2^31 (or m = 0).
+        if sh > 8 {
+            if m == 0 {
+                return 0;
+            }
+            return sat;
+        }
+        let wide = (m as u64) << sh;
+        if wide > 1 << 31 {
+            return sat;
+        }
+        wide as u32 // ≤ 2^31
+    } else {
+        let k = -sh;
+        if k > 25 {
+            return 0; // below half of 2^-16 (m < 2^24 ≤ 2^(k−2))
+        }
+        let (q, rem, half) = (m >> k, m & ((1 << k) - 1), 1u32 << (k - 1));
+        if rem > half || (rem == half && q & 1 == 1) { q + 1 } else { q }
+    };
+    if neg {
+        // mag ≤ 2^31: −2^31 is representable.
+        (mag as i64).wrapping_neg() as i32
+    } else if mag > i32::MAX as u32 {
+        i32::MAX
+    } else {
+        mag as i32
     }
 }
 impl Div for Fx {
@@ -232,7 +394,13 @@ impl Div for Fx {
                 core::cmp::Ordering::Equal => Fx(I16F16::ZERO),
             }
         } else {
-            Fx(self.0.saturating_div(o.0))
+            // Parts with a hardware divide (Thumb-2) divide in 64 bits; the
+            // Cortex-M0 has none and uses the shift-subtract form.
+            if cfg!(all(target_arch = "arm", not(target_feature = "thumb2"))) {
+                Fx::from_bits(saturating_div_bits(self.to_bits(), o.to_bits()))
+            } else {
+                Fx(self.0.saturating_div(o.0))
+            }
         }
     }
 }
@@ -248,7 +416,7 @@ impl Scalar for Fx {
     const ZERO: Self = Fx(I16F16::ZERO);
     const ONE: Self = Fx(I16F16::ONE);
     fn from_f32(v: f32) -> Self {
-        if v.is_nan() { Fx::ZERO } else { Fx(I16F16::saturating_from_num(v)) }
+        Fx::from_bits(fx_bits_from_f32(v))
     }
     fn to_f32(self) -> f32 {
         self.0.to_num::<f32>()
@@ -278,11 +446,14 @@ impl Scalar for Fx {
         // (an i128 division is a slow library call on Cortex-M).
         let q = match (self.to_bits() as i64).checked_mul(scale) {
             Some(n) if n.unsigned_abs() < 1 << 62 => {
-                if n >= 0 {
-                    (n + d / 2) / d
+                // 0 < d < 2^31; the same rounding as (|n| + d/2)/d.
+                let (m, d) = (n.unsigned_abs(), d as u32);
+                let q = if cfg!(all(target_arch = "arm", not(target_feature = "thumb2"))) {
+                    div_round_u64_u32(m, d)
                 } else {
-                    -((-n + d / 2) / d)
-                }
+                    (m + (d / 2) as u64) / d as u64
+                } as i64;
+                if n >= 0 { q } else { -q }
             }
             _ => {
                 let (n, d) = (self.to_bits() as i128 * scale as i128, d as i128);
@@ -354,6 +525,90 @@ mod tests {
             assert_eq!(v.to_channel(max), want);
             assert_eq!(Fx::from_f32(v).to_channel(max), want);
         }
+    }
+
+    #[test]
+    fn mul_div_and_from_f32_are_bit_identical_to_the_fixed_crate() {
+        let mut rng = crate::math::vec::tests::Rng(0x5eed_1234_abcd_ef01);
+        let edge = [
+            0,
+            1,
+            -1,
+            2,
+            0xFFFF,
+            0x1_0000,
+            -0x1_0000,
+            0x7FFF_FFFF,
+            i32::MIN,
+            i32::MIN + 1,
+            0x8000,
+            46341 << 8,
+        ];
+        let mut n = 0;
+        for i in 0..400_000u32 {
+            let r = rng.next();
+            let (mut a, mut b) = (r as i32, (r >> 32) as i32);
+            // Mix in small operands and edge values (most products of random
+            // 32-bit values saturate).
+            match i % 4 {
+                0 => (a, b) = (a >> (i % 31), b >> (i / 4 % 31)),
+                1 => a = edge[(i / 4) as usize % edge.len()],
+                _ => {}
+            }
+            let want = I16F16::from_bits(a).saturating_mul(I16F16::from_bits(b)).to_bits();
+            assert_eq!(saturating_mul_bits_16(a, b), want, "{a} * {b}");
+            assert_eq!(saturating_mul_bits(a, b), want, "{a} * {b}");
+            let f = f32::from_bits(r as u32);
+            let f = if i % 2 == 0 { f } else { (a as f32) * 2f32.powi(-((i % 40) as i32)) };
+            let want = if f.is_nan() { 0 } else { I16F16::saturating_from_num(f).to_bits() };
+            assert_eq!(fx_bits_from_f32(f), want, "{f:e}");
+            n += 1;
+        }
+        for i in 0..400_000u32 {
+            let r = rng.next();
+            let (mut a, mut b) = (r as i32, (r >> 32) as i32);
+            match i % 4 {
+                0 => b >>= i % 31,
+                1 => a = edge[(i / 4) as usize % edge.len()],
+                2 => b = edge[(i / 4) as usize % edge.len()],
+                _ => (a, b) = (a >> (i % 17), b.max(a.saturating_abs())), // |a| ≤ |b| (normalising)
+            }
+            if b == 0 {
+                continue;
+            }
+            let want = I16F16::from_bits(a).saturating_div(I16F16::from_bits(b)).to_bits();
+            assert_eq!(saturating_div_bits(a, b), want, "{a} / {b}");
+            let n = rng.next() >> (1 + i % 40);
+            let d = (((r >> 33) as u32) >> (i % 31)).max(1);
+            let want = (u128::from(n) + u128::from(d / 2)) / u128::from(d);
+            assert_eq!(u128::from(div_round_u64_u32(n, d)), want, "{n} / {d}");
+        }
+        for (a, b) in
+            [(i32::MIN, 1 << 16), (i32::MIN, -(1 << 16)), (1 << 15, 1), (-(1 << 15), 1), (i32::MAX, i32::MIN)]
+        {
+            let want = I16F16::from_bits(a).saturating_div(I16F16::from_bits(b)).to_bits();
+            assert_eq!(saturating_div_bits(a, b), want, "{a} / {b}");
+        }
+        for f in [
+            0.0f32,
+            -0.0,
+            0.5 / 65536.0,
+            1.5 / 65536.0,
+            -0.5 / 65536.0,
+            32767.99999,
+            32768.0,
+            -32768.0,
+            -32768.5,
+            f32::MIN_POSITIVE,
+            1e-45,
+            f32::INFINITY,
+            f32::NEG_INFINITY,
+            f32::MAX,
+            f32::MIN,
+        ] {
+            assert_eq!(fx_bits_from_f32(f), I16F16::saturating_from_num(f).to_bits(), "{f:e}");
+        }
+        assert_eq!(n, 400_000);
     }
 
     #[test]

@@ -60,8 +60,10 @@ pub const SPHERE_TOLERANCE: f32 = 1.0e-5;
 /// a `const fn` so a mesh can be a `static`. Nothing is checked on
 /// construction. [`validate`](Mesh::validate) checks every invariant
 /// documented on the fields; the 3D pipeline calls it on every
-/// [`draw_mesh`](crate::pipeline::Pipeline::draw_mesh) (O(vertices), a few
-/// percent of the vertex work), so a bad mesh is an error, never a silent cull.
+/// [`draw_mesh`](crate::pipeline::Pipeline::draw_mesh) (O(vertices)), so a
+/// bad mesh is an error, never a silent cull. A mesh checked once
+/// ([`ValidMesh`], at compile time for a `static`) skips that cost
+/// ([`draw_valid_mesh`](crate::pipeline::Pipeline::draw_valid_mesh)).
 ///
 /// ```
 /// use microraster::mesh::{Mesh, bounding_sphere};
@@ -149,16 +151,27 @@ impl<'a> Mesh<'a> {
     ///     Err(Error::NonFiniteCoordinate)
     /// );
     /// ```
-    pub fn validate(&self) -> Result<(), Error> {
-        if !self.normals.is_empty() && self.normals.len() != self.positions.len() {
-            return Err(INVALID_MESH);
-        }
+    pub const fn validate(&self) -> Result<(), Error> {
+        // A `const fn` (plain loops), so a `static` mesh can be checked at
+        // compile time ([`ValidMesh::new`]); the same f32 operations at run time.
         let n = self.positions.len();
-        if self.indices.iter().flatten().any(|&i| usize::from(i) >= n) {
+        if !self.normals.is_empty() && self.normals.len() != n {
             return Err(INVALID_MESH);
         }
-        if self.normals.iter().any(|v| !is_finite3(*v)) {
-            return Err(Error::NonFiniteCoordinate);
+        let mut i = 0;
+        while i < self.indices.len() {
+            let [a, b, c] = self.indices[i];
+            if a as usize >= n || b as usize >= n || c as usize >= n {
+                return Err(INVALID_MESH);
+            }
+            i += 1;
+        }
+        let mut i = 0;
+        while i < self.normals.len() {
+            if !is_finite3(self.normals[i]) {
+                return Err(Error::NonFiniteCoordinate);
+            }
+            i += 1;
         }
         let (centre, radius) = self.bounding_sphere;
         if !is_finite3(centre) || !radius.is_finite() {
@@ -172,7 +185,9 @@ impl<'a> Mesh<'a> {
         if r2 == f32::INFINITY {
             return Err(Error::CoordinateOutOfRange);
         }
-        for &p in self.positions {
+        let mut i = 0;
+        while i < n {
+            let p = self.positions[i];
             if !is_finite3(p) {
                 return Err(Error::NonFiniteCoordinate);
             }
@@ -180,6 +195,7 @@ impl<'a> Mesh<'a> {
             if dist2(p, centre) > r2 {
                 return Err(INVALID_MESH);
             }
+            i += 1;
         }
         Ok(())
     }
@@ -207,6 +223,47 @@ impl<'a> Mesh<'a> {
         let n = cross(sub(b, a), sub(c, a));
         let len = sqrt(dot(n, n));
         if len > 0.0 && len.is_finite() { Some(n.map(|x| x / len)) } else { None }
+    }
+}
+
+/// A [`Mesh`] that passed [`Mesh::validate`], so
+/// [`Pipeline::draw_valid_mesh`](crate::pipeline::Pipeline::draw_valid_mesh)
+/// draws it without checking it again (the check is O(vertices) and, once
+/// per band when the vertex stage runs per band, costs as much as the rest
+/// of the work on a part without an FPU). The mesh data are shared
+/// references, so they cannot change afterwards.
+///
+/// [`ValidMesh::new`] is a `const fn`: a `static` mesh can be checked at
+/// compile time, where an invalid mesh is a build error.
+///
+/// ```
+/// use microraster::mesh::{Mesh, ValidMesh};
+/// static POSITIONS: [[f32; 3]; 3] = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]];
+/// static INDICES: [[u16; 3]; 1] = [[0, 1, 2]];
+/// static TRI: ValidMesh<'static> =
+///     match ValidMesh::new(Mesh::new(&POSITIONS, &[], &INDICES, ([0.5, 0.5, 0.0], 0.71))) {
+///         Ok(m) => m,
+///         Err(_) => panic!("invalid mesh"), // at compile time: a build error
+///     };
+/// assert_eq!(TRI.mesh().triangle_count(), 1);
+/// let bad = Mesh::new(&POSITIONS, &[], &[[0, 1, 3]], ([0.5, 0.5, 0.0], 0.71));
+/// assert!(ValidMesh::new(bad).is_err());
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ValidMesh<'a>(Mesh<'a>);
+
+impl<'a> ValidMesh<'a> {
+    /// `mesh` if it passes [`Mesh::validate`], else that error.
+    pub const fn new(mesh: Mesh<'a>) -> Result<Self, Error> {
+        match mesh.validate() {
+            Ok(()) => Ok(ValidMesh(mesh)),
+            Err(e) => Err(e),
+        }
+    }
+
+    /// The mesh.
+    pub const fn mesh(&self) -> &Mesh<'a> {
+        &self.0
     }
 }
 
@@ -295,11 +352,11 @@ fn sphere_about_origin(positions: &[[f32; 3]]) -> ([f32; 3], f32) {
     ([0.0; 3], radius_about(positions, [0.0; 3]))
 }
 
-fn is_finite3(v: [f32; 3]) -> bool {
-    v.iter().all(|x| x.is_finite())
+const fn is_finite3(v: [f32; 3]) -> bool {
+    v[0].is_finite() && v[1].is_finite() && v[2].is_finite()
 }
 
-fn sub(a: [f32; 3], b: [f32; 3]) -> [f32; 3] {
+const fn sub(a: [f32; 3], b: [f32; 3]) -> [f32; 3] {
     [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
 }
 
@@ -307,7 +364,7 @@ fn add(a: [f32; 3], b: [f32; 3]) -> [f32; 3] {
     [a[0] + b[0], a[1] + b[1], a[2] + b[2]]
 }
 
-fn dot(a: [f32; 3], b: [f32; 3]) -> f32 {
+const fn dot(a: [f32; 3], b: [f32; 3]) -> f32 {
     a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
 }
 
@@ -315,7 +372,7 @@ fn cross(a: [f32; 3], b: [f32; 3]) -> [f32; 3] {
     [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
 }
 
-fn dist2(a: [f32; 3], b: [f32; 3]) -> f32 {
+const fn dist2(a: [f32; 3], b: [f32; 3]) -> f32 {
     let d = sub(a, b);
     dot(d, d)
 }
