@@ -18,6 +18,7 @@ pub mod color;
 pub mod depth;
 pub mod edge;
 pub mod error;
+pub mod fragment;
 pub mod light;
 pub mod line;
 pub mod line_aa;

@@ -14,6 +14,10 @@
 //! `T` is the numeric path: `f32` (FPU parts) or [`Fx`](crate::math::Fx)
 //! (16.16 fixed point, parts without an FPU).
 
+mod varying;
+
+pub use varying::VertexInput;
+
 use crate::clip3d::{
     Class, ClipPlanes, ClipVertex, VertexClass, classify, clip_triangle, guard_band_for_range,
 };

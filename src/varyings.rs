@@ -159,3 +159,54 @@ pub fn draw_fragments<C, F, const S: u32, const W: usize>(
         }
     }
 }
+
+/// The depth-tested fragment loop of the fragment stage: like
+/// [`draw_fragments`], but `visit(x, y, pixel)` gets the band's pixel to
+/// read and write (for blending).
+pub(crate) fn for_each_fragment<C, F, const S: u32, const W: usize>(
+    tri: &ScreenTriangle<S>,
+    color: &mut BandView<'_, C, W>,
+    depth: &mut [[F::Storage; W]],
+    state: DepthState,
+    mut visit: impl FnMut(i32, i32, &mut C),
+) where
+    C: Interpolate,
+    F: DepthFormat,
+{
+    use crate::blit::Blitter;
+    let spans = TriangleSpans::new(tri.v.map(|v| v.pos), color.clip(), Cull::None);
+    let zplane = if F::ENABLED {
+        match tri.depth_plane::<F>() {
+            Some(p) => Some(p),
+            None => return,
+        }
+    } else {
+        None
+    };
+    let y0 = color.y0();
+    for span in spans {
+        let (x0, len) = (span.x as usize, span.len as usize);
+        let Some(cspan) = color.row_mut(span.y).and_then(|r| r.get_mut(x0..x0 + len)) else { continue };
+        let mut drow = depth.get_mut((span.y - y0) as usize).and_then(|r| r.get_mut(x0..x0 + len));
+        let (mut z, dz) = zplane.map_or((0, 0), |p| (p.at(span.x, span.y), p.step_x()));
+        for (i, p) in cspan.iter_mut().enumerate() {
+            let pass = match (&mut drow, F::ENABLED) {
+                (Some(d), true) => {
+                    let zq = depth_value::<F>(z);
+                    let slot = &mut d[i];
+                    let ok = state.test.passes(zq, F::to_u32(*slot));
+                    if ok && state.write {
+                        *slot = F::from_u32(zq);
+                    }
+                    ok
+                }
+                (None, true) => false,
+                (_, false) => true,
+            };
+            if pass {
+                visit(span.x + i as i32, span.y, p);
+            }
+            z = z.wrapping_add(dz);
+        }
+    }
+}

@@ -15,6 +15,7 @@
 //! - `mock_display`: embedded-graphics `MockDisplay` pattern tests (overdraw panics).
 //! - `per_band`: the per-band vertex stage draws what the per-frame one draws.
 //! - `varyings`: per-vertex value vectors vs f64; the fragment hook's coverage.
+//! - `fragment`: the fragment stage: Phong vs f64 and Gouraud, translucency, varyings through the clipper.
 //! - `texture`: texture sampling vs f64; textured triangles (affine and perspective-correct).
 //! - 3D: `depth3d`, `zfight`, `perspective`, `clip3d_raster`, `interpenetrate`, `pipeline3d` (references in `ref3d`, `clip3d_ref`).
 //! - `framebuffer`: a recording host `DrawTarget` used by the suites above.
@@ -24,6 +25,7 @@ mod blend;
 mod clip3d_raster;
 mod clip3d_ref;
 mod depth3d;
+mod fragment;
 mod framebuffer;
 mod gouraud;
 mod interpenetrate;

@@ -1,0 +1,163 @@
+//! The fragment stage: per-pixel shading programs ([`FragmentShader`]) fed
+//! with interpolated per-vertex values ([`Varyings`]), depth-tested, and
+//! blended into the band ([`Blend`]).
+//!
+//! [`raster3d::draw_triangle`](crate::raster3d::draw_triangle) covers flat and
+//! Gouraud colour at the least cost; this stage is for what it cannot do —
+//! textures ([`Textured`]), per-pixel lighting ([`Phong`]), translucency — and
+//! is compiled only into programs that use it. The vertex stage produces its
+//! input, [`FragTriangle`]s, with
+//! [`Pipeline::draw_mesh_varying`](crate::pipeline::Pipeline::draw_mesh_varying).
+//!
+//! # Order of operations, per covered pixel
+//! 1. depth test against the band's z-buffer (`state.test`); a failing
+//!    fragment stops here;
+//! 2. depth write (if `state.write`: off for translucent geometry, see
+//!    [`DepthState::READ_ONLY`]);
+//! 3. the shader computes the source colour from the pixel's varyings;
+//! 4. the blend mode combines it with the band's colour at `alpha`
+//!    ([`Replace`](crate::blend::Replace) writes it).
+//!
+//! Translucent meshes go after opaque ones, farthest first
+//! ([`back_to_front`](crate::blend::back_to_front)); where translucent
+//! surfaces overlap, the result still depends on their order.
+
+mod shaders;
+
+pub use shaders::{NORMAL_ONE, POSITION_ONE, Phong, Textured, phong_varyings, textured_varyings};
+
+use crate::band::BandView;
+use crate::blend::Blend;
+use crate::depth::{DepthFormat, DepthState};
+use crate::raster3d::{Interpolation, ScreenTriangle};
+use crate::varyings::Varyings;
+use crate::{Error, Interpolate};
+
+/// A screen triangle with `A` values per vertex for the fragment shader.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct FragTriangle<const S: u32, const A: usize> {
+    /// Position, depth, `1/w` and colour of each vertex.
+    pub tri: ScreenTriangle<S>,
+    /// The values at each vertex (`|v| ≤` [`MAX_VARYING`](crate::varyings::MAX_VARYING)).
+    pub varyings: [[i32; A]; 3],
+}
+
+impl<const S: u32, const A: usize> FragTriangle<S, A> {
+    /// First and last frame row the triangle can touch.
+    pub fn rows(&self) -> (i32, i32) {
+        self.tri.rows()
+    }
+}
+
+/// What the shader sees of one fragment.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Fragment<const A: usize> {
+    /// Pixel column.
+    pub x: i32,
+    /// Pixel row.
+    pub y: i32,
+    /// The varyings at the pixel centre, rounded (affine or perspective-correct
+    /// as the draw call's `M` says; error bounds in [`Varyings`]).
+    pub varyings: [i32; A],
+    /// Vertex 0's colour channels (the mesh's material colour when the
+    /// pipeline has no lighting).
+    pub color: [u8; 3],
+}
+
+/// A per-pixel shading program: the colour of a fragment from its varyings.
+pub trait FragmentShader<C, const A: usize> {
+    /// The source colour of `frag`, before blending.
+    fn shade(&self, frag: &Fragment<A>) -> C;
+}
+
+impl<C, const A: usize, F: Fn(&Fragment<A>) -> C> FragmentShader<C, A> for F {
+    #[inline]
+    fn shade(&self, frag: &Fragment<A>) -> C {
+        self(frag)
+    }
+}
+
+/// How fragments are written: depth test and write, blend mode and alpha.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Output<B> {
+    /// Depth test and write.
+    pub depth: DepthState,
+    /// Blend mode.
+    pub blend: B,
+    /// Alpha handed to the blend mode (0..=255).
+    pub alpha: u8,
+}
+
+impl Output<crate::blend::Replace> {
+    /// Opaque geometry: depth test `<`, depth written, colour replaced.
+    pub const OPAQUE: Self =
+        Output { depth: DepthState::LESS_WRITE, blend: crate::blend::Replace, alpha: 255 };
+}
+
+impl Output<crate::blend::Mix> {
+    /// Translucent geometry at `alpha`: depth tested but not written, colour
+    /// mixed over the band's.
+    pub const fn translucent(alpha: u8) -> Self {
+        Output { depth: DepthState::READ_ONLY, blend: crate::blend::Mix, alpha }
+    }
+}
+
+/// Draws `t` into one band: coverage, the depth test of `out`, the shader
+/// per passing pixel, then blending. Interpolation `M` is
+/// [`Affine`](crate::raster3d::Affine) or
+/// [`PerspectiveCorrect`](crate::raster3d::PerspectiveCorrect).
+///
+/// Errors: [`Error::CoordinateOutOfRange`] for a varying beyond
+/// [`MAX_VARYING`](crate::varyings::MAX_VARYING) (nothing is drawn).
+pub fn draw_fragment_triangle<C, F, M, B, Sh, const S: u32, const W: usize, const A: usize>(
+    t: &FragTriangle<S, A>,
+    color: &mut BandView<'_, C, W>,
+    depth: &mut [[F::Storage; W]],
+    shader: &Sh,
+    out: Output<B>,
+) -> Result<(), Error>
+where
+    C: Interpolate,
+    F: DepthFormat,
+    M: Interpolation,
+    B: Blend,
+    Sh: FragmentShader<C, A> + ?Sized,
+{
+    let Some(vary) = Varyings::<A>::new::<M, S>(&t.tri, t.varyings)? else { return Ok(()) };
+    let base = t.tri.v[0].color;
+    crate::varyings::for_each_fragment::<C, F, S, W>(&t.tri, color, depth, out.depth, |x, y, dst| {
+        let src = shader.shade(&Fragment { x, y, varyings: vary.at(x, y), color: base });
+        *dst = out.blend.blend(src, *dst, out.alpha);
+    });
+    Ok(())
+}
+
+/// Draws every triangle of `tris` that touches the band (rows `y0..y1` of
+/// `color`), in order: the body of a
+/// [`Renderer::render_with`](crate::Renderer::render_with) pass.
+///
+/// Errors: as [`draw_fragment_triangle`]; the first error stops the pass.
+#[allow(clippy::too_many_arguments)]
+pub fn draw_fragment_band<C, F, M, B, Sh, const S: u32, const W: usize, const A: usize>(
+    tris: &[FragTriangle<S, A>],
+    color: &mut BandView<'_, C, W>,
+    depth: &mut [[F::Storage; W]],
+    shader: &Sh,
+    out: Output<B>,
+) -> Result<(), Error>
+where
+    C: Interpolate,
+    F: DepthFormat,
+    M: Interpolation,
+    B: Blend,
+    Sh: FragmentShader<C, A> + ?Sized,
+{
+    let (y0, y1) = (color.y0(), color.y0() + color.height() as i32);
+    for t in tris {
+        let (lo, hi) = t.rows();
+        if lo < y1 && hi >= y0 {
+            draw_fragment_triangle::<C, F, M, B, Sh, S, W, A>(t, color, depth, shader, out)?;
+        }
+    }
+    Ok(())
+}
