@@ -16,7 +16,9 @@ use std::convert::Infallible;
 use std::error::Error;
 use std::path::{Path, PathBuf};
 
+mod fragment;
 mod scene3d;
+mod texture_data;
 
 /// Subpixel bits: 1/16 px.
 const S: u32 = 4;
@@ -80,7 +82,8 @@ fn main() -> Result<()> {
         bytes(240),
     );
 
-    scene3d::run(&out)
+    scene3d::run(&out)?;
+    fragment::run(&out)
 }
 
 /// Runs a scene for a `W × height` frame into a fixed-capacity list.
