@@ -4,7 +4,9 @@
 //! A value `v` with vertex values `v₀, v₁, v₂` is the plane
 //! `v(p) = v₀ + λ₁(v₁ − v₀) + λ₂(v₂ − v₀)`, the barycentric weights taken from
 //! the same snapped coordinates as coverage. Setup (once per triangle and
-//! band) computes, each rounded to nearest in the caller's fixed-point units:
+//! band; the determinant and its reciprocal once for all of a triangle's
+//! values, [`PlaneSetup`]) computes, each rounded to nearest in the caller's
+//! fixed-point units:
 //! the per-pixel gradients `gx`, `gy` and the value `base` at a reference
 //! pixel centre inside the clip. Then
 //! `v(x, y) = base + gx·(x − rx) + gy·(y − ry)` is evaluated at each span
@@ -25,7 +27,9 @@
 //! Gradients of slivers can exceed `i64`, and so can the terms `gx·(x − rx)`;
 //! evaluation therefore uses wrapping arithmetic, which is exact modulo 2^64
 //! and so returns the (in-range) sum. Setup runs in `i64` when the products fit
-//! and in `i128` otherwise.
+//! (checked on bit lengths), dividing exactly through a reciprocal of the
+//! determinant, and in `i128` otherwise; both give the same correctly rounded
+//! values.
 
 /// Vertex positions in internal units (`1/2^(S+1)` px).
 #[derive(Debug, Clone, Copy)]
@@ -248,6 +252,38 @@ mod tests {
         // Bound 2^13 units (module docs) plus f64's own rounding at 2^56 (2^5).
         assert!((p.at(3, 2) as f64 - exact).abs() <= 8192.0 + 64.0);
         assert!((p.at(4, 2) as f64 - exact - p.step_x() as f64).abs() <= 8192.0 + 64.0);
+    }
+
+    /// The `i64`/reciprocal path gives exactly the `i128` division's planes.
+    #[test]
+    fn fast_setup_is_exact() {
+        let mut seed = 0x2545_f491_4f6c_dd1du64;
+        let mut next = |bits: u32| {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            (seed >> (64 - bits)) as i64 - (1 << (bits - 1))
+        };
+        for i in 0..200_000 {
+            let cb = 2 + (i % 29) as u32;
+            let v = [0; 3].map(|_| (next(cb), next(cb)));
+            let frame = PlaneFrame { v, shift: 1 + (i % 9) as u32 };
+            let vb = 2 + (i % 56) as u32;
+            let vals = [0; 3].map(|_| next(vb));
+            let (rx, ry) = ((next(12) & 4095) as i32, (next(12) & 4095) as i32);
+            let Some(p) = Plane::new(&frame, vals, rx, ry) else { continue };
+            // Reference: everything in i128.
+            let [(x0, y0), (x1, y1), (x2, y2)] = v.map(|(x, y)| (x as i128, y as i128));
+            let det = (x1 - x0) * (y2 - y0) - (x2 - x0) * (y1 - y0);
+            let (d1, d2) = ((vals[1] - vals[0]) as i128, (vals[2] - vals[0]) as i128);
+            let (nx, ny) = (d1 * (y2 - y0) - d2 * (y1 - y0), d2 * (x1 - x0) - d1 * (x2 - x0));
+            let one = 1i128 << frame.shift;
+            let (px, py) = (rx as i128 * one + one / 2 - x0, ry as i128 * one + one / 2 - y0);
+            assert_eq!(p.gx, div_round_i128(nx * one, det) as i64, "{frame:?} {vals:?}");
+            assert_eq!(p.gy, div_round_i128(ny * one, det) as i64, "{frame:?} {vals:?}");
+            let off = div_round_i128(nx * px + ny * py, det) as i64;
+            assert_eq!(p.base, vals[0].wrapping_add(off), "{frame:?} {vals:?}");
+        }
     }
 
     #[test]

@@ -17,13 +17,22 @@
 //! | choice | adds | other |
 //! |---|---|---|
 //! | no depth ([`NoDepth`](crate::depth::NoDepth)) | 0 | — |
-//! | depth | 1 (`i64`) | shift, compare, store |
+//! | depth, up to 16 bits | 1 (`u32`) | shift, compare, store |
+//! | depth, 24 or 32 bits | 1 (`i64`) | clamp, shift, compare, store |
 //! | flat colour | 0 | — |
 //! | affine colour | 3 (`i32`) | 3 shifts |
 //! | perspective-correct colour | 4 (`i64`) | 3 `u32` divisions |
 //!
-//! Variants are chosen by type parameters, so the loop a scene does not use is
-//! not compiled.
+//! The narrow accumulators give exactly the values of the `i64` planes (see
+//! [`draw_triangle`]'s helpers): the error bounds below keep every sampled
+//! value in their range. Variants (and the common depth state
+//! [`DepthState::LESS_WRITE`]) are chosen by type parameters, so the loop a
+//! scene does not use is not compiled.
+//!
+//! # Set-up cost
+//! Per triangle and band: the edge functions, one determinant with its
+//! reciprocal, and per plane three exact divisions done as multiplications
+//! (`attr`). Nothing is cached between bands (no RAM per triangle).
 
 use crate::attr::{COLOR_FRAC, Plane, PlaneFrame, PlaneSetup, channel};
 use crate::band::BandView;
@@ -440,14 +449,17 @@ impl<C: Interpolate, M: Interpolation> ShadeSpan<C> for GouraudSpan<C, M> {
     #[inline(always)]
     fn step(&mut self) {
         let max = C::CHANNEL_MAX;
-        for k in 0..4 {
-            if k < 3 && max[k] == 0 {
-                continue;
+        if M::PERSPECTIVE {
+            for (k, (acc, step)) in self.persp.iter_mut().zip(self.persp_step).enumerate() {
+                if k == 3 || max[k] > 0 {
+                    *acc = acc.wrapping_add(step);
+                }
             }
-            if M::PERSPECTIVE {
-                self.persp[k] = self.persp[k].wrapping_add(self.persp_step[k]);
-            } else if k < 3 {
-                self.affine[k] = self.affine[k].wrapping_add(self.affine_step[k]);
+        } else {
+            for ((acc, step), m) in self.affine.iter_mut().zip(self.affine_step).zip(max) {
+                if m > 0 {
+                    *acc = acc.wrapping_add(step);
+                }
             }
         }
     }
