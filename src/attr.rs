@@ -4,7 +4,9 @@
 //! A value `v` with vertex values `v₀, v₁, v₂` is the plane
 //! `v(p) = v₀ + λ₁(v₁ − v₀) + λ₂(v₂ − v₀)`, the barycentric weights taken from
 //! the same snapped coordinates as coverage. Setup (once per triangle and
-//! band) computes, each rounded to nearest in the caller's fixed-point units:
+//! band; the determinant and its reciprocal once for all of a triangle's
+//! values, [`PlaneSetup`]) computes, each rounded to nearest in the caller's
+//! fixed-point units:
 //! the per-pixel gradients `gx`, `gy` and the value `base` at a reference
 //! pixel centre inside the clip. Then
 //! `v(x, y) = base + gx·(x − rx) + gy·(y − ry)` is evaluated at each span
@@ -25,7 +27,9 @@
 //! Gradients of slivers can exceed `i64`, and so can the terms `gx·(x − rx)`;
 //! evaluation therefore uses wrapping arithmetic, which is exact modulo 2^64
 //! and so returns the (in-range) sum. Setup runs in `i64` when the products fit
-//! and in `i128` otherwise.
+//! (checked on bit lengths), dividing exactly through a reciprocal of the
+//! determinant, and in `i128` otherwise; both give the same correctly rounded
+//! values.
 
 /// Vertex positions in internal units (`1/2^(S+1)` px).
 #[derive(Debug, Clone, Copy)]
@@ -50,37 +54,7 @@ impl Plane {
     /// The plane through `values` (|v| ≤ 2^56) at the vertices of `frame`,
     /// referenced at pixel `(rx, ry)`. `None` for a zero-area triangle.
     pub fn new(frame: &PlaneFrame, values: [i64; 3], rx: i32, ry: i32) -> Option<Plane> {
-        let [(x0, y0), (x1, y1), (x2, y2)] = frame.v;
-        let det = (x1 - x0) * (y2 - y0) - (x2 - x0) * (y1 - y0);
-        if det == 0 {
-            return None;
-        }
-        let (d1, d2) = (values[1] - values[0], values[2] - values[0]);
-        let one = 1i64 << frame.shift;
-        let half = one >> 1;
-        // Reference pixel centre relative to vertex 0, internal units (< 2^31).
-        let (px, py) = (rx as i64 * one + half - x0, ry as i64 * one + half - y0);
-        let (ex, ey) = ((y2 - y0, y1 - y0), (x1 - x0, x2 - x0));
-        let fast = (|| {
-            // Cramer's rule: ∂v/∂x = nx/det, ∂v/∂y = ny/det per internal unit.
-            let nx = d1.checked_mul(ex.0)?.checked_sub(d2.checked_mul(ex.1)?)?;
-            let ny = d2.checked_mul(ey.0)?.checked_sub(d1.checked_mul(ey.1)?)?;
-            let gx = div_round_i64(nx.checked_mul(one)?, det);
-            let gy = div_round_i64(ny.checked_mul(one)?, det);
-            let off = nx.checked_mul(px)?.checked_add(ny.checked_mul(py)?)?;
-            Some((gx, gy, div_round_i64(off, det)))
-        })();
-        let (gx, gy, off) = fast.unwrap_or_else(|| {
-            let w = |a: i64, b: i64| a as i128 * b as i128;
-            let nx = w(d1, ex.0) - w(d2, ex.1);
-            let ny = w(d2, ey.0) - w(d1, ey.1);
-            let det = det as i128;
-            // Truncation to i64 wraps; evaluation is modular (module docs).
-            let gx = div_round_i128(nx * one as i128, det) as i64;
-            let gy = div_round_i128(ny * one as i128, det) as i64;
-            (gx, gy, div_round_i128(nx * px as i128 + ny * py as i128, det) as i64)
-        });
-        Some(Plane { base: values[0].wrapping_add(off), gx, gy, rx, ry })
+        Some(PlaneSetup::new(frame, rx, ry)?.plane(values))
     }
 
     /// The value at the centre of pixel `(x, y)`.
@@ -97,6 +71,135 @@ impl Plane {
     }
 }
 
+/// The part of plane set-up shared by every value of one triangle: the
+/// determinant (with a reciprocal for exact division by multiplication), the
+/// edge vectors and the reference pixel. Planes made from it are exactly those
+/// of [`Plane::new`].
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct PlaneSetup {
+    ex: (i64, i64),
+    ey: (i64, i64),
+    /// Reference pixel centre relative to vertex 0, internal units.
+    p: (i64, i64),
+    det: i64,
+    div: Divisor,
+    shift: u32,
+    /// Bits of the largest `|e|`, and of the larger of `|px|`, `|py|` plus one.
+    ebits: u32,
+    pbits: u32,
+    rx: i32,
+    ry: i32,
+}
+
+impl PlaneSetup {
+    /// `None` for a zero-area triangle.
+    pub fn new(frame: &PlaneFrame, rx: i32, ry: i32) -> Option<PlaneSetup> {
+        let [(x0, y0), (x1, y1), (x2, y2)] = frame.v;
+        let det = (x1 - x0) * (y2 - y0) - (x2 - x0) * (y1 - y0);
+        if det == 0 {
+            return None;
+        }
+        let one = 1i64 << frame.shift;
+        let half = one >> 1;
+        // Reference pixel centre relative to vertex 0, internal units (< 2^31).
+        let p = (rx as i64 * one + half - x0, ry as i64 * one + half - y0);
+        let (ex, ey) = ((y2 - y0, y1 - y0), (x1 - x0, x2 - x0));
+        let emax = ex.0.unsigned_abs() | ex.1.unsigned_abs() | ey.0.unsigned_abs() | ey.1.unsigned_abs();
+        // |nx·px + ny·py| < 2^(nbits + pbits).
+        let pbits = bits(p.0.unsigned_abs() | p.1.unsigned_abs()) + 1;
+        let div = Divisor::new(det.unsigned_abs());
+        Some(PlaneSetup { ex, ey, p, det, div, shift: frame.shift, ebits: bits(emax), pbits, rx, ry })
+    }
+
+    /// The plane through `values` (|v| ≤ 2^56) at the vertices.
+    pub fn plane(&self, values: [i64; 3]) -> Plane {
+        let (d1, d2) = (values[1] - values[0], values[2] - values[0]);
+        let (ex, ey, (px, py)) = (self.ex, self.ey, self.p);
+        // Exact in i64 when the magnitudes allow (checked on bit lengths, as
+        // `checked_mul` costs much more on Cortex-M); divisions then go by
+        // the reciprocal, far cheaper than an i64 (let alone i128) library
+        // division. |d·e| < 2^(dbits + ebits); with that ≤ 2^62, |nx|, |ny|
+        // < 2^nbits ≤ 2^63, and the numerators below are < 2^63.
+        let dbits = bits(d1.unsigned_abs() | d2.unsigned_abs());
+        let fast = (dbits + self.ebits <= 62).then(|| (d1 * ex.0 - d2 * ex.1, d2 * ey.0 - d1 * ey.1));
+        let fast = fast.filter(|&(nx, ny)| {
+            bits(nx.unsigned_abs() | ny.unsigned_abs()) + self.shift.max(self.pbits) <= 63
+        });
+        let (gx, gy, off) = if let Some((nx, ny)) = fast {
+            let neg = self.det < 0;
+            let gx = self.div.div_round(nx << self.shift, neg);
+            let gy = self.div.div_round(ny << self.shift, neg);
+            (gx, gy, self.div.div_round(nx * px + ny * py, neg))
+        } else {
+            let w = |a: i64, b: i64| a as i128 * b as i128;
+            let nx = w(d1, ex.0) - w(d2, ex.1);
+            let ny = w(d2, ey.0) - w(d1, ey.1);
+            let det = self.det as i128;
+            let one = 1i128 << self.shift;
+            // Truncation to i64 wraps; evaluation is modular (module docs).
+            let gx = div_round_i128(nx * one, det) as i64;
+            let gy = div_round_i128(ny * one, det) as i64;
+            (gx, gy, div_round_i128(nx * px as i128 + ny * py as i128, det) as i64)
+        };
+        Plane { base: values[0].wrapping_add(off), gx, gy, rx: self.rx, ry: self.ry }
+    }
+}
+
+/// Division by a fixed `d > 0` through the reciprocal `r = ⌊(2^64 − 1)/d⌋`:
+/// one library division at set-up, then multiplications. For `n < 2^64`,
+/// `q̂ = ⌊n·r/2^64⌋` satisfies `n/d − 3 < q̂ ≤ n/d` (as
+/// `r > (2^64 − 1)/d − 1`), so at most two corrections give `⌊n/d⌋` exactly.
+#[derive(Debug, Clone, Copy)]
+struct Divisor {
+    d: u64,
+    r: u64,
+}
+
+impl Divisor {
+    fn new(d: u64) -> Divisor {
+        Divisor { d, r: u64::MAX / d }
+    }
+
+    /// `⌊n/d⌋`.
+    #[inline]
+    fn div_floor(&self, n: u64) -> u64 {
+        let mut q = mul_hi(n, self.r);
+        // q ≤ n/d, so q·d ≤ n: no overflow, and the remainder is below 3d.
+        let mut rem = n - q * self.d;
+        while rem >= self.d {
+            q += 1;
+            rem -= self.d;
+        }
+        q
+    }
+
+    /// `n / (±d)` rounded to nearest, ties away from zero (as
+    /// `div_round_i128`), the divisor negative if `neg`; `|n| < 2^63`.
+    #[inline]
+    fn div_round(&self, n: i64, neg: bool) -> i64 {
+        // |n| + ⌊d/2⌋ < 2^63 + 2^62: no overflow; the quotient is below 2^63.
+        let q = self.div_floor(n.unsigned_abs() + self.d / 2) as i64;
+        if (n < 0) != neg { -q } else { q }
+    }
+}
+
+/// Bit length of `v`.
+#[inline]
+fn bits(v: u64) -> u32 {
+    64 - v.leading_zeros()
+}
+
+/// The high 64 bits of `a·b`, from 32-bit halves (a `u128` product would be
+/// a library call on Cortex-M).
+#[inline]
+fn mul_hi(a: u64, b: u64) -> u64 {
+    let (a0, a1, b0, b1) = (a & 0xFFFF_FFFF, a >> 32, b & 0xFFFF_FFFF, b >> 32);
+    let (p00, p01, p10, p11) = (a0 * b0, a0 * b1, a1 * b0, a1 * b1);
+    // Each term below 2^32: the sum fits.
+    let mid = (p00 >> 32) + (p01 & 0xFFFF_FFFF) + (p10 & 0xFFFF_FFFF);
+    p11 + (p01 >> 32) + (p10 >> 32) + (mid >> 32)
+}
+
 /// Fixed-point units per Gouraud channel step.
 pub(crate) const COLOR_FRAC: u32 = 20;
 
@@ -108,16 +211,6 @@ pub(crate) fn channel(acc: i32, max: u8) -> u8 {
 }
 
 /// `n / d` rounded to nearest (ties away from zero); `d != 0`.
-fn div_round_i64(n: i64, d: i64) -> i64 {
-    // Native i64 where nothing can overflow: an i128 division is a slow
-    // library call on Cortex-M.
-    if n.unsigned_abs() >= 1 << 62 || d.unsigned_abs() >= 1 << 62 {
-        return div_round_i128(n as i128, d as i128) as i64;
-    }
-    let (n, d) = if d < 0 { (-n, -d) } else { (n, d) };
-    if n >= 0 { (n + d / 2) / d } else { -((-n + d / 2) / d) }
-}
-
 fn div_round_i128(n: i128, d: i128) -> i128 {
     let (n, d) = if d < 0 { (-n, -d) } else { (n, d) };
     if n >= 0 { (n + d / 2) / d } else { -((-n + d / 2) / d) }
@@ -159,6 +252,38 @@ mod tests {
         // Bound 2^13 units (module docs) plus f64's own rounding at 2^56 (2^5).
         assert!((p.at(3, 2) as f64 - exact).abs() <= 8192.0 + 64.0);
         assert!((p.at(4, 2) as f64 - exact - p.step_x() as f64).abs() <= 8192.0 + 64.0);
+    }
+
+    /// The `i64`/reciprocal path gives exactly the `i128` division's planes.
+    #[test]
+    fn fast_setup_is_exact() {
+        let mut seed = 0x2545_f491_4f6c_dd1du64;
+        let mut next = |bits: u32| {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            (seed >> (64 - bits)) as i64 - (1 << (bits - 1))
+        };
+        for i in 0..200_000 {
+            let cb = 2 + (i % 29) as u32;
+            let v = [0; 3].map(|_| (next(cb), next(cb)));
+            let frame = PlaneFrame { v, shift: 1 + (i % 9) as u32 };
+            let vb = 2 + (i % 56) as u32;
+            let vals = [0; 3].map(|_| next(vb));
+            let (rx, ry) = ((next(12) & 4095) as i32, (next(12) & 4095) as i32);
+            let Some(p) = Plane::new(&frame, vals, rx, ry) else { continue };
+            // Reference: everything in i128.
+            let [(x0, y0), (x1, y1), (x2, y2)] = v.map(|(x, y)| (x as i128, y as i128));
+            let det = (x1 - x0) * (y2 - y0) - (x2 - x0) * (y1 - y0);
+            let (d1, d2) = ((vals[1] - vals[0]) as i128, (vals[2] - vals[0]) as i128);
+            let (nx, ny) = (d1 * (y2 - y0) - d2 * (y1 - y0), d2 * (x1 - x0) - d1 * (x2 - x0));
+            let one = 1i128 << frame.shift;
+            let (px, py) = (rx as i128 * one + one / 2 - x0, ry as i128 * one + one / 2 - y0);
+            assert_eq!(p.gx, div_round_i128(nx * one, det) as i64, "{frame:?} {vals:?}");
+            assert_eq!(p.gy, div_round_i128(ny * one, det) as i64, "{frame:?} {vals:?}");
+            let off = div_round_i128(nx * px + ny * py, det) as i64;
+            assert_eq!(p.base, vals[0].wrapping_add(off), "{frame:?} {vals:?}");
+        }
     }
 
     #[test]

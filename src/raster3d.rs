@@ -17,17 +17,26 @@
 //! | choice | adds | other |
 //! |---|---|---|
 //! | no depth ([`NoDepth`](crate::depth::NoDepth)) | 0 | — |
-//! | depth | 1 (`i64`) | shift, compare, store |
+//! | depth, up to 16 bits | 1 (`u32`) | shift, compare, store |
+//! | depth, 24 or 32 bits | 1 (`i64`) | clamp, shift, compare, store |
 //! | flat colour | 0 | — |
 //! | affine colour | 3 (`i32`) | 3 shifts |
 //! | perspective-correct colour | 4 (`i64`) | 3 `u32` divisions |
 //!
-//! Variants are chosen by type parameters, so the loop a scene does not use is
-//! not compiled.
+//! The narrow accumulators give exactly the values of the `i64` planes (see
+//! [`draw_triangle`]'s helpers): the error bounds below keep every sampled
+//! value in their range. Variants (and the common depth state
+//! [`DepthState::LESS_WRITE`]) are chosen by type parameters, so the loop a
+//! scene does not use is not compiled.
+//!
+//! # Set-up cost
+//! Per triangle and band: the edge functions, one determinant with its
+//! reciprocal, and per plane three exact divisions done as multiplications
+//! (`attr`). Nothing is cached between bands (no RAM per triangle).
 
-use crate::attr::{COLOR_FRAC, Plane, PlaneFrame, channel};
+use crate::attr::{COLOR_FRAC, Plane, PlaneFrame, PlaneSetup, channel};
 use crate::band::BandView;
-use crate::depth::{DepthFormat, DepthState};
+use crate::depth::{DepthFormat, DepthState, DepthTest};
 use crate::edge::{Cull, TriangleSpans};
 use crate::primitive::{center_rows, reference_pixel};
 use crate::{Interpolate, SubPoint};
@@ -65,18 +74,18 @@ pub struct ScreenTriangle<const S: u32> {
 }
 
 impl<const S: u32> ScreenTriangle<S> {
-    /// The attribute plane through `values` at the vertices, referenced at a
-    /// band-independent pixel (see `attr`); `None` for zero area.
-    pub(crate) fn plane(&self, values: [i64; 3]) -> Option<Plane> {
+    /// The plane set-up shared by all attributes of the triangle, referenced
+    /// at a band-independent pixel (see `attr`); `None` for zero area.
+    pub(crate) fn plane_setup(&self) -> Option<PlaneSetup> {
         let frame =
             PlaneFrame { v: self.v.map(|v| (2 * v.pos.x() as i64, 2 * v.pos.y() as i64)), shift: S + 1 };
         let (rx, ry) = reference_pixel(self.v[0].pos);
-        Plane::new(&frame, values, rx, ry)
+        PlaneSetup::new(&frame, rx, ry)
     }
 
-    /// The depth plane in 2^-[`DEPTH_FRAC`] steps of format `F`.
-    pub(crate) fn depth_plane<F: DepthFormat>(&self) -> Option<Plane> {
-        self.plane(self.v.map(|v| depth_steps(v.depth, F::MAX)))
+    /// The depth values of the vertices in 2^-[`DEPTH_FRAC`] steps of format `F`.
+    pub(crate) fn depth_values<F: DepthFormat>(&self) -> [i64; 3] {
+        self.v.map(|v| depth_steps(v.depth, F::MAX))
     }
 
     /// Inclusive range of pixel rows the triangle can touch.
@@ -128,48 +137,186 @@ pub fn draw_triangle<C, F, M, const S: u32, const W: usize>(
 {
     use crate::blit::Blitter;
     let spans = TriangleSpans::new(tri.v.map(|v| v.pos), color.clip(), Cull::None);
-    let plane = |values: [i64; 3]| tri.plane(values);
-    let y0 = color.y0();
-    let zplane = if F::ENABLED {
-        match tri.depth_plane::<F>() {
-            Some(p) => Some(p),
-            None => return,
-        }
+    if spans.is_empty() {
+        return;
+    }
+    // Zero area (on the same snapped coordinates as coverage): no spans either.
+    let Some(setup) = tri.plane_setup() else { return };
+    let zplane = if F::ENABLED { setup.plane(tri.depth_values::<F>()) } else { Plane::default() };
+    if tri.flat {
+        draw_with_test::<C, F, _, W>(spans, color, depth, state, &zplane, &C::from_channels(tri.v[0].color));
     } else {
-        None
-    };
-    let max = C::CHANNEL_MAX;
-    let shading = Shading::<M>::new(tri, max, &plane);
+        let shade = Gouraud::<C, M>::new(tri, &setup);
+        draw_with_test::<C, F, _, W>(spans, color, depth, state, &zplane, &shade);
+    }
+}
 
+/// [`draw_spans`] with the depth state as a type: ordinary opaque drawing
+/// ([`DepthState::LESS_WRITE`]) gets a loop without the per-pixel dispatch.
+#[inline(always)]
+fn draw_with_test<C, F, Sh, const W: usize>(
+    spans: TriangleSpans,
+    color: &mut BandView<'_, C, W>,
+    depth: &mut [[F::Storage; W]],
+    state: DepthState,
+    zplane: &Plane,
+    shade: &Sh,
+) where
+    C: Interpolate,
+    F: DepthFormat,
+    Sh: Shader<C>,
+{
+    if F::ENABLED && state == DepthState::LESS_WRITE {
+        draw_spans::<C, F, _, _, W>(spans, color, depth, LessWrite, zplane, shade);
+    } else {
+        draw_spans::<C, F, _, _, W>(spans, color, depth, state, zplane, shade);
+    }
+}
+
+/// A depth state, known at compile time or not.
+trait DepthRule: Copy {
+    fn test(self) -> DepthTest;
+    fn write(self) -> bool;
+}
+
+impl DepthRule for DepthState {
+    #[inline(always)]
+    fn test(self) -> DepthTest {
+        self.test
+    }
+    #[inline(always)]
+    fn write(self) -> bool {
+        self.write
+    }
+}
+
+/// [`DepthState::LESS_WRITE`] as a type.
+#[derive(Clone, Copy)]
+struct LessWrite;
+
+impl DepthRule for LessWrite {
+    #[inline(always)]
+    fn test(self) -> DepthTest {
+        DepthTest::Less
+    }
+    #[inline(always)]
+    fn write(self) -> bool {
+        true
+    }
+}
+
+/// The fragment loop of [`draw_triangle`], for one way of shading.
+#[inline(always)]
+fn draw_spans<C, F, Sh, R, const W: usize>(
+    spans: TriangleSpans,
+    color: &mut BandView<'_, C, W>,
+    depth: &mut [[F::Storage; W]],
+    state: R,
+    zplane: &Plane,
+    shade: &Sh,
+) where
+    C: Interpolate,
+    F: DepthFormat,
+    Sh: Shader<C>,
+    R: DepthRule,
+{
+    let y0 = color.y0();
     for span in spans {
         let (x0, len) = (span.x as usize, span.len as usize);
         let Some(cspan) = color.row_mut(span.y).and_then(|r| r.get_mut(x0..x0 + len)) else { continue };
-        let mut shade = shading.start(span.x, span.y);
-        match zplane {
-            Some(zp) => {
-                let drow = depth.get_mut((span.y - y0) as usize).and_then(|r| r.get_mut(x0..x0 + len));
-                let Some(dspan) = drow else { continue };
-                let (mut z, dz) = (zp.at(span.x, span.y), zp.step_x());
-                for (p, slot) in cspan.iter_mut().zip(dspan.iter_mut()) {
-                    let zq = depth_value::<F>(z);
-                    if state.test.passes(zq, F::to_u32(*slot)) {
-                        if state.write {
-                            *slot = F::from_u32(zq);
-                        }
-                        *p = C::from_channels(shade.color(max));
+        let mut sh = shade.start(span.x, span.y);
+        if F::ENABLED {
+            let drow = depth.get_mut((span.y - y0) as usize).and_then(|r| r.get_mut(x0..x0 + len));
+            let Some(dspan) = drow else { continue };
+            let mut z = DepthSpan::<F>::new(zplane, span.x, span.y);
+            for (p, slot) in cspan.iter_mut().zip(dspan.iter_mut()) {
+                let zq = z.value();
+                if state.test().passes(zq, F::to_u32(*slot)) {
+                    if state.write() {
+                        *slot = F::from_u32(zq);
                     }
-                    z = z.wrapping_add(dz);
-                    shade.step();
+                    *p = sh.color();
                 }
+                z.step();
+                sh.step();
             }
-            None => {
-                for p in cspan.iter_mut() {
-                    *p = C::from_channels(shade.color(max));
-                    shade.step();
-                }
+        } else {
+            for p in cspan.iter_mut() {
+                *p = sh.color();
+                sh.step();
             }
         }
     }
+}
+
+/// The depth plane along a span. Formats of at most 16 bits step in `u32`:
+/// a sampled value is within 2^13 units of an exact one in
+/// `[0, MAX·2^DEPTH_FRAC]` (`attr`), so value + ½ step lies in
+/// `[0, 2^32)` and its wrapping `u32` sum is exact and needs no clamp: the
+/// same result as [`depth_value`], which wider formats use on `i64`.
+struct DepthSpan<F> {
+    narrow: (u32, u32),
+    wide: (i64, i64),
+    _f: core::marker::PhantomData<F>,
+}
+
+impl<F: DepthFormat> DepthSpan<F> {
+    const NARROW: bool = F::BITS + DEPTH_FRAC <= 32;
+
+    #[inline(always)]
+    fn new(p: &Plane, x: i32, y: i32) -> Self {
+        let (z, dz) = (p.at(x, y), p.step_x());
+        let (narrow, wide) = if Self::NARROW {
+            ((z.wrapping_add(1 << (DEPTH_FRAC - 1)) as u32, dz as u32), (0, 0))
+        } else {
+            ((0, 0), (z, dz))
+        };
+        DepthSpan { narrow, wide, _f: core::marker::PhantomData }
+    }
+
+    #[inline(always)]
+    fn value(&self) -> u32 {
+        if Self::NARROW { self.narrow.0 >> DEPTH_FRAC } else { depth_value::<F>(self.wide.0) }
+    }
+
+    #[inline(always)]
+    fn step(&mut self) {
+        if Self::NARROW {
+            self.narrow.0 = self.narrow.0.wrapping_add(self.narrow.1);
+        } else {
+            self.wide.0 = self.wide.0.wrapping_add(self.wide.1);
+        }
+    }
+}
+
+/// A way of colouring a triangle's fragments: per span, a [`ShadeSpan`].
+trait Shader<C> {
+    type Span: ShadeSpan<C>;
+    fn start(&self, x: i32, y: i32) -> Self::Span;
+}
+
+/// Colour along one span, pixel by pixel.
+trait ShadeSpan<C> {
+    fn color(&self) -> C;
+    fn step(&mut self);
+}
+
+/// Flat shading: the colour itself.
+impl<C: Interpolate> Shader<C> for C {
+    type Span = C;
+    #[inline(always)]
+    fn start(&self, _: i32, _: i32) -> C {
+        *self
+    }
+}
+
+impl<C: Interpolate> ShadeSpan<C> for C {
+    #[inline(always)]
+    fn color(&self) -> C {
+        *self
+    }
+    #[inline(always)]
+    fn step(&mut self) {}
 }
 
 /// A depth-plane value rounded to the nearest step of `F`; the clamp only
@@ -202,90 +349,117 @@ pub(crate) fn normalised_q<const S: u32>(tri: &ScreenTriangle<S>, bits: u32) -> 
     })
 }
 
-/// Colour set-up for one triangle.
-enum Shading<M> {
-    Flat([u8; 3]),
-    Planes { planes: [Option<Plane>; 4], _m: core::marker::PhantomData<M> },
+/// Gouraud colour set-up for one triangle: per channel a plane of the
+/// colour (affine) or of `c·q`, plus one of `q` (perspective-correct).
+/// Channels the colour type lacks get no plane and stay 0.
+struct Gouraud<C, M> {
+    planes: [Plane; 4],
+    _m: core::marker::PhantomData<(C, M)>,
 }
 
-/// Colour state along one span.
-struct ShadeSpan<M> {
-    flat: Option<[u8; 3]>,
-    acc: [i64; 4],
-    step: [i64; 4],
-    _m: core::marker::PhantomData<M>,
+/// [`Gouraud`] along a span. Affine: `i32` accumulators (a sampled value is
+/// within 2^13 units of one in `[0, 255·2^20]`, so the wrapping `i32` sum is
+/// the exact `i64` one). Perspective-correct: accumulators scaled by 2^32 /
+/// 2^[`DEPTH_FRAC`], so the high word is the whole part the division needs
+/// (sampled `c·q` in `[−1, 2^31)` and `q` in `[0, 2^23]` after flooring),
+/// again exact modulo 2^64.
+struct GouraudSpan<C, M> {
+    affine: [i32; 3],
+    affine_step: [i32; 3],
+    persp: [i64; 4],
+    persp_step: [i64; 4],
+    _m: core::marker::PhantomData<(C, M)>,
 }
 
-impl<M: Interpolation> Shading<M> {
-    fn new<const S: u32>(
-        tri: &ScreenTriangle<S>,
-        max: [u8; 3],
-        plane: &impl Fn([i64; 3]) -> Option<Plane>,
-    ) -> Self {
-        if tri.flat {
-            return Shading::Flat(tri.v[0].color);
-        }
-        let mut planes = [None; 4];
+impl<C: Interpolate, M: Interpolation> Gouraud<C, M> {
+    fn new<const S: u32>(tri: &ScreenTriangle<S>, setup: &PlaneSetup) -> Self {
+        let max = C::CHANNEL_MAX;
+        let mut planes = [Plane::default(); 4];
         if M::PERSPECTIVE {
             // 23 bits keep c·q within u32 for a channel c ≤ 255.
             let q = normalised_q(tri, Q_BITS);
-            planes[3] = plane(q.map(|q| q << DEPTH_FRAC));
+            planes[3] = setup.plane(q.map(|q| q << DEPTH_FRAC));
             for (k, p) in planes.iter_mut().take(3).enumerate() {
                 if max[k] > 0 {
-                    *p = plane([0, 1, 2].map(|i| (tri.v[i].color[k] as i64 * q[i]) << DEPTH_FRAC));
+                    let cq = |i: usize| (tri.v[i].color[k] as i64 * q[i]) << DEPTH_FRAC;
+                    *p = setup.plane([cq(0), cq(1), cq(2)]);
                 }
             }
         } else {
             for (k, p) in planes.iter_mut().take(3).enumerate() {
                 if max[k] > 0 {
-                    *p = plane(tri.v.map(|v| (v.color[k] as i64) << COLOR_FRAC));
+                    *p = setup.plane(tri.v.map(|v| (v.color[k] as i64) << COLOR_FRAC));
                 }
             }
         }
-        Shading::Planes { planes, _m: core::marker::PhantomData }
+        Gouraud { planes, _m: core::marker::PhantomData }
     }
+}
 
-    #[inline]
-    fn start(&self, x: i32, y: i32) -> ShadeSpan<M> {
-        let mut s = ShadeSpan { flat: None, acc: [0; 4], step: [0; 4], _m: core::marker::PhantomData };
-        match self {
-            Shading::Flat(c) => s.flat = Some(*c),
-            Shading::Planes { planes, .. } => {
-                for ((acc, step), p) in s.acc.iter_mut().zip(s.step.iter_mut()).zip(planes) {
-                    if let Some(p) = p {
-                        (*acc, *step) = (p.at(x, y), p.step_x());
-                    }
-                }
+impl<C: Interpolate, M: Interpolation> Shader<C> for Gouraud<C, M> {
+    type Span = GouraudSpan<C, M>;
+
+    #[inline(always)]
+    fn start(&self, x: i32, y: i32) -> GouraudSpan<C, M> {
+        let max = C::CHANNEL_MAX;
+        let mut s = GouraudSpan {
+            affine: [0; 3],
+            affine_step: [0; 3],
+            persp: [0; 4],
+            persp_step: [0; 4],
+            _m: core::marker::PhantomData,
+        };
+        for (k, p) in self.planes.iter().enumerate() {
+            if k == 3 && !M::PERSPECTIVE || k < 3 && max[k] == 0 {
+                continue;
+            }
+            let (v, d) = (p.at(x, y), p.step_x());
+            if M::PERSPECTIVE {
+                (s.persp[k], s.persp_step[k]) = (v << (32 - DEPTH_FRAC), d << (32 - DEPTH_FRAC));
+            } else {
+                (s.affine[k], s.affine_step[k]) = (v as i32, d as i32);
             }
         }
         s
     }
 }
 
-impl<M: Interpolation> ShadeSpan<M> {
+impl<C: Interpolate, M: Interpolation> ShadeSpan<C> for GouraudSpan<C, M> {
     #[inline(always)]
-    fn color(&self, max: [u8; 3]) -> [u8; 3] {
-        if let Some(c) = self.flat {
-            return c;
-        }
-        if M::PERSPECTIVE {
-            // q < 2^24 and c·q < 2^31 inside the triangle: 32-bit divisions,
-            // which Cortex-M3/M4 do in hardware (the clamps only guard rounding).
-            let q = (self.acc[3] >> DEPTH_FRAC).clamp(1, 1 << 24) as u32;
-            [0, 1, 2].map(|k| {
-                let p = (self.acc[k] >> DEPTH_FRAC).clamp(0, 1 << 31) as u32;
+    fn color(&self) -> C {
+        let max = C::CHANNEL_MAX;
+        // No array `map` here: it is not always inlined.
+        let channel_of = |k: usize| -> u8 {
+            if max[k] == 0 {
+                0
+            } else if M::PERSPECTIVE {
+                // q ≤ 2^23 and c·q < 2^31 inside the triangle: 32-bit
+                // divisions, which Cortex-M3/M4 do in hardware (the max only
+                // guards rounding).
+                let q = ((self.persp[3] >> 32) as i32).max(1) as u32;
+                let p = ((self.persp[k] >> 32) as i32).max(0) as u32;
                 ((p + q / 2) / q).min(max[k] as u32) as u8
-            })
-        } else {
-            [0, 1, 2].map(|k| channel(self.acc[k].clamp(i32::MIN as i64, i32::MAX as i64) as i32, max[k]))
-        }
+            } else {
+                channel(self.affine[k], max[k])
+            }
+        };
+        C::from_channels([channel_of(0), channel_of(1), channel_of(2)])
     }
 
     #[inline(always)]
     fn step(&mut self) {
-        if self.flat.is_none() {
-            for (acc, step) in self.acc.iter_mut().zip(self.step) {
-                *acc = acc.wrapping_add(step);
+        let max = C::CHANNEL_MAX;
+        if M::PERSPECTIVE {
+            for (k, (acc, step)) in self.persp.iter_mut().zip(self.persp_step).enumerate() {
+                if k == 3 || max[k] > 0 {
+                    *acc = acc.wrapping_add(step);
+                }
+            }
+        } else {
+            for ((acc, step), m) in self.affine.iter_mut().zip(self.affine_step).zip(max) {
+                if m > 0 {
+                    *acc = acc.wrapping_add(step);
+                }
             }
         }
     }

@@ -214,9 +214,16 @@ fn draw_band<C, F, M, const S: u32, const W: usize, const H: usize>(
     for r in rows.iter_mut() {
         r.fill(F::FAR);
     }
+    // `tri.rows()` overlaps `y0..y1` exactly when the centre of row `y1 − 1`
+    // is not above the top vertex and that of row `y0` not below the bottom
+    // one; compared in doubled subpixels (|2y| ≤ 2^29, the centres below
+    // 2^22: all in i32), this skips the per-triangle row computation.
+    let centre = |row: i32| (2 * row + 1) << S;
+    let (top_limit, bottom_limit) = (centre(y1 - 1), centre(y0));
     for tri in triangles {
-        let (lo, hi) = tri.rows();
-        if lo < y1 && hi >= y0 {
+        let ys = tri.v.map(|v| 2 * v.pos.y());
+        let (ymin, ymax) = (ys[0].min(ys[1]).min(ys[2]), ys[0].max(ys[1]).max(ys[2]));
+        if ymin <= top_limit && ymax >= bottom_limit {
             draw_triangle::<C, F, M, S, W>(tri, view, rows, state);
         }
     }

@@ -64,7 +64,8 @@ impl<const A: usize> Varyings<A> {
         if values.iter().flatten().any(|v| v.unsigned_abs() > MAX_VARYING as u32) {
             return Err(Error::CoordinateOutOfRange);
         }
-        let plane = |vals: [i64; 3]| tri.plane(vals);
+        let Some(setup) = tri.plane_setup() else { return Ok(None) };
+        let plane = |vals: [i64; 3]| Some(setup.plane(vals));
         let (q, scale) = if M::PERSPECTIVE {
             let q = normalised_q(tri, Q_BITS);
             let Some(qp) = plane(q.map(|q| q << DEPTH_FRAC)) else { return Ok(None) };
@@ -123,8 +124,8 @@ pub fn draw_fragments<C, F, const S: u32, const W: usize>(
     use crate::blit::Blitter;
     let spans = TriangleSpans::new(tri.v.map(|v| v.pos), color.clip(), Cull::None);
     let zplane = if F::ENABLED {
-        match tri.depth_plane::<F>() {
-            Some(p) => Some(p),
+        match tri.plane_setup() {
+            Some(setup) => Some(setup.plane(tri.depth_values::<F>())),
             None => return,
         }
     } else {
