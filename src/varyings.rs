@@ -121,44 +121,11 @@ pub fn draw_fragments<C, F, const S: u32, const W: usize>(
     C: Interpolate,
     F: DepthFormat,
 {
-    use crate::blit::Blitter;
-    let spans = TriangleSpans::new(tri.v.map(|v| v.pos), color.clip(), Cull::None);
-    let zplane = if F::ENABLED {
-        match tri.plane_setup() {
-            Some(setup) => Some(setup.plane(tri.depth_values::<F>())),
-            None => return,
+    for_each_fragment::<C, F, S, W>(tri, color, depth, state, |x, y, p| {
+        if let Some(c) = shade(x, y) {
+            *p = c;
         }
-    } else {
-        None
-    };
-    let y0 = color.y0();
-    for span in spans {
-        let (x0, len) = (span.x as usize, span.len as usize);
-        let Some(cspan) = color.row_mut(span.y).and_then(|r| r.get_mut(x0..x0 + len)) else { continue };
-        let mut drow = depth.get_mut((span.y - y0) as usize).and_then(|r| r.get_mut(x0..x0 + len));
-        let (mut z, dz) = zplane.map_or((0, 0), |p| (p.at(span.x, span.y), p.step_x()));
-        for (i, p) in cspan.iter_mut().enumerate() {
-            let pass = match (&mut drow, F::ENABLED) {
-                (Some(d), true) => {
-                    let zq = depth_value::<F>(z);
-                    let slot = &mut d[i];
-                    let ok = state.test.passes(zq, F::to_u32(*slot));
-                    if ok && state.write {
-                        *slot = F::from_u32(zq);
-                    }
-                    ok
-                }
-                (None, true) => false,
-                (_, false) => true,
-            };
-            if pass {
-                if let Some(c) = shade(span.x + i as i32, span.y) {
-                    *p = c;
-                }
-            }
-            z = z.wrapping_add(dz);
-        }
-    }
+    });
 }
 
 /// The depth-tested fragment loop of the fragment stage: like
@@ -177,8 +144,8 @@ pub(crate) fn for_each_fragment<C, F, const S: u32, const W: usize>(
     use crate::blit::Blitter;
     let spans = TriangleSpans::new(tri.v.map(|v| v.pos), color.clip(), Cull::None);
     let zplane = if F::ENABLED {
-        match tri.depth_plane::<F>() {
-            Some(p) => Some(p),
+        match tri.plane_setup() {
+            Some(setup) => Some(setup.plane(tri.depth_values::<F>())),
             None => return,
         }
     } else {
