@@ -14,8 +14,12 @@
 //! - `per_band`: the per-band vertex stage draws what the per-frame one draws.
 //! - `varyings`: per-vertex value vectors vs f64; the fragment hook's coverage.
 //! - 3D: `depth3d`, `zfight`, `perspective`, `clip3d_raster`, `interpenetrate`, `pipeline3d` (references in `ref3d`, `clip3d_ref`).
+//! - `antialias`, `antialias_images`: anti-aliasing (`microraster::aa`): coverage vs exact area,
+//!   shared edges, uniform meshes, band invariance, modes, ranges.
 //! - `framebuffer`: a recording host `DrawTarget` used by the suites above.
 
+mod antialias;
+mod antialias_images;
 mod bands;
 mod clip3d_raster;
 mod clip3d_ref;

@@ -1,0 +1,103 @@
+//! The resolve: each `N × N` block of samples box-filtered into one pixel.
+//!
+//! Per channel, in the colour's native depth ([`Interpolate::to_channels`]),
+//! the pixel is the mean of its `N²` samples rounded to nearest, ties up:
+//! `⌊(2·Σ + N²) / (2·N²)⌋`. So a pixel whose samples all hold one colour is
+//! that colour exactly (the common case, which skips the arithmetic), and a
+//! white-on-black pixel with `k` covered samples is `round(k/N² · max)`.
+
+use super::Antialias;
+use crate::Interpolate;
+use crate::band::BandView;
+
+/// Resolves the sample rows of `samples` into the rows of `out`: output row
+/// `y` comes from sample rows `y·N .. y·N + N`, output column `x` from sample
+/// columns `x·N .. x·N + N` (`N = A::N`). Output rows whose samples the view
+/// lacks are left as they are.
+///
+/// This is the last step of
+/// [`Renderer::render_antialiased`](crate::Renderer::render_antialiased); call
+/// it yourself inside [`Renderer::render_with`](crate::Renderer::render_with)
+/// to mix anti-aliased and custom drawing.
+///
+/// ```
+/// use embedded_graphics_core::pixelcolor::Gray8;
+/// use embedded_graphics_core::prelude::*;
+/// use microraster::aa::{Ssaa, resolve::resolve};
+/// use microraster::blit::Blitter;
+/// use microraster::Band;
+/// let mut samples = Band::<Gray8, 4, 2>::new(Gray8::BLACK);
+/// let mut out = Band::<Gray8, 2, 1>::new(Gray8::BLACK);
+/// let mut sv = samples.view(0, 2, Gray8::BLACK);
+/// sv.set_pixel(0, 0, Gray8::WHITE); // 1 of pixel 0's 4 samples
+/// sv.set_pixel(2, 0, Gray8::WHITE); // 3 of pixel 1's 4 samples
+/// sv.set_pixel(3, 0, Gray8::WHITE);
+/// sv.set_pixel(3, 1, Gray8::WHITE);
+/// let mut ov = out.view(0, 1, Gray8::BLACK);
+/// resolve::<Ssaa<2>, _, 2, 4>(&mut sv, &mut ov);
+/// let px: Vec<u8> = ov.pixels().map(|c| c.luma()).collect();
+/// assert_eq!(px, [64, 191]); // 255/4 = 63.75 → 64, 765/4 = 191.25 → 191
+/// ```
+pub fn resolve<A, C, const W: usize, const SW: usize>(
+    samples: &mut BandView<'_, C, SW>,
+    out: &mut BandView<'_, C, W>,
+) where
+    A: Antialias,
+    C: Interpolate,
+{
+    let n = A::N;
+    if n == 0 || SW < W * n {
+        return; // a mismatched call: nothing sensible to write
+    }
+    let oy0 = out.y0();
+    for r in 0..out.height() {
+        // Frame rows fit i32 (`MAX_FRAME_DIM`·`MAX_GRID`); a view elsewhere just misses.
+        let Some(sy) = (oy0 as i64 + r as i64).checked_mul(n as i64).and_then(|v| i32::try_from(v).ok())
+        else {
+            continue;
+        };
+        let last = sy.checked_add(n as i32 - 1);
+        if samples.row_mut(sy).is_none() || last.and_then(|l| samples.row_mut(l)).is_none() {
+            continue;
+        }
+        let Some(orow) = out.row_mut(oy0 + r as i32) else { continue };
+        for (x, px) in orow.iter_mut().enumerate() {
+            *px = resolve_block::<A, C, SW>(samples, sy, x * n);
+        }
+    }
+}
+
+/// The pixel of the block whose top-left sample is `(sx, sy)`; every row
+/// `sy .. sy + N` is in the view (checked by the caller).
+#[inline]
+fn resolve_block<A: Antialias, C: Interpolate, const SW: usize>(
+    samples: &mut BandView<'_, C, SW>,
+    sy: i32,
+    sx: usize,
+) -> C {
+    let n = A::N;
+    let first = samples.row_mut(sy).map_or(None, |row| row.get(sx).copied());
+    let Some(first) = first else { return C::from_channels([0; 3]) };
+    let mut uniform = true;
+    for j in 0..n as i32 {
+        if let Some(block) = samples.row_mut(sy + j).and_then(|row| row.get(sx..sx + n)) {
+            uniform &= block.iter().all(|&c| c == first);
+        }
+    }
+    if uniform {
+        return first;
+    }
+    let mut sum = [0u32; 3];
+    for j in 0..n as i32 {
+        if let Some(block) = samples.row_mut(sy + j).and_then(|row| row.get(sx..sx + n)) {
+            for c in block {
+                let ch = c.to_channels();
+                for k in 0..3 {
+                    sum[k] += u32::from(ch[k]); // ≤ 64 · 255
+                }
+            }
+        }
+    }
+    let n2 = (n * n) as u32;
+    C::from_channels(sum.map(|s| ((2 * s + n2) / (2 * n2)) as u8))
+}
