@@ -76,7 +76,7 @@ fn resolve_block<A: Antialias, C: Interpolate, const SW: usize>(
     sx: usize,
 ) -> C {
     let n = A::N;
-    let first = samples.row_mut(sy).map_or(None, |row| row.get(sx).copied());
+    let first = samples.row_mut(sy).and_then(|row| row.get(sx).copied());
     let Some(first) = first else { return C::from_channels([0; 3]) };
     let mut uniform = true;
     for j in 0..n as i32 {
