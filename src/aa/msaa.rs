@@ -74,29 +74,72 @@ where
     M: Interpolation,
 {
     let scaled = scale_triangle(tri, A::N)?;
-    draw_scaled::<A, C, F, M, S, SW>(tri, &scaled, Cull::None, samples, depth, state);
+    if let Some(shader) = PixelShader::<C>::new::<M, S>(tri) {
+        draw_scaled::<A, C, F, S, SW>(&scaled, Cull::None, samples, depth, state, |x, y| shader.at(x, y));
+    }
     Ok(())
 }
 
-/// [`draw_triangle`] with the scaled triangle already made, and a cull mode.
-pub(crate) fn draw_scaled<A, C, F, M, const S: u32, const SW: usize>(
+/// The fragment hook of multisampling: like [`draw_triangle`], but the colour
+/// of pixel `(x, y)` (frame pixels, not samples) is `shade(x, y)`, called at
+/// most once per pixel and only if one of its covered samples passes the
+/// depth test. For custom shading (textures, lighting) at one evaluation per
+/// pixel.
+///
+/// ```
+/// use embedded_graphics_core::pixelcolor::Gray8;
+/// use embedded_graphics_core::prelude::*;
+/// use microraster::aa::{Msaa, msaa};
+/// use microraster::depth::{DepthState, NoDepth};
+/// use microraster::raster3d::{ScreenTriangle, ScreenVertex};
+/// use microraster::{Band, SubPoint};
+/// let v = |x, y| ScreenVertex { pos: SubPoint::<4>::from_pixels(x, y).unwrap(), ..Default::default() };
+/// let tri = ScreenTriangle { v: [v(0, 0), v(4, 0), v(0, 2)], flat: true };
+/// let mut samples = Band::<Gray8, 16, 8>::new(Gray8::BLACK); // 4 × 2 px, 4 × 4 samples each
+/// let mut view = samples.view(0, 8, Gray8::BLACK);
+/// let mut calls = 0;
+/// msaa::draw_fragments::<Msaa<4>, _, NoDepth, 4, 16>(&tri, &mut view, &mut [], DepthState::DISABLED, |x, y| {
+///     calls += 1;
+///     Gray8::new(10 * x as u8 + y as u8)
+/// })?;
+/// assert_eq!(calls, 6); // pixels touched: 4 in row 0, 2 in row 1
+/// # Ok::<(), microraster::Error>(())
+/// ```
+pub fn draw_fragments<A, C, F, const S: u32, const SW: usize>(
     tri: &ScreenTriangle<S>,
+    samples: &mut BandView<'_, C, SW>,
+    depth: &mut [[F::Storage; SW]],
+    state: DepthState,
+    shade: impl FnMut(i32, i32) -> C,
+) -> Result<(), Error>
+where
+    A: Antialias,
+    C: Interpolate,
+    F: DepthFormat,
+{
+    let scaled = scale_triangle(tri, A::N)?;
+    draw_scaled::<A, C, F, S, SW>(&scaled, Cull::None, samples, depth, state, shade);
+    Ok(())
+}
+
+/// [`draw_fragments`] with the triangle already on the sample grid, and a
+/// cull mode.
+pub(crate) fn draw_scaled<A, C, F, const S: u32, const SW: usize>(
     scaled: &ScreenTriangle<S>,
     cull: Cull,
     samples: &mut BandView<'_, C, SW>,
     depth: &mut [[F::Storage; SW]],
     state: DepthState,
+    mut shade: impl FnMut(i32, i32) -> C,
 ) where
     A: Antialias,
     C: Interpolate,
     F: DepthFormat,
-    M: Interpolation,
 {
     let n = A::N as i32;
     if n < 1 || A::N > MAX_GRID {
         return;
     }
-    let Some(shader) = PixelShader::<C>::new::<M, S>(tri) else { return };
     let zplane = if F::ENABLED {
         match scaled.depth_plane::<F>() {
             Some(p) => Some(p),
@@ -149,7 +192,7 @@ pub(crate) fn draw_scaled<A, C, F, M, const S: u32, const SW: usize>(
                             *slot = F::from_u32(zq);
                         }
                     }
-                    *p = *color.get_or_insert_with(|| shader.at(px, py));
+                    *p = *color.get_or_insert_with(|| shade(px, py));
                 }
             }
         }
@@ -157,14 +200,14 @@ pub(crate) fn draw_scaled<A, C, F, M, const S: u32, const SW: usize>(
 }
 
 /// The colour of a triangle at pixel centres.
-enum PixelShader<C> {
+pub(crate) enum PixelShader<C> {
     Flat(C),
     Planes(Varyings<3>),
 }
 
 impl<C: Interpolate> PixelShader<C> {
     /// `None` for a zero-area triangle.
-    fn new<M: Interpolation, const S: u32>(tri: &ScreenTriangle<S>) -> Option<Self> {
+    pub(crate) fn new<M: Interpolation, const S: u32>(tri: &ScreenTriangle<S>) -> Option<Self> {
         if tri.flat {
             return Some(PixelShader::Flat(C::from_channels(tri.v[0].color)));
         }
@@ -174,7 +217,7 @@ impl<C: Interpolate> PixelShader<C> {
     }
 
     #[inline]
-    fn at(&self, x: i32, y: i32) -> C {
+    pub(crate) fn at(&self, x: i32, y: i32) -> C {
         match self {
             PixelShader::Flat(c) => *c,
             PixelShader::Planes(v) => {

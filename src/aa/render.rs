@@ -2,11 +2,12 @@
 //! [`Renderer::render_3d_antialiased`] (3D), built on
 //! [`Renderer::render_with`].
 
+use super::msaa::{self, PixelShader};
 use super::resolve::resolve;
-use super::{Antialias, Grid, check_height, msaa, scale_triangle, scale_vertices};
+use super::{Antialias, Grid, check_height, scale_triangle, scale_vertices};
 use crate::band::{Band, BandView};
 use crate::blit::Blitter;
-use crate::depth::{DepthBand, DepthFormat, DepthState};
+use crate::depth::{DepthBand, DepthFormat, DepthState, NoDepth};
 use crate::edge::{Cull, Span};
 use crate::raster3d::{Affine, Interpolation, ScreenTriangle, ScreenVertex, draw_triangle};
 use crate::{ClipRect, Interpolate, Primitive, RenderError, Renderer, Shading, Triangle};
@@ -181,14 +182,9 @@ impl<C: Interpolate> Renderer<C> {
                 let (lo, hi) = scaled.rows();
                 if lo < sy1 && hi >= sy0 {
                     if A::SHADE_PER_PIXEL {
-                        msaa::draw_scaled::<A, C, F, M, S, SW>(
-                            tri,
-                            &scaled,
-                            Cull::None,
-                            &mut sv,
-                            rows,
-                            state,
-                        );
+                        let Some(shader) = PixelShader::<C>::new::<M, S>(tri) else { continue };
+                        let shade = |x, y| shader.at(x, y);
+                        msaa::draw_scaled::<A, C, F, S, SW>(&scaled, Cull::None, &mut sv, rows, state, shade);
                     } else {
                         draw_triangle::<C, F, M, S, SW>(&scaled, &mut sv, rows, state);
                     }
@@ -251,13 +247,15 @@ fn draw_2d<A: Antialias, C: Interpolate, const S: u32, const SW: usize>(
             for (sv, p) in on_grid.v.iter_mut().zip(v) {
                 sv.pos = p;
             }
-            msaa::draw_scaled::<A, C, crate::depth::NoDepth, Affine, S, SW>(
-                &pixel,
+            let Some(shader) = PixelShader::<C>::new::<Affine, S>(&pixel) else { return };
+            let shade = |x, y| shader.at(x, y);
+            msaa::draw_scaled::<A, C, NoDepth, S, SW>(
                 &on_grid,
                 cull,
                 sv,
                 &mut [],
                 DepthState::DISABLED,
+                shade,
             );
         }
         _ => scaled.draw(sv, cull),

@@ -1,6 +1,6 @@
 //! Anti-aliased coverage (`microraster::aa`) against the exact area of the
 //! snapped triangle inside each pixel, and shared edges summing to full
-//! coverage. Images (meshes, bands, modes, ranges) are in `antialias_images`.
+//! coverage; MSAA shades each touched pixel once. Images (meshes, bands, modes, ranges) are in `antialias_images`.
 //!
 //! Coverage is read back through the public renderer: a white triangle on
 //! black in `Gray8`, so a pixel with `k` of its `N²` samples covered must be
@@ -18,7 +18,9 @@ use crate::framebuffer::Framebuffer;
 use crate::reference::Rng;
 use embedded_graphics_core::pixelcolor::Gray8;
 use embedded_graphics_core::prelude::*;
-use microraster::aa::{Antialias, Msaa, Ssaa};
+use microraster::aa::{Antialias, Msaa, Ssaa, msaa};
+use microraster::depth::{Depth16, DepthBand, DepthFormat, DepthState, NoDepth};
+use microraster::raster3d::{ScreenTriangle, ScreenVertex};
 use microraster::{Band, Primitive, Renderer, SubPoint, Triangle};
 
 pub const FW: usize = 16;
@@ -275,4 +277,55 @@ fn triangles_sharing_an_edge_sum_to_full_coverage() {
     check_shared_edges::<Ssaa<4>, { FW * 4 }, 16>(Ssaa, 12, true);
     check_shared_edges::<Msaa<4>, { FW * 4 }, 16>(Msaa, 13, true);
     check_shared_edges::<Msaa<3>, { FW * 3 }, 12>(Msaa, 14, false);
+}
+
+fn check_shades_once<A: Antialias, F: DepthFormat, const SW: usize, const SH: usize>(seed: u64) -> usize {
+    let n = A::N;
+    let mut rng = Rng::new(seed);
+    let mut touched = 0;
+    for _ in 0..500 {
+        let v = random_tri(&mut rng);
+        let vert = |p| ScreenVertex { pos: p, depth: 1 << 31, inv_w: 1 << 30, color: [0; 3] };
+        let tri = ScreenTriangle { v: v.map(vert), flat: true };
+        let mut samples = Band::<Gray8, SW, SH>::new(Gray8::BLACK);
+        let mut depth = DepthBand::<F, SW, SH>::new();
+        let mut view = samples.view(0, SH, Gray8::BLACK);
+        let mut calls = vec![0u32; FW * FH as usize];
+        msaa::draw_fragments::<A, _, F, 4, SW>(
+            &tri,
+            &mut view,
+            depth.rows_mut(SH),
+            DepthState::LESS_WRITE,
+            |x, y| {
+                calls[y as usize * FW + x as usize] += 1;
+                Gray8::WHITE
+            },
+        )
+        .unwrap();
+        // Covered samples per pixel, read back from the sample band.
+        let mut k = vec![0u32; FW * FH as usize];
+        for (i, c) in view.pixels().enumerate() {
+            let (sx, sy) = (i % SW, i / SW);
+            k[sy / n * FW + sx / n] += (c == Gray8::WHITE) as u32;
+        }
+        let scene = [Primitive::from(Triangle::flat(v, Gray8::WHITE))];
+        let reference =
+            sample_counts(&render_aa::<Ssaa<4>, Gray8, 4, { FW * 4 }, 16>(Ssaa, &scene, Gray8::BLACK), 4);
+        for i in 0..k.len() {
+            assert_eq!(calls[i], (k[i] > 0) as u32, "pixel {i} of {v:?}: {} samples", k[i]);
+            if n == 4 {
+                assert_eq!(k[i], reference[i], "MSAA and SSAA coverage differ at pixel {i}");
+            }
+            touched += calls[i] as usize;
+        }
+    }
+    touched
+}
+
+#[test]
+fn msaa_shades_each_touched_pixel_exactly_once() {
+    let t = check_shades_once::<Msaa<4>, Depth16, { FW * 4 }, { FH as usize * 4 }>(71)
+        + check_shades_once::<Msaa<2>, NoDepth, { FW * 2 }, { FH as usize * 2 }>(72)
+        + check_shades_once::<Msaa<3>, Depth16, { FW * 3 }, { FH as usize * 3 }>(73);
+    assert!(t > 10_000, "{t}");
 }
