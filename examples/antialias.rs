@@ -90,12 +90,15 @@ fn scene_3d() -> Result<heapless::Vec<ScreenTriangle<S>, BINS>> {
     Ok(bins)
 }
 
-/// One anti-aliased mode on both scenes: (2D frame, ms), (3D frame, ms), bytes.
+/// One mode on both scenes: (2D frame, ms), (3D frame, ms), 2D and 3D band bytes.
+type Outcome = ((Frame, f64), (Frame, f64), usize, usize);
+
+/// One anti-aliased mode on both scenes.
 fn run<A: Antialias, const SW: usize, const SH: usize>(
     mode: A,
     prims: &[Primitive<Rgb565, S>],
     tris: &[ScreenTriangle<S>],
-) -> Result<((Frame, f64), (Frame, f64), usize, usize)> {
+) -> Result<Outcome> {
     let r = Renderer::new(HEIGHT, BG);
     let mut samples = Band::<Rgb565, SW, SH>::new(BG);
     let mut depth = DepthBand::<Depth16, SW, SH>::new();

@@ -73,6 +73,7 @@ where
     F: DepthFormat,
     M: Interpolation,
 {
+    const { assert!(A::N >= 1 && A::N <= MAX_GRID, "anti-aliasing needs N in 1..=8") };
     let scaled = scale_triangle(tri, A::N)?;
     if let Some(shader) = PixelShader::<C>::new::<M, S>(tri) {
         draw_scaled::<A, C, F, S, SW>(&scaled, Cull::None, samples, depth, state, |x, y| shader.at(x, y));
@@ -117,6 +118,7 @@ where
     C: Interpolate,
     F: DepthFormat,
 {
+    const { assert!(A::N >= 1 && A::N <= MAX_GRID, "anti-aliasing needs N in 1..=8") };
     let scaled = scale_triangle(tri, A::N)?;
     draw_scaled::<A, C, F, S, SW>(&scaled, Cull::None, samples, depth, state, shade);
     Ok(())
@@ -176,23 +178,22 @@ pub(crate) fn draw_scaled<A, C, F, const S: u32, const SW: usize>(
                 }
                 let (a, b) = (a as usize, b as usize);
                 let Some(crow) = samples.row_mut(s.y).and_then(|r| r.get_mut(a..b)) else { continue };
-                for (i, p) in crow.iter_mut().enumerate() {
-                    if let Some(zp) = &zplane {
-                        let sx = (a + i) as i32;
-                        let slot = usize::try_from(s.y - sy0)
-                            .ok()
-                            .and_then(|r| depth.get_mut(r))
-                            .and_then(|r| r.get_mut(a + i));
-                        let Some(slot) = slot else { continue };
-                        let zq = depth_value::<F>(zp.at(sx, s.y));
-                        if !state.test.passes(zq, F::to_u32(*slot)) {
-                            continue;
-                        }
+                let Some(zp) = &zplane else {
+                    crow.fill(*color.get_or_insert_with(|| shade(px, py)));
+                    continue;
+                };
+                let drow = usize::try_from(s.y - sy0).ok().and_then(|r| depth.get_mut(r));
+                let Some(drow) = drow.and_then(|r| r.get_mut(a..b)) else { continue };
+                let (mut z, dz) = (zp.at(a as i32, s.y), zp.step_x());
+                for (p, slot) in crow.iter_mut().zip(drow) {
+                    let zq = depth_value::<F>(z);
+                    z = z.wrapping_add(dz); // exact modulo 2^64, as in `attr`
+                    if state.test.passes(zq, F::to_u32(*slot)) {
                         if state.write {
                             *slot = F::from_u32(zq);
                         }
+                        *p = *color.get_or_insert_with(|| shade(px, py));
                     }
-                    *p = *color.get_or_insert_with(|| shade(px, py));
                 }
             }
         }

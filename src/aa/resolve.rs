@@ -6,14 +6,15 @@
 //! that colour exactly (the common case, which skips the arithmetic), and a
 //! white-on-black pixel with `k` covered samples is `round(k/N² · max)`.
 
-use super::Antialias;
+use super::{Antialias, MAX_GRID};
 use crate::Interpolate;
 use crate::band::BandView;
 
 /// Resolves the sample rows of `samples` into the rows of `out`: output row
 /// `y` comes from sample rows `y·N .. y·N + N`, output column `x` from sample
 /// columns `x·N .. x·N + N` (`N = A::N`). Output rows whose samples the view
-/// lacks are left as they are.
+/// lacks are left as they are. `SW == W·N` and `N ≤ 8` are checked at
+/// compile time.
 ///
 /// This is the last step of
 /// [`Renderer::render_antialiased`](crate::Renderer::render_antialiased); call
@@ -45,10 +46,13 @@ pub fn resolve<A, C, const W: usize, const SW: usize>(
     A: Antialias,
     C: Interpolate,
 {
+    const {
+        assert!(
+            A::N >= 1 && A::N <= MAX_GRID && SW == W * A::N,
+            "anti-aliasing needs N in 1..=8 and a sample band of W·N × H·N"
+        )
+    };
     let n = A::N;
-    if n == 0 || SW < W * n {
-        return; // a mismatched call: nothing sensible to write
-    }
     let oy0 = out.y0();
     for r in 0..out.height() {
         // Frame rows fit i32 (`MAX_FRAME_DIM`·`MAX_GRID`); a view elsewhere just misses.
