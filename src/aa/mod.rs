@@ -74,6 +74,8 @@
 //! | `N = 2` | 40,960 | 10,240 | 40,960 | 92,160 |
 //! | `N = 4` | 163,840 | 10,240 | 163,840 | 337,920 |
 //!
+//! Without depth (2D scenes): 51,200 bytes at `N = 2`, 174,080 at `N = 4`.
+//!
 //! ```
 //! use embedded_graphics_core::pixelcolor::Rgb565;
 //! use microraster::Band;
@@ -84,6 +86,9 @@
 //! let n4 = Band::<Rgb565, 1280, 64>::BYTES + Px::BYTES + DepthBand::<Depth16, 1280, 64>::BYTES;
 //! assert_eq!((Band::<Rgb565, 640, 32>::BYTES, n2), (40_960, 92_160));
 //! assert_eq!((Band::<Rgb565, 1280, 64>::BYTES, n4), (163_840, 337_920));
+//! // 2D scenes need no depth band.
+//! assert_eq!(Band::<Rgb565, 640, 32>::BYTES + Px::BYTES, 51_200);
+//! assert_eq!(Band::<Rgb565, 1280, 64>::BYTES + Px::BYTES, 174_080);
 //! ```
 //!
 //! # Ranges

@@ -105,3 +105,62 @@ fn resolve_block<A: Antialias, C: Interpolate, const SW: usize>(
     let n2 = (n * n) as u32;
     C::from_channels(sum.map(|s| ((2 * s + n2) / (2 * n2)) as u8))
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::Band;
+    use crate::aa::Ssaa;
+    use crate::blit::Blitter;
+    use embedded_graphics_core::pixelcolor::Rgb565;
+
+    fn check<A: Antialias, const SW: usize, const SH: usize>(seed: u64) {
+        let n = A::N;
+        let mut state = seed;
+        let mut next = |m: u8| {
+            state = state.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            ((state >> 33) % (m as u64 + 1)) as u8
+        };
+        let mut samples = Band::<Rgb565, SW, SH>::new(Rgb565::new(0, 0, 0));
+        let mut out = Band::<Rgb565, 5, 3>::new(Rgb565::new(0, 0, 0));
+        let mut sv = samples.view(3 * n as i32, SH, Rgb565::new(0, 0, 0)); // frame rows 3..6
+        let max = Rgb565::CHANNEL_MAX;
+        for y in 0..SH as i32 {
+            for x in 0..SW as i32 {
+                // Half the blocks uniform, the others random per sample.
+                let c = if (x / n as i32 + y / n as i32) % 2 == 0 {
+                    Rgb565::new(7, 50, 1)
+                } else {
+                    Rgb565::from_channels([next(max[0]), next(max[1]), next(max[2])])
+                };
+                sv.set_pixel(x, 3 * n as i32 + y, c);
+            }
+        }
+        let mut ov = out.view(3, 3, Rgb565::new(0, 0, 0));
+        resolve::<A, Rgb565, 5, SW>(&mut sv, &mut ov);
+        let px: [Rgb565; 15] = core::array::from_fn(|i| ov.pixels().nth(i).unwrap());
+        for (i, p) in px.iter().enumerate() {
+            let (bx, by) = (i % 5 * n, i / 5 * n);
+            let mut sum = [0u32; 3];
+            for y in by..by + n {
+                for x in bx..bx + n {
+                    let c = samples.rows()[y][x].to_channels();
+                    (0..3).for_each(|k| sum[k] += c[k] as u32);
+                }
+            }
+            // Round half up of the exact mean, in f64.
+            let want = sum.map(|s| (s as f64 / (n * n) as f64 + 0.5).floor() as u8);
+            assert_eq!(p.to_channels(), want, "pixel {i}, sums {sum:?}");
+        }
+    }
+
+    #[test]
+    fn resolve_rounds_the_mean_of_each_channel_to_nearest() {
+        for seed in 0..20 {
+            check::<Ssaa<1>, 5, 3>(seed);
+            check::<Ssaa<2>, 10, 6>(seed);
+            check::<Ssaa<3>, 15, 9>(seed);
+            check::<Ssaa<8>, 40, 24>(seed);
+        }
+    }
+}
