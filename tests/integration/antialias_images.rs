@@ -303,3 +303,49 @@ fn range_errors_are_typed_and_extremes_do_not_panic() {
     assert!(accepted > 1000 && rejected > 50);
     let _ = NoDepth;
 }
+
+#[test]
+fn cull_mode_and_offset_apply_as_in_the_aliased_renderer() {
+    use microraster::edge::Cull;
+    let mut rng = Rng::new(81);
+    for _ in 0..20 {
+        let scene = random_scene(&mut rng, 15, true, true);
+        for cull in [Cull::None, Cull::Clockwise, Cull::CounterClockwise] {
+            let r = Renderer::new(FH, BG).with_cull(cull).with_offset(Point::new(3, 2));
+            let mut fb = Framebuffer::new(FW as u32 + 3, FH + 2, FILL);
+            r.render(&scene, &mut Band::<_, FW, 4>::new(BG), &mut fb).unwrap();
+            let mut aa = Framebuffer::new(FW as u32 + 3, FH + 2, FILL);
+            let (mut samples, mut out) = (Band::<_, FW, 4>::new(BG), Band::<_, FW, 4>::new(BG));
+            r.render_antialiased(Msaa::<1>, &scene, &mut samples, &mut out, &mut aa).unwrap();
+            assert_eq!(aa.pixels, fb.pixels, "{cull:?}");
+            // With N = 2 the culled windings still vanish: only one winding's triangles.
+            let keep = |t: &Triangle<Rgb565, 4>| {
+                let v = t.vertices().map(|p| (p.x() as i64, p.y() as i64));
+                let det = (v[1].0 - v[0].0) * (v[2].1 - v[0].1) - (v[2].0 - v[0].0) * (v[1].1 - v[0].1);
+                match cull {
+                    Cull::None => true,
+                    Cull::Clockwise => det < 0,
+                    Cull::CounterClockwise => det > 0,
+                }
+            };
+            let kept: Vec<Primitive<Rgb565, 4>> = scene
+                .iter()
+                .filter(|p| match p {
+                    Primitive::Triangle(t) => keep(t),
+                    Primitive::Line(_) => true,
+                })
+                .copied()
+                .collect();
+            let with_cull = {
+                let mut fb = Framebuffer::new(FW as u32, FH, BG);
+                let (mut s, mut o) = (Band::<_, { FW * 2 }, 8>::new(BG), Band::<_, FW, 4>::new(BG));
+                Renderer::new(FH, BG)
+                    .with_cull(cull)
+                    .render_antialiased(Ssaa::<2>, &scene, &mut s, &mut o, &mut fb)
+                    .unwrap();
+                fb.pixels
+            };
+            assert_eq!(with_cull, render_aa::<Ssaa<2>, _, 4, { FW * 2 }, 8>(Ssaa, &kept, BG), "{cull:?}");
+        }
+    }
+}
