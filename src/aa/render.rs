@@ -102,7 +102,7 @@ impl<C: Interpolate> Renderer<C> {
     /// says, with colour interpolation `M` ([`Affine`] or
     /// [`PerspectiveCorrect`](crate::raster3d::PerspectiveCorrect)) and the
     /// depth buffer `depth` at *sample* resolution (`SW × SH`, cleared to far
-    /// at each band; [`NoDepth`](crate::depth::NoDepth) for none). Depth is
+    /// at each band; [`NoDepth`] for none). Depth is
     /// tested per sample in both modes; [`Msaa`](super::Msaa) evaluates
     /// colour once per pixel ([`super::msaa`]). The renderer's cull mode does
     /// not apply: the vertex stage culls.
