@@ -134,15 +134,23 @@ mod sealed {
     pub trait Sealed {}
     impl<const N: usize> Sealed for super::Ssaa<N> {}
     impl<const N: usize> Sealed for super::Msaa<N> {}
+    impl<const N: usize> Sealed for super::MsaaSparse<N> {}
 }
 
-/// An anti-aliasing mode: [`Ssaa`] or [`Msaa`], with the grid size `N`
-/// (1 to [`MAX_GRID`]; anything else is a compile error where it is used).
+/// An anti-aliasing mode: [`Ssaa`], [`Msaa`] or [`MsaaSparse`], with the grid
+/// size `N` (1 to [`MAX_GRID`]; 2, 4 or 8 for [`MsaaSparse`]; anything else
+/// is a compile error where it is used).
 pub trait Antialias: sealed::Sealed + Copy + Default {
-    /// Samples per pixel along each axis.
+    /// Samples per pixel along each axis of the grid.
     const N: usize;
-    /// True when colour is evaluated once per pixel ([`Msaa`]).
+    /// Samples kept per pixel in each sample row: `N` (the whole grid) or 1
+    /// (a sparse pattern). A pixel has `N · COLS` samples.
+    const COLS: usize;
+    /// True when colour is evaluated once per pixel.
     const SHADE_PER_PIXEL: bool;
+    /// For sparse patterns, the grid column of the sample in each grid row
+    /// (the first `N` entries).
+    const PATTERN: [u8; MAX_GRID];
 }
 
 /// Supersampling: `N × N` samples per pixel, each shaded.
@@ -165,14 +173,70 @@ pub struct Ssaa<const N: usize>;
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
 pub struct Msaa<const N: usize>;
 
+/// Sparse multisampling: `N` samples per pixel, one in each row and column
+/// of the `N × N` grid (an "N-rooks" pattern), colour once per pixel. The
+/// patterns are the D3D standard ones for 2, 4 and 8 samples (each a subset
+/// of the grid's centres), so coverage is as exact and as watertight as on
+/// the whole grid, at `1/N` of its memory and depth work. Near-horizontal and
+/// near-vertical edges get `N + 1` levels, as on the whole grid; other
+/// directions fewer.
+///
+/// ```
+/// use microraster::aa::{Antialias, MsaaSparse};
+/// // D3D's 4× pattern: row j of the 4 × 4 grid keeps column PATTERN[j].
+/// assert_eq!(<MsaaSparse<4> as Antialias>::PATTERN[..4], [1, 3, 0, 2]);
+/// assert_eq!(<MsaaSparse<4> as Antialias>::COLS, 1);
+/// ```
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct MsaaSparse<const N: usize>;
+
 impl<const N: usize> Antialias for Ssaa<N> {
     const N: usize = N;
+    const COLS: usize = N;
     const SHADE_PER_PIXEL: bool = false;
+    const PATTERN: [u8; MAX_GRID] = [0; MAX_GRID];
 }
 
 impl<const N: usize> Antialias for Msaa<N> {
     const N: usize = N;
+    const COLS: usize = N;
     const SHADE_PER_PIXEL: bool = true;
+    const PATTERN: [u8; MAX_GRID] = [0; MAX_GRID];
+}
+
+impl<const N: usize> Antialias for MsaaSparse<N> {
+    const N: usize = N;
+    const COLS: usize = 1;
+    const SHADE_PER_PIXEL: bool = true;
+    // D3D11 standard sample positions (1/16 px) mapped to grid rows → columns.
+    const PATTERN: [u8; MAX_GRID] = match N {
+        2 => [0, 1, 0, 0, 0, 0, 0, 0],
+        4 => [1, 3, 0, 2, 0, 0, 0, 0],
+        8 => [7, 2, 4, 0, 6, 3, 1, 5],
+        _ => [0; MAX_GRID],
+    };
+}
+
+/// True if `A` is a mode microraster supports: `N` in `1..=MAX_GRID` and, for
+/// a sparse pattern, one sample in each grid column.
+pub(crate) const fn mode_ok<A: Antialias>() -> bool {
+    if A::N < 1 || A::N > MAX_GRID {
+        return false;
+    }
+    if A::COLS == A::N {
+        return true;
+    }
+    let mut seen = [false; MAX_GRID];
+    let mut j = 0;
+    while j < A::N {
+        let c = A::PATTERN[j] as usize;
+        if A::COLS != 1 || c >= A::N || seen[c] {
+            return false;
+        }
+        seen[c] = true;
+        j += 1;
+    }
+    A::N > 1
 }
 
 /// Compile-time agreement of a mode with its pixel and sample bands.
@@ -180,8 +244,8 @@ pub(crate) struct Grid<A, const W: usize, const H: usize, const SW: usize, const
 
 impl<A: Antialias, const W: usize, const H: usize, const SW: usize, const SH: usize> Grid<A, W, H, SW, SH> {
     pub(crate) const CHECK: () = assert!(
-        A::N >= 1 && A::N <= MAX_GRID && SW == W * A::N && SH == H * A::N,
-        "anti-aliasing needs N in 1..=8 and a sample band of W·N × H·N"
+        mode_ok::<A>() && SW == W * A::COLS && SH == H * A::N,
+        "anti-aliasing needs a supported N and a sample band of W·COLS × H·N"
     );
 }
 

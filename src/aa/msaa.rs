@@ -24,14 +24,14 @@
 //! edge. Depth is therefore per sample; [`NoDepth`](crate::depth::NoDepth)
 //! drops it entirely (zero bytes, zero work).
 
-use super::{Antialias, MAX_GRID, scale_triangle};
+use super::{Antialias, MAX_GRID, mode_ok, scale_triangle};
 use crate::band::BandView;
 use crate::blit::Blitter;
 use crate::depth::{DepthFormat, DepthState};
 use crate::edge::{Cull, Span, TriangleSpans};
 use crate::raster3d::{Interpolation, ScreenTriangle, depth_value};
 use crate::varyings::Varyings;
-use crate::{Error, Interpolate};
+use crate::{ClipRect, Error, Interpolate};
 
 /// Rasterizes `tri` (positions in pixels) into a sample-resolution colour
 /// view and its depth rows (`depth` holds the view's rows, first to last; for
@@ -73,7 +73,7 @@ where
     F: DepthFormat,
     M: Interpolation,
 {
-    const { assert!(A::N >= 1 && A::N <= MAX_GRID, "anti-aliasing needs N in 1..=8") };
+    const { assert!(mode_ok::<A>(), "anti-aliasing needs a supported N") };
     let scaled = scale_triangle(tri, A::N)?;
     if let Some(shader) = PixelShader::<C>::new::<M, S>(tri) {
         draw_scaled::<A, C, F, S, SW>(&scaled, Cull::None, samples, depth, state, |x, y| shader.at(x, y));
@@ -118,7 +118,7 @@ where
     C: Interpolate,
     F: DepthFormat,
 {
-    const { assert!(A::N >= 1 && A::N <= MAX_GRID, "anti-aliasing needs N in 1..=8") };
+    const { assert!(mode_ok::<A>(), "anti-aliasing needs a supported N") };
     let scaled = scale_triangle(tri, A::N)?;
     draw_scaled::<A, C, F, S, SW>(&scaled, Cull::None, samples, depth, state, shade);
     Ok(())
@@ -139,7 +139,7 @@ pub(crate) fn draw_scaled<A, C, F, const S: u32, const SW: usize>(
     F: DepthFormat,
 {
     let n = A::N as i32;
-    if n < 1 || A::N > MAX_GRID {
+    if !mode_ok::<A>() {
         return;
     }
     let zplane = if F::ENABLED {
@@ -151,7 +151,10 @@ pub(crate) fn draw_scaled<A, C, F, const S: u32, const SW: usize>(
         None
     };
     let sy0 = samples.y0();
-    let mut spans = TriangleSpans::new(scaled.v.map(|v| v.pos), samples.clip(), cull).peekable();
+    // The view's rows, and its columns on the sample grid (`COLS` of `N` kept).
+    let c = samples.clip();
+    let clip = ClipRect::new(0, c.y0(), (SW / A::COLS * A::N) as i32, c.y1());
+    let mut spans = TriangleSpans::new(scaled.v.map(|v| v.pos), clip, cull).peekable();
     while let Some(first) = spans.next() {
         // All sample rows of one pixel row (spans come top to bottom).
         let py = first.y.div_euclid(n);
@@ -172,11 +175,22 @@ pub(crate) fn draw_scaled<A, C, F, const S: u32, const SW: usize>(
             let mut color = None;
             let (bx0, bx1) = (px * n, px * n + n);
             for s in group.iter().flatten() {
-                let (a, b) = (s.x.max(bx0), (s.x + s.len as i32).min(bx1));
-                if a >= b {
-                    continue;
-                }
-                let (a, b) = (a as usize, b as usize);
+                // Stored samples a..b of this pixel in the row; `sx` the grid
+                // column of the first.
+                let (a, b, sx) = if A::COLS == 1 {
+                    let j = (s.y - py * n) as usize % MAX_GRID;
+                    let sx = bx0 + A::PATTERN[j] as i32;
+                    if sx < s.x || sx >= s.x + s.len as i32 {
+                        continue;
+                    }
+                    (px as usize, px as usize + 1, sx)
+                } else {
+                    let (a, b) = (s.x.max(bx0), (s.x + s.len as i32).min(bx1));
+                    if a >= b {
+                        continue;
+                    }
+                    (a as usize, b as usize, a)
+                };
                 let Some(crow) = samples.row_mut(s.y).and_then(|r| r.get_mut(a..b)) else { continue };
                 let Some(zp) = &zplane else {
                     crow.fill(*color.get_or_insert_with(|| shade(px, py)));
@@ -184,7 +198,7 @@ pub(crate) fn draw_scaled<A, C, F, const S: u32, const SW: usize>(
                 };
                 let drow = usize::try_from(s.y - sy0).ok().and_then(|r| depth.get_mut(r));
                 let Some(drow) = drow.and_then(|r| r.get_mut(a..b)) else { continue };
-                let (mut z, dz) = (zp.at(a as i32, s.y), zp.step_x());
+                let (mut z, dz) = (zp.at(sx, s.y), zp.step_x());
                 for (p, slot) in crow.iter_mut().zip(drow) {
                     let zq = depth_value::<F>(z);
                     z = z.wrapping_add(dz); // exact modulo 2^64, as in `attr`

@@ -232,38 +232,27 @@ fn draw_2d<A: Antialias, C: Interpolate, const S: u32, const SW: usize>(
     if lo >= sy1 || hi < sy0 {
         return;
     }
-    match t.shading() {
-        Shading::Gouraud(cs) if A::SHADE_PER_PIXEL => {
-            let vertex = |p, c: C| ScreenVertex { pos: p, depth: 0, inv_w: 1, color: c.to_channels() };
-            let pixel = ScreenTriangle {
-                v: [
-                    vertex(t.vertices()[0], cs[0]),
-                    vertex(t.vertices()[1], cs[1]),
-                    vertex(t.vertices()[2], cs[2]),
-                ],
-                flat: false,
-            };
-            let mut on_grid = pixel;
-            for (sv, p) in on_grid.v.iter_mut().zip(v) {
-                sv.pos = p;
-            }
-            let Some(shader) = PixelShader::<C>::new::<Affine, S>(&pixel) else { return };
-            let shade = |x, y| shader.at(x, y);
-            msaa::draw_scaled::<A, C, NoDepth, S, SW>(
-                &on_grid,
-                cull,
-                sv,
-                &mut [],
-                DepthState::DISABLED,
-                shade,
-            );
-        }
-        _ => scaled.draw(sv, cull),
+    let (cs, flat) = match t.shading() {
+        // Flat fills are the same in every full-grid mode: whole sample spans.
+        Shading::Flat(_) if A::COLS == A::N => return scaled.draw(sv, cull),
+        Shading::Gouraud(_) if !A::SHADE_PER_PIXEL => return scaled.draw(sv, cull),
+        Shading::Flat(c) => ([c; 3], true),
+        Shading::Gouraud(cs) => (cs, false),
+    };
+    let vertex =
+        |i: usize| ScreenVertex { pos: t.vertices()[i], depth: 0, inv_w: 1, color: cs[i].to_channels() };
+    let pixel = ScreenTriangle { v: [vertex(0), vertex(1), vertex(2)], flat };
+    let mut on_grid = pixel;
+    for (sv, p) in on_grid.v.iter_mut().zip(v) {
+        sv.pos = p;
     }
+    let Some(shader) = PixelShader::<C>::new::<Affine, S>(&pixel) else { return };
+    let shade = |x, y| shader.at(x, y);
+    msaa::draw_scaled::<A, C, NoDepth, S, SW>(&on_grid, cull, sv, &mut [], DepthState::DISABLED, shade);
 }
 
-/// A pixel-resolution [`Blitter`] over a sample view: each pixel fills its
-/// `N × N` block (aliased lines).
+/// A pixel-resolution [`Blitter`] over a sample view: each pixel fills all
+/// its samples (aliased lines).
 struct Blocks<'v, 'a, A, C, const SW: usize> {
     view: &'v mut BandView<'a, C, SW>,
     _a: core::marker::PhantomData<A>,
@@ -271,15 +260,15 @@ struct Blocks<'v, 'a, A, C, const SW: usize> {
 
 impl<A: Antialias, C: Interpolate, const SW: usize> Blitter<C> for Blocks<'_, '_, A, C, SW> {
     fn clip(&self) -> ClipRect {
-        let n = A::N as i32;
+        let (n, cols) = (A::N as i32, A::COLS as i32);
         let (y0, rows) = (self.view.y0(), self.view.height() as i32);
-        ClipRect::new(0, y0 / n, SW as i32 / n, (y0 + rows) / n)
+        ClipRect::new(0, y0 / n, SW as i32 / cols, (y0 + rows) / n)
     }
 
     fn set_pixel(&mut self, x: i32, y: i32, color: C) {
-        let n = A::N as i32;
+        let (n, cols) = (A::N as i32, A::COLS as i32);
         for j in 0..n {
-            self.view.fill_span(Span { y: y * n + j, x: x * n, len: n as u32 }, color);
+            self.view.fill_span(Span { y: y * n + j, x: x * cols, len: cols as u32 }, color);
         }
     }
 }

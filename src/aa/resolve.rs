@@ -1,20 +1,21 @@
-//! The resolve: each `N × N` block of samples box-filtered into one pixel.
+//! The resolve: each pixel's `K` samples box-filtered into one pixel
+//! (`K = N²` on the whole grid, `N` for [`MsaaSparse`](super::MsaaSparse)).
 //!
 //! Per channel, in the colour's native depth ([`Interpolate::to_channels`]),
-//! the pixel is the mean of its `N²` samples rounded to nearest, ties up:
-//! `⌊(2·Σ + N²) / (2·N²)⌋`. So a pixel whose samples all hold one colour is
+//! the pixel is the mean of its `K` samples rounded to nearest, ties up:
+//! `⌊(2·Σ + K) / (2·K)⌋`. So a pixel whose samples all hold one colour is
 //! that colour exactly (the common case, which skips the arithmetic), and a
-//! white-on-black pixel with `k` covered samples is `round(k/N² · max)`.
+//! white-on-black pixel with `k` covered samples is `round(k/K · max)`.
 
-use super::{Antialias, MAX_GRID};
+use super::{Antialias, mode_ok};
 use crate::Interpolate;
 use crate::band::BandView;
 
 /// Resolves the sample rows of `samples` into the rows of `out`: output row
 /// `y` comes from sample rows `y·N .. y·N + N`, output column `x` from sample
-/// columns `x·N .. x·N + N` (`N = A::N`). Output rows whose samples the view
-/// lacks are left as they are. `SW == W·N` and `N ≤ 8` are checked at
-/// compile time.
+/// columns `x·COLS .. x·COLS + COLS` ([`Antialias::N`], [`Antialias::COLS`]).
+/// Output rows whose samples the view lacks are left as they are.
+/// `SW == W·COLS` and a supported `N` are checked at compile time.
 ///
 /// This is the last step of
 /// [`Renderer::render_antialiased`](crate::Renderer::render_antialiased); call
@@ -48,8 +49,8 @@ pub fn resolve<A, C, const W: usize, const SW: usize>(
 {
     const {
         assert!(
-            A::N >= 1 && A::N <= MAX_GRID && SW == W * A::N,
-            "anti-aliasing needs N in 1..=8 and a sample band of W·N × H·N"
+            mode_ok::<A>() && SW == W * A::COLS,
+            "anti-aliasing needs a supported N and a sample band of W·COLS × H·N"
         )
     };
     let n = A::N;
@@ -66,7 +67,7 @@ pub fn resolve<A, C, const W: usize, const SW: usize>(
         }
         let Some(orow) = out.row_mut(oy0 + r as i32) else { continue };
         for (x, px) in orow.iter_mut().enumerate() {
-            *px = resolve_block::<A, C, SW>(samples, sy, x * n);
+            *px = resolve_block::<A, C, SW>(samples, sy, x * A::COLS);
         }
     }
 }
@@ -79,12 +80,12 @@ fn resolve_block<A: Antialias, C: Interpolate, const SW: usize>(
     sy: i32,
     sx: usize,
 ) -> C {
-    let n = A::N;
+    let (n, cols) = (A::N, A::COLS);
     let first = samples.row_mut(sy).and_then(|row| row.get(sx).copied());
     let Some(first) = first else { return C::from_channels([0; 3]) };
     let mut uniform = true;
     for j in 0..n as i32 {
-        if let Some(block) = samples.row_mut(sy + j).and_then(|row| row.get(sx..sx + n)) {
+        if let Some(block) = samples.row_mut(sy + j).and_then(|row| row.get(sx..sx + cols)) {
             uniform &= block.iter().all(|&c| c == first);
         }
     }
@@ -93,7 +94,7 @@ fn resolve_block<A: Antialias, C: Interpolate, const SW: usize>(
     }
     let mut sum = [0u32; 3];
     for j in 0..n as i32 {
-        if let Some(block) = samples.row_mut(sy + j).and_then(|row| row.get(sx..sx + n)) {
+        if let Some(block) = samples.row_mut(sy + j).and_then(|row| row.get(sx..sx + cols)) {
             for c in block {
                 let ch = c.to_channels();
                 for k in 0..3 {
@@ -102,7 +103,7 @@ fn resolve_block<A: Antialias, C: Interpolate, const SW: usize>(
             }
         }
     }
-    let n2 = (n * n) as u32;
+    let n2 = (n * cols) as u32;
     C::from_channels(sum.map(|s| ((2 * s + n2) / (2 * n2)) as u8))
 }
 

@@ -1,4 +1,4 @@
-// error: anti-aliasing needs N in 1..=8 and a sample band of W·N × H·N
+// error: anti-aliasing needs a supported N and a sample band of W·COLS × H·N
 use embedded_graphics::mock_display::MockDisplay;
 use embedded_graphics_core::pixelcolor::Gray8;
 use microraster::aa::Msaa;

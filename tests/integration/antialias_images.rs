@@ -9,7 +9,7 @@ use crate::framebuffer::Framebuffer;
 use crate::reference::{Rng, random_triangle};
 use embedded_graphics_core::pixelcolor::{Gray8, Rgb565};
 use embedded_graphics_core::prelude::*;
-use microraster::aa::{Antialias, Msaa, Ssaa};
+use microraster::aa::{Antialias, Msaa, MsaaSparse, Ssaa};
 use microraster::depth::{Depth16, DepthBand, DepthFormat, DepthState, NoDepth};
 use microraster::raster3d::{Affine, Interpolation, PerspectiveCorrect, ScreenTriangle, ScreenVertex};
 use microraster::{Band, Error, Interpolate, Line, Primitive, RenderError, Renderer, SubPoint, Triangle};
@@ -119,6 +119,8 @@ fn meshes_tiling_the_screen_resolve_to_a_uniform_image() {
         uniform(render_aa::<Ssaa<3>, _, 7, { FW * 3 }, 21>(Ssaa, &gouraud, BG), "SSAA 3 gouraud");
         uniform(render_aa::<Msaa<4>, _, 4, { FW * 4 }, 16>(Msaa, &gouraud, BG), "MSAA 4 gouraud");
         uniform(render_aa::<Msaa<8>, _, 1, { FW * 8 }, 8>(Msaa, &flat, BG), "MSAA 8 flat");
+        uniform(render_aa::<MsaaSparse<4>, _, 4, FW, 16>(MsaaSparse, &flat, BG), "sparse 4 flat");
+        uniform(render_aa::<MsaaSparse<8>, _, 7, FW, 56>(MsaaSparse, &gouraud, BG), "sparse 8 gouraud");
         // 3D: the mesh on a slanted depth plane, in front of a far triangle
         // covering everything; the far one first, or last (then hidden by depth).
         let (z0, zx, zy) = (rng.uniform(0.2, 0.5), rng.uniform(-0.01, 0.01), rng.uniform(-0.01, 0.01));
@@ -149,6 +151,8 @@ fn meshes_tiling_the_screen_resolve_to_a_uniform_image() {
             render_3d::<Msaa<4>, PerspectiveCorrect, Depth16, 4, { FW * 4 }, 16>(Msaa, &tris),
             "3D MSAA 4",
         );
+        let sparse = render_3d::<MsaaSparse<4>, PerspectiveCorrect, Depth16, 4, FW, 16>(MsaaSparse, &tris);
+        uniform(sparse, "3D sparse 4");
         meshes += 1;
     }
     assert_eq!(meshes, 40);
@@ -195,6 +199,12 @@ fn bands_of_1_7_16_rows_give_the_same_image() {
         let c = render_3d::<Msaa<2>, PerspectiveCorrect, Depth16, 16, { FW * 2 }, 32>(Msaa, &tris);
         assert_eq!(render_3d::<Msaa<2>, PerspectiveCorrect, Depth16, 1, { FW * 2 }, 2>(Msaa, &tris), c);
         assert_eq!(render_3d::<Msaa<2>, PerspectiveCorrect, Depth16, 7, { FW * 2 }, 14>(Msaa, &tris), c);
+        let e = render_3d::<MsaaSparse<4>, Affine, Depth16, 16, FW, 64>(MsaaSparse, &tris);
+        assert_eq!(render_3d::<MsaaSparse<4>, Affine, Depth16, 1, FW, 4>(MsaaSparse, &tris), e);
+        assert_eq!(render_3d::<MsaaSparse<4>, Affine, Depth16, 7, FW, 28>(MsaaSparse, &tris), e);
+        let f = render_aa::<MsaaSparse<8>, _, 16, FW, 128>(MsaaSparse, &scene, BG);
+        assert_eq!(render_aa::<MsaaSparse<8>, _, 1, FW, 8>(MsaaSparse, &scene, BG), f);
+        assert_eq!(render_aa::<MsaaSparse<8>, _, 7, FW, 56>(MsaaSparse, &scene, BG), f);
         let d = render_3d::<Ssaa<3>, Affine, Depth16, 16, { FW * 3 }, 48>(Ssaa, &tris);
         assert_eq!(render_3d::<Ssaa<3>, Affine, Depth16, 1, { FW * 3 }, 3>(Ssaa, &tris), d);
         assert_eq!(render_3d::<Ssaa<3>, Affine, Depth16, 7, { FW * 3 }, 21>(Ssaa, &tris), d);
@@ -246,7 +256,7 @@ fn msaa_shades_like_the_aliased_renderer_and_ssaa_within_one_step() {
         let msaa = render_aa::<Msaa<4>, _, 4, { FW * 4 }, 16>(Msaa, &scene, BG);
         let ssaa = render_aa::<Ssaa<4>, _, 4, { FW * 4 }, 16>(Ssaa, &scene, BG);
         let white = [Primitive::from(Triangle::flat(v, Gray8::WHITE))];
-        let k = sample_counts(&render_aa::<Ssaa<4>, _, 4, { FW * 4 }, 16>(Ssaa, &white, Gray8::BLACK), 4);
+        let k = sample_counts(&render_aa::<Ssaa<4>, _, 4, { FW * 4 }, 16>(Ssaa, &white, Gray8::BLACK), 16);
         for i in (0..k.len()).filter(|&i| k[i] == 16) {
             assert_eq!(msaa[i], fb.pixels[i], "pixel {i} of {v:?}");
             let (s, a) = (ssaa[i].to_channels(), fb.pixels[i].to_channels());
