@@ -1,7 +1,8 @@
 //! Anti-aliasing (`microraster::aa`) on the standard scenes at 320×240,
 //! `Rgb565`, 16-row output bands: aliased, SSAA and MSAA at 2×2 and 4×4
-//! samples per pixel. Prints the time per frame and the band memory of each
-//! mode, and writes the frames (and 4× close-ups) as PNGs.
+//! samples per pixel, and sparse MSAA with 4 and 8. Prints the time per
+//! frame and the band memory of each mode, and writes the frames (and 4×
+//! close-ups) as PNGs.
 //!
 //! ```text
 //! cargo run --release --example antialias [-- <out_dir>]     # default out/
@@ -10,7 +11,7 @@
 use embedded_graphics::prelude::*;
 use embedded_graphics::primitives::Rectangle;
 use embedded_graphics_core::pixelcolor::{Rgb565, Rgb888};
-use microraster::aa::{Antialias, Msaa, Ssaa};
+use microraster::aa::{Antialias, Msaa, MsaaSparse, Ssaa};
 use microraster::depth::{Depth16, DepthBand, DepthState};
 use microraster::raster3d::{PerspectiveCorrect, ScreenTriangle};
 use microraster::scenes3d::{BINS, Scene3d};
@@ -167,6 +168,8 @@ fn main() -> Result<()> {
         ("msaa2", run::<Msaa<2>, { W * 2 }, { H * 2 }>(Msaa, &prims, &tris)?),
         ("ssaa4", run::<Ssaa<4>, { W * 4 }, { H * 4 }>(Ssaa, &prims, &tris)?),
         ("msaa4", run::<Msaa<4>, { W * 4 }, { H * 4 }>(Msaa, &prims, &tris)?),
+        ("sparse4", run::<MsaaSparse<4>, W, { H * 4 }>(MsaaSparse, &prims, &tris)?),
+        ("sparse8", run::<MsaaSparse<8>, W, { H * 8 }>(MsaaSparse, &prims, &tris)?),
     ];
     println!(
         "320×240 Rgb565, {H}-row bands ({} 2D primitives, {} 3D triangles), host, best of 7:",

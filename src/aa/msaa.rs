@@ -6,7 +6,9 @@
 //! they touch is visited once: its covered samples are depth-tested one by
 //! one (depth plane evaluated at each sample position, the depth band at
 //! sample resolution), and if any passes, the colour is evaluated once at
-//! the pixel centre and written to the samples that passed.
+//! the pixel centre and written to the samples that passed. With a sparse
+//! pattern ([`MsaaSparse`](super::MsaaSparse)) each grid row of a pixel has
+//! one sample, at the pattern's column, stored at the pixel's column.
 //!
 //! Colour at the pixel centre: flat triangles use vertex 0's colour; the
 //! others interpolate their vertex colours with [`Varyings`], affine or

@@ -15,9 +15,11 @@ use embedded_graphics_core::prelude::DrawTarget;
 
 impl<C: Interpolate> Renderer<C> {
     /// Renders `scene` anti-aliased as `mode` says ([`Ssaa`](super::Ssaa) or
-    /// [`Msaa`](super::Msaa), with `N × N` samples per pixel): each band is
-    /// drawn into `samples` (`SW = W·N` by `SH = H·N`, checked at compile
-    /// time), box-filtered into `out` and sent as [`Renderer::render`] sends
+    /// [`Msaa`](super::Msaa), with `N × N` samples per pixel, or
+    /// [`MsaaSparse`](super::MsaaSparse) with `N`): each band is drawn into
+    /// `samples` (`SW = W·COLS` by `SH = H·N`, [`Antialias::COLS`] being `N`
+    /// or 1 for sparse patterns; checked at compile time), box-filtered into
+    /// `out` and sent as [`Renderer::render`] sends
     /// it. Triangles are anti-aliased; lines stay aliased (each lit pixel fills
     /// its whole block). The image does not depend on `H`. See [`crate::aa`]
     /// for the accuracy and memory figures.
@@ -103,8 +105,9 @@ impl<C: Interpolate> Renderer<C> {
     /// [`PerspectiveCorrect`](crate::raster3d::PerspectiveCorrect)) and the
     /// depth buffer `depth` at *sample* resolution (`SW × SH`, cleared to far
     /// at each band; [`NoDepth`] for none). Depth is
-    /// tested per sample in both modes; [`Msaa`](super::Msaa) evaluates
-    /// colour once per pixel ([`super::msaa`]). The renderer's cull mode does
+    /// tested per sample in every mode; [`Msaa`](super::Msaa) and
+    /// [`MsaaSparse`](super::MsaaSparse) evaluate colour once per pixel
+    /// ([`super::msaa`]). The renderer's cull mode does
     /// not apply: the vertex stage culls.
     ///
     /// Errors as for [`Renderer::render_antialiased`].
