@@ -8,6 +8,7 @@
 #![forbid(unsafe_code)]
 #![deny(missing_docs)]
 
+pub mod aa;
 mod attr;
 pub mod band;
 pub mod blend;

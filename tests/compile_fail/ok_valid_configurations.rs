@@ -32,4 +32,24 @@ fn main() {
         DepthState::LESS_WRITE,
         &mut display,
     );
+    // Anti-aliasing: the sample bands of the two aa_* cases, made consistent.
+    let scene: [microraster::Primitive<Gray8, 4>; 0] = [];
+    let mut samples = Band::<Gray8, 64, 16>::new(Gray8::new(0));
+    let mut out = Band::<Gray8, 16, 4>::new(Gray8::new(0));
+    let _ = Renderer::new(16, Gray8::new(0)).render_antialiased(
+        microraster::aa::Ssaa::<4>,
+        &scene,
+        &mut samples,
+        &mut out,
+        &mut display,
+    );
+    let mut samples = Band::<Gray8, 32, 16>::new(Gray8::new(0));
+    let mut out = Band::<Gray8, 4, 2>::new(Gray8::new(0));
+    let _ = Renderer::new(4, Gray8::new(0)).render_antialiased(
+        microraster::aa::Msaa::<8>,
+        &scene,
+        &mut samples,
+        &mut out,
+        &mut display,
+    );
 }

@@ -18,8 +18,12 @@
 //! - `fragment`: the fragment stage: Phong vs f64 and Gouraud, translucency, varyings through the clipper.
 //! - `texture`: texture sampling vs f64; textured triangles (affine and perspective-correct).
 //! - 3D: `depth3d`, `zfight`, `perspective`, `clip3d_raster`, `interpenetrate`, `pipeline3d` (references in `ref3d`, `clip3d_ref`).
+//! - `antialias`, `antialias_images`: anti-aliasing (`microraster::aa`): coverage vs exact area,
+//!   shared edges, uniform meshes, band invariance, modes, ranges.
 //! - `framebuffer`: a recording host `DrawTarget` used by the suites above.
 
+mod antialias;
+mod antialias_images;
 mod bands;
 mod blend;
 mod clip3d_raster;

@@ -1,0 +1,277 @@
+//! The anti-aliased band loop: [`Renderer::render_antialiased`] (2D) and
+//! [`Renderer::render_3d_antialiased`] (3D), built on
+//! [`Renderer::render_with`].
+
+use super::msaa::{self, PixelShader};
+use super::resolve::resolve;
+use super::{Antialias, Grid, check_height, scale_triangle, scale_vertices};
+use crate::band::{Band, BandView};
+use crate::blit::Blitter;
+use crate::depth::{DepthBand, DepthFormat, DepthState, NoDepth};
+use crate::edge::{Cull, Span};
+use crate::raster3d::{Affine, Interpolation, ScreenTriangle, ScreenVertex, draw_triangle};
+use crate::{ClipRect, Interpolate, Primitive, RenderError, Renderer, Shading, Triangle};
+use embedded_graphics_core::prelude::DrawTarget;
+
+impl<C: Interpolate> Renderer<C> {
+    /// Renders `scene` anti-aliased as `mode` says ([`Ssaa`](super::Ssaa) or
+    /// [`Msaa`](super::Msaa), with `N × N` samples per pixel, or
+    /// [`MsaaSparse`](super::MsaaSparse) with `N`): each band is drawn into
+    /// `samples` (`SW = W·COLS` by `SH = H·N`, [`Antialias::COLS`] being `N`
+    /// or 1 for sparse patterns; checked at compile time), box-filtered into
+    /// `out` and sent as [`Renderer::render`] sends
+    /// it. Triangles are anti-aliased; lines stay aliased (each lit pixel fills
+    /// its whole block). The image does not depend on `H`. See [`crate::aa`]
+    /// for the accuracy and memory figures.
+    ///
+    /// Errors as for [`Renderer::render`], plus [`Error::InvalidFrameSize`]
+    /// if the height times `N` exceeds [`MAX_FRAME_DIM`] and
+    /// [`Error::CoordinateOutOfRange`] if a vertex times `N` leaves the
+    /// [`SubPoint`](crate::SubPoint) range (both before anything is sent).
+    ///
+    /// ```
+    /// use embedded_graphics::mock_display::MockDisplay;
+    /// use embedded_graphics_core::pixelcolor::Gray8;
+    /// use embedded_graphics_core::prelude::*;
+    /// use microraster::aa::Ssaa;
+    /// use microraster::{Band, Primitive, Renderer, SubPoint, Triangle};
+    /// let p = |x, y| SubPoint::<4>::from_pixels(x, y).unwrap();
+    /// // The diagonal of a 2 × 2 square: pixels it crosses are half covered.
+    /// let scene = [Primitive::from(Triangle::flat([p(0, 0), p(2, 0), p(0, 2)], Gray8::WHITE))];
+    /// let mut samples = Band::<Gray8, 8, 4>::new(Gray8::BLACK); // 4 × 4 samples a pixel
+    /// let mut out = Band::<Gray8, 2, 1>::new(Gray8::BLACK);
+    /// let mut display = MockDisplay::new();
+    /// Renderer::new(2, Gray8::BLACK).render_antialiased(Ssaa::<4>, &scene, &mut samples, &mut out, &mut display)?;
+    /// // 6 of 16 samples of the crossed pixels: round(255·6/16) = 96.
+    /// assert_eq!(display.get_pixel(Point::new(0, 0)), Some(Gray8::WHITE));
+    /// assert_eq!(display.get_pixel(Point::new(1, 0)), Some(Gray8::new(96)));
+    /// assert_eq!(display.get_pixel(Point::new(0, 1)), Some(Gray8::new(96)));
+    /// assert_eq!(display.get_pixel(Point::new(1, 1)), Some(Gray8::BLACK));
+    /// # Ok::<(), microraster::RenderError<core::convert::Infallible>>(())
+    /// ```
+    ///
+    /// [`Error::InvalidFrameSize`]: crate::Error::InvalidFrameSize
+    /// [`Error::CoordinateOutOfRange`]: crate::Error::CoordinateOutOfRange
+    /// [`MAX_FRAME_DIM`]: crate::MAX_FRAME_DIM
+    pub fn render_antialiased<
+        A,
+        D,
+        const S: u32,
+        const W: usize,
+        const H: usize,
+        const SW: usize,
+        const SH: usize,
+    >(
+        &self,
+        mode: A,
+        scene: &[Primitive<C, S>],
+        samples: &mut Band<C, SW, SH>,
+        out: &mut Band<C, W, H>,
+        target: &mut D,
+    ) -> Result<(), RenderError<D::Error>>
+    where
+        A: Antialias,
+        D: DrawTarget<Color = C>,
+    {
+        let () = Grid::<A, W, H, SW, SH>::CHECK;
+        let _ = mode;
+        check_height(self.height(), A::N)?;
+        for prim in scene {
+            if let Primitive::Triangle(t) = prim {
+                scale_vertices(t.vertices(), A::N)?;
+            }
+        }
+        let cull = self.cull_mode();
+        self.render_with(out, target, |view, y0, y1| {
+            let mut sv = sample_view::<A, C, W, SW, SH>(samples, view, y0, y1);
+            let (sy0, sy1) = (sv.y0(), sv.y0() + sv.height() as i32);
+            for prim in scene {
+                match prim {
+                    Primitive::Triangle(t) => draw_2d::<A, C, S, SW>(t, cull, &mut sv, sy0, sy1),
+                    Primitive::Line(l) => {
+                        let (lo, hi) = l.rows();
+                        if lo < y1 && hi >= y0 {
+                            l.draw(&mut Blocks::<A, C, SW> { view: &mut sv, _a: Default::default() });
+                        }
+                    }
+                }
+            }
+            resolve::<A, C, W, SW>(&mut sv, view);
+        })
+    }
+
+    /// Renders screen triangles from the vertex stage anti-aliased as `mode`
+    /// says, with colour interpolation `M` ([`Affine`] or
+    /// [`PerspectiveCorrect`](crate::raster3d::PerspectiveCorrect)) and the
+    /// depth buffer `depth` at *sample* resolution (`SW × SH`, cleared to far
+    /// at each band; [`NoDepth`] for none). Depth is
+    /// tested per sample in every mode; [`Msaa`](super::Msaa) and
+    /// [`MsaaSparse`](super::MsaaSparse) evaluate colour once per pixel
+    /// ([`super::msaa`]). The renderer's cull mode does
+    /// not apply: the vertex stage culls.
+    ///
+    /// Errors as for [`Renderer::render_antialiased`].
+    ///
+    /// ```
+    /// use embedded_graphics::mock_display::MockDisplay;
+    /// use embedded_graphics_core::pixelcolor::Gray8;
+    /// use embedded_graphics_core::prelude::*;
+    /// use microraster::aa::Msaa;
+    /// use microraster::depth::{Depth16, DepthBand, DepthState};
+    /// use microraster::raster3d::{Affine, ScreenTriangle, ScreenVertex};
+    /// use microraster::{Band, Renderer, SubPoint};
+    /// let v = |x, y| ScreenVertex {
+    ///     pos: SubPoint::<4>::from_pixels(x, y).unwrap(),
+    ///     color: [255, 0, 0],
+    ///     inv_w: 1 << 30,
+    ///     ..Default::default()
+    /// };
+    /// let tris = [ScreenTriangle { v: [v(0, 0), v(2, 0), v(0, 2)], flat: true }];
+    /// let mut samples = Band::<Gray8, 4, 4>::new(Gray8::BLACK); // 2 × 2 samples a pixel
+    /// let mut depth = DepthBand::<Depth16, 4, 4>::new();
+    /// let mut out = Band::<Gray8, 2, 2>::new(Gray8::BLACK);
+    /// let mut display = MockDisplay::new();
+    /// Renderer::new(2, Gray8::BLACK).render_3d_antialiased(
+    ///     Msaa::<2>, Affine, &tris, &mut samples, &mut depth, DepthState::LESS_WRITE, &mut out, &mut display,
+    /// )?;
+    /// // The diagonal pixels have 1 of 4 samples covered: round(255/4) = 64.
+    /// assert_eq!(display.get_pixel(Point::new(1, 0)), Some(Gray8::new(64)));
+    /// assert_eq!(display.get_pixel(Point::new(0, 0)), Some(Gray8::WHITE));
+    /// # Ok::<(), microraster::RenderError<core::convert::Infallible>>(())
+    /// ```
+    #[allow(clippy::too_many_arguments)]
+    pub fn render_3d_antialiased<
+        A,
+        D,
+        F,
+        M,
+        const S: u32,
+        const W: usize,
+        const H: usize,
+        const SW: usize,
+        const SH: usize,
+    >(
+        &self,
+        mode: A,
+        interpolation: M,
+        triangles: &[ScreenTriangle<S>],
+        samples: &mut Band<C, SW, SH>,
+        depth: &mut DepthBand<F, SW, SH>,
+        state: DepthState,
+        out: &mut Band<C, W, H>,
+        target: &mut D,
+    ) -> Result<(), RenderError<D::Error>>
+    where
+        A: Antialias,
+        D: DrawTarget<Color = C>,
+        F: DepthFormat,
+        M: Interpolation,
+    {
+        let () = Grid::<A, W, H, SW, SH>::CHECK;
+        let _ = (mode, interpolation);
+        check_height(self.height(), A::N)?;
+        for tri in triangles {
+            scale_triangle(tri, A::N)?;
+        }
+        self.render_with(out, target, |view, y0, y1| {
+            let mut sv = sample_view::<A, C, W, SW, SH>(samples, view, y0, y1);
+            let (sy0, sy1) = (sv.y0(), sv.y0() + sv.height() as i32);
+            let rows = depth.rows_mut(sv.height());
+            for r in rows.iter_mut() {
+                r.fill(F::FAR);
+            }
+            for tri in triangles {
+                let Ok(scaled) = scale_triangle(tri, A::N) else { continue };
+                let (lo, hi) = scaled.rows();
+                if lo < sy1 && hi >= sy0 {
+                    if A::SHADE_PER_PIXEL {
+                        let Some(shader) = PixelShader::<C>::new::<M, S>(tri) else { continue };
+                        let shade = |x, y| shader.at(x, y);
+                        msaa::draw_scaled::<A, C, F, S, SW>(&scaled, Cull::None, &mut sv, rows, state, shade);
+                    } else {
+                        draw_triangle::<C, F, M, S, SW>(&scaled, &mut sv, rows, state);
+                    }
+                }
+            }
+            resolve::<A, C, W, SW>(&mut sv, view);
+        })
+    }
+
+    /// The cull mode, read through the public API: `Renderer` compares equal
+    /// to itself with its own cull mode set again.
+    fn cull_mode(&self) -> Cull {
+        [Cull::Clockwise, Cull::CounterClockwise]
+            .into_iter()
+            .find(|&c| self.with_cull(c) == *self)
+            .unwrap_or(Cull::None)
+    }
+}
+
+/// The sample rows of output rows `y0..y1`, cleared to the background (which
+/// `render_with` has just cleared the output view to).
+fn sample_view<'a, A: Antialias, C: Interpolate, const W: usize, const SW: usize, const SH: usize>(
+    samples: &'a mut Band<C, SW, SH>,
+    view: &BandView<'_, C, W>,
+    y0: i32,
+    y1: i32,
+) -> BandView<'a, C, SW> {
+    let background = view.pixels().next().unwrap_or(C::from_channels([0; 3]));
+    let n = A::N as i32;
+    // Rows are within MAX_FRAME_DIM / N (checked), so the products fit.
+    samples.view(y0 * n, ((y1 - y0) * n) as usize, background)
+}
+
+/// One 2D triangle on the sample grid, if it touches sample rows `sy0..sy1`.
+fn draw_2d<A: Antialias, C: Interpolate, const S: u32, const SW: usize>(
+    t: &Triangle<C, S>,
+    cull: Cull,
+    sv: &mut BandView<'_, C, SW>,
+    sy0: i32,
+    sy1: i32,
+) {
+    let Ok(v) = scale_vertices(t.vertices(), A::N) else { return };
+    let scaled = Triangle::new(v, t.shading());
+    let (lo, hi) = scaled.rows();
+    if lo >= sy1 || hi < sy0 {
+        return;
+    }
+    let (cs, flat) = match t.shading() {
+        // Flat fills are the same in every full-grid mode: whole sample spans.
+        Shading::Flat(_) if A::COLS == A::N => return scaled.draw(sv, cull),
+        Shading::Gouraud(_) if !A::SHADE_PER_PIXEL => return scaled.draw(sv, cull),
+        Shading::Flat(c) => ([c; 3], true),
+        Shading::Gouraud(cs) => (cs, false),
+    };
+    let vertex =
+        |i: usize| ScreenVertex { pos: t.vertices()[i], depth: 0, inv_w: 1, color: cs[i].to_channels() };
+    let pixel = ScreenTriangle { v: [vertex(0), vertex(1), vertex(2)], flat };
+    let mut on_grid = pixel;
+    for (sv, p) in on_grid.v.iter_mut().zip(v) {
+        sv.pos = p;
+    }
+    let Some(shader) = PixelShader::<C>::new::<Affine, S>(&pixel) else { return };
+    let shade = |x, y| shader.at(x, y);
+    msaa::draw_scaled::<A, C, NoDepth, S, SW>(&on_grid, cull, sv, &mut [], DepthState::DISABLED, shade);
+}
+
+/// A pixel-resolution [`Blitter`] over a sample view: each pixel fills all
+/// its samples (aliased lines).
+struct Blocks<'v, 'a, A, C, const SW: usize> {
+    view: &'v mut BandView<'a, C, SW>,
+    _a: core::marker::PhantomData<A>,
+}
+
+impl<A: Antialias, C: Interpolate, const SW: usize> Blitter<C> for Blocks<'_, '_, A, C, SW> {
+    fn clip(&self) -> ClipRect {
+        let (n, cols) = (A::N as i32, A::COLS as i32);
+        let (y0, rows) = (self.view.y0(), self.view.height() as i32);
+        ClipRect::new(0, y0 / n, SW as i32 / cols, (y0 + rows) / n)
+    }
+
+    fn set_pixel(&mut self, x: i32, y: i32, color: C) {
+        let (n, cols) = (A::N as i32, A::COLS as i32);
+        for j in 0..n {
+            self.view.fill_span(Span { y: y * n + j, x: x * cols, len: cols as u32 }, color);
+        }
+    }
+}
