@@ -58,6 +58,16 @@ impl<C: Interpolate> Renderer<C> {
         self.height
     }
 
+    /// The colour every band is cleared to.
+    pub const fn background(&self) -> C {
+        self.background
+    }
+
+    /// Which screen winding is dropped.
+    pub const fn cull(&self) -> Cull {
+        self.cull
+    }
+
     /// Where the frame's top-left pixel goes on the target.
     pub const fn offset(&self) -> Point {
         self.offset

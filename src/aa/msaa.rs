@@ -145,8 +145,8 @@ pub(crate) fn draw_scaled<A, C, F, const S: u32, const SW: usize>(
         return;
     }
     let zplane = if F::ENABLED {
-        match scaled.depth_plane::<F>() {
-            Some(p) => Some(p),
+        match scaled.plane_setup() {
+            Some(setup) => Some(setup.plane(scaled.depth_values::<F>())),
             None => return,
         }
     } else {

@@ -81,9 +81,9 @@ impl<C: Interpolate> Renderer<C> {
                 scale_vertices(t.vertices(), A::N)?;
             }
         }
-        let cull = self.cull_mode();
+        let cull = self.cull();
         self.render_with(out, target, |view, y0, y1| {
-            let mut sv = sample_view::<A, C, W, SW, SH>(samples, view, y0, y1);
+            let mut sv = sample_view::<A, C, SW, SH>(samples, self.background(), y0, y1);
             let (sy0, sy1) = (sv.y0(), sv.y0() + sv.height() as i32);
             for prim in scene {
                 match prim {
@@ -174,7 +174,7 @@ impl<C: Interpolate> Renderer<C> {
             scale_triangle(tri, A::N)?;
         }
         self.render_with(out, target, |view, y0, y1| {
-            let mut sv = sample_view::<A, C, W, SW, SH>(samples, view, y0, y1);
+            let mut sv = sample_view::<A, C, SW, SH>(samples, self.background(), y0, y1);
             let (sy0, sy1) = (sv.y0(), sv.y0() + sv.height() as i32);
             let rows = depth.rows_mut(sv.height());
             for r in rows.iter_mut() {
@@ -196,26 +196,15 @@ impl<C: Interpolate> Renderer<C> {
             resolve::<A, C, W, SW>(&mut sv, view);
         })
     }
-
-    /// The cull mode, read through the public API: `Renderer` compares equal
-    /// to itself with its own cull mode set again.
-    fn cull_mode(&self) -> Cull {
-        [Cull::Clockwise, Cull::CounterClockwise]
-            .into_iter()
-            .find(|&c| self.with_cull(c) == *self)
-            .unwrap_or(Cull::None)
-    }
 }
 
-/// The sample rows of output rows `y0..y1`, cleared to the background (which
-/// `render_with` has just cleared the output view to).
-fn sample_view<'a, A: Antialias, C: Interpolate, const W: usize, const SW: usize, const SH: usize>(
+/// The sample rows of output rows `y0..y1`, cleared to `background`.
+fn sample_view<'a, A: Antialias, C: Interpolate, const SW: usize, const SH: usize>(
     samples: &'a mut Band<C, SW, SH>,
-    view: &BandView<'_, C, W>,
+    background: C,
     y0: i32,
     y1: i32,
 ) -> BandView<'a, C, SW> {
-    let background = view.pixels().next().unwrap_or(C::from_channels([0; 3]));
     let n = A::N as i32;
     // Rows are within MAX_FRAME_DIM / N (checked), so the products fit.
     samples.view(y0 * n, ((y1 - y0) * n) as usize, background)
