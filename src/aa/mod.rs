@@ -306,6 +306,24 @@ pub(crate) fn scale_triangle<const S: u32>(
     Ok(out)
 }
 
+impl<const S: u32> ScreenTriangle<S> {
+    /// The triangle on the sample grid of `n × n` supersampling: positions
+    /// scaled by `n`, depth, `1/w` and colour kept.
+    ///
+    /// Errors: [`Error::CoordinateOutOfRange`] if a scaled coordinate leaves
+    /// the [`SubPoint`] range.
+    pub fn scaled(&self, n: usize) -> Result<Self, Error> {
+        scale_triangle(self, n)
+    }
+}
+
+impl<const S: u32, const A: usize> crate::fragment::FragTriangle<S, A> {
+    /// [`ScreenTriangle::scaled`] with the varyings kept.
+    pub fn scaled(&self, n: usize) -> Result<Self, Error> {
+        Ok(crate::fragment::FragTriangle { tri: scale_triangle(&self.tri, n)?, varyings: self.varyings })
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

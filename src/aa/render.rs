@@ -100,6 +100,46 @@ impl<C: Interpolate> Renderer<C> {
         })
     }
 
+    /// Supersampling of any custom band pass ([`Ssaa<N>`](super::Ssaa)):
+    /// like [`Renderer::render_with`], but `draw(samples, sy0, sy1)` draws
+    /// sample rows `sy0..sy1` (frame rows × `N`) of a sample band cleared to
+    /// the background, which is then box-filtered into `out` and sent. The
+    /// pass draws geometry scaled by `N` ([`ScreenTriangle::scaled`],
+    /// [`FragTriangle::scaled`](crate::fragment::FragTriangle::scaled)), with
+    /// a depth band at sample resolution if it tests depth: the fragment
+    /// stage ([`crate::fragment`]) anti-aliased.
+    ///
+    /// Errors: [`Error::InvalidFrameSize`] if `height · N` exceeds
+    /// [`MAX_FRAME_DIM`](crate::MAX_FRAME_DIM); the target's errors.
+    pub fn render_supersampled_with<
+        D,
+        const N: usize,
+        const W: usize,
+        const H: usize,
+        const SW: usize,
+        const SH: usize,
+    >(
+        &self,
+        mode: super::Ssaa<N>,
+        samples: &mut Band<C, SW, SH>,
+        out: &mut Band<C, W, H>,
+        target: &mut D,
+        mut draw: impl FnMut(&mut BandView<'_, C, SW>, i32, i32),
+    ) -> Result<(), RenderError<D::Error>>
+    where
+        D: DrawTarget<Color = C>,
+    {
+        let () = Grid::<super::Ssaa<N>, W, H, SW, SH>::CHECK;
+        let _ = mode;
+        check_height(self.height(), N)?;
+        self.render_with(out, target, |view, y0, y1| {
+            let mut sv = sample_view::<super::Ssaa<N>, C, SW, SH>(samples, self.background(), y0, y1);
+            let (sy0, sy1) = (sv.y0(), sv.y0() + sv.height() as i32);
+            draw(&mut sv, sy0, sy1);
+            resolve::<super::Ssaa<N>, C, W, SW>(&mut sv, view);
+        })
+    }
+
     /// Renders screen triangles from the vertex stage anti-aliased as `mode`
     /// says, with colour interpolation `M` ([`Affine`] or
     /// [`PerspectiveCorrect`](crate::raster3d::PerspectiveCorrect)) and the
