@@ -107,6 +107,11 @@ impl Scene3d {
         Scene3d
     }
 
+    /// The three meshes (sphere, torus, cube), validated at compile time.
+    pub fn valid_meshes(&self) -> &'static [ValidMesh<'static>; 3] {
+        &VALID
+    }
+
     /// The three meshes: sphere, torus, cube.
     pub fn meshes(&self) -> [Mesh<'static>; 3] {
         [meshes::SPHERE, meshes::TORUS, meshes::CUBE]

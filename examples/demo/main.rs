@@ -18,7 +18,6 @@ use std::path::{Path, PathBuf};
 
 mod fragment;
 mod scene3d;
-mod texture_data;
 
 /// Subpixel bits: 1/16 px.
 const S: u32 = 4;
