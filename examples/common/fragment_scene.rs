@@ -34,7 +34,8 @@ pub const H: u32 = 240;
 pub const BACKGROUND: Rgb888 = Rgb888::new(18, 22, 34);
 
 /// The floor: a square at y = −1, normals up, four texture repeats.
-static FLOOR_POS: [[f32; 3]; 4] = [[-4.0, -1.0, -4.0], [-4.0, -1.0, 4.0], [4.0, -1.0, 4.0], [4.0, -1.0, -4.0]];
+static FLOOR_POS: [[f32; 3]; 4] =
+    [[-4.0, -1.0, -4.0], [-4.0, -1.0, 4.0], [4.0, -1.0, 4.0], [4.0, -1.0, -4.0]];
 static FLOOR_N: [[f32; 3]; 4] = [[0.0, 1.0, 0.0]; 4];
 static FLOOR_IDX: [[u16; 3]; 2] = [[0, 1, 2], [0, 2, 3]];
 static FLOOR_UV: [[f32; 2]; 4] = [[0.0, 0.0], [0.0, 4.0], [4.0, 4.0], [4.0, 0.0]];
@@ -93,8 +94,11 @@ pub struct FragmentScene<const S: u32> {
 impl<const S: u32> FragmentScene<S> {
     /// The scene for a `width × height` viewport.
     pub fn new(width: u32, height: u32) -> Result<Self, Error> {
-        let view =
-            transform::look_at(Vec3::new(0.0, 1.6, 6.2), Vec3::new(0.0, -0.1, 0.0), Vec3::new(0.0, 1.0, 0.0))?;
+        let view = transform::look_at(
+            Vec3::new(0.0, 1.6, 6.2),
+            Vec3::new(0.0, -0.1, 0.0),
+            Vec3::new(0.0, 1.0, 0.0),
+        )?;
         let unlit = Pipeline::<f32, S>::perspective(view, 0.8, 1.0, 30.0, width, height)?;
         Ok(FragmentScene { lit: unlit.with_lighting(light()), unlit, view })
     }
@@ -127,7 +131,13 @@ impl<const S: u32> FragmentScene<S> {
         let (cpos, cnrm) = (cube.mesh().positions, cube.mesh().normals);
         let cube_uv = |v: &VertexInput<f32>| {
             let (p, n) = (cpos[v.index as usize], cnrm[v.index as usize]);
-            let uv = if n[0] != 0.0 { [p[2], p[1]] } else if n[1] != 0.0 { [p[0], p[2]] } else { [p[0], p[1]] };
+            let uv = if n[0] != 0.0 {
+                [p[2], p[1]]
+            } else if n[1] != 0.0 {
+                [p[0], p[2]]
+            } else {
+                [p[0], p[1]]
+            };
             textured_varyings(uv.map(|c| c + 0.5), v)
         };
         let cube_model = transform::translation(Vec3::new(0.0, -0.55, 1.3))
@@ -141,7 +151,10 @@ impl<const S: u32> FragmentScene<S> {
                 * transform::rotation_x(a)
                 * transform::scaling(Vec3::new(0.5, 0.5, 0.5))
         };
-        let mut glass = [(tilt(-1.7, 1.9, 1.2), Rgb888::new(80, 200, 255)), (tilt(1.8, 1.7, 0.9), Rgb888::new(255, 230, 90))];
+        let mut glass = [
+            (tilt(-1.7, 1.9, 1.2), Rgb888::new(80, 200, 255)),
+            (tilt(1.8, 1.7, 0.9), Rgb888::new(255, 230, 90)),
+        ];
         back_to_front(&mut glass, |(m, _)| view_depth(&self.view, m, torus.mesh()));
         let lit_color = |v: &VertexInput<f32>| v.color.map(|c| (c.clamp(0.0, 1.0) * 255.0 + 0.5) as i32);
         for (m, c) in &glass {

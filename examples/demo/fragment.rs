@@ -31,7 +31,9 @@ fn render(b: &Bins) -> Result<Canvas> {
     Renderer::new(H, BACKGROUND)
         .render_with(&mut band, &mut canvas, |view, y0, y1| {
             if result.is_ok() {
-                result = draw_passes::<_, Z, P, S, W, BAND_ROWS, 1024, 1024, 64, 2048>(b, view, &mut depth, y0, y1);
+                result = draw_passes::<_, Z, P, S, W, BAND_ROWS, 1024, 1024, 64, 2048>(
+                    b, view, &mut depth, y0, y1,
+                );
             }
         })
         .map_err(|e| format!("{e:?}"))?;

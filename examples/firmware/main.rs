@@ -6,7 +6,9 @@
 //!   `#![no_std]` `#![no_main]` program: output and exit status go through
 //!   semihosting (QEMU, or a debug probe), and a panic exits with failure.
 //!   thumbv7em-none-eabihf (Cortex-M4F) runs the [`workload::m4f`]
-//!   configuration, thumbv6m-none-eabi (Cortex-M0) [`workload::m0`].
+//!   configuration and the fragment-stage scene ([`fragment`]: textures,
+//!   per-pixel lighting, translucency, 2 × 2 supersampling),
+//!   thumbv6m-none-eabi (Cortex-M0) [`workload::m0`].
 //! * On the host it prints the same lines for `m4f`, `m0` or (no argument)
 //!   both: the reference the QEMU runs must match.
 //!
@@ -18,12 +20,17 @@
 #[cfg_attr(target_os = "none", allow(dead_code))]
 mod workload;
 
+// The Cortex-M4F's fragment-stage scene.
+#[cfg_attr(not(target_abi = "eabihf"), allow(dead_code))]
+mod fragment;
+
 #[cfg(target_os = "none")]
 #[path = "stack.rs"]
 mod stack;
 
 #[cfg(target_os = "none")]
 mod firmware {
+    use crate::fragment;
     use crate::stack;
     use crate::workload::*;
     use cortex_m_rt::entry;
@@ -52,8 +59,18 @@ mod firmware {
         static mut BAND: Band<Rgb565, { M4F_SIZE.0 }, M4F_BAND> = Band::new(BACKGROUND);
         static mut DEPTH: DepthBand<Depth16, { M4F_SIZE.0 }, M4F_BAND> = DepthBand::zeroed();
         static mut BINS: heapless::Vec<ScreenTriangle<S>, { scenes3d::BINS }> = heapless::Vec::new();
+        // The fragment-stage scene's own buffers (fragment.rs).
+        static mut SAMPLES: Band<Rgb565, { fragment::SW }, { fragment::SH }> = Band::new(BACKGROUND);
+        static mut FDEPTH: DepthBand<Depth16, { fragment::SW }, { fragment::SH }> = DepthBand::zeroed();
+        static mut FOUT: Band<Rgb565, { M4F_SIZE.0 }, { fragment::ROWS }> = Band::new(BACKGROUND);
+        static mut FBINS: fragment::Bins = fragment::Bins::new();
         stack::paint();
-        finish(m4f(M4fBuffers { prims: PRIMS, band: BAND, depth: DEPTH, bins: BINS }, &mut print))
+        let result = m4f(M4fBuffers { prims: PRIMS, band: BAND, depth: DEPTH, bins: BINS }, &mut print)
+            .and_then(|()| {
+                let b = fragment::FragBuffers { samples: SAMPLES, depth: FDEPTH, out: FOUT, bins: FBINS };
+                fragment::fragment(fragment::NAME, b, &mut print)
+            });
+        finish(result)
     }
 
     /// Cortex-M0: the [`m0`] configuration.
@@ -91,9 +108,11 @@ fn main() {
     let which = std::env::args().nth(1).unwrap_or_default();
     let mut print = |r: &workload::Record| println!("{r}");
     let result = match which.as_str() {
-        "m4f" => workload::m4f_host(&mut print),
+        "m4f" => workload::m4f_host(&mut print).and_then(|()| fragment::fragment_host(&mut print)),
         "m0" => workload::m0_host(&mut print),
-        "" => workload::m4f_host(&mut print).and_then(|()| workload::m0_host(&mut print)),
+        "" => workload::m4f_host(&mut print)
+            .and_then(|()| fragment::fragment_host(&mut print))
+            .and_then(|()| workload::m0_host(&mut print)),
         other => {
             eprintln!("usage: firmware [m4f|m0] (got {other:?})");
             std::process::exit(2);
