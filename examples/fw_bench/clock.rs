@@ -7,7 +7,8 @@
 //! `microraster_board` from `MICRORASTER_BOARD`):
 //!
 //! * `mps2-an386` (and any board but the micro:bit): SysTick on the core
-//!   clock, 25 MHz on QEMU's mps2-an386, one tick per 40 instructions. Both
+//!   clock, 25 MHz on QEMU's mps2-an386, one tick per 40 instructions (its
+//!   interrupt counts the 24-bit counter's wraps). Both
 //!   instruction sets are timed there: the Cortex-M4 core runs Cortex-M0
 //!   (`thumbv6m`) code unchanged, instruction for instruction.
 //! * `microbit`: the nRF51's TIMER0 at 16 MHz, one tick per 62.5 instructions.
@@ -124,26 +125,38 @@ pub fn calibrate() -> Result<(), ClockError> {
 
 // SysTick on the core clock (QEMU mps2-an386: 25 MHz, so one tick per 40
 // instructions under `-icount shift=0`). It counts down from 2^24 − 1,
-// restarted at the start of every region; a region that wraps it (more than
-// 671 million instructions) is reported as unmeasurable through COUNTFLAG.
+// restarted at the start of every region; its interrupt counts the wraps
+// (every 671 million instructions), so a region may last 2^32 wraps. The
+// handler's own few instructions per wrap are counted too (< 10^-7).
 #[cfg(not(microraster_board = "microbit"))]
 mod timer {
+    use core::sync::atomic::{AtomicU32, Ordering};
+
     /// Instructions per tick, `(numerator, denominator)`.
     pub const PER_TICK: (u64, u64) = (40, 1);
     /// What counts.
-    pub const NAME: &str = "SysTick, core clock (QEMU mps2-an386, 25 MHz), 24 bits";
+    pub const NAME: &str = "SysTick, core clock (QEMU mps2-an386, 25 MHz), 24 bits + wrap count";
     const SYST_CSR: *mut u32 = 0xE000_E010 as *mut u32;
     const SYST_RVR: *mut u32 = 0xE000_E014 as *mut u32;
     const SYST_CVR: *mut u32 = 0xE000_E018 as *mut u32;
+    const RELOAD: u32 = 0x00FF_FFFF;
+    /// Wraps since the region began (written by the handler only while a
+    /// region runs; thumbv6m has no atomic add, a single writer needs none).
+    static WRAPS: AtomicU32 = AtomicU32::new(0);
+
+    #[cortex_m_rt::exception]
+    fn SysTick() {
+        WRAPS.store(WRAPS.load(Ordering::Relaxed).wrapping_add(1), Ordering::Relaxed);
+    }
 
     /// Starts the timer.
     pub fn start() {
-        // SAFETY: SysTick registers; no interrupt (TICKINT clear).
+        // SAFETY: SysTick registers.
         unsafe {
             SYST_CSR.write_volatile(0);
-            SYST_RVR.write_volatile(0x00FF_FFFF);
+            SYST_RVR.write_volatile(RELOAD);
             SYST_CVR.write_volatile(0);
-            SYST_CSR.write_volatile(0b101); // ENABLE, CLKSOURCE = core clock
+            SYST_CSR.write_volatile(0b111); // ENABLE, TICKINT, CLKSOURCE = core clock
             // The counter loads the reload value on its first tick.
             while SYST_CVR.read_volatile() == 0 {}
         }
@@ -152,22 +165,28 @@ mod timer {
     #[inline(always)]
     pub fn begin() -> u32 {
         // SAFETY: SysTick registers. Writing CVR clears it (it reloads on
-        // the next tick), so every region may last 2^24 − 1 ticks wherever
-        // the counter stood; reading CSR clears COUNTFLAG.
+        // the next tick), so a region starts at a known count.
         unsafe {
             SYST_CVR.write_volatile(0);
             while SYST_CVR.read_volatile() == 0 {}
-            SYST_CSR.read_volatile();
+            WRAPS.store(0, Ordering::Relaxed);
             SYST_CVR.read_volatile()
         }
     }
 
     #[inline(always)]
     pub fn end(start: u32) -> Option<u64> {
-        // SAFETY: SysTick registers.
-        let (now, csr) = unsafe { (SYST_CVR.read_volatile(), SYST_CSR.read_volatile()) };
-        let wrapped = csr & (1 << 16) != 0;
-        (!wrapped && now <= start).then(|| u64::from(start - now))
+        // SAFETY: SysTick registers. Read the wrap count around the counter
+        // so that a wrap between the two reads is not missed.
+        let (wraps, now) = loop {
+            let w = WRAPS.load(Ordering::Relaxed);
+            let now = unsafe { SYST_CVR.read_volatile() };
+            if WRAPS.load(Ordering::Relaxed) == w {
+                break (w, now);
+            }
+        };
+        let ticks = u64::from(wraps) * (u64::from(RELOAD) + 1) + u64::from(start) - u64::from(now);
+        Some(ticks)
     }
 }
 

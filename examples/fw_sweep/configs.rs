@@ -116,7 +116,14 @@ pub const LIST: &[Config] = &[
     config!("mesh3d/vertex/Fx", vertex3d::<Fx>),
 ];
 
-fn input<E>(e: RenderError<E>) -> Error {
+/// Every configuration: [`LIST`] and the fragment-stage options
+/// (`fragment::LIST`).
+pub fn all() -> impl Iterator<Item = &'static Config> {
+    LIST.iter().chain(crate::fragment::LIST)
+}
+
+/// The input error of a render call (the framebuffer itself never fails).
+pub fn input<E>(e: RenderError<E>) -> Error {
     match e {
         RenderError::Input(e) => e,
         // The framebuffer never fails.

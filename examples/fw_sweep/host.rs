@@ -4,7 +4,7 @@
 use std::collections::HashMap;
 use std::fmt::Write as _;
 
-use crate::configs::{BG, LIST, Meter};
+use crate::configs::{BG, Meter, all};
 use crate::frame::FrameBuffer;
 
 /// One configuration's frame on the host.
@@ -32,7 +32,7 @@ pub fn frames() -> Result<Vec<Frame>, String> {
         .stack_size(64 << 20)
         .spawn(|| {
             let mut fb = Box::new(FrameBuffer::new());
-            LIST.iter()
+            all()
                 .map(|c| {
                     (c.run)(&mut Untimed, &mut fb).map_err(|e| format!("{}: {e}", c.key))?;
                     Ok(Frame {

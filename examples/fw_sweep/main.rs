@@ -21,6 +21,7 @@
 #![cfg_attr(target_os = "none", no_std, no_main)]
 
 mod configs;
+mod fragment;
 mod frame;
 
 #[cfg(target_os = "none")]
@@ -49,7 +50,7 @@ fn crc(fb: &frame::FrameBuffer) -> u32 {
 #[cfg(target_os = "none")]
 mod firmware {
     use crate::clock::{self, ClockError, Span};
-    use crate::configs::{LIST, Meter};
+    use crate::configs::{Meter, all};
     use crate::frame::FrameBuffer;
     use cortex_m_rt::entry;
     use cortex_m_semihosting::{debug, hprintln};
@@ -99,7 +100,7 @@ mod firmware {
 
     fn run(fb: &mut FrameBuffer) -> Result<(), Fail> {
         clock::calibrate().map_err(|e| Fail::Clock("calibration", e))?;
-        for c in LIST {
+        for c in all() {
             let mut m = Timed { span: None, ticks: None };
             (c.run)(&mut m, fb).map_err(|e| Fail::Render(c.key, e))?;
             let ticks = m.ticks.ok_or(Fail::Clock(c.key, ClockError::Overflow))?;
