@@ -137,16 +137,19 @@ edge_int!(i64);
 /// 1 either (`mid_left`); a horizontal edge (`A = 0`) only bounds the rows and
 /// is applied to them at set-up (its slot then repeats edge 0). From row to
 /// row `F` grows by `B = bq·d + br`, so `q` grows by `bq` and `r` by `br`, plus
-/// a carry when `r` reaches `d`: exact, with no division. Every `q` lies
-/// between 0 and the `F` it stands for, and `r + br < 2·d`, within the bounds
-/// of the module docs.
+/// a carry when `r` reaches `d`: exact, with no division. Stored per edge: the
+/// column bound `c` (`−q` or `q`), `e = r − d` (in `−d..0`, so the carry is
+/// `e + br ≥ 0`), and the bound's steps (`∓bq`, `∓1`). Every `q` lies between
+/// 0 and the `F` it stands for, and `|e + br| < d`, within the bounds of the
+/// module docs.
 #[derive(Debug, Clone)]
 pub(crate) struct Walker<T> {
-    q: [T; 3],
-    r: [T; 3],
+    c: [T; 3],
+    e: [T; 3],
     d: [T; 3],
-    bq: [T; 3],
     br: [T; 3],
+    step: [T; 3],
+    unit: [T; 3],
     mid_left: bool,
     x0: i32,
     last_col: T, // columns x0..=x0+last_col are inside bbox ∩ clip
@@ -161,11 +164,12 @@ impl<T: EdgeInt> Walker<T> {
     #[inline(always)]
     fn new(e: [(i64, i64, i64); 3], mid_left: bool, x0: i32, last_col: i64, y: i32, y_end: i32) -> Self {
         let mut w = Walker {
-            q: [T::ZERO; 3],
-            r: [T::ZERO; 3],
+            c: [T::ZERO; 3],
+            e: [T::ZERO; 3],
             d: [T::ONE; 3],
-            bq: [T::ZERO; 3],
             br: [T::ZERO; 3],
+            step: [T::ZERO; 3],
+            unit: [T::ZERO; 3],
             mid_left,
             x0,
             last_col: T::from_i64(last_col),
@@ -176,14 +180,18 @@ impl<T: EdgeInt> Walker<T> {
         let steps = y_end - y > 1;
         for (i, &(f, d, b)) in e.iter().enumerate() {
             if i == 1 && e[1] == e[0] {
-                (w.q[1], w.r[1], w.d[1], w.bq[1], w.br[1]) = (w.q[0], w.r[0], w.d[0], w.bq[0], w.br[0]);
+                (w.c[1], w.e[1], w.d[1], w.br[1], w.step[1], w.unit[1]) =
+                    (w.c[0], w.e[0], w.d[0], w.br[0], w.step[0], w.unit[0]);
                 continue;
             }
+            let left = i == 0 || (i == 1 && mid_left);
+            let sign = |v: T| if left { v.neg() } else { v };
             let d = T::from_i64(d);
-            w.d[i] = d;
-            (w.q[i], w.r[i]) = T::div_rem_floor(T::from_i64(f), d);
+            let (q, r) = T::div_rem_floor(T::from_i64(f), d);
+            (w.c[i], w.e[i], w.d[i], w.unit[i]) = (sign(q), r.sub(d), d, sign(T::ONE));
             if steps {
-                (w.bq[i], w.br[i]) = T::div_rem_floor(T::from_i64(b), d);
+                let (bq, br) = T::div_rem_floor(T::from_i64(b), d);
+                (w.step[i], w.br[i]) = (sign(bq), br);
             }
         }
         w
@@ -192,14 +200,16 @@ impl<T: EdgeInt> Walker<T> {
     /// The bounds of the current row (`lo > hi` if it is empty), stepping the
     /// state to the next row.
     #[inline(always)]
-    fn row(q: &mut [T; 3], r: &mut [T; 3], w: &Self) -> (T, T) {
-        let lo = T::ZERO.max(q[0].neg());
-        let hi = w.last_col.min(q[2]);
-        let (lo, hi) = if w.mid_left { (lo.max(q[1].neg()), hi) } else { (lo, hi.min(q[1])) };
+    fn row(c: &mut [T; 3], e: &mut [T; 3], w: &Self) -> (T, T) {
+        let lo = T::ZERO.max(c[0]);
+        let hi = w.last_col.min(c[2]);
+        let (lo, hi) = if w.mid_left { (lo.max(c[1]), hi) } else { (lo, hi.min(c[1])) };
         for i in 0..3 {
             // Next row: F + B, as quotient and remainder.
-            let (nq, nr) = (q[i].add(w.bq[i]), r[i].add(w.br[i]));
-            (q[i], r[i]) = if nr >= w.d[i] { (nq.add(T::ONE), nr.sub(w.d[i])) } else { (nq, nr) };
+            let ne = e[i].add(w.br[i]);
+            let carry = ne >= T::ZERO;
+            e[i] = if carry { ne.sub(w.d[i]) } else { ne };
+            c[i] = c[i].add(w.step[i]).add(if carry { w.unit[i] } else { T::ZERO });
         }
         (lo, hi)
     }
@@ -212,28 +222,28 @@ impl<T: EdgeInt> Walker<T> {
 
     #[inline(always)]
     fn next_span(&mut self) -> Option<Span> {
-        let (mut q, mut r) = (self.q, self.r);
+        let (mut c, mut e) = (self.c, self.e);
         let mut out = None;
         while self.y < self.y_end {
             let y = self.y;
-            let (lo, hi) = Self::row(&mut q, &mut r, self);
+            let (lo, hi) = Self::row(&mut c, &mut e, self);
             self.y += 1;
             if lo <= hi {
                 out = Some(self.span(y, lo, hi));
                 break;
             }
         }
-        (self.q, self.r) = (q, r);
+        (self.c, self.e) = (c, e);
         out
     }
 
     /// All remaining spans, in one loop over local state.
     #[inline(always)]
     fn fold<B, G: FnMut(B, Span) -> B>(&self, init: B, mut g: G) -> B {
-        let (mut q, mut r) = (self.q, self.r);
+        let (mut c, mut e) = (self.c, self.e);
         let mut acc = init;
         for y in self.y..self.y_end {
-            let (lo, hi) = Self::row(&mut q, &mut r, self);
+            let (lo, hi) = Self::row(&mut c, &mut e, self);
             if lo <= hi {
                 acc = g(acc, self.span(y, lo, hi));
             }
