@@ -49,12 +49,16 @@ impl<C: PixelColor, const W: usize, const H: usize> Band<C, W, H> {
     /// A view of the first `rows` rows (at most `H`) as frame rows
     /// `y0 .. y0 + rows`, cleared to `background`.
     pub fn view(&mut self, y0: i32, rows: usize, background: C) -> BandView<'_, C, W> {
-        let n = rows.min(H);
-        let rows = &mut self.rows[..n];
-        for r in rows.iter_mut() {
-            r.fill(background);
+        let view = self.view_uncleared(y0, rows);
+        for r in view.rows.iter_mut() {
+            fill_run(r, background);
         }
-        BandView { y0, rows }
+        view
+    }
+
+    /// The same view with the rows as they are (see [`LazyClear`]).
+    pub(crate) fn view_uncleared(&mut self, y0: i32, rows: usize) -> BandView<'_, C, W> {
+        BandView { y0, rows: &mut self.rows[..rows.min(H)] }
     }
 }
 
@@ -102,21 +106,180 @@ impl<C: PixelColor, const W: usize> Blitter<C> for BandView<'_, C, W> {
 
     #[inline]
     fn fill_span(&mut self, s: Span, color: C) {
-        if let Some(px) =
-            self.row_mut(s.y).and_then(|r| r.get_mut(s.x as usize..s.x as usize + s.len as usize))
-        {
-            px.fill(color);
+        if let Some(px) = columns(s).and_then(|(x0, x1)| self.row_mut(s.y)?.get_mut(x0..x1)) {
+            fill_run(px, color);
         }
     }
 
     #[inline]
     fn shade_span<I: Iterator<Item = C>>(&mut self, s: Span, colors: I) {
-        if let Some(px) =
-            self.row_mut(s.y).and_then(|r| r.get_mut(s.x as usize..s.x as usize + s.len as usize))
-        {
+        if let Some(px) = columns(s).and_then(|(x0, x1)| self.row_mut(s.y)?.get_mut(x0..x1)) {
             for (p, c) in px.iter_mut().zip(colors) {
                 *p = c;
             }
         }
+    }
+}
+
+/// The columns `x0..x1` of a span, if they are non-negative and addressable.
+#[inline(always)]
+fn columns(s: Span) -> Option<(usize, usize)> {
+    let x0 = usize::try_from(s.x).ok()?;
+    Some((x0, x0.checked_add(usize::try_from(s.len).ok()?)?))
+}
+
+/// A [`BandView`] whose rows are cleared to the background on first use
+/// rather than up front: a row's first span is written together with the
+/// background around it, in one pass over the row instead of two, and
+/// [`LazyClear::finish`] clears the rows nothing touched. The pixels are the
+/// same as clearing first.
+pub(crate) struct LazyClear<'v, 'a, C, const W: usize, const H: usize> {
+    view: &'v mut BandView<'a, C, W>,
+    background: C,
+    cleared: [bool; H],
+    // Rows of the view not cleared yet.
+    pending: usize,
+}
+
+impl<'v, 'a, C: PixelColor, const W: usize, const H: usize> LazyClear<'v, 'a, C, W, H> {
+    /// `view`'s rows, none cleared yet (`view` has at most `H` rows).
+    pub(crate) fn new(view: &'v mut BandView<'a, C, W>, background: C) -> Self {
+        let pending = view.rows.len().min(H);
+        LazyClear { view, background, cleared: [false; H], pending }
+    }
+
+    /// Row `y`, cleared if it is not yet.
+    #[inline(always)]
+    fn touch(&mut self, y: i32) -> Option<&mut [C; W]> {
+        let i = usize::try_from(y.checked_sub(self.view.y0)?).ok()?;
+        let (row, done) = (self.view.rows.get_mut(i)?, self.cleared.get_mut(i)?);
+        if !*done {
+            clear_row(row, self.background);
+            *done = true;
+            self.pending -= 1;
+        }
+        Some(row)
+    }
+
+    /// Clears frame rows `y_lo..=y_hi` of the view that are not yet, for a
+    /// writer that then goes straight to [`LazyClear::view`].
+    pub(crate) fn clear_rows(&mut self, y_lo: i32, y_hi: i32) {
+        if self.pending == 0 {
+            return;
+        }
+        let (y0, n) = (self.view.y0, self.view.rows.len().min(H));
+        let index = |y: i32| y.saturating_sub(y0).clamp(0, n as i32) as usize;
+        for i in index(y_lo)..index(y_hi.saturating_add(1)) {
+            if !self.cleared[i] {
+                fill_run(&mut self.view.rows[i], self.background);
+                self.cleared[i] = true;
+                self.pending -= 1;
+            }
+        }
+    }
+
+    /// The view itself: only rows already cleared may be written through it.
+    pub(crate) fn view(&mut self) -> &mut BandView<'a, C, W> {
+        self.view
+    }
+
+    /// Clears the rows nothing was written to.
+    pub(crate) fn finish(self) {
+        if self.pending == 0 {
+            return;
+        }
+        for (row, done) in self.view.rows.iter_mut().zip(self.cleared) {
+            if !done {
+                fill_run(row, self.background);
+            }
+        }
+    }
+}
+
+impl<C: PixelColor, const W: usize, const H: usize> Blitter<C> for LazyClear<'_, '_, C, W, H> {
+    fn clip(&self) -> ClipRect {
+        self.view.clip()
+    }
+
+    #[inline]
+    fn set_pixel(&mut self, x: i32, y: i32, color: C) {
+        if let Some(p) = usize::try_from(x).ok().and_then(|x| self.touch(y)?.get_mut(x)) {
+            *p = color;
+        }
+    }
+
+    #[inline(always)]
+    fn fill_span(&mut self, s: Span, color: C) {
+        let Some(i) = s.y.checked_sub(self.view.y0).and_then(|i| usize::try_from(i).ok()) else { return };
+        let (Some(row), Some(done)) = (self.view.rows.get_mut(i), self.cleared.get_mut(i)) else { return };
+        let Some((x0, x1)) = columns(s) else { return };
+        if *done {
+            if let Some(px) = row.get_mut(x0..x1) {
+                fill_run(px, color);
+            }
+        } else {
+            *done = true;
+            self.pending -= 1;
+            first_fill(row, x0, x1, color, self.background);
+        }
+    }
+
+    #[inline]
+    fn shade_span<I: Iterator<Item = C>>(&mut self, s: Span, colors: I) {
+        if let Some(px) = columns(s).and_then(|(x0, x1)| self.touch(s.y)?.get_mut(x0..x1)) {
+            for (p, c) in px.iter_mut().zip(colors) {
+                *p = c;
+            }
+        }
+    }
+}
+
+/// A row's first write, once per row (out of line): background, the span
+/// `x0..x1`, background, in one pass; the whole row to background if the span
+/// is outside it.
+#[inline(never)]
+fn first_fill<C: Copy>(row: &mut [C], x0: usize, x1: usize, color: C, background: C) {
+    match (row.get(..x0).is_some(), row.get(x0..x1).is_some()) {
+        (true, true) => {
+            let (head, rest) = row.split_at_mut(x0);
+            let (span, tail) = rest.split_at_mut(x1 - x0);
+            fill_run(head, background);
+            fill_run(span, color);
+            fill_run(tail, background);
+        }
+        _ => fill_run(row, background),
+    }
+}
+
+/// Out of line: once per row, from per-pixel writers.
+#[inline(never)]
+fn clear_row<C: Copy>(row: &mut [C], background: C) {
+    fill_run(row, background);
+}
+
+/// `px.fill(c)` with few branches: runs of 8 or more pixels are written in
+/// 8-pixel blocks, the last block overlapping the one before it, shorter runs
+/// as two overlapping 4-, 2- or 1-pixel blocks. Every pixel gets `c`, as with
+/// `fill`; only the number of (predictable) branches per run changes, which is
+/// what a span fill pays for beside the stores.
+#[inline(always)]
+pub(crate) fn fill_run<C: Copy>(px: &mut [C], c: C) {
+    let n = px.len();
+    if n >= 8 {
+        let block = [c; 8];
+        let mut chunks = px.chunks_exact_mut(8);
+        for ch in &mut chunks {
+            ch.copy_from_slice(&block);
+        }
+        // The last 8 again (overlapping, or the same block): no branch.
+        px[n - 8..].copy_from_slice(&block);
+    } else if n >= 4 {
+        px[..4].copy_from_slice(&[c; 4]);
+        px[n - 4..].copy_from_slice(&[c; 4]);
+    } else if n >= 2 {
+        px[..2].copy_from_slice(&[c; 2]);
+        px[n - 2..].copy_from_slice(&[c; 2]);
+    } else if let Some(p) = px.first_mut() {
+        *p = c;
     }
 }

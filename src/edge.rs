@@ -14,9 +14,11 @@
 //! per column and by `B` per row, so only whole-pixel increments are needed.
 //!
 //! Each row's covered span is solved exactly: `F(x) = F₀ + A·x ≥ 0` gives
-//! `x ≥ ⌈−F₀/A⌉` for `A > 0` and `x ≤ ⌊F₀/−A⌋` for `A < 0`. The span is then
-//! filled without per-pixel tests, which is what brings flat fills near the
-//! speed of a slice fill.
+//! `x ≥ ⌈−F₀/A⌉` for `A > 0` and `x ≤ ⌊F₀/−A⌋` for `A < 0`. The divisions
+//! are done once per triangle and clip: from row to row each quotient and its
+//! remainder step by those of `B / |A|`, with a carry, which is exact. The span
+//! is then filled without per-pixel tests, which is what brings flat fills
+//! near the speed of a slice fill.
 //!
 //! # Overflow proof
 //! Coordinates are bounded by `|v| ≤ 2^28` subpixels ([`SubPoint`]), so in
@@ -82,18 +84,21 @@ const fn fast_ext_internal(s: u32) -> i64 {
 /// Integer widths the per-row walker can run in.
 pub(crate) trait EdgeInt: Copy + Ord + core::fmt::Debug {
     const ZERO: Self;
+    const ONE: Self;
     fn from_i64(v: i64) -> Self;
     fn to_i64(self) -> i64;
     fn add(self, o: Self) -> Self;
-    /// ⌊n/d⌋ for `d > 0`.
-    fn div_floor(n: Self, d: Self) -> Self;
+    fn sub(self, o: Self) -> Self;
     fn neg(self) -> Self;
+    /// `(⌊n/d⌋, n − ⌊n/d⌋·d)` for `d > 0`.
+    fn div_rem_floor(n: Self, d: Self) -> (Self, Self);
 }
 
 macro_rules! edge_int {
     ($t:ty) => {
         impl EdgeInt for $t {
             const ZERO: Self = 0;
+            const ONE: Self = 1;
             #[inline(always)]
             fn from_i64(v: i64) -> Self {
                 v as $t // callers prove the value fits
@@ -107,13 +112,17 @@ macro_rules! edge_int {
                 self + o
             }
             #[inline(always)]
-            fn div_floor(n: Self, d: Self) -> Self {
-                let q = n / d;
-                if n % d != 0 && n < 0 { q - 1 } else { q }
+            fn sub(self, o: Self) -> Self {
+                self - o
             }
             #[inline(always)]
             fn neg(self) -> Self {
                 -self
+            }
+            #[inline(always)]
+            fn div_rem_floor(n: Self, d: Self) -> (Self, Self) {
+                let (q, r) = (n / d, n % d);
+                if r < 0 { (q - 1, r + d) } else { (q, r) }
             }
         }
     };
@@ -121,12 +130,27 @@ macro_rules! edge_int {
 edge_int!(i32);
 edge_int!(i64);
 
-/// Per-row state of the three reduced edge functions.
+/// Per-row state of a triangle's edges, kept as the exact quotient and
+/// remainder `F = q·d + r` of each reduced edge function by `d = |A|`
+/// (`0 ≤ r < d`). Edge 0 is a left edge (`A > 0`: the first covered column is
+/// `−q`), edge 2 a right edge (`A < 0`: the last covered column is `q`), edge
+/// 1 either (`mid_left`); a horizontal edge (`A = 0`) only bounds the rows and
+/// is applied to them at set-up (its slot then repeats edge 0). From row to
+/// row `F` grows by `B = bq·d + br`, so `q` grows by `bq` and `r` by `br`, plus
+/// a carry when `r` reaches `d`: exact, with no division. Stored per edge: the
+/// column bound `c` (`−q` or `q`), `e = r − d` (in `−d..0`, so the carry is
+/// `e + br ≥ 0`), and the bound's steps (`∓bq`, `∓1`). Every `q` lies between
+/// 0 and the `F` it stands for, and `|e + br| < d`, within the bounds of the
+/// module docs.
 #[derive(Debug, Clone)]
 pub(crate) struct Walker<T> {
-    f: [T; 3],
-    a: [T; 3],
-    b: [T; 3],
+    c: [T; 3],
+    e: [T; 3],
+    d: [T; 3],
+    br: [T; 3],
+    step: [T; 3],
+    unit: [T; 3],
+    mid_left: bool,
     x0: i32,
     last_col: T, // columns x0..=x0+last_col are inside bbox ∩ clip
     y: i32,
@@ -134,30 +158,97 @@ pub(crate) struct Walker<T> {
 }
 
 impl<T: EdgeInt> Walker<T> {
+    /// The walker at row `y` for reduced edge functions `f` (at column `x0`
+    /// of that row) with `d = |A| > 0` and row steps `b`, in `i64`; the
+    /// caller proves every `F` value the walk reaches fits `T`.
     #[inline(always)]
-    fn next_span(&mut self) -> Option<Span> {
-        while self.y < self.y_end {
-            let y = self.y;
-            let mut lo = T::ZERO;
-            let mut hi = self.last_col;
-            for i in 0..3 {
-                let (f, a) = (self.f[i], self.a[i]);
-                if a > T::ZERO {
-                    lo = lo.max(T::div_floor(f, a).neg());
-                } else if a < T::ZERO {
-                    hi = hi.min(T::div_floor(f, a.neg()));
-                } else if f < T::ZERO {
-                    hi = T::from_i64(-1);
-                }
-                self.f[i] = f.add(self.b[i]);
+    fn new(e: [(i64, i64, i64); 3], mid_left: bool, x0: i32, last_col: i64, y: i32, y_end: i32) -> Self {
+        let mut w = Walker {
+            c: [T::ZERO; 3],
+            e: [T::ZERO; 3],
+            d: [T::ONE; 3],
+            br: [T::ZERO; 3],
+            step: [T::ZERO; 3],
+            unit: [T::ZERO; 3],
+            mid_left,
+            x0,
+            last_col: T::from_i64(last_col),
+            y,
+            y_end,
+        };
+        // One row needs no row step; a repeated edge no second division.
+        let steps = y_end - y > 1;
+        for (i, &(f, d, b)) in e.iter().enumerate() {
+            if i == 1 && e[1] == e[0] {
+                (w.c[1], w.e[1], w.d[1], w.br[1], w.step[1], w.unit[1]) =
+                    (w.c[0], w.e[0], w.d[0], w.br[0], w.step[0], w.unit[0]);
+                continue;
             }
-            self.y += 1;
-            if lo <= hi {
-                let (lo, hi) = (lo.to_i64(), hi.to_i64());
-                return Some(Span { y, x: self.x0 + lo as i32, len: (hi - lo + 1) as u32 });
+            let left = i == 0 || (i == 1 && mid_left);
+            let sign = |v: T| if left { v.neg() } else { v };
+            let d = T::from_i64(d);
+            let (q, r) = T::div_rem_floor(T::from_i64(f), d);
+            (w.c[i], w.e[i], w.d[i], w.unit[i]) = (sign(q), r.sub(d), d, sign(T::ONE));
+            if steps {
+                let (bq, br) = T::div_rem_floor(T::from_i64(b), d);
+                (w.step[i], w.br[i]) = (sign(bq), br);
             }
         }
-        None
+        w
+    }
+
+    /// The bounds of the current row (`lo > hi` if it is empty), stepping the
+    /// state to the next row.
+    #[inline(always)]
+    fn row(c: &mut [T; 3], e: &mut [T; 3], w: &Self) -> (T, T) {
+        let lo = T::ZERO.max(c[0]);
+        let hi = w.last_col.min(c[2]);
+        let (lo, hi) = if w.mid_left { (lo.max(c[1]), hi) } else { (lo, hi.min(c[1])) };
+        for i in 0..3 {
+            // Next row: F + B, as quotient and remainder.
+            let ne = e[i].add(w.br[i]);
+            let carry = ne >= T::ZERO;
+            e[i] = if carry { ne.sub(w.d[i]) } else { ne };
+            c[i] = c[i].add(w.step[i]).add(if carry { w.unit[i] } else { T::ZERO });
+        }
+        (lo, hi)
+    }
+
+    #[inline(always)]
+    fn span(&self, y: i32, lo: T, hi: T) -> Span {
+        let (lo, hi) = (lo.to_i64(), hi.to_i64());
+        Span { y, x: self.x0 + lo as i32, len: (hi - lo + 1) as u32 }
+    }
+
+    #[inline(always)]
+    fn next_span(&mut self) -> Option<Span> {
+        let (mut c, mut e) = (self.c, self.e);
+        let mut out = None;
+        while self.y < self.y_end {
+            let y = self.y;
+            let (lo, hi) = Self::row(&mut c, &mut e, self);
+            self.y += 1;
+            if lo <= hi {
+                out = Some(self.span(y, lo, hi));
+                break;
+            }
+        }
+        (self.c, self.e) = (c, e);
+        out
+    }
+
+    /// All remaining spans, in one loop over local state.
+    #[inline(always)]
+    fn fold<B, G: FnMut(B, Span) -> B>(&self, init: B, mut g: G) -> B {
+        let (mut c, mut e) = (self.c, self.e);
+        let mut acc = init;
+        for y in self.y..self.y_end {
+            let (lo, hi) = Self::row(&mut c, &mut e, self);
+            if lo <= hi {
+                acc = g(acc, self.span(y, lo, hi));
+            }
+        }
+        acc
     }
 }
 
@@ -210,7 +301,12 @@ impl TriangleSpans {
         let col0 = ((min_x - half + one - 1) >> shift).max(clip.x0() as i64);
         let col1 = ((max_x - half) >> shift).min(clip.x1() as i64 - 1);
         let row0 = ((min_y - half + one - 1) >> shift).max(clip.y0() as i64);
-        let row1 = ((max_y - half) >> shift).min(clip.y1() as i64 - 1);
+        // A horizontal edge (A = 0) only bounds the rows. At the top (B > 0, a
+        // top edge) it takes centres on it: exactly the rows above. At the
+        // bottom (B < 0) it leaves out a row whose centre lies on it.
+        let flat_bottom = p.iter().filter(|q| q.1 == max_y).count() == 2;
+        let on_bottom = flat_bottom && (max_y - half) & (one - 1) == 0;
+        let row1 = (((max_y - half) >> shift) - on_bottom as i64).min(clip.y1() as i64 - 1);
         if col0 > col1 || row0 > row1 {
             return empty;
         }
@@ -228,22 +324,35 @@ impl TriangleSpans {
             let edge = a[i] * (cx - s.0) + b[i] * (cy - s.1);
             f[i] = (edge - bias) >> shift;
         }
+        // Edge functions sum their A to 0 and are not all 0: there is a left
+        // edge (A > 0) and a right edge (A < 0); the third is either, or
+        // horizontal (then the left edge takes its slot again).
+        let left = if a[0] > 0 {
+            0
+        } else if a[1] > 0 {
+            1
+        } else {
+            2
+        };
+        let right = if a[0] < 0 {
+            0
+        } else if a[1] < 0 {
+            1
+        } else {
+            2
+        };
+        let mid = 3 - left - right;
+        let (mid, mid_left) = if a[mid] == 0 { (left, true) } else { (mid, a[mid] > 0) };
+        let edge = |i: usize| (f[i], a[i].abs(), b[i]);
+        let e = [edge(left), edge(mid), edge(right)];
         let ext = (max_x - min_x).max(max_y - min_y) + one;
         let fast = ext <= const { fast_ext_internal(S) };
         let last_col = col1 - col0;
         let (x0, y, y_end) = (col0 as i32, row0 as i32, row1 as i32 + 1);
         let path = if fast {
-            Path::Narrow(Walker {
-                f: f.map(|v| v as i32),
-                a: a.map(|v| v as i32),
-                b: b.map(|v| v as i32),
-                x0,
-                last_col: last_col as i32,
-                y,
-                y_end,
-            })
+            Path::Narrow(Walker::new(e, mid_left, x0, last_col, y, y_end))
         } else {
-            Path::Wide(Walker { f, a, b, x0, last_col, y, y_end })
+            Path::Wide(Walker::new(e, mid_left, x0, last_col, y, y_end))
         };
         TriangleSpans { path }
     }
@@ -269,6 +378,17 @@ impl Iterator for TriangleSpans {
             Path::Empty => None,
             Path::Narrow(w) => w.next_span(),
             Path::Wide(w) => w.next_span(),
+        }
+    }
+
+    // Internal iteration (`for_each`, `sum`, …) walks the rows in one loop
+    // instead of one `next` call per span.
+    #[inline]
+    fn fold<B, G: FnMut(B, Span) -> B>(self, init: B, g: G) -> B {
+        match &self.path {
+            Path::Empty => init,
+            Path::Narrow(w) => w.fold(init, g),
+            Path::Wide(w) => w.fold(init, g),
         }
     }
 }

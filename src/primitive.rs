@@ -85,7 +85,12 @@ impl<C: Interpolate, const S: u32> Triangle<C, S> {
     pub fn draw<B: Blitter<C>>(&self, blitter: &mut B, cull: Cull) {
         let spans = TriangleSpans::new(self.vertices, blitter.clip(), cull);
         match self.shading {
-            Shading::Flat(c) => spans.for_each(|s| blitter.fill_span(s, c)),
+            // The span fill inlined into the row loop (`TriangleSpans::fold`).
+            Shading::Flat(c) => spans.fold(
+                (),
+                #[inline(always)]
+                |(), s| blitter.fill_span(s, c),
+            ),
             Shading::Gouraud(cs) => self.draw_gouraud(spans, cs, blitter),
         }
     }

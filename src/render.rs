@@ -1,6 +1,6 @@
 //! The band renderer: a frame drawn band by band into a `DrawTarget`.
 
-use crate::band::{Band, BandView};
+use crate::band::{Band, BandView, LazyClear};
 use crate::depth::{DepthBand, DepthFormat, DepthState};
 use crate::edge::Cull;
 use crate::raster3d::{Interpolation, ScreenTriangle, draw_triangle};
@@ -88,13 +88,24 @@ impl<C: Interpolate> Renderer<C> {
     where
         D: DrawTarget<Color = C>,
     {
-        self.render_with(band, target, |view, y0, y1| {
+        // Rows are cleared as they are first written (`LazyClear`): most
+        // rows' first span then costs one pass over the row, not two.
+        self.bands(band, target, false, |view, y0, y1| {
+            let mut view = LazyClear::<C, W, H>::new(view, self.background);
             for prim in scene {
                 let (lo, hi) = prim.rows();
                 if lo < y1 && hi >= y0 {
-                    prim.draw(view, self.cull);
+                    match prim {
+                        Primitive::Triangle(t) => t.draw(&mut view, self.cull),
+                        // Pixel by pixel: clear the line's rows once, then no checks.
+                        Primitive::Line(l) => {
+                            view.clear_rows(lo, hi);
+                            l.draw(view.view());
+                        }
+                    }
                 }
             }
+            view.finish();
         })
     }
 
@@ -178,6 +189,21 @@ impl<C: Interpolate> Renderer<C> {
         &self,
         band: &mut Band<C, W, H>,
         target: &mut D,
+        draw: impl FnMut(&mut BandView<'_, C, W>, i32, i32),
+    ) -> Result<(), RenderError<D::Error>>
+    where
+        D: DrawTarget<Color = C>,
+    {
+        self.bands(band, target, true, draw)
+    }
+
+    /// The band loop; with `clear` false the views are not cleared and `draw`
+    /// must write every pixel of them.
+    fn bands<D, const W: usize, const H: usize>(
+        &self,
+        band: &mut Band<C, W, H>,
+        target: &mut D,
+        clear: bool,
         mut draw: impl FnMut(&mut BandView<'_, C, W>, i32, i32),
     ) -> Result<(), RenderError<D::Error>>
     where
@@ -197,7 +223,11 @@ impl<C: Interpolate> Renderer<C> {
         while y0 < height {
             let rows = (height - y0).min(H as i32);
             let y1 = y0 + rows;
-            let mut view = band.view(y0, rows as usize, self.background);
+            let mut view = if clear {
+                band.view(y0, rows as usize, self.background)
+            } else {
+                band.view_uncleared(y0, rows as usize)
+            };
             draw(&mut view, y0, y1);
             let area = Rectangle::new(self.offset + Point::new(0, y0), Size::new(W as u32, rows as u32));
             target.fill_contiguous(&area, view.pixels()).map_err(RenderError::Target)?;

@@ -119,6 +119,16 @@ impl DrawTarget for SliceFb {
             return self.draw_iter(area.points().zip(colors).map(|(p, c)| Pixel(p, c)));
         }
         let (x0, w) = (area.top_left.x as usize, area.size.width as usize);
+        if w == W || area.size.height == 1 {
+            // Whole rows (or a single row): one contiguous run of the buffer,
+            // copied in one pass.
+            let start = area.top_left.y as usize * W + x0;
+            let run = &mut self.px[start..][..w * area.size.height as usize];
+            for (d, c) in run.iter_mut().zip(colors) {
+                *d = c;
+            }
+            return Ok(());
+        }
         let mut it = colors.into_iter();
         for y in area.rows() {
             let row = &mut self.px[y as usize * W + x0..][..w];
