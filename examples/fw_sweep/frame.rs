@@ -1,6 +1,6 @@
 //! A plain `Rgb565` framebuffer of the report's frame size, as a user with
 //! the RAM for one would write it: `fill_solid` and `fill_contiguous` copy
-//! row slices (the host report's `SliceFb`, without `std`).
+//! contiguous runs (the host report's `SliceFb`, without `std`).
 
 use core::convert::Infallible;
 
@@ -64,6 +64,14 @@ impl DrawTarget for FrameBuffer {
             return self.draw_iter(area.points().zip(colors).map(|(p, c)| Pixel(p, c)));
         }
         let (x0, w) = (area.top_left.x as usize, area.size.width as usize);
+        if w == W || area.size.height == 1 {
+            // Whole rows (or a single row): one contiguous run, one pass.
+            let start = area.top_left.y as usize * W + x0;
+            for (d, c) in self.px[start..][..w * area.size.height as usize].iter_mut().zip(colors) {
+                *d = c;
+            }
+            return Ok(());
+        }
         let mut it = colors.into_iter();
         for y in area.rows() {
             let row = &mut self.px[y as usize * W + x0..][..w];
