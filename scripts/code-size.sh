@@ -1,10 +1,12 @@
 #!/usr/bin/env bash
-# Shows that a scene pays only for what it uses: builds a 2D-only program and
-# the same program with the standard 3D scene (examples/size/), then lists the
-# microraster code each one links, by module. Run: bash scripts/code-size.sh
+# Shows that a scene pays only for what it uses: builds a 2D-only program, the
+# same program with the standard 3D scene, and the 3D program with the whole
+# fragment stage (textures, per-pixel lighting, blending, 2x2 supersampling;
+# examples/size/), then lists the microraster code each one links, by module.
+# Run: bash scripts/code-size.sh
 set -euo pipefail
 cd "$(dirname "$0")/.."
-cargo build --quiet --release --example size_2d --example size_3d
+cargo build --quiet --release --example size_2d --example size_3d --example size_frag
 
 sizes() { # bytes of microraster code per module in binary $1
   nm -C --size-sort -S "target/release/examples/$1" | grep ' microraster::' | while read -r _ size _ name; do
@@ -17,18 +19,29 @@ sizes() { # bytes of microraster code per module in binary $1
 
 sizes size_2d > target/size_2d.txt
 sizes size_3d > target/size_3d.txt
-echo "| module | 2D-only build (bytes of code and static data) | 3D build (bytes) |"
-echo "|---|---|---|"
-join -a1 -a2 -e 0 -o 0,1.2,2.2 target/size_2d.txt target/size_3d.txt | while read -r m a b; do
-  echo "| $m | $a | $b |"
+sizes size_frag > target/size_frag.txt
+echo "| module | 2D-only build (bytes of code and static data) | 3D build (bytes) | 3D + fragment stage (bytes) |"
+echo "|---|---|---|---|"
+join -a1 -a2 -e 0 -o 0,1.2,2.2 target/size_2d.txt target/size_3d.txt >target/size_23.txt
+join -a1 -a2 -e 0 -o 0,1.2,1.3,2.2 target/size_23.txt target/size_frag.txt | while read -r m a b c; do
+  echo "| $m | $a | $b | $c |"
 done
 total() { awk '{s+=$2} END {print s+0}' "$1"; }
-echo "| **total** | $(total target/size_2d.txt) | $(total target/size_3d.txt) |"
+echo "| **total** | $(total target/size_2d.txt) | $(total target/size_3d.txt) | $(total target/size_frag.txt) |"
 for m in clip3d depth raster3d pipeline; do
   if grep -q "^$m " target/size_2d.txt; then
     echo "FAIL: the 2D-only build links microraster::$m" >&2
     exit 1
   fi
 done
+for m in texture blend fragment aa line_aa; do
+  for b in size_2d size_3d; do
+    if grep -q "^$m " "target/$b.txt"; then
+      echo "FAIL: $b links microraster::$m, which it does not use" >&2
+      exit 1
+    fi
+  done
+done
 echo
-echo "The 2D-only build links no clip3d, depth, raster3d or pipeline code (checked)."
+echo "The 2D-only build links no clip3d, depth, raster3d or pipeline code, and neither"
+echo "the 2D nor the 3D build links texture, blend, fragment, aa or line_aa code (checked)."

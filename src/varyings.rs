@@ -90,16 +90,30 @@ impl<const A: usize> Varyings<A> {
             None => self.planes.map(|p| round_shift(p.at(x, y), AFFINE_FRAC) as i32),
             Some(q) => {
                 let q = q.at(x, y).max(1);
-                self.planes.map(|p| {
-                    // v·q·2^3 ≤ 2^56 needs i128 once shifted to q's 2^-16 units.
-                    let n = (p.at(x, y) as i128) << (DEPTH_FRAC - PERSP_FRAC);
-                    let q = q as i128;
-                    let r = if n >= 0 { (n + q / 2) / q } else { -((-n + q / 2) / q) };
-                    r.clamp(-(MAX_VARYING as i128), MAX_VARYING as i128) as i32
-                })
+                self.planes.map(|p| div_shift_round(p.at(x, y), q, DEPTH_FRAC - PERSP_FRAC))
             }
         }
     }
+}
+
+/// `round(p · 2^s / q)` (ties away from zero) clamped to ±[`MAX_VARYING`],
+/// for any `p`, `q ≥ 1` and `s ≤ 13`; for `q < 2^50` (every fragment) in two
+/// `u64` divisions (`p·2^s` can exceed 64 bits; the remainder times `2^s`
+/// cannot): `p·2^s = q1·q·2^s + r1·2^s`, and `q1·q·2^s` is a multiple of `q`.
+#[inline]
+fn div_shift_round(p: i64, q: i64, s: u32) -> i32 {
+    if !(1..1 << 50).contains(&q) {
+        // Outside the range of the fast form (not reached by fragments of a
+        // triangle, whose q stays within its vertices'): the i128 quotient.
+        let (n, q) = ((p as i128) << s, q.max(1) as i128);
+        let r = if n >= 0 { (n + q / 2) / q } else { -((-n + q / 2) / q) };
+        return r.clamp(-(MAX_VARYING as i128), MAX_VARYING as i128) as i32;
+    }
+    let (pa, q) = (p.unsigned_abs(), q as u64);
+    let (q1, r1) = (pa / q, pa % q);
+    let max = MAX_VARYING as u64;
+    let r = if q1 > max { max } else { ((q1 << s) + ((r1 << s) + q / 2) / q).min(max) };
+    if p < 0 { -(r as i32) } else { r as i32 }
 }
 
 fn round_shift(v: i64, s: u32) -> i64 {
@@ -176,5 +190,41 @@ pub(crate) fn for_each_fragment<C, F, const S: u32, const W: usize>(
             }
             z = z.wrapping_add(dz);
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn reference(p: i64, q: i64, s: u32) -> i32 {
+        let (n, q) = ((p as i128) << s, q.max(1) as i128);
+        let r = if n >= 0 { (n + q / 2) / q } else { -((-n + q / 2) / q) };
+        r.clamp(-(MAX_VARYING as i128), MAX_VARYING as i128) as i32
+    }
+
+    #[test]
+    fn div_shift_round_equals_the_i128_quotient() {
+        let mut x = 0x9E37_79B9_7F4A_7C15u64;
+        let mut next = || {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            x
+        };
+        let edges = [0, 1, -1, i64::MAX, i64::MIN, 1 << 50, -(1 << 56), (1 << 56) + 12345];
+        let mut n = 0;
+        for i in 0..400_000 {
+            let p = if i < 64 { edges[i % edges.len()] } else { (next() as i64) >> (next() % 64) };
+            let q = if i % 7 == 0 {
+                1 + (next() % 64) as i64
+            } else {
+                1 + ((next() >> (next() % 64)) as i64 & (i64::MAX - 1))
+            };
+            let s = (next() % 14) as u32;
+            assert_eq!(div_shift_round(p, q, s), reference(p, q, s), "p {p} q {q} s {s}");
+            n += 1;
+        }
+        assert_eq!(n, 400_000);
     }
 }

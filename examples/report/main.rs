@@ -798,7 +798,8 @@ fn fragment_section(
          timed on the host between the same brackets. Textures: the demo's 64 × 64 bricks (`assets/bricks.png`), \
          planar coordinates, several repeats per mesh. Accuracy: texture error on a receding textured floor \
          against f64 sampling (nearest or bilinear) of exactly perspective-correct coordinates, interior pixels, \
-         8-bit channel steps (affine coordinates are wrong by design: the error is the swim); coverage error over \
+         8-bit channel steps (affine coordinates are wrong by design: the error is the swim; nearest sampling picks the neighbouring \
+         texel where the coordinate lies within its error bound of a texel edge, hence a rare large maximum); coverage error over \
          the pixels an edge crosses of 400 random triangles (2–40 px) drawn alone white on black, resolved value \
          against the exact area of the snapped triangle in the pixel (the aliased renderer: max {:.3}, mean {:.4}).\n",
         aliased.0, aliased.1
@@ -823,7 +824,7 @@ fn fragment_section(
         let _ = writeln!(
             w,
             "| {} | {} | {:.2} | {} | {} | {} | {} | `{}` |",
-            r.key.rsplit('/').next().unwrap_or(r.key),
+            r.key.split_once('/').map_or(r.key, |(_, rest)| rest),
             us(r.ns),
             r.ns / base_ns(plain),
             counts.cell("m4f", r.key),
