@@ -30,17 +30,12 @@ fn main() {
     }
     // On the 2 × 2 sample grid.
     let mut b2 = Box::new(Bins::new());
-    for t in &bins.gouraud {
-        let _ = t.scaled(2).map(|t| b2.gouraud.push(t));
-    }
-    for t in &bins.phong {
-        let _ = t.scaled(2).map(|t| b2.phong.push(t));
-    }
-    for t in &bins.textured {
-        let _ = t.scaled(2).map(|t| b2.textured.push(t));
-    }
-    for t in &bins.glass {
-        let _ = t.scaled(2).map(|t| b2.glass.push(t));
+    let ok = bins.gouraud.iter().all(|t| t.scaled(2).is_ok_and(|t| b2.gouraud.push(t).is_ok()))
+        && bins.phong.iter().all(|t| t.scaled(2).is_ok_and(|t| b2.phong.push(t).is_ok()))
+        && bins.textured.iter().all(|t| t.scaled(2).is_ok_and(|t| b2.textured.push(t).is_ok()))
+        && bins.glass.iter().all(|t| t.scaled(2).is_ok_and(|t| b2.glass.push(t).is_ok()));
+    if !ok {
+        return;
     }
     let mut samples = Box::new(Band::<Rgb565, 640, 32>::new(Rgb565::BLACK));
     let mut depth = Box::new(DepthBand::<Depth16, 640, 32>::new());
