@@ -13,6 +13,7 @@ sizes() { # bytes of microraster code per module in binary $1
     module=${name#microraster::}
     module=${module%%::*}
     module=${module%%<*}
+    [[ $module =~ ^[a-z_0-9]+$ ]] || module=other
     echo "$module $((16#$size))"
   done | sort | awk '{s[$1]+=$2} END {for (m in s) print m, s[m]}' | sort
 }
@@ -45,3 +46,22 @@ done
 echo
 echo "The 2D-only build links no clip3d, depth, raster3d or pipeline code, and neither"
 echo "the 2D nor the 3D build links texture, blend, fragment, aa or line_aa code (checked)."
+
+# The same two programs built as if the fragment stage did not exist (its
+# modules compiled out): their code must be byte for byte the same size.
+RUSTFLAGS="--cfg microraster_without_fragment_stage" CARGO_TARGET_DIR=target/size-without-fragment \
+  cargo build --quiet --release --example size_2d --example size_3d
+text() { size "$1" | awk 'NR == 2 { print $1 + $2 }'; }
+echo
+echo "| program | text + data (bytes) | the same without the fragment stage's modules (bytes) |"
+echo "|---|---|---|"
+for b in size_2d size_3d; do
+  with=$(text "target/release/examples/$b")
+  without=$(text "target/size-without-fragment/release/examples/$b")
+  echo "| $b | $with | $without |"
+  if [ "$with" != "$without" ]; then
+    echo "FAIL: $b changes size when the unused fragment stage exists" >&2
+    exit 1
+  fi
+done
+echo "| size_frag (fragment stage on) | $(text target/release/examples/size_frag) | – |"

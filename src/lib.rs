@@ -8,9 +8,11 @@
 #![forbid(unsafe_code)]
 #![deny(missing_docs)]
 
+#[cfg(not(microraster_without_fragment_stage))]
 pub mod aa;
 mod attr;
 pub mod band;
+#[cfg(not(microraster_without_fragment_stage))]
 pub mod blend;
 pub mod blit;
 pub mod clip;
@@ -19,9 +21,11 @@ pub mod color;
 pub mod depth;
 pub mod edge;
 pub mod error;
+#[cfg(not(microraster_without_fragment_stage))]
 pub mod fragment;
 pub mod light;
 pub mod line;
+#[cfg(not(microraster_without_fragment_stage))]
 pub mod line_aa;
 pub mod math;
 pub mod mesh;
@@ -32,6 +36,7 @@ pub mod render;
 pub mod scenes;
 pub mod scenes3d;
 pub mod subpixel;
+#[cfg(not(microraster_without_fragment_stage))]
 pub mod texture;
 pub mod varyings;
 

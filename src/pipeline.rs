@@ -14,8 +14,10 @@
 //! `T` is the numeric path: `f32` (FPU parts) or [`Fx`](crate::math::Fx)
 //! (16.16 fixed point, parts without an FPU).
 
+#[cfg(not(microraster_without_fragment_stage))]
 mod varying;
 
+#[cfg(not(microraster_without_fragment_stage))]
 pub use varying::VertexInput;
 
 use crate::clip3d::{

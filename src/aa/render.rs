@@ -109,7 +109,7 @@ impl<C: Interpolate> Renderer<C> {
     /// a depth band at sample resolution if it tests depth: the fragment
     /// stage ([`crate::fragment`]) anti-aliased.
     ///
-    /// Errors: [`Error::InvalidFrameSize`] if `height · N` exceeds
+    /// Errors: [`Error::InvalidFrameSize`](crate::Error::InvalidFrameSize) if `height · N` exceeds
     /// [`MAX_FRAME_DIM`](crate::MAX_FRAME_DIM); the target's errors.
     pub fn render_supersampled_with<
         D,
