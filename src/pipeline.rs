@@ -198,41 +198,14 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     ) -> Result<MeshStats, Error> {
         let mesh = mesh.mesh();
         let mut stats = MeshStats::default();
-        let model_view = self.view * *model;
-        let mvp = self.projection * model_view;
-        let band = self.band_bounds();
-        if !self.sphere_visible(&mvp, mesh.bounding_sphere) {
-            stats.mesh_culled = true;
+        let Some(MeshSetup { ctx, planes, band, max }) = self.mesh_setup(mesh, model, color, &mut stats)?
+        else {
             return Ok(stats);
-        }
-        if !band.sphere_touches(&mvp, mesh.bounding_sphere) {
-            return Ok(stats);
-        }
-        let normal_matrix = model_view.normal_matrix().ok_or(Error::InvalidParameter)?;
-        // A guard band beyond what snapping can represent would drop visible
-        // triangles; clamp it (the `clip` field is public).
-        let range = guard_band_for_range(self.size.0, self.size.1, S);
-        let planes = self.clip.with_guard_band(self.clip.guard_band().min(range));
-        let max = C::CHANNEL_MAX;
-        let ch = color.to_channels();
-        let base =
-            [0, 1, 2].map(|k| if max[k] == 0 { T::ZERO } else { T::from_f32(ch[k] as f32 / max[k] as f32) });
-        let ctx = VertexCtx { mv: model_view, mvp, nm: normal_matrix, base, lighting: self.lighting };
+        };
 
         let flat = self.shade == Shade::Flat || mesh.normals.is_empty();
         for (i, idx) in mesh.indices.iter().enumerate() {
-            let pos = mesh.triangle(i).ok_or(Error::InvalidMesh)?.map(Vec3::from_f32);
-            // Clip y and w first: with `rows` set most triangles lie outside
-            // the band and need nothing else.
-            let yw = pos.map(|p| ctx.yw(p));
-            if band.excludes(yw) {
-                continue;
-            }
-            let clip = [0, 1, 2].map(|k| ctx.position(pos[k], yw[k]));
-            let class = classify(clip, planes);
-            if class == Class::Outside {
-                continue;
-            }
+            let Some((pos, clip, class)) = triangle_in_view(mesh, i, &ctx, &band, planes)? else { continue };
             // Colours are computed only for triangles that survive culling.
             let face_n = if flat { mesh.face_normal(i) } else { None };
             let colors = || -> [[T; 3]; 3] {
@@ -290,24 +263,10 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
             return Err(Error::BufferTooSmall);
         }
         let mut stats = MeshStats::default();
-        let model_view = self.view * *model;
-        let mvp = self.projection * model_view;
-        let band = self.band_bounds();
-        if !self.sphere_visible(&mvp, mesh.bounding_sphere) {
-            stats.mesh_culled = true;
+        let Some(MeshSetup { ctx, planes, band, max }) = self.mesh_setup(mesh, model, color, &mut stats)?
+        else {
             return Ok(stats);
-        }
-        if !band.sphere_touches(&mvp, mesh.bounding_sphere) {
-            return Ok(stats);
-        }
-        let normal_matrix = model_view.normal_matrix().ok_or(Error::InvalidParameter)?;
-        let range = guard_band_for_range(self.size.0, self.size.1, S);
-        let planes = self.clip.with_guard_band(self.clip.guard_band().min(range));
-        let max = C::CHANNEL_MAX;
-        let ch = color.to_channels();
-        let base =
-            [0, 1, 2].map(|k| if max[k] == 0 { T::ZERO } else { T::from_f32(ch[k] as f32 / max[k] as f32) });
-        let ctx = VertexCtx { mv: model_view, mvp, nm: normal_matrix, base, lighting: self.lighting };
+        };
         let coder = VertexClass::<T>::new(planes);
         let flat = self.shade == Shade::Flat || mesh.normals.is_empty();
 
@@ -415,6 +374,39 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
             }
         }
         Ok(stats)
+    }
+
+    /// The per-mesh part of the vertex stage: the matrices, the whole-mesh
+    /// culls (view volume, then [`Pipeline::rows`]) and the clip planes;
+    /// `None` when the mesh is culled (counted in `stats`).
+    fn mesh_setup<C: Interpolate>(
+        &self,
+        mesh: &Mesh<'_>,
+        model: &Mat4<T>,
+        color: C,
+        stats: &mut MeshStats,
+    ) -> Result<Option<MeshSetup<T>>, Error> {
+        let model_view = self.view * *model;
+        let mvp = self.projection * model_view;
+        let band = self.band_bounds();
+        if !self.sphere_visible(&mvp, mesh.bounding_sphere) {
+            stats.mesh_culled = true;
+            return Ok(None);
+        }
+        if !band.sphere_touches(&mvp, mesh.bounding_sphere) {
+            return Ok(None);
+        }
+        let normal_matrix = model_view.normal_matrix().ok_or(Error::InvalidParameter)?;
+        // A guard band beyond what snapping can represent would drop visible
+        // triangles; clamp it (the `clip` field is public).
+        let range = guard_band_for_range(self.size.0, self.size.1, S);
+        let planes = self.clip.with_guard_band(self.clip.guard_band().min(range));
+        let max = C::CHANNEL_MAX;
+        let ch = color.to_channels();
+        let base =
+            [0, 1, 2].map(|k| if max[k] == 0 { T::ZERO } else { T::from_f32(ch[k] as f32 / max[k] as f32) });
+        let ctx = VertexCtx { mv: model_view, mvp, nm: normal_matrix, base, lighting: self.lighting };
+        Ok(Some(MeshSetup { ctx, planes, band, max }))
     }
 
     /// False if the sphere lies entirely outside one plane of the view volume.
@@ -657,6 +649,36 @@ impl<T: Scalar, const S: u32> Cached<T, S> {
     const SNAP: u8 = 2;
     const LIT: u8 = 4;
     const EMPTY: Self = Cached { clip: [T::ZERO; 4], state: 0, code: 0, screen: None };
+}
+
+/// Triangle `i` of `mesh` in clip space and its class against `planes`;
+/// `None` when it lies outside the band ([`Pipeline::rows`]) or the view
+/// volume. Clip y and w come first: with `rows` set most triangles lie
+/// outside the band and need nothing else.
+#[allow(clippy::type_complexity)]
+fn triangle_in_view<T: Scalar>(
+    mesh: &Mesh<'_>,
+    i: usize,
+    ctx: &VertexCtx<T>,
+    band: &Band<T>,
+    planes: ClipPlanes,
+) -> Result<Option<([Vec3<T>; 3], [[T; 4]; 3], Class)>, Error> {
+    let pos = mesh.triangle(i).ok_or(Error::InvalidMesh)?.map(Vec3::from_f32);
+    let yw = pos.map(|p| ctx.yw(p));
+    if band.excludes(yw) {
+        return Ok(None);
+    }
+    let clip = [0, 1, 2].map(|k| ctx.position(pos[k], yw[k]));
+    let class = classify(clip, planes);
+    Ok((class != Class::Outside).then_some((pos, clip, class)))
+}
+
+/// What [`Pipeline::mesh_setup`] prepares for one mesh.
+struct MeshSetup<T: Scalar> {
+    ctx: VertexCtx<T>,
+    planes: ClipPlanes,
+    band: Band<T>,
+    max: [u8; 3],
 }
 
 /// Per-mesh constants of the vertex computation.

@@ -9,8 +9,8 @@
 //! caller computes is interpolated at exactly the clipped position (weights
 //! to 2^-16, then rounded to the nearest integer).
 
-use super::{Pipeline, VertexCtx, channels};
-use crate::clip3d::{Class, ClipVertex, classify, clip_triangle, guard_band_for_range};
+use super::{MeshSetup, Pipeline, channels, triangle_in_view};
+use crate::clip3d::{Class, ClipVertex, clip_triangle};
 use crate::fragment::FragTriangle;
 use crate::math::{Mat4, Scalar, Vec3};
 use crate::mesh::ValidMesh;
@@ -58,37 +58,14 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     ) -> Result<MeshStats, Error> {
         let mesh = mesh.mesh();
         let mut stats = MeshStats::default();
-        let model_view = self.view * *model;
-        let mvp = self.projection * model_view;
-        let band = self.band_bounds();
-        if !self.sphere_visible(&mvp, mesh.bounding_sphere) {
-            stats.mesh_culled = true;
+        let Some(MeshSetup { ctx, planes, band, max }) = self.mesh_setup(mesh, model, color, &mut stats)?
+        else {
             return Ok(stats);
-        }
-        if !band.sphere_touches(&mvp, mesh.bounding_sphere) {
-            return Ok(stats);
-        }
-        let normal_matrix = model_view.normal_matrix().ok_or(Error::InvalidParameter)?;
-        let range = guard_band_for_range(self.size.0, self.size.1, S);
-        let planes = self.clip.with_guard_band(self.clip.guard_band().min(range));
-        let max = C::CHANNEL_MAX;
-        let ch = color.to_channels();
-        let base =
-            [0, 1, 2].map(|k| if max[k] == 0 { T::ZERO } else { T::from_f32(ch[k] as f32 / max[k] as f32) });
-        let ctx = VertexCtx { mv: model_view, mvp, nm: normal_matrix, base, lighting: self.lighting };
+        };
         let flat = self.shade == Shade::Flat || mesh.normals.is_empty();
 
         for (i, idx) in mesh.indices.iter().enumerate() {
-            let pos = mesh.triangle(i).ok_or(Error::InvalidMesh)?.map(Vec3::from_f32);
-            let yw = pos.map(|p| ctx.yw(p));
-            if band.excludes(yw) {
-                continue;
-            }
-            let clip = [0, 1, 2].map(|k| ctx.position(pos[k], yw[k]));
-            let class = classify(clip, planes);
-            if class == Class::Outside {
-                continue;
-            }
+            let Some((pos, clip, class)) = triangle_in_view(mesh, i, &ctx, &band, planes)? else { continue };
             let face_n = if flat { mesh.face_normal(i) } else { None };
             let corner = |k: usize| {
                 let n = if flat { face_n } else { mesh.normals.get(idx[k] as usize).copied() };
