@@ -211,35 +211,22 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
             let colors = || -> [[T; 3]; 3] {
                 let c = |k: usize| {
                     let n = if flat { face_n } else { mesh.normals.get(idx[k] as usize).copied() };
-                    // Documented clamp: a non-finite lighting result is channel 0
-                    // (the clipper would otherwise discard the triangle).
-                    ctx.color(pos[k], n).map(|c| if c.is_finite() { c } else { T::ZERO })
+                    ctx.color(pos[k], n)
                 };
                 // Flat: one lit colour per face, vertex 0 lit with the face normal.
                 if self.shade == Shade::Flat { [c(0); 3] } else { [c(0), c(1), c(2)] }
             };
             if class == Class::Inside {
-                let Some(at) = self.snap_positions(clip) else {
-                    stats.degenerate += 1;
-                    continue;
-                };
-                if self.keep(&at, &mut stats) {
+                if let Some(at) = self.snapped_and_kept(clip, &mut stats) {
                     self.emit(at, colors(), max, bins, &mut stats)?;
                 }
                 continue;
             }
-            stats.clipped += 1;
             let cs = colors();
             let v = [0, 1, 2].map(|k| ClipVertex { pos: clip[k], attr: cs[k] });
-            for tri in clip_triangle(v, planes).triangles() {
-                let Some(at) = self.snap_positions(tri.map(|v| v.pos)) else {
-                    stats.degenerate += 1;
-                    continue;
-                };
-                if self.keep(&at, &mut stats) {
-                    self.emit(at, tri.map(|v| v.attr), max, bins, &mut stats)?;
-                }
-            }
+            self.clip_and_emit(v, planes, &mut stats, |at, attr, stats| {
+                self.emit(at, attr, max, bins, stats)
+            })?;
         }
         Ok(stats)
     }
@@ -309,7 +296,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
             let face_n = if flat { mesh.face_normal(i) } else { None };
             let light = |k: usize, p: Vec3<T>| {
                 let n = if flat { face_n } else { mesh.normals.get([a, b, c][k]).copied() };
-                ctx.color(p, n).map(|c| if c.is_finite() { c } else { T::ZERO })
+                ctx.color(p, n)
             };
             if class == Class::Inside {
                 let mut at = [ScreenVertex::default(); 3];
@@ -355,7 +342,6 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
                 self.push(at, bins, &mut stats)?;
                 continue;
             }
-            stats.clipped += 1;
             let p = pos();
             let cs = if self.shade == Shade::Flat {
                 [light(0, p[0]); 3]
@@ -363,17 +349,41 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
                 [0, 1, 2].map(|k| light(k, p[k]))
             };
             let vs = [0, 1, 2].map(|k| ClipVertex { pos: clip[k], attr: cs[k] });
-            for tri in clip_triangle(vs, planes).triangles() {
-                let Some(at) = self.snap_positions(tri.map(|v| v.pos)) else {
-                    stats.degenerate += 1;
-                    continue;
-                };
-                if self.keep(&at, &mut stats) {
-                    self.emit(at, tri.map(|v| v.attr), max, bins, &mut stats)?;
-                }
-            }
+            self.clip_and_emit(vs, planes, &mut stats, |at, attr, stats| {
+                self.emit(at, attr, max, bins, stats)
+            })?;
         }
         Ok(stats)
+    }
+
+    /// Snapped positions of a triangle inside the clip volume, if it passes
+    /// [`Pipeline::keep`]; a triangle that cannot be snapped counts as
+    /// degenerate.
+    fn snapped_and_kept(&self, clip: [[T; 4]; 3], stats: &mut MeshStats) -> Option<[ScreenVertex<S>; 3]> {
+        let Some(at) = self.snap_positions(clip) else {
+            stats.degenerate += 1;
+            return None;
+        };
+        self.keep(&at, stats).then_some(at)
+    }
+
+    /// Clips a triangle that crosses a plane and hands each piece that
+    /// survives snapping and culling to `emit`, with its interpolated
+    /// attributes (all counted in `stats`).
+    fn clip_and_emit<const A: usize>(
+        &self,
+        v: [ClipVertex<T, A>; 3],
+        planes: ClipPlanes,
+        stats: &mut MeshStats,
+        mut emit: impl FnMut([ScreenVertex<S>; 3], [[T; A]; 3], &mut MeshStats) -> Result<(), Error>,
+    ) -> Result<(), Error> {
+        stats.clipped += 1;
+        for tri in clip_triangle(v, planes).triangles() {
+            if let Some(at) = self.snapped_and_kept(tri.map(|v| v.pos), stats) {
+                emit(at, tri.map(|v| v.attr), stats)?;
+            }
+        }
+        Ok(())
     }
 
     /// The per-mesh part of the vertex stage: the matrices, the whole-mesh
@@ -711,7 +721,14 @@ impl<T: Scalar> VertexCtx<T> {
         [self.row(0, p), y, self.row(2, p), w]
     }
 
+    /// The lit colour of a vertex. Documented clamp: a non-finite lighting
+    /// result (NaN parameters) is channel 0, which the clipper would
+    /// otherwise take for a reason to discard the triangle.
     fn color(&self, p: Vec3<T>, normal: Option<[f32; 3]>) -> [T; 3] {
+        self.lit(p, normal).map(|c| if c.is_finite() { c } else { T::ZERO })
+    }
+
+    fn lit(&self, p: Vec3<T>, normal: Option<[f32; 3]>) -> [T; 3] {
         match (self.lighting, normal) {
             (Some(l), Some(n)) => {
                 let n_eye = (self.nm * Vec3::from_f32(n)).normalize();

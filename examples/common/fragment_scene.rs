@@ -51,6 +51,7 @@ pub fn light() -> Lighting<f32> {
 }
 
 /// The screen triangles of one frame (or one band), per pass.
+#[derive(Clone)]
 pub struct FragBins<const S: u32, const G: usize, const P: usize, const X: usize, const L: usize> {
     /// Gouraud-lit sphere (plain 3D triangles).
     pub gouraud: heapless::Vec<ScreenTriangle<S>, G>,
@@ -71,6 +72,24 @@ impl<const S: u32, const G: usize, const P: usize, const X: usize, const L: usiz
             textured: heapless::Vec::new(),
             glass: heapless::Vec::new(),
         }
+    }
+
+    /// Moves every triangle to the sample grid of `n × n` supersampling
+    /// (`ScreenTriangle::scaled`).
+    pub fn scale(&mut self, n: usize) -> Result<(), Error> {
+        for t in self.gouraud.iter_mut() {
+            *t = t.scaled(n)?;
+        }
+        for t in self.phong.iter_mut() {
+            *t = t.scaled(n)?;
+        }
+        for t in self.textured.iter_mut() {
+            *t = t.scaled(n)?;
+        }
+        for t in self.glass.iter_mut() {
+            *t = t.scaled(n)?;
+        }
+        Ok(())
     }
 
     /// Empties every pass.

@@ -41,28 +41,11 @@ fn render(b: &Bins) -> Result<Canvas> {
     Ok(canvas)
 }
 
-/// The same bins on the sample grid of `n × n` supersampling.
-fn scaled(b: &Bins, n: usize) -> Result<Box<Bins>> {
-    let mut out = Box::new(Bins::new());
-    for t in &b.gouraud {
-        out.gouraud.push(t.scaled(n)?).map_err(|_| "full")?;
-    }
-    for t in &b.phong {
-        out.phong.push(t.scaled(n)?).map_err(|_| "full")?;
-    }
-    for t in &b.textured {
-        out.textured.push(t.scaled(n)?).map_err(|_| "full")?;
-    }
-    for t in &b.glass {
-        out.glass.push(t.scaled(n)?).map_err(|_| "full")?;
-    }
-    Ok(out)
-}
-
 /// The frame supersampled 2 × 2 (`Ssaa<2>`): the same passes on a 640-wide
 /// sample band of 32 rows with its own depth band, box-filtered per band.
 fn render_ssaa2(b: &Bins) -> Result<Canvas> {
-    let b2 = scaled(b, 2)?;
+    let mut b2 = Box::new(b.clone());
+    b2.scale(2)?;
     let mut canvas = Canvas::new(W as u32, H);
     let mut samples = Box::new(Band::<Rgb888, { 2 * W }, { 2 * BAND_ROWS }>::new(BACKGROUND));
     let mut depth = Box::new(DepthBand::<Z, { 2 * W }, { 2 * BAND_ROWS }>::new());

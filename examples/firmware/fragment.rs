@@ -96,18 +96,7 @@ fn band_pass(
     scene.set_rows(Some((sy0 / n, (sy1 - 1) / n)));
     bins.clear();
     scene.draw(bins)?;
-    for t in bins.gouraud.iter_mut() {
-        *t = t.scaled(N)?;
-    }
-    for t in bins.phong.iter_mut() {
-        *t = t.scaled(N)?;
-    }
-    for t in bins.textured.iter_mut() {
-        *t = t.scaled(N)?;
-    }
-    for t in bins.glass.iter_mut() {
-        *t = t.scaled(N)?;
-    }
+    bins.scale(N)?;
     draw_passes::<Rgb565, Depth16, PerspectiveCorrect, S, SW, SH, 40, 40, 10, 128>(
         bins, view, depth, sy0, sy1,
     )

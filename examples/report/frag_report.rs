@@ -116,7 +116,7 @@ pub fn texture_error<M: Interpolation, Fi: Filter>(sampler: Sampler<Fi>) -> (f64
                 let uv = [0, 1]
                     .map(|j| (0..3).map(|k| q[k] * t.varyings[k][j] as f64).sum::<f64>() / s / UV_ONE as f64);
                 let (tx, ty) = (uv[0] * tex.width() as f64, uv[1] * tex.height() as f64);
-                let want = if core::any::type_name::<Fi>().ends_with("Nearest") {
+                let want = if !Fi::BILINEAR {
                     texel(tx.floor() as i64, ty.floor() as i64)
                 } else {
                     let (fx, fy) = (tx - 0.5, ty - 0.5);

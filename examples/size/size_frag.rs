@@ -29,12 +29,8 @@ fn main() {
         return;
     }
     // On the 2 × 2 sample grid.
-    let mut b2 = Box::new(Bins::new());
-    let ok = bins.gouraud.iter().all(|t| t.scaled(2).is_ok_and(|t| b2.gouraud.push(t).is_ok()))
-        && bins.phong.iter().all(|t| t.scaled(2).is_ok_and(|t| b2.phong.push(t).is_ok()))
-        && bins.textured.iter().all(|t| t.scaled(2).is_ok_and(|t| b2.textured.push(t).is_ok()))
-        && bins.glass.iter().all(|t| t.scaled(2).is_ok_and(|t| b2.glass.push(t).is_ok()));
-    if !ok {
+    let mut b2 = Box::new((*bins).clone());
+    if b2.scale(2).is_err() {
         return;
     }
     let mut samples = Box::new(Band::<Rgb565, 640, 32>::new(Rgb565::BLACK));

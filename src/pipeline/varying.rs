@@ -10,7 +10,7 @@
 //! to 2^-16, then rounded to the nearest integer).
 
 use super::{MeshSetup, Pipeline, channels, triangle_in_view};
-use crate::clip3d::{Class, ClipVertex, clip_triangle};
+use crate::clip3d::{Class, ClipVertex};
 use crate::fragment::FragTriangle;
 use crate::math::{Mat4, Scalar, Vec3};
 use crate::mesh::ValidMesh;
@@ -69,7 +69,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
             let face_n = if flat { mesh.face_normal(i) } else { None };
             let corner = |k: usize| {
                 let n = if flat { face_n } else { mesh.normals.get(idx[k] as usize).copied() };
-                let color = ctx.color(pos[k], n).map(|c| if c.is_finite() { c } else { T::ZERO });
+                let color = ctx.color(pos[k], n);
                 let normal = n.map_or(Vec3::new(T::ZERO, T::ZERO, T::ONE), |n| {
                     (ctx.nm * Vec3::from_f32(n)).normalize()
                 });
@@ -90,33 +90,22 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
             }
             let values = corners.map(|c| c.1);
             if class == Class::Inside {
-                let Some(at) = self.snap_positions(clip) else {
-                    stats.degenerate += 1;
-                    continue;
-                };
-                if self.keep(&at, &mut stats) {
+                if let Some(at) = self.snapped_and_kept(clip, &mut stats) {
                     self.push_fragment(at, corners.map(|c| c.0), values, max, bins, &mut stats)?;
                 }
                 continue;
             }
-            stats.clipped += 1;
             let v = [0, 1, 2].map(|k| {
                 let c = corners[k].0;
                 let mut w = [T::ZERO; 3];
                 w[k] = T::ONE;
                 ClipVertex::<T, 6> { pos: clip[k], attr: [c[0], c[1], c[2], w[0], w[1], w[2]] }
             });
-            for tri in clip_triangle(v, planes).triangles() {
-                let Some(at) = self.snap_positions(tri.map(|v| v.pos)) else {
-                    stats.degenerate += 1;
-                    continue;
-                };
-                if self.keep(&at, &mut stats) {
-                    let colors = tri.map(|v| [v.attr[0], v.attr[1], v.attr[2]]);
-                    let vals = tri.map(|v| weighted(&v.attr, &values));
-                    self.push_fragment(at, colors, vals, max, bins, &mut stats)?;
-                }
-            }
+            self.clip_and_emit(v, planes, &mut stats, |at, attr, stats| {
+                let colors = attr.map(|a| [a[0], a[1], a[2]]);
+                let vals = attr.map(|a| weighted(&a, &values));
+                self.push_fragment(at, colors, vals, max, bins, stats)
+            })?;
         }
         Ok(stats)
     }
