@@ -21,6 +21,17 @@ pub enum Error {
     InvalidMesh,
     /// A caller-provided buffer is smaller than the operation needs.
     BufferTooSmall,
+    /// Meshlet data are inconsistent: a cluster's offsets or counts run past
+    /// its arrays, it has no triangles or more than
+    /// [`MAX_MESHLET_VERTICES`](crate::mesh::MAX_MESHLET_VERTICES) vertices or
+    /// [`MAX_MESHLET_TRIANGLES`](crate::mesh::MAX_MESHLET_TRIANGLES)
+    /// triangles, a local index is out of range, or its sphere or normal
+    /// cone does not contain its positions or face normals.
+    InvalidMeshlet,
+    /// A triangle's winding disagrees with its vertex normals: the face
+    /// normal from the counter-clockwise winding points against the normals
+    /// (the mesh is wound clockwise, or its normals point inward).
+    WindingMismatch,
     /// A parameter is outside its documented range (for example near ≥ far,
     /// a zero aspect ratio, or too few mesh segments).
     InvalidParameter,
@@ -34,6 +45,8 @@ impl fmt::Display for Error {
             Error::InvalidFrameSize => "frame size is zero or too large",
             Error::InvalidMesh => "mesh indices, normals or bounding sphere are inconsistent",
             Error::BufferTooSmall => "buffer too small",
+            Error::InvalidMeshlet => "meshlet offsets, counts, indices, sphere or cone are inconsistent",
+            Error::WindingMismatch => "triangle winding disagrees with the vertex normals",
             Error::InvalidParameter => "parameter outside its documented range",
         };
         f.write_str(text)

@@ -27,6 +27,7 @@
 
 mod cube;
 mod icosphere;
+mod meshlet;
 mod torus;
 
 #[cfg(test)]
@@ -36,6 +37,7 @@ pub use cube::{cube, cube_triangle_count, cube_vertex_count};
 pub use icosphere::{
     ICOSPHERE_MAX_SUBDIVISIONS, icosphere, icosphere_triangle_count, icosphere_vertex_count,
 };
+pub use meshlet::{MAX_MESHLET_TRIANGLES, MAX_MESHLET_VERTICES, Meshlet, MeshletMesh};
 pub use torus::{torus, torus_triangle_count, torus_vertex_count};
 
 use crate::error::Error;
