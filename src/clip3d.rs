@@ -297,8 +297,6 @@ const INVALID: u8 = 0x80;
 const _: () = assert!(PLANES.len() < 8);
 
 impl<T: Scalar> VertexClass<T> {
-    /// The code of an invalid vertex.
-    pub(crate) const INVALID_CODE: u8 = INVALID;
 
     pub(crate) fn new(planes: ClipPlanes) -> Self {
         VertexClass(Ctx::new(planes))

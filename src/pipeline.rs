@@ -14,15 +14,16 @@
 //! `T` is the numeric path: `f32` (FPU parts) or [`Fx`](crate::math::Fx)
 //! (16.16 fixed point, parts without an FPU).
 
+mod cache;
 #[cfg(not(microraster_without_fragment_stage))]
 mod varying;
+
+pub use cache::VertexCache;
 
 #[cfg(not(microraster_without_fragment_stage))]
 pub use varying::VertexInput;
 
-use crate::clip3d::{
-    Class, ClipPlanes, ClipVertex, VertexClass, classify, clip_triangle, guard_band_for_range,
-};
+use crate::clip3d::{Class, ClipPlanes, ClipVertex, classify, clip_triangle, guard_band_for_range};
 use crate::edge::{Cull, signed_area2};
 use crate::light::Lighting;
 use crate::math::{Mat3, Mat4, Scalar, Vec3, Vec4, transform};
@@ -250,109 +251,14 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
             return Err(Error::BufferTooSmall);
         }
         let mut stats = MeshStats::default();
-        let Some(MeshSetup { ctx, planes, band, max }) = self.mesh_setup(mesh, model, color, &mut stats)?
-        else {
+        let Some(setup) = self.mesh_setup(mesh, model, color, &mut stats)? else {
             return Ok(stats);
         };
-        let coder = VertexClass::<T>::new(planes);
-        let flat = self.shade == Shade::Flat || mesh.normals.is_empty();
-
-        // Clip y and w and the band test of every vertex; the rest on demand.
-        let cv = &mut cache.v[..mesh.vertex_count()];
-        for (c, p) in cv.iter_mut().zip(mesh.positions) {
-            let pos = Vec3::from_f32(*p);
-            let (y, w) = ctx.yw(pos);
-            c.clip = [T::ZERO, y, T::ZERO, w];
-            c.state = band.side((y, w));
-        }
-        let v = |c: &mut Cached<T, S>, i: usize| -> u8 {
-            if c.state & Cached::<T, S>::CLIP == 0 {
-                let p = Vec3::from_f32(mesh.positions[i]);
-                c.clip = ctx.position(p, (c.clip[1], c.clip[3]));
-                c.code = coder.code(&c.clip);
-                c.state |= Cached::<T, S>::CLIP;
-            }
-            c.code
-        };
-        for (i, idx) in mesh.indices.iter().enumerate() {
-            let [a, b, c] = idx.map(usize::from);
-            // Indices are in range (ValidMesh); `get` keeps it panic-free.
-            let (Some(&sa), Some(&sb), Some(&sc)) = (cv.get(a), cv.get(b), cv.get(c)) else {
-                return Err(Error::InvalidMesh);
-            };
-            if sa.state & sb.state & sc.state & (Band::<T>::ABOVE | Band::<T>::BELOW) != 0 {
-                continue;
-            }
-            let mut codes = [0u8; 3];
-            for (k, &j) in [a, b, c].iter().enumerate() {
-                codes[k] = cv.get_mut(j).map_or(VertexClass::<T>::INVALID_CODE, |e| v(e, j));
-            }
-            let class = VertexClass::<T>::class(codes);
-            if class == Class::Outside {
-                continue;
-            }
-            let clip = [cv[a].clip, cv[b].clip, cv[c].clip];
-            let pos = || [a, b, c].map(|j| Vec3::from_f32(mesh.positions[j]));
-            let face_n = if flat { mesh.face_normal(i) } else { None };
-            let light = |k: usize, p: Vec3<T>| {
-                let n = if flat { face_n } else { mesh.normals.get([a, b, c][k]).copied() };
-                ctx.color(p, n)
-            };
-            if class == Class::Inside {
-                let mut at = [ScreenVertex::default(); 3];
-                let mut ok = true;
-                for (k, &j) in [a, b, c].iter().enumerate() {
-                    let e = &mut cv[j];
-                    if e.state & Cached::<T, S>::SNAP == 0 {
-                        e.screen = self.snap_vertex(e.clip);
-                        e.state |= Cached::<T, S>::SNAP;
-                    }
-                    match e.screen {
-                        Some(s) => at[k] = s,
-                        None => ok = false,
-                    }
-                }
-                if !ok {
-                    stats.degenerate += 1;
-                    continue;
-                }
-                if !self.keep(&at, &mut stats) {
-                    continue;
-                }
-                if flat {
-                    // Lit with the face normal: per triangle, not per vertex.
-                    let p = pos();
-                    let c0 = channels(light(0, p[0]), max);
-                    for (k, v) in at.iter_mut().enumerate() {
-                        v.color = if self.shade == Shade::Flat { c0 } else { channels(light(k, p[k]), max) };
-                    }
-                } else {
-                    for (k, &j) in [a, b, c].iter().enumerate() {
-                        let e = &mut cv[j];
-                        if e.state & Cached::<T, S>::LIT == 0 {
-                            let c = channels(light(k, Vec3::from_f32(mesh.positions[j])), max);
-                            if let Some(s) = e.screen.as_mut() {
-                                s.color = c;
-                            }
-                            e.state |= Cached::<T, S>::LIT;
-                        }
-                        at[k].color = e.screen.map_or([0; 3], |s| s.color);
-                    }
-                }
-                self.push(at, bins, &mut stats)?;
-                continue;
-            }
-            let p = pos();
-            let cs = if self.shade == Shade::Flat {
-                [light(0, p[0]); 3]
-            } else {
-                [0, 1, 2].map(|k| light(k, p[k]))
-            };
-            let vs = [0, 1, 2].map(|k| ClipVertex { pos: clip[k], attr: cs[k] });
-            self.clip_and_emit(vs, planes, &mut stats, |at, attr, stats| {
-                self.emit(at, attr, max, bins, stats)
-            })?;
-        }
+        let cache = &mut cache.v[..mesh.vertex_count()];
+        let triangles = mesh.indices.iter().map(|t| t.map(usize::from));
+        self.draw_cached(&setup, mesh, cache, triangles, &mut stats, |tri, _| {
+            bins.push(tri).map_err(|_| Error::BufferTooSmall)
+        })?;
         Ok(stats)
     }
 
@@ -606,59 +512,6 @@ impl<T: Scalar> Band<T> {
         };
         !(self.above.is_some_and(|k| outside(w * k - y)) || self.below.is_some_and(|k| outside(y - w * k)))
     }
-}
-
-/// Caller-owned storage for [`Pipeline::draw_valid_mesh_cached`]: the
-/// per-vertex results of one mesh of up to `V` vertices (reused mesh after
-/// mesh). Size: `V ×` about 40 bytes for `f32` and [`Fx`](crate::math::Fx)
-/// (clip position, snapped screen vertex, state), `size_of` tells exactly.
-///
-/// ```
-/// use microraster::pipeline::VertexCache;
-/// let cache = VertexCache::<f32, 4, 392>::new();
-/// assert!(core::mem::size_of_val(&cache) <= 392 * 44);
-/// ```
-pub struct VertexCache<T: Scalar, const S: u32, const V: usize> {
-    v: [Cached<T, S>; V],
-}
-
-impl<T: Scalar, const S: u32, const V: usize> VertexCache<T, S, V> {
-    /// An empty cache (its contents are rebuilt on every draw).
-    pub const fn new() -> Self {
-        VertexCache { v: [Cached::EMPTY; V] }
-    }
-}
-
-impl<T: Scalar, const S: u32, const V: usize> Default for VertexCache<T, S, V> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-
-impl<T: Scalar, const S: u32, const V: usize> core::fmt::Debug for VertexCache<T, S, V> {
-    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
-        write!(f, "VertexCache<{V}>")
-    }
-}
-
-/// One vertex of a [`VertexCache`].
-#[derive(Clone, Copy)]
-struct Cached<T, const S: u32> {
-    /// Clip position (only y and w until `CLIP` is set).
-    clip: [T; 4],
-    /// `Band` side bits and the flags below.
-    state: u8,
-    /// Clip outcode (valid with `CLIP`).
-    code: u8,
-    /// Snapped vertex (valid with `SNAP`; its colour with `LIT`).
-    screen: Option<ScreenVertex<S>>,
-}
-
-impl<T: Scalar, const S: u32> Cached<T, S> {
-    const CLIP: u8 = 1;
-    const SNAP: u8 = 2;
-    const LIT: u8 = 4;
-    const EMPTY: Self = Cached { clip: [T::ZERO; 4], state: 0, code: 0, screen: None };
 }
 
 /// Triangle `i` of `mesh` in clip space and its class against `planes`;

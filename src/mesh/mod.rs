@@ -221,11 +221,16 @@ impl<'a> Mesh<'a> {
     /// assert_eq!(mesh.face_normal(0), Some([0.0, 0.0, 1.0]));
     /// ```
     pub fn face_normal(&self, i: usize) -> Option<[f32; 3]> {
-        let [a, b, c] = self.triangle(i)?;
-        let n = cross(sub(b, a), sub(c, a));
-        let len = sqrt(dot(n, n));
-        if len > 0.0 && len.is_finite() { Some(n.map(|x| x / len)) } else { None }
+        face_normal_of(self.triangle(i)?)
     }
+}
+
+/// The unit normal of the triangle `[a, b, c]` from its winding (seen
+/// counter-clockwise from the side it points to); `None` for zero area.
+pub(crate) fn face_normal_of([a, b, c]: [[f32; 3]; 3]) -> Option<[f32; 3]> {
+    let n = cross(sub(b, a), sub(c, a));
+    let len = sqrt(dot(n, n));
+    if len > 0.0 && len.is_finite() { Some(n.map(|x| x / len)) } else { None }
 }
 
 /// A [`Mesh`] that passed [`Mesh::validate`], so

@@ -1,0 +1,215 @@
+//! The cached vertex path: each vertex of a mesh (or of one meshlet) is
+//! transformed, classified, snapped and lit at most once, however many
+//! triangles share it, and only as far as its triangles need: clip `y` and
+//! `w` first (enough to reject a triangle outside the band), the rest of the
+//! clip position and its outcode when a triangle needs them, the snapped
+//! position when a triangle lies inside the clip volume, the colour when a
+//! triangle survives back-face culling.
+//!
+//! [`Pipeline::draw_valid_mesh_cached`] runs it over a whole mesh into the
+//! frame's bins, [`Pipeline::draw_meshlets`](super::Pipeline::draw_meshlets)
+//! over each surviving meshlet straight into a band. Both give the triangles
+//! of [`Pipeline::draw_valid_mesh`], bit for bit, in the same order.
+
+use super::{MeshSetup, MeshStats, Pipeline, Shade, channels};
+use crate::clip3d::{Class, ClipVertex, VertexClass};
+use crate::math::{Scalar, Vec3};
+use crate::raster3d::{ScreenTriangle, ScreenVertex};
+use crate::Error;
+
+/// Caller-owned storage for [`Pipeline::draw_valid_mesh_cached`]: the
+/// per-vertex results of one mesh of up to `V` vertices (reused mesh after
+/// mesh). Size: `V ×` about 40 bytes for `f32` and [`Fx`](crate::math::Fx)
+/// (clip position, snapped screen vertex, state), `size_of` tells exactly.
+///
+/// ```
+/// use microraster::pipeline::VertexCache;
+/// let cache = VertexCache::<f32, 4, 392>::new();
+/// assert!(core::mem::size_of_val(&cache) <= 392 * 44);
+/// ```
+pub struct VertexCache<T: Scalar, const S: u32, const V: usize> {
+    pub(super) v: [Cached<T, S>; V],
+}
+
+impl<T: Scalar, const S: u32, const V: usize> VertexCache<T, S, V> {
+    /// An empty cache (its contents are rebuilt on every draw).
+    pub const fn new() -> Self {
+        VertexCache { v: [Cached::EMPTY; V] }
+    }
+}
+
+impl<T: Scalar, const S: u32, const V: usize> Default for VertexCache<T, S, V> {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl<T: Scalar, const S: u32, const V: usize> core::fmt::Debug for VertexCache<T, S, V> {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        write!(f, "VertexCache<{V}>")
+    }
+}
+
+/// One vertex of a [`VertexCache`].
+#[derive(Clone, Copy)]
+pub(super) struct Cached<T, const S: u32> {
+    /// Clip position (only y and w until `CLIP` is set).
+    clip: [T; 4],
+    /// `Band` side bits and the flags below.
+    state: u8,
+    /// Clip outcode (valid with `CLIP`).
+    code: u8,
+    /// Snapped vertex (valid with `SNAP`; its colour with `LIT`).
+    screen: Option<ScreenVertex<S>>,
+}
+
+impl<T: Scalar, const S: u32> Cached<T, S> {
+    const CLIP: u8 = 1;
+    const SNAP: u8 = 2;
+    const LIT: u8 = 4;
+    const EMPTY: Self = Cached { clip: [T::ZERO; 4], state: 0, code: 0, screen: None };
+}
+
+/// Where the cached path reads its vertices: model positions and normals by
+/// cache slot (a mesh vertex, or a meshlet's local vertex).
+pub(super) trait VertexSource {
+    /// The model-space position of slot `i` (`None` out of range).
+    fn position(&self, i: usize) -> Option<[f32; 3]>;
+    /// The unit normal of slot `i`, if the mesh has normals.
+    fn normal(&self, i: usize) -> Option<[f32; 3]>;
+    /// Whether the mesh has per-vertex normals.
+    fn has_normals(&self) -> bool;
+}
+
+impl<T: Scalar, const S: u32> Pipeline<T, S> {
+    /// The cached vertex path over `triangles` (cache slots, counter-clockwise
+    /// from outside): every triangle [`Pipeline::draw_valid_mesh`] would emit
+    /// for them goes to `sink`, in order, with the same vertices and colours.
+    /// `cache` holds one entry per slot of `src` and is overwritten.
+    ///
+    /// Errors: [`Error::InvalidMesh`] for a slot beyond `cache` or `src`
+    /// (validated meshes have none), and whatever `sink` returns.
+    pub(super) fn draw_cached<Src: VertexSource>(
+        &self,
+        setup: &MeshSetup<T>,
+        src: &Src,
+        cache: &mut [Cached<T, S>],
+        triangles: impl Iterator<Item = [usize; 3]>,
+        stats: &mut MeshStats,
+        mut sink: impl FnMut(ScreenTriangle<S>, &mut MeshStats) -> Result<(), Error>,
+    ) -> Result<(), Error> {
+        let MeshSetup { ctx, planes, band, max } = setup;
+        let (planes, max) = (*planes, *max);
+        let coder = VertexClass::<T>::new(planes);
+        let flat = self.shade == Shade::Flat || !src.has_normals();
+        let flat_shade = self.shade == Shade::Flat;
+        let position = |i: usize| src.position(i).map(Vec3::from_f32).ok_or(Error::InvalidMesh);
+
+        // Clip y and w and the band test of every vertex; the rest on demand.
+        for (i, c) in cache.iter_mut().enumerate() {
+            let (y, w) = ctx.yw(position(i)?);
+            c.clip = [T::ZERO, y, T::ZERO, w];
+            c.state = band.side((y, w));
+        }
+        for idx in triangles {
+            let [a, b, c] = idx;
+            let (Some(&sa), Some(&sb), Some(&sc)) = (cache.get(a), cache.get(b), cache.get(c)) else {
+                return Err(Error::InvalidMesh);
+            };
+            if sa.state & sb.state & sc.state & (super::Band::<T>::ABOVE | super::Band::<T>::BELOW) != 0 {
+                continue;
+            }
+            let mut codes = [0u8; 3];
+            for (k, &j) in idx.iter().enumerate() {
+                let e = &mut cache[j];
+                if e.state & Cached::<T, S>::CLIP == 0 {
+                    e.clip = ctx.position(position(j)?, (e.clip[1], e.clip[3]));
+                    e.code = coder.code(&e.clip);
+                    e.state |= Cached::<T, S>::CLIP;
+                }
+                codes[k] = e.code;
+            }
+            let class = VertexClass::<T>::class(codes);
+            if class == Class::Outside {
+                continue;
+            }
+            let raw = [a, b, c].map(|j| src.position(j));
+            let [Some(ra), Some(rb), Some(rc)] = raw else { return Err(Error::InvalidMesh) };
+            let pos = [ra, rb, rc].map(Vec3::from_f32);
+            // Flat shading, or no normals: the face normal, as `Mesh::face_normal`.
+            let face_n = if flat { crate::mesh::face_normal_of([ra, rb, rc]) } else { None };
+            let light = |k: usize| {
+                let n = if flat { face_n } else { src.normal(idx[k]) };
+                ctx.color(pos[k], n)
+            };
+            if class == Class::Inside {
+                let mut at = [ScreenVertex::default(); 3];
+                let mut ok = true;
+                for (k, &j) in idx.iter().enumerate() {
+                    let e = &mut cache[j];
+                    if e.state & Cached::<T, S>::SNAP == 0 {
+                        e.screen = self.snap_vertex(e.clip);
+                        e.state |= Cached::<T, S>::SNAP;
+                    }
+                    match e.screen {
+                        Some(s) => at[k] = s,
+                        None => ok = false,
+                    }
+                }
+                if !ok {
+                    stats.degenerate += 1;
+                    continue;
+                }
+                if !self.keep(&at, stats) {
+                    continue;
+                }
+                if flat {
+                    // Lit with the face normal: per triangle, not per vertex.
+                    let c0 = channels(light(0), max);
+                    for (k, v) in at.iter_mut().enumerate() {
+                        v.color = if flat_shade { c0 } else { channels(light(k), max) };
+                    }
+                } else {
+                    for (k, &j) in idx.iter().enumerate() {
+                        let e = &mut cache[j];
+                        if e.state & Cached::<T, S>::LIT == 0 {
+                            let c = channels(light(k), max);
+                            if let Some(s) = e.screen.as_mut() {
+                                s.color = c;
+                            }
+                            e.state |= Cached::<T, S>::LIT;
+                        }
+                        at[k].color = e.screen.map_or([0; 3], |s| s.color);
+                    }
+                }
+                sink(ScreenTriangle { v: at, flat: flat_shade }, stats)?;
+                stats.emitted += 1;
+                continue;
+            }
+            let cs = if flat_shade { [light(0); 3] } else { [0, 1, 2].map(light) };
+            let clip = idx.map(|j| cache[j].clip);
+            let vs = [0, 1, 2].map(|k| ClipVertex { pos: clip[k], attr: cs[k] });
+            self.clip_and_emit(vs, planes, stats, |mut at, attr, stats| {
+                for (v, c) in at.iter_mut().zip(attr) {
+                    v.color = channels(c, max);
+                }
+                sink(ScreenTriangle { v: at, flat: flat_shade }, stats)?;
+                stats.emitted += 1;
+                Ok(())
+            })?;
+        }
+        Ok(())
+    }
+}
+
+impl VertexSource for crate::mesh::Mesh<'_> {
+    fn position(&self, i: usize) -> Option<[f32; 3]> {
+        self.positions.get(i).copied()
+    }
+    fn normal(&self, i: usize) -> Option<[f32; 3]> {
+        self.normals.get(i).copied()
+    }
+    fn has_normals(&self) -> bool {
+        !self.normals.is_empty()
+    }
+}
