@@ -297,7 +297,6 @@ const INVALID: u8 = 0x80;
 const _: () = assert!(PLANES.len() < 8);
 
 impl<T: Scalar> VertexClass<T> {
-
     pub(crate) fn new(planes: ClipPlanes) -> Self {
         VertexClass(Ctx::new(planes))
     }

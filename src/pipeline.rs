@@ -15,10 +15,12 @@
 //! (16.16 fixed point, parts without an FPU).
 
 mod cache;
+mod cluster;
 #[cfg(not(microraster_without_fragment_stage))]
 mod varying;
 
 pub use cache::VertexCache;
+pub use cluster::ClusterCache;
 
 #[cfg(not(microraster_without_fragment_stage))]
 pub use varying::VertexInput;

@@ -3,8 +3,11 @@
 use crate::band::{Band, BandView, LazyClear};
 use crate::depth::{DepthBand, DepthFormat, DepthState};
 use crate::edge::Cull;
-use crate::raster3d::{Interpolation, ScreenTriangle, draw_triangle};
+use crate::raster3d::{Interpolation, ScreenTriangle};
+
+mod band3d;
 use crate::{Error, Interpolate, MAX_FRAME_DIM, Primitive, RenderError};
+pub use band3d::Band3d;
 use embedded_graphics_core::prelude::{DrawTarget, Point, Size};
 use embedded_graphics_core::primitives::Rectangle;
 
@@ -131,7 +134,7 @@ impl<C: Interpolate> Renderer<C> {
         M: Interpolation,
     {
         self.render_with(band, target, |view, y0, y1| {
-            draw_band::<C, F, M, S, W, H>(triangles, view, depth, state, y0, y1)
+            band3d::<C, F, M, W, H>(view, depth, state, y0, y1).draw_all(triangles)
         })
     }
 
@@ -171,7 +174,44 @@ impl<C: Interpolate> Renderer<C> {
                 failed = Some(e);
                 return;
             }
-            draw_band::<C, F, M, S, W, H>(bins, view, depth, state, y0, y1);
+            band3d::<C, F, M, W, H>(view, depth, state, y0, y1).draw_all(bins);
+        })?;
+        failed.map_or(Ok(()), |e| Err(RenderError::Input(e)))
+    }
+
+    /// Renders a frame whose vertex stage draws straight into each band, with
+    /// no bins at all: for each band, `draw` gets the band as a [`Band3d`]
+    /// (its depth cleared to far) and draws into it, typically with
+    /// [`Pipeline::draw_meshlets`](crate::pipeline::Pipeline::draw_meshlets)
+    /// for each mesh. The RAM a frame needs is the band, its depth rows and
+    /// what `draw` keeps (a meshlet's vertices), whatever the scene's size.
+    /// Colour is interpolated as `interp` says ([`Affine`](crate::raster3d::Affine)
+    /// or [`PerspectiveCorrect`](crate::raster3d::PerspectiveCorrect)).
+    ///
+    /// Errors as for [`Renderer::render`], plus [`RenderError::Input`] with the
+    /// first error `draw` returns (the remaining bands are not drawn).
+    pub fn render_3d_direct<D, F, M, G, const W: usize, const H: usize>(
+        &self,
+        band: &mut Band<C, W, H>,
+        depth: &mut DepthBand<F, W, H>,
+        state: DepthState,
+        interp: M,
+        target: &mut D,
+        mut draw: G,
+    ) -> Result<(), RenderError<D::Error>>
+    where
+        D: DrawTarget<Color = C>,
+        F: DepthFormat,
+        M: Interpolation,
+        G: FnMut(&mut Band3d<'_, '_, C, F, M, W>) -> Result<(), Error>,
+    {
+        let _ = interp; // a value, so the call needs no turbofish
+        let mut failed = None;
+        self.render_with(band, target, |view, y0, y1| {
+            if failed.is_none() {
+                let mut b = band3d::<C, F, M, W, H>(view, depth, state, y0, y1);
+                failed = draw(&mut b).err();
+            }
         })?;
         failed.map_or(Ok(()), |e| Err(RenderError::Input(e)))
     }
@@ -237,15 +277,15 @@ impl<C: Interpolate> Renderer<C> {
     }
 }
 
-/// Clears the band's depth to far and draws the triangles touching `y0..y1`.
-fn draw_band<C, F, M, const S: u32, const W: usize, const H: usize>(
-    triangles: &[ScreenTriangle<S>],
-    view: &mut BandView<'_, C, W>,
-    depth: &mut DepthBand<F, W, H>,
+/// Clears the band's depth to far: the [`Band3d`] of rows `y0..y1`.
+fn band3d<'a, 'v, C, F, M, const W: usize, const H: usize>(
+    view: &'a mut BandView<'v, C, W>,
+    depth: &'a mut DepthBand<F, W, H>,
     state: DepthState,
     y0: i32,
     y1: i32,
-) where
+) -> Band3d<'a, 'v, C, F, M, W>
+where
     C: Interpolate,
     F: DepthFormat,
     M: Interpolation,
@@ -254,17 +294,5 @@ fn draw_band<C, F, M, const S: u32, const W: usize, const H: usize>(
     for r in rows.iter_mut() {
         r.fill(F::FAR);
     }
-    // `tri.rows()` overlaps `y0..y1` exactly when the centre of row `y1 − 1`
-    // is not above the top vertex and that of row `y0` not below the bottom
-    // one; compared in doubled subpixels (|2y| ≤ 2^29, the centres below
-    // 2^22: all in i32), this skips the per-triangle row computation.
-    let centre = |row: i32| (2 * row + 1) << S;
-    let (top_limit, bottom_limit) = (centre(y1 - 1), centre(y0));
-    for tri in triangles {
-        let ys = tri.v.map(|v| 2 * v.pos.y());
-        let (ymin, ymax) = (ys[0].min(ys[1]).min(ys[2]), ys[0].max(ys[1]).max(ys[2]));
-        if ymin <= top_limit && ymax >= bottom_limit {
-            draw_triangle::<C, F, M, S, W>(tri, view, rows, state);
-        }
-    }
+    Band3d::new(view, rows, state, (y0, y1))
 }

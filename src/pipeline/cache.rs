@@ -12,10 +12,10 @@
 //! of [`Pipeline::draw_valid_mesh`], bit for bit, in the same order.
 
 use super::{MeshSetup, MeshStats, Pipeline, Shade, channels};
+use crate::Error;
 use crate::clip3d::{Class, ClipVertex, VertexClass};
 use crate::math::{Scalar, Vec3};
 use crate::raster3d::{ScreenTriangle, ScreenVertex};
-use crate::Error;
 
 /// Caller-owned storage for [`Pipeline::draw_valid_mesh_cached`]: the
 /// per-vertex results of one mesh of up to `V` vertices (reused mesh after

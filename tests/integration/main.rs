@@ -36,6 +36,7 @@ mod interpenetrate;
 mod limits;
 mod line_aa;
 mod lines;
+mod meshlets;
 mod mock_display;
 mod per_band;
 mod perspective;

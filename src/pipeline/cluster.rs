@@ -1,0 +1,213 @@
+//! The vertex stage per band over meshlets: for each band, each cluster of a
+//! [`MeshletMesh`] is tested against the band's slab, the view volume and
+//! (when back faces are culled) its normal cone, all from its bounding
+//! sphere and before any vertex work; a surviving cluster's vertices go
+//! through the cached path ([`super::cache`]) into a cache of
+//! [`MAX_MESHLET_VERTICES`] entries and its triangles are drawn straight
+//! into the band. No frame bins: RAM is the band, its depth rows and one
+//! cluster's vertices, whatever the mesh's size.
+//!
+//! # Same image as the binned path
+//! The triangles drawn are exactly those [`Pipeline::draw_valid_mesh`]
+//! emits for the mesh with its triangles in cluster order, less the
+//! clusters the tests reject. The slab and view-volume tests only reject
+//! clusters with no triangle in the band or in view (conservative, with a
+//! slack for rounding). The cone test rejects clusters whose every triangle
+//! faces away from the eye in exact arithmetic (module docs of
+//! [`crate::mesh::MeshletMesh`]); back-face culling after snapping would
+//! drop them too, except a snap-inverted sliver, which on a closed mesh lies
+//! behind the front surface. `tests/integration/meshlets.rs` compares the
+//! images.
+
+use super::cache::{VertexCache, VertexSource};
+use super::{Band, MeshStats, Pipeline};
+use crate::depth::DepthFormat;
+use crate::edge::Cull;
+use crate::math::{Mat4, Scalar, Vec3, Vec4};
+use crate::mesh::{MAX_MESHLET_VERTICES, Mesh, Meshlet, MeshletMesh};
+use crate::raster3d::Interpolation;
+use crate::render::Band3d;
+use crate::{Error, Interpolate};
+
+/// The vertex cache [`Pipeline::draw_meshlets`] needs: one cluster's
+/// vertices (about 2.8 KB for `f32`).
+pub type ClusterCache<T, const S: u32> = VertexCache<T, S, MAX_MESHLET_VERTICES>;
+
+/// A cluster's vertices: local slot → the mesh's arrays.
+struct ClusterSource<'a> {
+    mesh: &'a Mesh<'a>,
+    vertices: &'a [u16],
+}
+
+impl VertexSource for ClusterSource<'_> {
+    #[inline]
+    fn position(&self, i: usize) -> Option<[f32; 3]> {
+        self.mesh.positions.get(usize::from(*self.vertices.get(i)?)).copied()
+    }
+    #[inline]
+    fn normal(&self, i: usize) -> Option<[f32; 3]> {
+        self.mesh.normals.get(usize::from(*self.vertices.get(i)?)).copied()
+    }
+    fn has_normals(&self) -> bool {
+        !self.mesh.normals.is_empty()
+    }
+}
+
+/// The per-band, per-mesh cluster tests in model space.
+struct ClusterCull<T> {
+    /// Planes `p` with `p · (x, 1) ≥ 0` inside: the view volume and the
+    /// band's slab, with `|p.xyz|`.
+    planes: [(Vec4<T>, T); 8],
+    count: usize,
+    /// The eye as a homogeneous model-space point `(e, ew)`, `ew ≥ 0`
+    /// (`ew = 0`: orthographic, `e` points towards the viewer); `None`: no
+    /// cone test.
+    eye: Option<(Vec3<T>, T)>,
+}
+
+impl<T: Scalar> ClusterCull<T> {
+    fn new(mvp: &Mat4<T>, far: bool, band: &Band<T>, cone: bool) -> Self {
+        let row = |i: usize| Vec4::new(mvp.cols[0][i], mvp.cols[1][i], mvp.cols[2][i], mvp.cols[3][i]);
+        let (x, y, z, w) = (row(0), row(1), row(2), row(3));
+        let mut planes = [(Vec4::new(T::ZERO, T::ZERO, T::ZERO, T::ZERO), T::ZERO); 8];
+        let mut count = 0;
+        let mut add = |p: Vec4<T>| {
+            planes[count] = (p, p.xyz().length());
+            count += 1;
+        };
+        for p in [w + x, w - x, w + y, w - y, z] {
+            add(p);
+        }
+        if far {
+            add(w - z);
+        }
+        if let Some(k) = band.above {
+            add(w * k - y);
+        }
+        if let Some(k) = band.below {
+            add(y - w * k);
+        }
+        ClusterCull { planes, count, eye: if cone { eye_point(x, y, z, w) } else { None } }
+    }
+
+    /// False if the cluster certainly has no triangle in the band facing the
+    /// eye.
+    #[inline]
+    fn keeps(&self, m: &Meshlet) -> bool {
+        let ((c, r), (axis, cutoff)) = (m.sphere, m.cone);
+        let centre = Vec4::new(T::from_f32(c[0]), T::from_f32(c[1]), T::from_f32(c[2]), T::ONE);
+        let (radius, slack) = (T::from_f32(r), T::from_f32(1.0 / 256.0));
+        for (p, len) in &self.planes[..self.count] {
+            let reach = radius * *len;
+            if p.dot(centre) < -(reach + reach * slack + slack) {
+                return false;
+            }
+        }
+        match self.eye {
+            Some((e, ew)) if cutoff < 1.0 => !faces_away(centre.xyz(), radius, axis, cutoff, e, ew),
+            _ => true,
+        }
+    }
+}
+
+/// The cone test of [`MeshletMesh`]: `axis · v > cutoff · |v| + r · ew ·
+/// (1 + cutoff)` with `v = c · ew − e`, evaluated on `v` scaled by its
+/// largest component `m` (so the squares in `|v|` stay small in 16.16
+/// fixed point), and with a slack of `2^-6` in the normalised terms (the
+/// rounding of either numeric path is far below it).
+fn faces_away<T: Scalar>(c: Vec3<T>, r: T, axis: [f32; 3], cutoff: f32, e: Vec3<T>, ew: T) -> bool {
+    let v = c * ew - e;
+    let max = |a: T, b: T| if a > b { a } else { b };
+    let m = max(max(v.x.abs(), v.y.abs()), v.z.abs());
+    if m <= T::ZERO {
+        return false;
+    }
+    let u = v * (T::ONE / m);
+    let (a, s) = (Vec3::from_f32(axis), T::from_f32(cutoff));
+    let slack = T::from_f32(1.0 / 64.0);
+    let lhs = a.dot(u) - s * u.length() - slack;
+    lhs > T::ZERO && lhs * m > r * ew * (T::ONE + s) * (T::ONE + slack)
+}
+
+/// The centre of projection in model space: the homogeneous point `E` with
+/// clip `x = y = w = 0`, the 4D cross product of those rows, signed so that
+/// moving towards it decreases depth (`z · E < 0`) and scaled so that its
+/// largest component is 1. `None` if the rows are degenerate.
+fn eye_point<T: Scalar>(x: Vec4<T>, y: Vec4<T>, z: Vec4<T>, w: Vec4<T>) -> Option<(Vec3<T>, T)> {
+    // In f32: a few products once per mesh and band, free of 16.16 range limits.
+    let f = |v: Vec4<T>| [v.x.to_f32(), v.y.to_f32(), v.z.to_f32(), v.w.to_f32()];
+    let (a, b, c, zr) = (f(x), f(y), f(w), f(z));
+    let det3 = |i: usize, j: usize, k: usize| {
+        a[i] * (b[j] * c[k] - b[k] * c[j]) - a[j] * (b[i] * c[k] - b[k] * c[i])
+            + a[k] * (b[i] * c[j] - b[j] * c[i])
+    };
+    let mut e = [det3(1, 2, 3), -det3(0, 2, 3), det3(0, 1, 3), -det3(0, 1, 2)];
+    let depth = zr[0] * e[0] + zr[1] * e[1] + zr[2] * e[2] + zr[3] * e[3];
+    if !depth.is_finite() || depth == 0.0 {
+        return None;
+    }
+    if depth > 0.0 {
+        e = e.map(|v| -v);
+    }
+    if e[3] < 0.0 {
+        return None; // an eye behind the scene's w: not a camera
+    }
+    let m = e.iter().fold(0.0f32, |m, v| m.max(v.abs()));
+    if !(m > 0.0 && m.is_finite()) {
+        return None;
+    }
+    let e = e.map(|v| v / m);
+    Some((Vec3::new(T::from_f32(e[0]), T::from_f32(e[1]), T::from_f32(e[2])), T::from_f32(e[3])))
+}
+
+impl<T: Scalar, const S: u32> Pipeline<T, S> {
+    /// Draws `mesh` placed by `model`, in material colour `color`, into the
+    /// band being rendered by
+    /// [`Renderer::render_3d_direct`](crate::Renderer::render_3d_direct),
+    /// cluster by cluster (module docs): clusters outside the band, outside
+    /// the view volume or (with [`Cull::Clockwise`], the default) facing away
+    /// are skipped before any vertex work. [`Pipeline::rows`] is ignored: the
+    /// band's rows apply.
+    ///
+    /// Errors: [`Error::InvalidMeshlet`] for cluster ranges outside the
+    /// mesh's arrays; [`Error::InvalidParameter`] if `model` is singular.
+    pub fn draw_meshlets<C, F, M, const W: usize>(
+        &self,
+        mesh: &MeshletMesh<'_>,
+        model: &Mat4<T>,
+        color: C,
+        cache: &mut ClusterCache<T, S>,
+        band: &mut Band3d<'_, '_, C, F, M, W>,
+    ) -> Result<MeshStats, Error>
+    where
+        C: Interpolate,
+        F: DepthFormat,
+        M: Interpolation,
+    {
+        let pipe = Pipeline { rows: Some(band.rows()), ..*self };
+        let mut stats = MeshStats::default();
+        let Some(setup) = pipe.mesh_setup(&mesh.mesh, model, color, &mut stats)? else {
+            return Ok(stats);
+        };
+        let cull =
+            ClusterCull::new(&setup.ctx.mvp, pipe.clip.far(), &setup.band, pipe.cull == Cull::Clockwise);
+        for m in mesh.meshlets {
+            if !cull.keeps(m) {
+                continue;
+            }
+            let (vo, vc) = (m.vertex_offset as usize, usize::from(m.vertex_count));
+            let (to, tc) = (m.triangle_offset as usize, usize::from(m.triangle_count));
+            let vertices = mesh.vertices.get(vo..vo + vc).ok_or(Error::InvalidMeshlet)?;
+            let triangles = mesh.triangles.get(to..to + tc).ok_or(Error::InvalidMeshlet)?;
+            let slots = cache.v.get_mut(..vc).ok_or(Error::InvalidMeshlet)?;
+            let src = ClusterSource { mesh: &mesh.mesh, vertices };
+            let tris = triangles.iter().map(|t| t.map(usize::from));
+            pipe.draw_cached(&setup, &src, slots, tris, &mut stats, |tri, _| {
+                band.draw(&tri);
+                Ok(())
+            })
+            .map_err(|e| if e == Error::InvalidMesh { Error::InvalidMeshlet } else { e })?;
+        }
+        Ok(stats)
+    }
+}

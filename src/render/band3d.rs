@@ -1,0 +1,70 @@
+//! A band as a 3D draw target: its colour rows, its depth rows and the depth
+//! state, for vertex stages that draw triangles straight into the band
+//! ([`Pipeline::draw_meshlets`](crate::pipeline::Pipeline::draw_meshlets))
+//! instead of collecting a frame's bins first.
+
+use core::marker::PhantomData;
+
+use crate::Interpolate;
+use crate::band::BandView;
+use crate::depth::{DepthFormat, DepthState};
+use crate::raster3d::{Interpolation, ScreenTriangle, draw_triangle};
+
+/// The band being drawn, handed to the closure of
+/// [`Renderer::render_3d_direct`](crate::Renderer::render_3d_direct): frame
+/// rows [`Band3d::rows`], colour interpolation `M`, depth format `F`. Its
+/// depth rows were cleared to far by the renderer.
+pub struct Band3d<'a, 'v, C, F: DepthFormat, M, const W: usize> {
+    view: &'a mut BandView<'v, C, W>,
+    depth: &'a mut [[F::Storage; W]],
+    state: DepthState,
+    y0: i32,
+    y1: i32,
+    _m: PhantomData<M>,
+}
+
+impl<'a, 'v, C, F, M, const W: usize> Band3d<'a, 'v, C, F, M, W>
+where
+    C: Interpolate,
+    F: DepthFormat,
+    M: Interpolation,
+{
+    /// The band of frame rows `y0..y1` with its colour view and depth rows.
+    pub(crate) fn new(
+        view: &'a mut BandView<'v, C, W>,
+        depth: &'a mut [[F::Storage; W]],
+        state: DepthState,
+        (y0, y1): (i32, i32),
+    ) -> Self {
+        Band3d { view, depth, state, y0, y1, _m: PhantomData }
+    }
+
+    /// The frame rows of the band, first and last (inclusive).
+    pub fn rows(&self) -> (i32, i32) {
+        (self.y0, self.y1 - 1)
+    }
+
+    /// Draws one triangle (clipped to the band; rows outside it cost only the
+    /// coverage set-up).
+    #[inline]
+    pub fn draw<const S: u32>(&mut self, tri: &ScreenTriangle<S>) {
+        draw_triangle::<C, F, M, S, W>(tri, self.view, self.depth, self.state);
+    }
+
+    /// Draws the triangles that touch the band, in order.
+    pub fn draw_all<const S: u32>(&mut self, triangles: &[ScreenTriangle<S>]) {
+        // `tri.rows()` overlaps `y0..y1` exactly when the centre of row `y1 − 1`
+        // is not above the top vertex and that of row `y0` not below the bottom
+        // one; compared in doubled subpixels (|2y| ≤ 2^29, the centres below
+        // 2^22: all in i32), this skips the per-triangle row computation.
+        let centre = |row: i32| (2 * row + 1) << S;
+        let (top_limit, bottom_limit) = (centre(self.y1 - 1), centre(self.y0));
+        for tri in triangles {
+            let ys = tri.v.map(|v| 2 * v.pos.y());
+            let (ymin, ymax) = (ys[0].min(ys[1]).min(ys[2]), ys[0].max(ys[1]).max(ys[2]));
+            if ymin <= top_limit && ymax >= bottom_limit {
+                self.draw(tri);
+            }
+        }
+    }
+}
