@@ -56,8 +56,13 @@ pub struct MeshStats {
     pub back_faces: u32,
     /// Triangles dropped because they had zero area after snapping.
     pub degenerate: u32,
-    /// Screen triangles written to the bins.
+    /// Screen triangles written to the bins (or drawn into the band).
     pub emitted: u32,
+    /// Meshlets skipped whole, before any vertex work, as outside the band
+    /// or the view volume ([`Pipeline::draw_meshlets`]).
+    pub clusters_outside: u32,
+    /// Meshlets skipped whole as facing away (their normal cone).
+    pub clusters_back_facing: u32,
 }
 
 /// The vertex-stage settings of a frame: camera, viewport, clipping, culling

@@ -90,23 +90,26 @@ impl<T: Scalar> ClusterCull<T> {
         ClusterCull { planes, count, eye: if cone { eye_point(x, y, z, w) } else { None } }
     }
 
-    /// False if the cluster certainly has no triangle in the band facing the
-    /// eye.
+    /// Counts and drops a cluster that certainly has no triangle in the band
+    /// facing the eye.
     #[inline]
-    fn keeps(&self, m: &Meshlet) -> bool {
+    fn keeps(&self, m: &Meshlet, stats: &mut MeshStats) -> bool {
         let ((c, r), (axis, cutoff)) = (m.sphere, m.cone);
         let centre = Vec4::new(T::from_f32(c[0]), T::from_f32(c[1]), T::from_f32(c[2]), T::ONE);
         let (radius, slack) = (T::from_f32(r), T::from_f32(1.0 / 256.0));
         for (p, len) in &self.planes[..self.count] {
             let reach = radius * *len;
             if p.dot(centre) < -(reach + reach * slack + slack) {
+                stats.clusters_outside += 1;
                 return false;
             }
         }
-        match self.eye {
-            Some((e, ew)) if cutoff < 1.0 => !faces_away(centre.xyz(), radius, axis, cutoff, e, ew),
-            _ => true,
-        }
+        let away = match self.eye {
+            Some((e, ew)) if cutoff < 1.0 => faces_away(centre.xyz(), radius, axis, cutoff, e, ew),
+            _ => false,
+        };
+        stats.clusters_back_facing += away as u32;
+        !away
     }
 }
 
@@ -192,7 +195,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         let cull =
             ClusterCull::new(&setup.ctx.mvp, pipe.clip.far(), &setup.band, pipe.cull == Cull::Clockwise);
         for m in mesh.meshlets {
-            if !cull.keeps(m) {
+            if !cull.keeps(m, &mut stats) {
                 continue;
             }
             let (vo, vc) = (m.vertex_offset as usize, usize::from(m.vertex_count));
@@ -209,5 +212,88 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
             .map_err(|e| if e == Error::InvalidMesh { Error::InvalidMeshlet } else { e })?;
         }
         Ok(stats)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::math::Fx;
+
+    /// xorshift in [-1, 1).
+    fn rng(seed: &mut u64) -> f64 {
+        *seed ^= *seed << 13;
+        *seed ^= *seed >> 7;
+        *seed ^= *seed << 17;
+        (*seed >> 11) as f64 / (1u64 << 52) as f64 - 1.0
+    }
+
+    fn unit(v: [f64; 3]) -> [f64; 3] {
+        let l = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
+        v.map(|x| x / l)
+    }
+
+    fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
+        a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+    }
+
+    /// Whenever the cone test rejects, every normal in the cone faces away
+    /// from every point of the sphere, in f64: the test is sound for both
+    /// numeric paths, for eyes at finite points and at infinity.
+    #[test]
+    fn cone_test_rejects_only_clusters_facing_away() {
+        let mut seed = 0x9e37_79b9_7f4a_7c15u64;
+        let (mut rejected, mut cases) = ([0u32; 2], 0u32);
+        for i in 0..40_000 {
+            let axis = unit([0; 3].map(|_| rng(&mut seed)));
+            let alpha = (rng(&mut seed) + 1.0) * 0.75; // up to 86°
+            let cutoff = alpha.sin();
+            let c = [0; 3].map(|_| rng(&mut seed) * 4.0);
+            let r = (rng(&mut seed) + 1.0) * 0.3;
+            let ew = if i % 4 == 0 { 0.0 } else { 1.0 };
+            let e = if ew == 0.0 {
+                unit([0; 3].map(|_| rng(&mut seed)))
+            } else {
+                [0; 3].map(|_| rng(&mut seed) * 8.0)
+            };
+            let f = |v: [f64; 3]| v.map(|x| x as f32);
+            let verdict = [
+                faces_away(
+                    Vec3::<f32>::from_f32(f(c)),
+                    r as f32,
+                    f(axis),
+                    cutoff as f32,
+                    Vec3::from_f32(f(e)),
+                    ew as f32,
+                ),
+                faces_away(
+                    Vec3::<Fx>::from_f32(f(c)),
+                    Fx::from_f32(r as f32),
+                    f(axis),
+                    cutoff as f32,
+                    Vec3::from_f32(f(e)),
+                    Fx::from_f32(ew as f32),
+                ),
+            ];
+            cases += 1;
+            for (k, &away) in verdict.iter().enumerate() {
+                if !away {
+                    continue;
+                }
+                rejected[k] += 1;
+                // Extreme normals of the cone and points of the sphere.
+                for _ in 0..64 {
+                    let q = unit([0; 3].map(|_| rng(&mut seed)));
+                    let perp = unit([0, 1, 2].map(|j| q[j] - dot(q, axis) * axis[j]));
+                    let n = [0, 1, 2].map(|j| axis[j] * alpha.cos() + perp[j] * alpha.sin());
+                    let d = unit([0; 3].map(|_| rng(&mut seed)));
+                    let p = [0, 1, 2].map(|j| c[j] + d[j] * r);
+                    let v = if ew == 0.0 { e.map(|x| -x) } else { [0, 1, 2].map(|j| p[j] - e[j]) };
+                    assert!(dot(n, v) > 0.0, "case {i} path {k}: a normal faces the eye");
+                }
+            }
+        }
+        // The test is not vacuous: both paths reject a good share.
+        assert!(rejected.iter().all(|&r| r > cases / 10), "{rejected:?} of {cases}");
     }
 }
