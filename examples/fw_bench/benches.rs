@@ -23,9 +23,13 @@ use core::hint::black_box;
 
 use embedded_graphics_core::pixelcolor::Rgb565;
 use microraster::depth::{Depth16, DepthBand};
+
+#[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+#[path = "../common/knot_mesh.rs"]
+pub mod knot_mesh;
 use microraster::edge::Cull;
 use microraster::math::{Fx, Scalar};
-use microraster::pipeline::VertexCache;
+use microraster::pipeline::{ClusterCache, VertexCache};
 use microraster::raster3d::{Affine, Interpolation, PerspectiveCorrect, ScreenTriangle};
 use microraster::scenes3d::{CACHE_VERTICES, Scene3d};
 use microraster::{Band, Error, Primitive, RenderError, Renderer, scenes};
@@ -83,6 +87,11 @@ pub enum Work {
     Frame3d(Vertex, Interp),
     /// [`Renderer::render_3d_per_band`]: the vertex stage once per band.
     PerBand3d(Vertex, Interp),
+    /// The 20k-triangle knot ([`knot_mesh::KNOT`]) through the meshlet stage:
+    /// [`Renderer::render_3d_direct`] with [`Pipeline::draw_meshlets`] per
+    /// band, no bins. Its triangle count is the mesh's (instructions per
+    /// mesh triangle).
+    Meshlets(Vertex, Interp),
 }
 
 /// One timed configuration.
@@ -111,6 +120,9 @@ pub const M4F: &[Bench] = &[
     bench("scene3d", Work::Vertex3d(F32)),
     bench("scene3d", Work::Vertex3d(Fix)),
     bench("scene3d", Work::Vertex3dCached),
+    bench("knot20k", Work::Meshlets(F32, Aff)),
+    bench("knot20k", Work::Meshlets(F32, Persp)),
+    bench("knot20k", Work::Meshlets(Fix, Aff)),
 ];
 
 /// Cortex-M0 (160 × 128, 4-row bands, one band's bins): one line per configuration.
@@ -146,6 +158,10 @@ impl Work {
             Work::PerBand3d(F32, Aff) => "f32 per band, affine",
             Work::PerBand3d(Fix, Persp) => "Fx per band, persp.-correct",
             Work::PerBand3d(Fix, Aff) => "Fx per band, affine",
+            Work::Meshlets(F32, Aff) => "meshlets per band, f32, affine",
+            Work::Meshlets(F32, Persp) => "meshlets per band, f32, persp.-correct",
+            Work::Meshlets(Fix, Aff) => "meshlets per band, Fx, affine",
+            Work::Meshlets(Fix, Persp) => "meshlets per band, Fx, persp.-correct",
         }
     }
 
@@ -157,6 +173,8 @@ impl Work {
             Work::Vertex3d(_) | Work::VertexPerBand3d(_) => "BINS",
             Work::Vertex3dCached => "BINS,CACHE",
             Work::Frame3d(..) | Work::PerBand3d(..) => "BAND,DEPTH,BINS",
+            Work::Meshlets(F32, _) => "BAND,DEPTH,CLUSTER",
+            Work::Meshlets(Fix, _) => "BAND,DEPTH,CLUSTER_FX",
         }
     }
 
@@ -180,6 +198,8 @@ pub struct Buffers<'a, const W: usize, const H: usize, const N: usize, const P: 
     pub bins: &'a mut heapless::Vec<ScreenTriangle<S>, N>,
     /// Vertex cache ([`Work::Vertex3dCached`]; none on the Cortex-M0).
     pub cache: Option<&'a mut Cache>,
+    /// One meshlet's vertices ([`Work::Meshlets`]), per numeric path.
+    pub cluster: (&'a mut ClusterCache<f32, S>, &'a mut ClusterCache<Fx, S>),
 }
 
 /// The vertex cache of [`Work::Vertex3dCached`].
@@ -258,7 +278,47 @@ pub fn frame<const W: usize, const H: usize, const N: usize, const P: usize>(
         Work::PerBand3d(F32, Aff) => per_band3d::<f32, Affine, W, H, N, P>(r, b, sink),
         Work::PerBand3d(Fix, Persp) => per_band3d::<Fx, PerspectiveCorrect, W, H, N, P>(r, b, sink),
         Work::PerBand3d(Fix, Aff) => per_band3d::<Fx, Affine, W, H, N, P>(r, b, sink),
+        // The knot's 460 KB of flash data do not fit the micro:bit: Cortex-M4F only.
+        #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+        Work::Meshlets(t, i) => match (t, i) {
+            (F32, Aff) => meshlets::<f32, _, W, H>(r, b.band, b.depth, b.cluster.0, Affine, sink),
+            (F32, Persp) => {
+                meshlets::<f32, _, W, H>(r, b.band, b.depth, b.cluster.0, PerspectiveCorrect, sink)
+            }
+            (Fix, Aff) => meshlets::<Fx, _, W, H>(r, b.band, b.depth, b.cluster.1, Affine, sink),
+            (Fix, Persp) => {
+                meshlets::<Fx, _, W, H>(r, b.band, b.depth, b.cluster.1, PerspectiveCorrect, sink)
+            }
+        },
+        #[cfg(not(any(not(target_os = "none"), target_abi = "eabihf")))]
+        Work::Meshlets(..) => Err(Error::InvalidParameter),
     }
+}
+
+/// The knot through the meshlet stage, drawn straight into each band.
+#[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+fn meshlets<T: Scalar, M: Interpolation, const W: usize, const H: usize>(
+    r: Renderer<Rgb565>,
+    band: &mut Band<Rgb565, W, H>,
+    depth: &mut DepthBand<Depth16, W, H>,
+    cache: &mut ClusterCache<T, S>,
+    interp: M,
+    sink: &mut Sink,
+) -> Result<(), Error> {
+    let pipeline = Scene3d::pipeline::<T, S>(W as u32, r.height())?;
+    let model = knot_model::<T>();
+    r.render_3d_direct(band, depth, DEPTH_STATE, interp, sink, |band| {
+        pipeline.draw_meshlets(&knot_mesh::KNOT, &model, KNOT_COLOR, cache, band).map(|_| ())
+    })
+    .map_err(input)
+}
+
+/// The knot's colour and placement in the standard scene's camera.
+pub const KNOT_COLOR: Rgb565 = Rgb565::new(27, 46, 12);
+
+/// The knot's model matrix: turned by the scene's angle about y.
+pub fn knot_model<T: Scalar>() -> microraster::math::Mat4<T> {
+    microraster::math::transform::rotation_y(T::from_f32(ANGLE))
 }
 
 fn vertex3d<T: Scalar, const W: usize, const N: usize>(
@@ -346,6 +406,10 @@ pub fn primitives<const W: usize, const H: usize, const N: usize, const P: usize
     };
     match work {
         Work::Clear => Ok((0, 0)),
+        #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+        Work::Meshlets(..) => Ok((knot_mesh::KNOT.triangles.len() as u32, 0)),
+        #[cfg(not(any(not(target_os = "none"), target_abi = "eabihf")))]
+        Work::Meshlets(..) => Err(Error::InvalidParameter),
         Work::Frame2d(scene) | Work::Streamed2d(scene) => count_2d(scene),
         Work::Vertex3dCached => count_3d(F32),
         Work::Vertex3d(t) | Work::VertexPerBand3d(t) | Work::Frame3d(t, _) | Work::PerBand3d(t, _) => {

@@ -54,6 +54,8 @@ mod firmware {
     use cortex_m_semihosting::{debug, hprintln};
     use embedded_graphics_core::pixelcolor::Rgb565;
     use microraster::depth::{Depth16, DepthBand};
+    use microraster::math::Fx;
+    use microraster::pipeline::ClusterCache;
     use microraster::raster3d::ScreenTriangle;
     use microraster::{Band, Error};
     use panic_semihosting as _;
@@ -70,7 +72,10 @@ mod firmware {
             DepthBand::zeroed();
         static mut BINS: heapless::Vec<ScreenTriangle<S>, { benches::BINS }> = heapless::Vec::new();
         static mut CACHE: benches::Cache = benches::Cache::new();
-        let b = Buffers { prims: PRIMS, band: BAND, depth: DEPTH, bins: BINS, cache: Some(CACHE) };
+        static mut CLUSTER: ClusterCache<f32, S> = ClusterCache::new();
+        static mut CLUSTER_FX: ClusterCache<Fx, S> = ClusterCache::new();
+        let cluster = (CLUSTER, CLUSTER_FX);
+        let b = Buffers { prims: PRIMS, band: BAND, depth: DEPTH, bins: BINS, cache: Some(CACHE), cluster };
         finish(run(benches::M4F, benches::M4F_SIZE.1, b))
     }
 
@@ -84,7 +89,10 @@ mod firmware {
         static mut DEPTH: DepthBand<Depth16, { benches::M0_SIZE.0 }, { benches::M0_BAND }> =
             DepthBand::zeroed();
         static mut BINS: heapless::Vec<ScreenTriangle<S>, { benches::BAND_BINS }> = heapless::Vec::new();
-        let b = Buffers { prims: PRIMS, band: BAND, depth: DEPTH, bins: BINS, cache: None };
+        static mut CLUSTER: ClusterCache<f32, S> = ClusterCache::new();
+        static mut CLUSTER_FX: ClusterCache<Fx, S> = ClusterCache::new();
+        let cluster = (CLUSTER, CLUSTER_FX);
+        let b = Buffers { prims: PRIMS, band: BAND, depth: DEPTH, bins: BINS, cache: None, cluster };
         finish(run(benches::M0, benches::M0_SIZE.1, b))
     }
 

@@ -7,6 +7,7 @@ use std::fmt::{self, Write as _};
 
 use embedded_graphics_core::pixelcolor::Rgb565;
 use microraster::depth::DepthBand;
+use microraster::pipeline::ClusterCache;
 use microraster::{Band, Error};
 
 use crate::benches::{self, BACKGROUND, Bench, Buffers, Mode, Sink};
@@ -61,12 +62,14 @@ fn records<const W: usize, const H: usize, const N: usize, const P: usize>(
     let mut depth = Box::new(DepthBand::new());
     let mut bins = Box::new(heapless::Vec::new());
     let mut cache = Box::new(benches::Cache::new());
+    let (mut cluster, mut cluster_fx) = (Box::new(ClusterCache::new()), Box::new(ClusterCache::new()));
     let mut b: Buffers<'_, W, H, N, P> = Buffers {
         prims: &mut prims,
         band: &mut band,
         depth: &mut depth,
         bins: &mut bins,
         cache: Some(&mut cache),
+        cluster: (&mut cluster, &mut cluster_fx),
     };
     let mut out = Vec::new();
     for (index, &bench) in list.iter().enumerate() {
