@@ -21,19 +21,29 @@ pub trait Blitter<C: PixelColor> {
     /// Writes one pixel inside [`Blitter::clip`].
     fn set_pixel(&mut self, x: i32, y: i32, color: C);
 
-    /// Writes `color` over a span inside the clip.
+    /// Writes `color` over a span inside the clip. The default writes pixel
+    /// by pixel and stops at `i32::MAX` (columns beyond it do not exist;
+    /// the rasterizers never emit such a span).
     fn fill_span(&mut self, span: Span, color: C) {
-        for i in 0..span.len as i32 {
-            self.set_pixel(span.x + i, span.y, color);
+        for x in span_columns(span) {
+            self.set_pixel(x, span.y, color);
         }
     }
 
-    /// Writes one colour per pixel of the span, left to right.
+    /// Writes one colour per pixel of the span, left to right (the default
+    /// stops at `i32::MAX`, as [`Blitter::fill_span`]).
     fn shade_span<I: Iterator<Item = C>>(&mut self, span: Span, colors: I) {
-        for (i, c) in (0..span.len as i32).zip(colors) {
-            self.set_pixel(span.x + i, span.y, c);
+        for (x, c) in span_columns(span).zip(colors) {
+            self.set_pixel(x, span.y, c);
         }
     }
+}
+
+/// The columns of `span`, cut at `i32::MAX` (no overflow for any span).
+fn span_columns(span: Span) -> impl Iterator<Item = i32> {
+    let end = (i64::from(span.x) + i64::from(span.len)).min(i64::from(i32::MAX) + 1);
+    // Every x < end ≤ 2^31 fits an i32.
+    (i64::from(span.x)..end).map(|x| x as i32)
 }
 
 /// Blits directly into a [`DrawTarget`]: spans become `fill_solid` and

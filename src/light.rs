@@ -5,6 +5,7 @@
 //! Intensities are unitless factors on the material colour; the result is
 //! clamped to `[0, 1]` per channel before it becomes a colour channel.
 
+use crate::Error;
 use crate::math::{Scalar, Vec3};
 
 /// A `Copy` lighting setup.
@@ -36,6 +37,42 @@ impl<T: Scalar> Lighting<T> {
     /// Ambient plus a directional light towards `direction` (normalised here).
     pub fn new(ambient: T, direction: Vec3<T>, diffuse: T) -> Self {
         Lighting { ambient, direction: direction.normalize(), diffuse, specular: None }
+    }
+
+    /// [`Lighting::new`], checked: the errors of [`Lighting::validate`].
+    ///
+    /// ```
+    /// use microraster::{light::Lighting, math::Vec3, Error};
+    /// assert!(Lighting::<f32>::try_new(0.2, Vec3::new(0.0, 0.0, 1.0), 0.8).is_ok());
+    /// let zero = Vec3::new(0.0, 0.0, 0.0);
+    /// assert_eq!(Lighting::<f32>::try_new(0.2, zero, 0.8), Err(Error::InvalidParameter));
+    /// ```
+    pub fn try_new(ambient: T, direction: Vec3<T>, diffuse: T) -> Result<Self, Error> {
+        let l = Self::new(ambient, direction, diffuse);
+        l.validate()?;
+        Ok(l)
+    }
+
+    /// Checks the lighting: [`Error::NonFiniteCoordinate`] if a factor or the
+    /// direction has a NaN or infinite component; [`Error::InvalidParameter`]
+    /// if the direction is not a unit vector (a zero direction stays zero
+    /// through [`Lighting::new`]; a unit vector set in the public field is
+    /// accepted within 2^-8). The vertex stage runs this before each mesh.
+    /// Finite factors of any size are valid: a result that overflows `f32`
+    /// is clamped to full intensity (see
+    /// [`Pipeline::lighting`](crate::pipeline::Pipeline::lighting)).
+    pub fn validate(&self) -> Result<(), Error> {
+        let d = self.direction;
+        let spec = self.specular.map_or(T::ZERO, |s| s.0);
+        if ![self.ambient, self.diffuse, spec, d.x, d.y, d.z].iter().all(|v| v.is_finite()) {
+            return Err(Error::NonFiniteCoordinate);
+        }
+        // |d|² within 2^-8 of 1 (Fx normalising rounds at 2^-16).
+        let len2 = d.x.to_f32() * d.x.to_f32() + d.y.to_f32() * d.y.to_f32() + d.z.to_f32() * d.z.to_f32();
+        if !((1.0 - 1.0 / 256.0)..=(1.0 + 1.0 / 256.0)).contains(&len2) {
+            return Err(Error::InvalidParameter);
+        }
+        Ok(())
     }
 
     /// The same lighting with a Blinn–Phong specular term.

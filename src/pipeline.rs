@@ -81,8 +81,10 @@ pub struct Pipeline<T: Scalar, const S: u32> {
     /// outside) still run counter-clockwise as seen on screen, so back faces
     /// are the clockwise ones: the default is [`Cull::Clockwise`].
     pub cull: Cull,
-    /// Lighting; `None` shows material colours unlit. A non-finite lighting
-    /// result (NaN parameters) gives channel 0, a documented clamp.
+    /// Lighting; `None` shows material colours unlit. The vertex stage
+    /// checks it ([`Lighting::validate`]) before each mesh. A lighting result
+    /// that overflows `f32` is clamped: +infinity to full intensity (as `Fx`
+    /// saturates), NaN to channel 0.
     pub lighting: Option<Lighting<T>>,
     /// Flat or Gouraud.
     pub shade: Shade,
@@ -130,6 +132,10 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     /// A perspective camera: `view` (for example from
     /// [`transform::look_at`]), vertical field of view `fov_y` in radians and
     /// near/far distances, with the aspect ratio of the viewport.
+    ///
+    /// Errors: [`Error::InvalidFrameSize`] for a zero or too large viewport
+    /// (checked first), then those of [`transform::perspective`] and
+    /// [`Pipeline::new`].
     pub fn perspective(
         view: Mat4<T>,
         fov_y: T,
@@ -138,7 +144,12 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         width: u32,
         height: u32,
     ) -> Result<Self, Error> {
-        let aspect = T::from_f32(width as f32 / height.max(1) as f32);
+        // The viewport first, as in `Pipeline::new` (a zero size would
+        // otherwise give a zero or infinite aspect and `InvalidParameter`).
+        if width == 0 || height == 0 || width > MAX_FRAME_DIM || height > MAX_FRAME_DIM {
+            return Err(Error::InvalidFrameSize);
+        }
+        let aspect = T::from_f32(width as f32 / height as f32);
         let projection = transform::perspective(fov_y, aspect, near, far)?;
         Self::new(view, projection, near, width, height)
     }
@@ -176,9 +187,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     ///
     /// Errors: the errors of [`Mesh::validate`] (out-of-range index, normals
     /// that do not match, a bounding sphere that does not contain the mesh,
-    /// non-finite data);
-    /// [`Error::BufferTooSmall`] if `bins` fills up (the triangles that fit
-    /// are kept); [`Error::InvalidParameter`] if `model` is singular.
+    /// non-finite data), then those of [`Pipeline::draw_valid_mesh`].
     pub fn draw_mesh<C: Interpolate, const N: usize>(
         &self,
         mesh: &Mesh<'_>,
@@ -196,7 +205,13 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     /// runs per band).
     ///
     /// Errors: [`Error::BufferTooSmall`] if `bins` fills up (the triangles
-    /// that fit are kept); [`Error::InvalidParameter`] if `model` is singular.
+    /// that fit are kept); [`Error::InvalidParameter`] if `model` is singular;
+    /// the errors of [`Lighting::validate`] for the pipeline's lighting; and
+    /// for [`Fx`](crate::math::Fx) only, [`Error::CoordinateOutOfRange`] if
+    /// `view · model` or `projection · view · model` saturates 16.16, or if
+    /// the mesh is not culled whole and one of its model, eye or clip
+    /// coordinates (or a partial sum of one) reaches ±32767: 16.16 cannot
+    /// hold it, and a saturated coordinate would change what is drawn.
     pub fn draw_valid_mesh<C: Interpolate, const N: usize>(
         &self,
         mesh: &ValidMesh<'_>,
@@ -309,12 +324,28 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         color: C,
         stats: &mut MeshStats,
     ) -> Result<Option<MeshSetup<T>>, Error> {
+        if let Some(l) = &self.lighting {
+            l.validate()?;
+        }
+        let fx = !crate::math::vec::is_float::<T>();
+        // Fx: a matrix product that saturates changes what is drawn.
+        if fx
+            && !(fx_product_fits(&self.view, model)
+                && fx_product_fits(&self.projection, &(self.view * *model)))
+        {
+            return Err(Error::CoordinateOutOfRange);
+        }
         let model_view = self.view * *model;
         let mvp = self.projection * model_view;
         let band = self.band_bounds();
         if !self.sphere_visible(&mvp, mesh.bounding_sphere) {
             stats.mesh_culled = true;
             return Ok(None);
+        }
+        // Fx: a visible mesh whose coordinates 16.16 cannot hold is an error
+        // (checked before the band test, so every band agrees).
+        if fx && !fx_coordinates_fit(mesh, &model_view, &mvp) {
+            return Err(Error::CoordinateOutOfRange);
         }
         if !band.sphere_touches(&mvp, mesh.bounding_sphere) {
             return Ok(None);
@@ -333,16 +364,19 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     }
 
     /// False if the sphere lies entirely outside one plane of the view volume.
+    ///
+    /// Evaluated in `f32` on both paths (bit-identical for `f32`): in `Fx`
+    /// the plane values of a large sphere saturate and would cull a visible
+    /// mesh (one `f32` test per mesh, a few soft-float operations on parts
+    /// without an FPU).
     fn sphere_visible(&self, mvp: &Mat4<T>, (c, r): ([f32; 3], f32)) -> bool {
-        let row = |i: usize| Vec4::new(mvp.cols[0][i], mvp.cols[1][i], mvp.cols[2][i], mvp.cols[3][i]);
-        let (x, y, z, w) = (row(0), row(1), row(2), row(3));
+        let (x, y, z, w) = (row_f32(mvp, 0), row_f32(mvp, 1), row_f32(mvp, 2), row_f32(mvp, 3));
         let mut planes = [w + x, w - x, w + y, w - y, z, w - z];
         if !self.clip.far() {
             planes[5] = planes[4]; // no far plane: test near twice
         }
-        let centre = Vec4::new(T::from_f32(c[0]), T::from_f32(c[1]), T::from_f32(c[2]), T::ONE);
-        let radius = T::from_f32(r);
-        planes.iter().all(|p| p.dot(centre) >= -(radius * p.xyz().length()))
+        let centre = Vec4::new(c[0], c[1], c[2], 1.0);
+        planes.iter().all(|p| p.dot(centre) >= -(r * p.xyz().length()))
     }
 
     /// The clip-space test of [`Pipeline::rows`] ([`Band`]).
@@ -443,6 +477,58 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     }
 }
 
+/// Row `i` of `m` in `f32` (exact for `f32`; `Fx` rounds to 24 bits).
+fn row_f32<T: Scalar>(m: &Mat4<T>, i: usize) -> Vec4<f32> {
+    let c = &m.cols;
+    Vec4::new(c[0][i].to_f32(), c[1][i].to_f32(), c[2][i].to_f32(), c[3][i].to_f32())
+}
+
+/// The largest magnitude an `Fx` sum of products may reach without
+/// saturating (2^15 less one unit: a margin for the `f32` bound's rounding).
+const FX_LIMIT: f32 = 32767.0;
+
+/// `Fx`: true if no partial sum of `a · b` can saturate (`Σ|a_ik·b_kj|`
+/// within [`FX_LIMIT`] for every entry, in `f32`), and no entry of `a` or
+/// `b` is itself saturated.
+fn fx_product_fits<T: Scalar>(a: &Mat4<T>, b: &Mat4<T>) -> bool {
+    let (a, b) = (a.to_f32(), b.to_f32());
+    let ok = |v: f32| v.abs() < FX_LIMIT;
+    if !a.iter().chain(&b).flatten().all(|&v| ok(v)) {
+        return false;
+    }
+    // Entry (r, c) = Σ_k a[k][r]·b[c][k] (column-major).
+    (0..4).all(|r| (0..4).all(|c| ok((0..4).map(|k| (a[k][r] * b[c][k]).abs()).sum::<f32>())))
+}
+
+/// `Fx`: true if every model, eye and clip coordinate of the mesh fits
+/// 16.16 without saturating any partial sum of
+/// `row · (p, 1)`. A bound over the bounding sphere decides at once for
+/// nearly every mesh; only a mesh whose sphere reaches beyond the range has
+/// the vertices of its triangles checked one by one.
+fn fx_coordinates_fit<T: Scalar>(mesh: &Mesh<'_>, mv: &Mat4<T>, mvp: &Mat4<T>) -> bool {
+    let (mv, mvp) = (mv.to_f32(), mvp.to_f32());
+    // `Σ_i |m_ri|·e_i + |m_r3|` for each row of both matrices, where `e`
+    // bounds `|p_i|`; every partial sum of the row's `Fx` evaluation is at
+    // most this.
+    let fits = |e: [f32; 3]| {
+        e.iter().all(|&v| v < FX_LIMIT)
+            && [&mv, &mvp].iter().all(|m| {
+                (0..4).all(|r| (0..3).map(|i| m[i][r].abs() * e[i]).sum::<f32>() + m[3][r].abs() < FX_LIMIT)
+            })
+    };
+    let (c, radius) = mesh.bounding_sphere;
+    // The sphere contains the mesh up to `SPHERE_TOLERANCE` (validated).
+    let r = radius * (1.0 + 2.0 * crate::mesh::SPHERE_TOLERANCE);
+    // Otherwise the vertices that triangles use (an unused vertex is never
+    // transformed for drawing).
+    fits(c.map(|c| c.abs() + r))
+        || mesh
+            .indices
+            .iter()
+            .flatten()
+            .all(|&i| mesh.positions.get(usize::from(i)).is_none_or(|p| fits(p.map(f32::abs))))
+}
+
 /// Colour channels from intensities.
 fn channels<T: Scalar>(c: [T; 3], max: [u8; 3]) -> [u8; 3] {
     [0, 1, 2].map(|k| c[k].to_channel(max[k]))
@@ -508,16 +594,23 @@ impl<T: Scalar> Band<T> {
     /// False if the mesh's bounding sphere lies entirely above or below the
     /// band (planes `above·w − y ≥ 0` and `y − below·w ≥ 0`), with a slack of
     /// `2^-8·(1 + r·|plane|)` in clip units for the rounding of the test.
+    ///
+    /// Evaluated in `f32` on both paths (bit-identical for `f32`): in `Fx`
+    /// `plane · centre` and `r·|plane|` both saturate for a large sphere
+    /// (a far vertex, a narrow field of view), and the saturated test
+    /// rejected visible meshes (issue 13). `f32` rounding (relative 2^-22
+    /// here) is far inside the slack.
     fn sphere_touches(&self, mvp: &Mat4<T>, (c, r): ([f32; 3], f32)) -> bool {
-        let row = |i: usize| Vec4::new(mvp.cols[0][i], mvp.cols[1][i], mvp.cols[2][i], mvp.cols[3][i]);
-        let (y, w) = (row(1), row(3));
-        let centre = Vec4::new(T::from_f32(c[0]), T::from_f32(c[1]), T::from_f32(c[2]), T::ONE);
-        let (radius, slack) = (T::from_f32(r), T::from_f32(1.0 / 256.0));
-        let outside = |p: Vec4<T>| {
-            let reach = radius * p.xyz().length();
+        let (y, w) = (row_f32(mvp, 1), row_f32(mvp, 3));
+        let centre = Vec4::new(c[0], c[1], c[2], 1.0);
+        let slack = 1.0f32 / 256.0;
+        let outside = |p: Vec4<f32>| {
+            let reach = r * p.xyz().length();
             p.dot(centre) < -(reach + reach * slack + slack)
         };
-        !(self.above.is_some_and(|k| outside(w * k - y)) || self.below.is_some_and(|k| outside(y - w * k)))
+        let k = |k: T| k.to_f32();
+        !(self.above.is_some_and(|a| outside(w * k(a) - y))
+            || self.below.is_some_and(|b| outside(y - w * k(b))))
     }
 }
 
@@ -581,11 +674,21 @@ impl<T: Scalar> VertexCtx<T> {
         [self.row(0, p), y, self.row(2, p), w]
     }
 
-    /// The lit colour of a vertex. Documented clamp: a non-finite lighting
-    /// result (NaN parameters) is channel 0, which the clipper would
-    /// otherwise take for a reason to discard the triangle.
+    /// The lit colour of a vertex. Documented clamp: a lighting result that
+    /// overflows `f32` to +infinity (huge finite factors) is full intensity,
+    /// as `Fx` saturates; NaN (`0·∞`) and −infinity are channel 0. The
+    /// clipper would otherwise take a non-finite value for a reason to
+    /// discard the triangle.
     fn color(&self, p: Vec3<T>, normal: Option<[f32; 3]>) -> [T; 3] {
-        self.lit(p, normal).map(|c| if c.is_finite() { c } else { T::ZERO })
+        self.lit(p, normal).map(|c| {
+            if c.is_finite() {
+                c
+            } else if c > T::ZERO {
+                T::ONE
+            } else {
+                T::ZERO
+            }
+        })
     }
 
     fn lit(&self, p: Vec3<T>, normal: Option<[f32; 3]>) -> [T; 3] {

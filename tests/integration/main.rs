@@ -32,6 +32,7 @@ mod depth3d;
 mod fragment;
 mod framebuffer;
 mod gouraud;
+mod integrity;
 mod interpenetrate;
 mod limits;
 mod line_aa;
