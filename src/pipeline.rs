@@ -521,12 +521,15 @@ fn fx_coordinates_fit<T: Scalar>(mesh: &Mesh<'_>, mv: &Mat4<T>, mvp: &Mat4<T>) -
     let r = radius * (1.0 + 2.0 * crate::mesh::SPHERE_TOLERANCE);
     // Otherwise the vertices that triangles use (an unused vertex is never
     // transformed for drawing).
+    // A meshlet mesh keeps its triangles in its clusters (no `indices`):
+    // then every vertex counts.
+    let fits_at = |p: &[f32; 3]| fits(p.map(f32::abs));
     fits(c.map(|c| c.abs() + r))
-        || mesh
-            .indices
-            .iter()
-            .flatten()
-            .all(|&i| mesh.positions.get(usize::from(i)).is_none_or(|p| fits(p.map(f32::abs))))
+        || if mesh.indices.is_empty() {
+            mesh.positions.iter().all(fits_at)
+        } else {
+            mesh.indices.iter().flatten().all(|&i| mesh.positions.get(usize::from(i)).is_none_or(fits_at))
+        }
 }
 
 /// Colour channels from intensities.
