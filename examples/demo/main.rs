@@ -17,6 +17,7 @@ use std::error::Error;
 use std::path::{Path, PathBuf};
 
 mod fragment;
+mod knot;
 mod scene3d;
 
 /// Subpixel bits: 1/16 px.
@@ -82,6 +83,7 @@ fn main() -> Result<()> {
     );
 
     scene3d::run(&out)?;
+    knot::run(&out)?;
     fragment::run(&out)
 }
 
