@@ -1,5 +1,5 @@
 //! Meshlets: a mesh split into small, spatially coherent clusters, built
-//! ahead of time (by the `obj2rs` converter, or by [`build_meshlets`] for
+//! ahead of time (by the `obj2rs` converter, or by [`build_meshlets`](super::build_meshlets) for
 //! procedural meshes) and kept in flash next to the mesh.
 //!
 //! A cluster has at most [`MAX_MESHLET_VERTICES`] vertices, addressed by

@@ -11,6 +11,7 @@
 //! the remaining surface, so no thin slivers are left behind).
 
 use super::meshlet::{MAX_MESHLET_TRIANGLES, MAX_MESHLET_VERTICES, Meshlet, MeshletMesh};
+use super::meshlet_adjacency::{State, fill_adjacency, split_scratch};
 use super::winding::face_cross;
 use super::{Mesh, bounding_sphere, cross, dist2, dot, sqrt, sub};
 use crate::error::Error;
@@ -61,65 +62,6 @@ pub const fn meshlet_vertex_bound(triangles: usize) -> usize {
     triangles.saturating_mul(3)
 }
 
-/// Length of the `u32` scratch buffer [`build_meshlets`] needs for a mesh of
-/// `vertices` positions and `triangles` triangles (saturating):
-/// `3 · vertices + 1 + 3 · triangles + ⌈triangles / 32⌉`.
-///
-/// ```
-/// use microraster::mesh::meshlet_scratch_len;
-/// assert_eq!(meshlet_scratch_len(4, 4), 13 + 12 + 1);
-/// ```
-pub const fn meshlet_scratch_len(vertices: usize, triangles: usize) -> usize {
-    vertices
-        .saturating_mul(3)
-        .saturating_add(1)
-        .saturating_add(triangles.saturating_mul(3))
-        .saturating_add(triangles.div_ceil(32))
-}
-
-/// The builder's working state, all in the caller's scratch buffer.
-struct State<'s> {
-    /// Start of each vertex's triangle list in `adj` (`nv + 1` entries).
-    start: &'s mut [u32],
-    /// Triangles of each vertex not yet in a cluster: the first `live[v]`
-    /// entries of its list (emitted ones are swapped out).
-    live: &'s mut [u32],
-    /// Local index + 1 of each vertex in the open cluster, 0 if not in it.
-    local: &'s mut [u32],
-    adj: &'s mut [u32],
-    /// One bit per triangle: already in a cluster.
-    done: &'s mut [u32],
-}
-
-impl State<'_> {
-    fn live_tris(&self, v: usize) -> &[u32] {
-        let s = self.start[v] as usize;
-        &self.adj[s..s + self.live[v] as usize]
-    }
-
-    fn is_done(&self, t: usize) -> bool {
-        self.done[t / 32] & (1 << (t % 32)) != 0
-    }
-
-    /// Marks `t` emitted and removes it from its vertices' live lists.
-    fn emit(&mut self, t: usize, tri: [u16; 3]) {
-        self.done[t / 32] |= 1 << (t % 32);
-        for v in tri.map(usize::from) {
-            let s = self.start[v] as usize;
-            let mut k = 0;
-            // A triangle with a repeated corner is listed twice: remove all.
-            while k < self.live[v] as usize {
-                if self.adj[s + k] as usize == t {
-                    self.live[v] -= 1;
-                    self.adj[s + k] = self.adj[s + self.live[v] as usize];
-                } else {
-                    k += 1;
-                }
-            }
-        }
-    }
-}
-
 /// Splits `mesh` into clusters of at most [`MAX_MESHLET_VERTICES`] vertices
 /// and [`MAX_MESHLET_TRIANGLES`] triangles, written to the front of
 /// `meshlets`, `vertices` and `triangles`, each with its bounding sphere and
@@ -132,7 +74,7 @@ impl State<'_> {
 /// Buffer sizes: `meshlets` [`meshlet_bound`]`(t)`, `vertices`
 /// [`meshlet_vertex_bound`]`(t)` (both upper bounds; fewer suffice for most
 /// meshes), `triangles` exactly `t`, `scratch`
-/// [`meshlet_scratch_len`]`(v, t)`, for `v` positions and `t` triangles.
+/// [`meshlet_scratch_len`](super::meshlet_scratch_len)`(v, t)`, for `v` positions and `t` triangles.
 /// Time O(t · 64 · triangles per vertex), plus an O(t) search for each
 /// cluster that runs out of neighbouring triangles.
 ///
@@ -208,41 +150,6 @@ pub fn build_meshlets<'a>(
         vertices: &vertices[..verts],
         triangles: &triangles[..tris],
     })
-}
-
-/// Splits `scratch` into the [`State`] arrays and fills the adjacency.
-fn split_scratch(scratch: &mut [u32], nv: usize, nt: usize) -> Result<State<'_>, Error> {
-    let scratch = scratch.get_mut(..meshlet_scratch_len(nv, nt)).ok_or(Error::BufferTooSmall)?;
-    let (start, rest) = scratch.split_at_mut(nv + 1);
-    let (live, rest) = rest.split_at_mut(nv);
-    let (local, rest) = rest.split_at_mut(nv);
-    let (adj, done) = rest.split_at_mut(3 * nt);
-    Ok(State { start, live, local, adj, done })
-}
-
-/// The mesh's adjacency (vertex → triangles) in `st`, everything live.
-fn fill_adjacency(st: &mut State<'_>, mesh: &Mesh<'_>) {
-    st.live.fill(0);
-    st.local.fill(0);
-    st.done.fill(0);
-    for tri in mesh.indices {
-        for v in tri {
-            st.live[usize::from(*v)] += 1;
-        }
-    }
-    let mut sum = 0;
-    for v in 0..st.live.len() {
-        st.start[v] = sum;
-        sum += st.live[v];
-        st.live[v] = 0;
-    }
-    st.start[st.live.len()] = sum;
-    for (t, tri) in mesh.indices.iter().enumerate() {
-        for v in tri.map(usize::from) {
-            st.adj[(st.start[v] + st.live[v]) as usize] = t as u32;
-            st.live[v] += 1;
-        }
-    }
 }
 
 /// The output buffers and how much of them is written.

@@ -28,6 +28,7 @@
 mod cube;
 mod icosphere;
 mod meshlet;
+mod meshlet_adjacency;
 mod meshlet_build;
 mod torus;
 mod winding;
@@ -44,7 +45,8 @@ pub use icosphere::{
 pub use meshlet::{
     CONE_TOLERANCE, MAX_MESHLET_TRIANGLES, MAX_MESHLET_VERTICES, Meshlet, MeshletMesh, ValidMeshletMesh,
 };
-pub use meshlet_build::{build_meshlets, meshlet_bound, meshlet_scratch_len, meshlet_vertex_bound};
+pub use meshlet_adjacency::meshlet_scratch_len;
+pub use meshlet_build::{build_meshlets, meshlet_bound, meshlet_vertex_bound};
 pub use torus::{torus, torus_triangle_count, torus_vertex_count};
 pub use winding::DEGENERATE_SIN2;
 
