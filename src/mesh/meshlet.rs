@@ -161,7 +161,8 @@ impl MeshletMesh<'_> {
         }
     }
 
-    const fn validate_cluster(&self, c: &Meshlet) -> Result<(), Error> {
+    /// Checks one cluster (all but the mesh-wide checks of `validate`).
+    pub(crate) const fn validate_cluster(&self, c: &Meshlet) -> Result<(), Error> {
         let Some((vo, vc, to, tc)) = self.cluster_ranges(c) else {
             return Err(Error::InvalidMeshlet);
         };

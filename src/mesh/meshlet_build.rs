@@ -83,7 +83,8 @@ pub const fn meshlet_vertex_bound(triangles: usize) -> usize {
 /// The errors of [`Mesh::validate`]; [`Error::BufferTooSmall`] if a buffer is
 /// short (`meshlets` and `vertices` may then be partly written);
 /// [`Error::InvalidParameter`] if the mesh has more than `u32::MAX / 3`
-/// triangles.
+/// triangles; [`Error::CoordinateOutOfRange`] if a cluster's radius squared
+/// overflows `f32` (coordinates near 10¹⁹, which [`Mesh::validate`] accepts).
 ///
 /// ```
 /// use microraster::mesh::*;
@@ -177,7 +178,7 @@ impl Output<'_> {
         let tris = &self.triangles[c.to..c.to + c.tris];
         // Counts are at most 64 and 128 (`Open::fits`); offsets below 2³² (the
         // triangle count is checked): the casts are exact.
-        *slot = Meshlet {
+        let mut m = Meshlet {
             vertex_offset: c.vo as u32,
             triangle_offset: c.to as u32,
             vertex_count: c.verts as u8,
@@ -185,6 +186,17 @@ impl Output<'_> {
             sphere: bounding_sphere(&points[..c.verts]),
             cone: normal_cone(tris.iter().map(corners)),
         };
+        // The cluster passes by construction, except where rounding is
+        // coarse (subnormal triangles: then a cone that never rejects) or
+        // the radius squared overflows (coordinates near 10¹⁹).
+        let view = MeshletMesh { mesh: *mesh, meshlets: &[], vertices: self.vertices, triangles: self.triangles };
+        if view.validate_cluster(&m) == Err(Error::InvalidMeshlet) {
+            m.cone = ([0.0, 0.0, 1.0], 1.0);
+            if view.validate_cluster(&m) == Err(Error::InvalidMeshlet) {
+                return Err(Error::CoordinateOutOfRange);
+            }
+        }
+        *slot = m;
         self.clusters += 1;
         Ok(())
     }
