@@ -5,6 +5,8 @@
 
 #[path = "../examples/obj2rs/emit.rs"]
 mod emit;
+#[path = "../examples/obj2rs/meshlets.rs"]
+mod meshlets;
 #[path = "../examples/obj2rs/parse.rs"]
 mod parse;
 
@@ -12,12 +14,15 @@ mod parse;
 /// Regenerate after changing the emitter:
 /// `cargo run --example obj2rs -- assets/tetra.obj TETRA > assets/tetra.rs`
 /// `cargo run --example obj2rs -- assets/cube_quads.obj CUBE_QUADS > assets/cube_quads.rs`
+/// `cargo run --example obj2rs -- assets/cube_quads.obj CUBE_M --meshlets > assets/cube_quads_meshlets.rs`
 mod generated {
     include!("../assets/tetra.rs");
     include!("../assets/cube_quads.rs");
+    include!("../assets/cube_quads_meshlets.rs");
 }
 
-use microraster::mesh::Mesh;
+use microraster::Error;
+use microraster::mesh::{Mesh, MeshletMesh};
 use parse::{ObjMesh, ParseError, parse_obj};
 use proptest::prelude::*;
 
@@ -105,6 +110,59 @@ fn generated_sources_are_current_and_compile() {
     assert_eq!(generated::TETRA_POSITIONS.len(), 4);
     assert_eq!(generated::CUBE_QUADS_INDICES.len(), 12);
     assert_eq!(generated::CUBE_QUADS_NORMALS[0], [0.0, 0.0, 1.0]);
+}
+
+#[test]
+fn meshlet_output_is_current_compiles_and_validates() {
+    let m = parse_obj(CUBE_OBJ).unwrap();
+    let mut src = emit::rust_source(&m, "CUBE_M", "cube_quads.obj", emit::DEFAULT_MESH_TYPE).unwrap();
+    let c = meshlets::build(&m).unwrap();
+    src += &meshlets::rust_source(&c, "CUBE_M", emit::DEFAULT_MESH_TYPE).unwrap();
+    assert_eq!(src, include_str!("../assets/cube_quads_meshlets.rs"), "regenerate (see `mod generated`)");
+    let mm = generated::CUBE_M_MESHLET_MESH;
+    assert_eq!(mm.mesh, m.mesh());
+    assert_eq!(mm.validate(), Ok(()));
+    // Every triangle once, winding kept (up to rotation).
+    let canon = |t: [u16; 3]| (0..3).map(|r| [t[r], t[(r + 1) % 3], t[(r + 2) % 3]]).min().unwrap();
+    let mut got: Vec<[u16; 3]> = Vec::new();
+    for cl in mm.meshlets {
+        let local = &mm.vertices[cl.vertex_offset as usize..][..usize::from(cl.vertex_count)];
+        for t in &mm.triangles[cl.triangle_offset as usize..][..usize::from(cl.triangle_count)] {
+            got.push(canon(t.map(|k| local[usize::from(k)])));
+        }
+    }
+    let mut expect: Vec<[u16; 3]> = m.indices.iter().map(|&t| canon(t)).collect();
+    got.sort_unstable();
+    expect.sort_unstable();
+    assert_eq!(got, expect);
+    // The types follow `--mesh-type`'s module.
+    let crate_src = meshlets::rust_source(&c, "X", "crate::mesh::Mesh").unwrap();
+    assert!(crate_src.contains("pub static X_MESHLET_MESH: crate::mesh::MeshletMesh<'static> ="));
+    assert!(meshlets::rust_source(&c, "2x", "Mesh").is_err());
+}
+
+#[test]
+fn winding_against_file_normals_is_a_warning() {
+    for obj in [TETRA_OBJ, CUBE_OBJ] {
+        let m = parse_obj(obj).unwrap();
+        assert_eq!((meshlets::winding_mismatches(&m), meshlets::winding_warning(&m, true)), (0, None));
+    }
+    // One triangle counter-clockwise from +z, normals towards −z; and a second,
+    // degenerate-free, that agrees.
+    let text = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 5 5 0\nv 6 5 0\nv 5 6 0\nvn 0 0 -1\nvn 0 0 1\n\
+                f 1//1 2//1 3//1\nf 4//2 5//2 6//2\n";
+    let m = parse_obj(text).unwrap();
+    assert_eq!(meshlets::winding_mismatches(&m), 1);
+    let warning = meshlets::winding_warning(&m, false).unwrap();
+    assert!(warning.starts_with("warning: 1 of 2 triangles are wound clockwise"), "{warning}");
+    assert!(meshlets::winding_warning(&m, true).unwrap().ends_with("fails validation (WindingMismatch)"));
+    assert_eq!(m.mesh().check_winding(), Err(Error::WindingMismatch));
+    // Normals computed from the winding always agree, even inside out.
+    let reversed = TETRA_OBJ.replace("f 1 2 3", "f 1 3 2").replace("f 1 3 4", "f 1 4 3");
+    let reversed = reversed.replace("f 1 4 2", "f 1 2 4").replace("f 2 4 3", "f 2 3 4");
+    let m = parse_obj(&reversed).unwrap();
+    assert!(signed_volume(&m.mesh()) < 0.0);
+    assert_eq!(meshlets::winding_mismatches(&m), 0);
 }
 
 #[test]
@@ -314,6 +372,13 @@ proptest! {
             check(&m, m.positions.len(), m.indices.len());
             prop_assert!(m.indices.iter().flatten().all(|&i| usize::from(i) < m.positions.len()));
             let src = emit::rust_source(&m, "M", "x.obj", emit::DEFAULT_MESH_TYPE).unwrap();
+            // Clusters always build and validate, unless the file's normals
+            // disagree with the winding (which the converter warns about).
+            let c = meshlets::build(&m).unwrap();
+            let mm = MeshletMesh { mesh: m.mesh(), meshlets: &c.meshlets, vertices: &c.vertices, triangles: &c.triangles };
+            let expect = if meshlets::winding_mismatches(&m) == 0 { Ok(()) } else { Err(Error::WindingMismatch) };
+            prop_assert_eq!(mm.validate(), expect);
+            prop_assert_eq!(meshlets::winding_warning(&m, false).is_some(), expect.is_err());
             prop_assert_eq!(src.lines().filter(|l| l.starts_with("    [")).count(), 2 * m.positions.len() + m.indices.len());
         }
     }

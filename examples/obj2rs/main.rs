@@ -2,24 +2,31 @@
 //! [`microraster::mesh::Mesh`] (arrays in flash, no RAM).
 //!
 //! ```text
-//! cargo run --example obj2rs -- INPUT.obj NAME [--mesh-type PATH] > out.rs
+//! cargo run --example obj2rs -- INPUT.obj NAME [--mesh-type PATH] [--meshlets] > out.rs
 //! ```
 //!
 //! Writes `NAME_POSITIONS`, `NAME_NORMALS`, `NAME_INDICES` and
 //! `NAME: Mesh<'static>` (NAME upper-cased) to standard output; `INPUT` `-`
 //! reads standard input. `--mesh-type` sets the path of `Mesh` in the output
 //! (default `microraster::mesh::Mesh`; `crate::mesh::Mesh` inside microraster).
+//! `--meshlets` also writes the mesh's clusters (`NAME_MESHLETS`,
+//! `NAME_MESHLET_VERTICES`, `NAME_MESHLET_TRIANGLES`) and
+//! `NAME_MESHLET_MESH: MeshletMesh<'static>` (see `meshlets.rs`).
 //! See `parse.rs` for the OBJ subset understood. Errors name the line and
-//! exit with status 1 (2 for bad arguments).
+//! exit with status 1 (2 for bad arguments). Triangles wound against the
+//! file's normals are reported with a warning on stderr (not an error: the
+//! output is still written).
 
 mod emit;
+mod meshlets;
 mod parse;
 
 use std::io::{Read, Write};
 use std::path::Path;
 use std::process::ExitCode;
 
-const USAGE: &str = "usage: obj2rs INPUT.obj NAME [--mesh-type PATH] > out.rs   (INPUT `-` = stdin)";
+const USAGE: &str =
+    "usage: obj2rs INPUT.obj NAME [--mesh-type PATH] [--meshlets] > out.rs   (INPUT `-` = stdin)";
 
 fn main() -> ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();
@@ -49,6 +56,7 @@ fn report(msg: &str) {
 fn run(args: &[String]) -> Result<(), Failure> {
     let mut positional = Vec::new();
     let mut mesh_type = emit::DEFAULT_MESH_TYPE.to_string();
+    let mut with_meshlets = false;
     let mut it = args.iter();
     while let Some(a) = it.next() {
         match a.as_str() {
@@ -60,6 +68,7 @@ fn run(args: &[String]) -> Result<(), Failure> {
                 mesh_type =
                     it.next().ok_or_else(|| Failure::Usage("--mesh-type needs a value".into()))?.clone();
             }
+            "--meshlets" => with_meshlets = true,
             s if s.starts_with("--") => return Err(Failure::Usage(format!("unknown option `{s}`"))),
             _ => positional.push(a.as_str()),
         }
@@ -85,7 +94,14 @@ fn run(args: &[String]) -> Result<(), Failure> {
     let text = String::from_utf8_lossy(&bytes);
 
     let mesh = parse::parse_obj(&text).map_err(|e| Failure::Input(format!("{shown}: {e}")))?;
-    let out = emit::rust_source(&mesh, name, &source, &mesh_type).map_err(Failure::Input)?;
+    let mut out = emit::rust_source(&mesh, name, &source, &mesh_type).map_err(Failure::Input)?;
+    if with_meshlets {
+        let clusters = meshlets::build(&mesh).map_err(Failure::Input)?;
+        out += &meshlets::rust_source(&clusters, name, &mesh_type).map_err(Failure::Input)?;
+    }
+    if let Some(warning) = meshlets::winding_warning(&mesh, with_meshlets) {
+        report(&format!("{shown}: {warning}"));
+    }
     let mut stdout = std::io::stdout().lock();
     stdout
         .write_all(out.as_bytes())

@@ -1,5 +1,5 @@
 //! Meshlets: a mesh split into small, spatially coherent clusters, built
-//! ahead of time (by the `obj2rs` converter, or by [`build_meshlets`] for
+//! ahead of time (by the `obj2rs` converter, or by [`build_meshlets`](super::build_meshlets) for
 //! procedural meshes) and kept in flash next to the mesh.
 //!
 //! A cluster has at most [`MAX_MESHLET_VERTICES`] vertices, addressed by
@@ -26,6 +26,10 @@
 //! `(c, r)` the cluster's bounding sphere: every point `p` of the sphere then
 //! has `axis · (p − e) > cutoff · |p − e|`, so the angle between `axis` and
 //! `p − e` is below `90° − α` and `n · (p − e) > 0` for every face normal `n`.
+
+use super::winding::{face_cross, winding_agrees};
+use super::{SPHERE_TOLERANCE, cross, dist2, dot, is_finite3};
+use crate::error::Error;
 
 /// Most vertices a cluster may have (local indices are `u8`).
 pub const MAX_MESHLET_VERTICES: usize = 64;
@@ -64,4 +68,198 @@ pub struct MeshletMesh<'a> {
     pub vertices: &'a [u16],
     /// Cluster-local triangles, cluster after cluster.
     pub triangles: &'a [[u8; 3]],
+}
+
+/// Tolerance of the normal-cone check in [`MeshletMesh::validate`], in units
+/// of the cutoff `sin α`: a face normal `n` passes when `axis · n ≥ 0` and
+/// `|axis × n| ≤ (cutoff + CONE_TOLERANCE) · |n|` (an angle at most about
+/// 10⁻⁴ rad beyond `α` for moderate cones). Also the allowed deviation of
+/// `|axis|²` from 1. [`build_meshlets`](super::build_meshlets) writes cones
+/// that pass without it.
+pub const CONE_TOLERANCE: f32 = 1.0e-4;
+
+impl MeshletMesh<'_> {
+    /// Checks the invariants the meshlet renderer relies on, in
+    /// O(vertices + triangles) without allocating:
+    ///
+    /// * the inner [`Mesh`](super::Mesh) passes
+    ///   [`validate`](super::Mesh::validate) (its `indices` may be empty);
+    /// * every cluster has 1 to [`MAX_MESHLET_VERTICES`] vertices and 1 to
+    ///   [`MAX_MESHLET_TRIANGLES`] triangles, all within
+    ///   [`vertices`](Self::vertices) and [`triangles`](Self::triangles);
+    /// * every local index is below its cluster's `vertex_count`, every
+    ///   entry of `vertices` a cluster uses is below the number of positions;
+    /// * every sphere and cone is finite, the radius non-negative, and every
+    ///   position of a cluster within `radius · (1 + SPHERE_TOLERANCE)` of its
+    ///   centre (the [`Mesh::validate`](super::Mesh::validate) rule);
+    /// * every cone has a unit axis and a cutoff `≥ 0`, and, unless the
+    ///   cutoff is `≥ 1`, contains the face normal of every non-degenerate
+    ///   triangle of its cluster (within [`CONE_TOLERANCE`]; degenerate as in
+    ///   [`DEGENERATE_SIN2`](super::DEGENERATE_SIN2));
+    /// * if the mesh has normals, the windings of its own triangles and of
+    ///   every cluster triangle agree with them
+    ///   ([`Mesh::check_winding`](super::Mesh::check_winding)).
+    ///
+    /// Entries of `vertices` and `triangles` no cluster uses are not checked,
+    /// nor whether clusters overlap.
+    ///
+    /// # Errors
+    ///
+    /// The errors of [`Mesh::validate`](super::Mesh::validate); then
+    /// [`Error::NonFiniteCoordinate`] for a NaN or infinite sphere or cone,
+    /// [`Error::InvalidMeshlet`] for any other cluster inconsistency, and
+    /// [`Error::WindingMismatch`] for a triangle wound against its normals.
+    ///
+    /// ```
+    /// use microraster::{Error, mesh::{Mesh, Meshlet, MeshletMesh}};
+    /// let positions = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]];
+    /// let mesh = Mesh::new(&positions, &[], &[], ([0.5, 0.5, 0.0], 0.71));
+    /// let cluster = Meshlet {
+    ///     vertex_count: 3,
+    ///     triangle_count: 1,
+    ///     sphere: ([0.5, 0.5, 0.0], 0.71),
+    ///     cone: ([0.0, 0.0, 1.0], 0.0), // one flat triangle facing +z
+    ///     ..Meshlet::default()
+    /// };
+    /// let m = MeshletMesh { mesh, meshlets: &[cluster], vertices: &[0, 1, 2], triangles: &[[0, 1, 2]] };
+    /// assert_eq!(m.validate(), Ok(()));
+    /// let facing_down = MeshletMesh { triangles: &[[0, 2, 1]], ..m };
+    /// assert_eq!(facing_down.validate(), Err(Error::InvalidMeshlet));
+    /// ```
+    pub const fn validate(&self) -> Result<(), Error> {
+        // Plain loops: a `const fn`, so a `static` is checked at compile time.
+        if let Err(e) = self.mesh.validate() {
+            return Err(e);
+        }
+        if let Err(e) = self.mesh.check_winding_unvalidated() {
+            return Err(e);
+        }
+        let mut i = 0;
+        while i < self.meshlets.len() {
+            if let Err(e) = self.validate_cluster(&self.meshlets[i]) {
+                return Err(e);
+            }
+            i += 1;
+        }
+        Ok(())
+    }
+
+    /// Cluster `c`'s vertex and triangle ranges, or `None` if they are out of
+    /// bounds or the counts are out of range.
+    pub(crate) const fn cluster_ranges(&self, c: &Meshlet) -> Option<(usize, usize, usize, usize)> {
+        let (vo, vc) = (c.vertex_offset as usize, c.vertex_count as usize);
+        let (to, tc) = (c.triangle_offset as usize, c.triangle_count as usize);
+        let ok_counts = vc >= 1 && vc <= MAX_MESHLET_VERTICES && tc >= 1 && tc <= MAX_MESHLET_TRIANGLES;
+        // `checked_add`: offsets near `usize::MAX` on 32-bit targets.
+        let (Some(ve), Some(te)) = (vo.checked_add(vc), to.checked_add(tc)) else {
+            return None;
+        };
+        if ok_counts && ve <= self.vertices.len() && te <= self.triangles.len() {
+            Some((vo, vc, to, tc))
+        } else {
+            None
+        }
+    }
+
+    /// Checks one cluster (all but the mesh-wide checks of `validate`).
+    pub(crate) const fn validate_cluster(&self, c: &Meshlet) -> Result<(), Error> {
+        let Some((vo, vc, to, tc)) = self.cluster_ranges(c) else {
+            return Err(Error::InvalidMeshlet);
+        };
+        let ((centre, radius), (axis, cutoff)) = (c.sphere, c.cone);
+        if !is_finite3(centre) || !radius.is_finite() || !is_finite3(axis) || !cutoff.is_finite() {
+            return Err(Error::NonFiniteCoordinate);
+        }
+        let r = radius * (1.0 + SPHERE_TOLERANCE);
+        let axis_len2 = dot(axis, axis);
+        let unit = axis_len2 >= 1.0 - CONE_TOLERANCE && axis_len2 <= 1.0 + CONE_TOLERANCE;
+        if radius < 0.0 || r * r == f32::INFINITY || cutoff < 0.0 || !unit {
+            return Err(Error::InvalidMeshlet);
+        }
+        let positions = self.mesh.positions;
+        let mut k = 0;
+        while k < vc {
+            let v = self.vertices[vo + k] as usize;
+            if v >= positions.len() {
+                return Err(Error::InvalidMeshlet);
+            }
+            if dist2(positions[v], centre) > r * r {
+                return Err(Error::InvalidMeshlet);
+            }
+            k += 1;
+        }
+        let normals = self.mesh.normals;
+        let bound = cutoff + CONE_TOLERANCE;
+        let mut t = 0;
+        while t < tc {
+            let [a, b, cc] = self.triangles[to + t];
+            if a as usize >= vc || b as usize >= vc || cc as usize >= vc {
+                return Err(Error::InvalidMeshlet);
+            }
+            let a = self.vertices[vo + a as usize] as usize;
+            let b = self.vertices[vo + b as usize] as usize;
+            let cc = self.vertices[vo + cc as usize] as usize;
+            let p = [positions[a], positions[b], positions[cc]];
+            if !normals.is_empty() && !winding_agrees(p, [normals[a], normals[b], normals[cc]]) {
+                return Err(Error::WindingMismatch);
+            }
+            if cutoff < 1.0 {
+                if let Some((n, len2)) = face_cross(p) {
+                    let s = cross(axis, n);
+                    // Both sides are finite: `face_cross` bounds `len2`.
+                    if dot(axis, n) < 0.0 || dot(s, s) > bound * bound * len2 {
+                        return Err(Error::InvalidMeshlet);
+                    }
+                }
+            }
+            t += 1;
+        }
+        Ok(())
+    }
+}
+
+/// A [`MeshletMesh`] that passed [`MeshletMesh::validate`], so the renderer
+/// draws it without checking it again. The data are shared references, so
+/// they cannot change afterwards. [`ValidMeshletMesh::new`] is a `const fn`:
+/// a `static` is checked at compile time, where an invalid one is a build
+/// error.
+///
+/// ```
+/// use microraster::mesh::{Mesh, Meshlet, MeshletMesh, ValidMeshletMesh};
+/// static POSITIONS: [[f32; 3]; 3] = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]];
+/// static CLUSTERS: [Meshlet; 1] = [Meshlet {
+///     vertex_offset: 0,
+///     triangle_offset: 0,
+///     vertex_count: 3,
+///     triangle_count: 1,
+///     sphere: ([0.5, 0.5, 0.0], 0.71),
+///     cone: ([0.0, 0.0, 1.0], 0.0),
+/// }];
+/// static TRI: ValidMeshletMesh<'static> = match ValidMeshletMesh::new(MeshletMesh {
+///     mesh: Mesh::new(&POSITIONS, &[], &[], ([0.5, 0.5, 0.0], 0.71)),
+///     meshlets: &CLUSTERS,
+///     vertices: &[0, 1, 2],
+///     triangles: &[[0, 1, 2]],
+/// }) {
+///     Ok(m) => m,
+///     Err(_) => panic!("invalid meshlets"), // at compile time: a build error
+/// };
+/// assert_eq!(TRI.get().meshlets.len(), 1);
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ValidMeshletMesh<'a>(MeshletMesh<'a>);
+
+impl<'a> ValidMeshletMesh<'a> {
+    /// `mesh` if it passes [`MeshletMesh::validate`], else that error.
+    pub const fn new(mesh: MeshletMesh<'a>) -> Result<Self, Error> {
+        match mesh.validate() {
+            Ok(()) => Ok(ValidMeshletMesh(mesh)),
+            Err(e) => Err(e),
+        }
+    }
+
+    /// The meshlet mesh.
+    pub const fn get(&self) -> &MeshletMesh<'a> {
+        &self.0
+    }
 }

@@ -28,8 +28,13 @@
 mod cube;
 mod icosphere;
 mod meshlet;
+mod meshlet_adjacency;
+mod meshlet_build;
 mod torus;
+mod winding;
 
+#[cfg(test)]
+mod meshlet_tests;
 #[cfg(test)]
 mod tests;
 
@@ -37,8 +42,13 @@ pub use cube::{cube, cube_triangle_count, cube_vertex_count};
 pub use icosphere::{
     ICOSPHERE_MAX_SUBDIVISIONS, icosphere, icosphere_triangle_count, icosphere_vertex_count,
 };
-pub use meshlet::{MAX_MESHLET_TRIANGLES, MAX_MESHLET_VERTICES, Meshlet, MeshletMesh};
+pub use meshlet::{
+    CONE_TOLERANCE, MAX_MESHLET_TRIANGLES, MAX_MESHLET_VERTICES, Meshlet, MeshletMesh, ValidMeshletMesh,
+};
+pub use meshlet_adjacency::meshlet_scratch_len;
+pub use meshlet_build::{build_meshlets, meshlet_bound, meshlet_vertex_bound};
 pub use torus::{torus, torus_triangle_count, torus_vertex_count};
+pub use winding::DEGENERATE_SIN2;
 
 use crate::error::Error;
 
@@ -375,7 +385,7 @@ const fn dot(a: [f32; 3], b: [f32; 3]) -> f32 {
     a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
 }
 
-fn cross(a: [f32; 3], b: [f32; 3]) -> [f32; 3] {
+const fn cross(a: [f32; 3], b: [f32; 3]) -> [f32; 3] {
     [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
 }
 

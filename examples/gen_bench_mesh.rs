@@ -1,0 +1,292 @@
+//! Writes `examples/common/knot_mesh.rs`: the meshlet benchmark mesh, a
+//! (2, 3) torus knot (a trefoil) whose tube carries helical ridges, 20,480
+//! triangles over 10,240 shared vertices with unit normals, closed and wound
+//! counter-clockwise from outside, split into clusters by
+//! [`build_meshlets`]. At 320×240 with the standard 3D scene's camera it
+//! spans most of the frame height at about 1–2 covered pixels per
+//! front-facing triangle (printed on stderr). `tests/bench_mesh.rs` checks
+//! the committed file against this generator.
+//!
+//! ```text
+//! cargo run --example gen_bench_mesh > examples/common/knot_mesh.rs
+//! ```
+//!
+//! The output is already as `rustfmt` leaves it (the arrays are
+//! `#[rustfmt::skip]`), so `cargo fmt` keeps it equal to the generator's.
+//!
+//! The geometry uses only the crate's own `sqrt` and `sin_cos` (through
+//! [`Scalar`]), exact `f32` arithmetic and rounding, so it is the same on
+//! every target. Positions and normals are rounded to 4 decimals, which
+//! keeps the file compact (shortest round-trip formatting) and moves nothing
+//! by more than 5·10⁻⁵ (normals stay unit within 10⁻⁴).
+
+use std::fmt::Write;
+
+use microraster::math::Scalar;
+use microraster::mesh::{
+    Mesh, Meshlet, bounding_sphere, build_meshlets, meshlet_bound, meshlet_scratch_len, meshlet_vertex_bound,
+};
+
+/// Samples along the knot.
+pub const ALONG: usize = 320;
+/// Samples around the tube.
+pub const AROUND: usize = 32;
+/// Torus the knot winds on: ring radius and tube radius (before [`SCALE`]).
+pub const KNOT_R: (f32, f32) = (1.6, 0.7);
+/// Radius of the mesh's tube and relative height of its ridges.
+pub const TUBE: (f32, f32) = (0.36, 0.1);
+/// Overall scale: fits the standard camera at 1–2 pixels per triangle.
+pub const SCALE: f32 = 0.75;
+
+/// The knot mesh in owned buffers, triangles in cluster order.
+pub struct Knot {
+    pub positions: Vec<[f32; 3]>,
+    pub normals: Vec<[f32; 3]>,
+    pub indices: Vec<[u16; 3]>,
+    pub sphere: ([f32; 3], f32),
+    pub meshlets: Vec<Meshlet>,
+    pub vertices: Vec<u16>,
+    pub triangles: Vec<[u8; 3]>,
+}
+
+impl Knot {
+    /// The plain mesh (triangles in cluster order).
+    pub fn mesh(&self) -> Mesh<'_> {
+        Mesh::new(&self.positions, &self.normals, &self.indices, self.sphere)
+    }
+}
+
+/// The knot's centre line at parameter `phi` ∈ [0, 2π): on the torus of
+/// [`KNOT_R`], twice around the ring while three times around the tube. Also
+/// the torus' outward normal there, which orients the tube's frame.
+pub fn centre_line(phi: f32) -> ([f32; 3], [f32; 3]) {
+    let (big_r, r) = KNOT_R;
+    let (s2, c2) = Scalar::sin_cos(2.0 * phi);
+    let (s3, c3) = Scalar::sin_cos(3.0 * phi);
+    let rho = big_r + r * c3;
+    ([rho * c2, rho * s2, r * s3], [c3 * c2, c3 * s2, s3])
+}
+
+fn sub(a: [f32; 3], b: [f32; 3]) -> [f32; 3] {
+    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
+}
+
+fn dot(a: [f32; 3], b: [f32; 3]) -> f32 {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+}
+
+fn cross(a: [f32; 3], b: [f32; 3]) -> [f32; 3] {
+    [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+}
+
+fn normalize(v: [f32; 3]) -> [f32; 3] {
+    let len = Scalar::sqrt(dot(v, v));
+    v.map(|x| x / len)
+}
+
+/// `x` rounded to 4 decimals (the nearest `f32` to `k / 10⁴`).
+fn round4(x: f32) -> f32 {
+    (x * 1.0e4).round() / 1.0e4
+}
+
+/// The knot's tube: positions, area-weighted vertex normals and the grid's
+/// triangles (counter-clockwise from outside).
+pub fn tube() -> (Vec<[f32; 3]>, Vec<[f32; 3]>, Vec<[u16; 3]>) {
+    let tau = core::f32::consts::TAU;
+    let phi = |i: usize| tau * (i % ALONG) as f32 / ALONG as f32;
+    let mut positions = Vec::with_capacity(ALONG * AROUND);
+    for i in 0..ALONG {
+        let (c, out) = centre_line(phi(i));
+        // Frame: tangent by central difference, normal = the torus normal
+        // made perpendicular to it (periodic, so the tube closes).
+        let t = normalize(sub(centre_line(phi(i + 1)).0, centre_line(phi(i + ALONG - 1)).0));
+        let n = normalize(sub(out, t.map(|x| x * dot(out, t))));
+        let b = cross(t, n);
+        for j in 0..AROUND {
+            let theta = tau * j as f32 / AROUND as f32;
+            let (st, ct) = Scalar::sin_cos(theta);
+            let ridge = Scalar::sin_cos(5.0 * theta + 30.0 * phi(i)).1;
+            let a = TUBE.0 * (1.0 + TUBE.1 * ridge);
+            positions.push([0, 1, 2].map(|k| round4(SCALE * (c[k] + a * (ct * n[k] + st * b[k])))));
+        }
+    }
+    let v = |i: usize, j: usize| ((i % ALONG) * AROUND + j % AROUND) as u16;
+    let mut indices = Vec::with_capacity(2 * ALONG * AROUND);
+    for i in 0..ALONG {
+        for j in 0..AROUND {
+            // Along the knot × around the tube points inward: wind the other way.
+            indices.push([v(i, j), v(i + 1, j + 1), v(i + 1, j)]);
+            indices.push([v(i, j), v(i, j + 1), v(i + 1, j + 1)]);
+        }
+    }
+    let mut sums = vec![[0.0f32; 3]; positions.len()];
+    for t in &indices {
+        let p = t.map(|k| positions[usize::from(k)]);
+        let face = cross(sub(p[1], p[0]), sub(p[2], p[0]));
+        for k in t {
+            for d in 0..3 {
+                sums[usize::from(*k)][d] += face[d];
+            }
+        }
+    }
+    let normals = sums.into_iter().map(|s| normalize(s).map(round4)).collect();
+    (positions, normals, indices)
+}
+
+/// The knot with its clusters.
+pub fn knot() -> Result<Knot, String> {
+    let (positions, normals, grid) = tube();
+    let sphere = bounding_sphere(&positions);
+    let mesh = Mesh::new(&positions, &normals, &grid, sphere);
+    let (nv, nt) = (positions.len(), grid.len());
+    let mut meshlets = vec![Meshlet::default(); meshlet_bound(nt)];
+    let mut vertices = vec![0; meshlet_vertex_bound(nt)];
+    let mut triangles = vec![[0; 3]; nt];
+    let mut scratch = vec![0; meshlet_scratch_len(nv, nt)];
+    let m = build_meshlets(mesh, &mut meshlets, &mut vertices, &mut triangles, &mut scratch)
+        .map_err(|e| e.to_string())?;
+    let (meshlets, vertices, triangles) = (m.meshlets.to_vec(), m.vertices.to_vec(), m.triangles.to_vec());
+    let mut indices = Vec::with_capacity(nt);
+    for c in &meshlets {
+        let local = &vertices[c.vertex_offset as usize..][..usize::from(c.vertex_count)];
+        for t in &triangles[c.triangle_offset as usize..][..usize::from(c.triangle_count)] {
+            indices.push(t.map(|k| local[usize::from(k)]));
+        }
+    }
+    Ok(Knot { positions, normals, indices, sphere, meshlets, vertices, triangles })
+}
+
+/// Writes `items` as the body of a static array, `per_line` to a line.
+fn array<T>(s: &mut String, items: &[T], per_line: usize, f: impl Fn(&T) -> String) {
+    for chunk in items.chunks(per_line) {
+        s.push_str("    ");
+        for item in chunk {
+            s.push_str(&f(item));
+            s.push(',');
+        }
+        s.push('\n');
+    }
+}
+
+fn v3(v: &[f32; 3]) -> String {
+    format!("[{:?},{:?},{:?}]", v[0], v[1], v[2])
+}
+
+/// The Rust source of `examples/common/knot_mesh.rs`.
+pub fn rust_source(k: &Knot) -> String {
+    let (nv, nt, nc, nl) = (k.positions.len(), k.indices.len(), k.meshlets.len(), k.vertices.len());
+    let mut s = String::new();
+    s += "//! The meshlet benchmark mesh: a ridged (2, 3) torus knot, closed, counter-clockwise\n";
+    s += "//! from outside, with unit normals, and its clusters. Generated by\n";
+    s += "//! `cargo run --example gen_bench_mesh > examples/common/knot_mesh.rs`; do not edit.\n";
+    let _ = writeln!(s, "//! {nv} vertices, {nt} triangles, {nc} clusters.\n");
+    s += "use microraster::mesh::{Mesh, Meshlet, MeshletMesh, ValidMeshletMesh};\n\n";
+    let header = |s: &mut String, doc: &str, name: &str, ty: &str, n: usize| {
+        let _ = writeln!(s, "/// {doc}\n#[rustfmt::skip]\n#[allow(clippy::approx_constant)]");
+        let _ = writeln!(s, "pub static {name}: [{ty}; {n}] = [");
+    };
+    header(&mut s, "Vertex positions of [`KNOT`].", "KNOT_POSITIONS", "[f32; 3]", nv);
+    array(&mut s, &k.positions, 6, v3);
+    s += "];\n\n";
+    header(&mut s, "Unit vertex normals of [`KNOT`].", "KNOT_NORMALS", "[f32; 3]", nv);
+    array(&mut s, &k.normals, 6, v3);
+    s += "];\n\n";
+    let doc = "Triangles of [`KNOT`] in cluster order (the clusters' triangles, expanded).";
+    header(&mut s, doc, "KNOT_INDICES", "[u16; 3]", nt);
+    array(&mut s, &k.indices, 8, |t| format!("[{},{},{}]", t[0], t[1], t[2]));
+    s += "];\n\n";
+    header(&mut s, "Mesh vertex of each cluster-local vertex.", "KNOT_MESHLET_VERTICES", "u16", nl);
+    array(&mut s, &k.vertices, 20, |v| v.to_string());
+    s += "];\n\n";
+    header(&mut s, "Cluster-local triangles.", "KNOT_MESHLET_TRIANGLES", "[u8; 3]", nt);
+    array(&mut s, &k.triangles, 10, |t| format!("[{},{},{}]", t[0], t[1], t[2]));
+    s += "];\n\n";
+    s += "/// One cluster: offsets, counts, sphere, cone.\n";
+    s += "#[allow(clippy::too_many_arguments)]\n";
+    s += "const fn m(vo: u32, to: u32, vc: u8, tc: u8, c: [f32; 3], r: f32, a: [f32; 3], k: f32) -> Meshlet {\n";
+    s += "    Meshlet {\n        vertex_offset: vo,\n        triangle_offset: to,\n        vertex_count: vc,\n";
+    s += "        triangle_count: tc,\n        sphere: (c, r),\n        cone: (a, k),\n    }\n}\n\n";
+    header(&mut s, "The clusters of [`KNOT`].", "KNOT_MESHLETS", "Meshlet", nc);
+    array(&mut s, &k.meshlets, 1, |c| {
+        let (centre, r) = c.sphere;
+        let (axis, cut) = c.cone;
+        format!(
+            "m({},{},{},{},{},{r:?},{},{cut:?})",
+            c.vertex_offset,
+            c.triangle_offset,
+            c.vertex_count,
+            c.triangle_count,
+            v3(&centre),
+            v3(&axis)
+        )
+    });
+    s += "];\n\n";
+    let ([cx, cy, cz], r) = k.sphere;
+    s += "/// The knot as a plain mesh (triangles in cluster order).\n";
+    let _ = writeln!(
+        s,
+        "pub static KNOT_MESH: Mesh<'static> = Mesh::new(\n    &KNOT_POSITIONS,\n    &KNOT_NORMALS,\n    &KNOT_INDICES,\n    ([{cx:?}, {cy:?}, {cz:?}], {r:?}),\n);\n"
+    );
+    s += "/// The knot with its clusters.\npub static KNOT: MeshletMesh<'static> = MeshletMesh {\n";
+    s += "    mesh: KNOT_MESH,\n    meshlets: &KNOT_MESHLETS,\n    vertices: &KNOT_MESHLET_VERTICES,\n";
+    s += "    triangles: &KNOT_MESHLET_TRIANGLES,\n};\n\n";
+    s += "/// [`KNOT`], validated at compile time (a few seconds of constant evaluation).\n";
+    s += "pub static VALID_KNOT: ValidMeshletMesh<'static> = match ValidMeshletMesh::new(KNOT) {\n";
+    s += "    Ok(m) => m,\n    Err(_) => panic!(\"invalid knot mesh\"),\n};\n";
+    s
+}
+
+/// Pixels per front-facing triangle with the standard 3D scene's camera at
+/// 320×240 (eye (0, 1.9, 5.6) looking at the origin, vertical field of view
+/// 0.9 rad), from the summed projected areas (overlaps counted), and the
+/// number of front-facing triangles.
+pub fn pixels_per_triangle(mesh: &Mesh<'_>) -> (f64, usize) {
+    let eye = [0.0, 1.9, 5.6f64];
+    let f = {
+        let l = (eye[1] * eye[1] + eye[2] * eye[2]).sqrt();
+        [0.0, -eye[1] / l, -eye[2] / l]
+    };
+    // right = forward × world up = +x; up = right × forward.
+    let right = [1.0, 0.0, 0.0f64];
+    let up = [0.0, -f[2], f[1]];
+    let scale = 120.0 / (0.45f64).tan();
+    let project = |p: [f32; 3]| {
+        let d = [0, 1, 2].map(|k| f64::from(p[k]) - eye[k]);
+        let z = d[0] * f[0] + d[1] * f[1] + d[2] * f[2];
+        let x = d[0] * right[0] + d[1] * right[1] + d[2] * right[2];
+        let y = d[0] * up[0] + d[1] * up[1] + d[2] * up[2];
+        (x / z * scale, y / z * scale)
+    };
+    let (mut area, mut front) = (0.0, 0);
+    for t in mesh.indices {
+        let [a, b, c] = t.map(|k| project(mesh.positions[usize::from(k)]));
+        let twice = (b.0 - a.0) * (c.1 - a.1) - (b.1 - a.1) * (c.0 - a.0);
+        if twice > 0.0 {
+            area += twice / 2.0;
+            front += 1;
+        }
+    }
+    (area / front.max(1) as f64, front)
+}
+
+#[allow(dead_code)]
+fn main() -> Result<(), String> {
+    let k = knot()?;
+    let (ppt, front) = pixels_per_triangle(&k.mesh());
+    let n = k.meshlets.len() as f64;
+    let mean = |f: &dyn Fn(&Meshlet) -> f64| k.meshlets.iter().map(f).sum::<f64>() / n;
+    let src = rust_source(&k);
+    eprintln!(
+        "gen_bench_mesh: {} vertices, {} triangles, {} clusters ({:.1} vertices, {:.1} triangles, radius {:.4} on average; mesh radius {:.4}); {front} front-facing triangles at {ppt:.2} px each; {} bytes",
+        k.positions.len(),
+        k.indices.len(),
+        k.meshlets.len(),
+        mean(&|c| f64::from(c.vertex_count)),
+        mean(&|c| f64::from(c.triangle_count)),
+        mean(&|c| f64::from(c.sphere.1)),
+        k.sphere.1,
+        src.len()
+    );
+    print!("{src}");
+    Ok(())
+}

@@ -1,0 +1,102 @@
+//! `obj2rs --meshlets`: the mesh's clusters ([`build_meshlets`]) as Rust
+//! statics, and the winding check behind the converter's warning.
+
+use std::fmt::Write;
+
+use microraster::mesh::{
+    Mesh, Meshlet, bounding_sphere, build_meshlets, meshlet_bound, meshlet_scratch_len, meshlet_vertex_bound,
+};
+
+use crate::emit::static_name;
+use crate::parse::ObjMesh;
+
+/// The clusters of a mesh, in owned buffers.
+pub struct Clusters {
+    pub meshlets: Vec<Meshlet>,
+    pub vertices: Vec<u16>,
+    pub triangles: Vec<[u8; 3]>,
+}
+
+/// Splits the mesh into clusters.
+pub fn build(mesh: &ObjMesh) -> Result<Clusters, String> {
+    let (nv, nt) = (mesh.positions.len(), mesh.indices.len());
+    let mut meshlets = vec![Meshlet::default(); meshlet_bound(nt)];
+    let mut vertices = vec![0; meshlet_vertex_bound(nt)];
+    let mut triangles = vec![[0; 3]; nt];
+    let mut scratch = vec![0; meshlet_scratch_len(nv, nt)];
+    let m = build_meshlets(mesh.mesh(), &mut meshlets, &mut vertices, &mut triangles, &mut scratch)
+        .map_err(|e| format!("building meshlets: {e}"))?;
+    Ok(Clusters {
+        meshlets: m.meshlets.to_vec(),
+        vertices: m.vertices.to_vec(),
+        triangles: m.triangles.to_vec(),
+    })
+}
+
+/// Triangles wound against their vertex normals, by the rule of
+/// [`Mesh::check_winding`] (applied to each triangle on its own).
+pub fn winding_mismatches(mesh: &ObjMesh) -> usize {
+    let disagrees = |t: &[u16; 3]| {
+        let p = t.map(|k| mesh.positions[usize::from(k)]);
+        let n = t.map(|k| mesh.normals[usize::from(k)]);
+        Mesh::new(&p, &n, &[[0, 1, 2]], bounding_sphere(&p)).check_winding().is_err()
+    };
+    mesh.indices.iter().filter(|t| disagrees(t)).count()
+}
+
+/// The converter's warning when triangles disagree with their normals.
+pub fn winding_warning(mesh: &ObjMesh, meshlets: bool) -> Option<String> {
+    let n = winding_mismatches(mesh);
+    (n > 0).then(|| {
+        format!(
+            "warning: {n} of {} triangles are wound clockwise seen from the side their normals point to \
+             (back-face culling hides them from the front){}",
+            mesh.indices.len(),
+            if meshlets { "; the MeshletMesh fails validation (WindingMismatch)" } else { "" }
+        )
+    })
+}
+
+/// Rust source defining `NAME_MESHLETS`, `NAME_MESHLET_VERTICES`,
+/// `NAME_MESHLET_TRIANGLES` and `NAME_MESHLET_MESH: MeshletMesh<'static>`
+/// around the `NAME` mesh static; `Meshlet` and `MeshletMesh` are taken
+/// from the module of `mesh_type`.
+pub fn rust_source(c: &Clusters, name: &str, mesh_type: &str) -> Result<String, String> {
+    let name = static_name(name)?;
+    let module = mesh_type.rsplit_once("::").map_or(String::new(), |(m, _)| format!("{m}::"));
+    let (nc, nl, nt) = (c.meshlets.len(), c.vertices.len(), c.triangles.len());
+    let mut s = String::new();
+    let w = &mut s;
+    let _ = writeln!(w, "\n/// The clusters of [`{name}`]: offsets, counts, sphere and normal cone.");
+    let _ = writeln!(w, "#[rustfmt::skip]\npub static {name}_MESHLETS: [{module}Meshlet; {nc}] = [");
+    for m in &c.meshlets {
+        let (([x, y, z], r), ([a, b, d], k)) = (m.sphere, m.cone);
+        let _ = writeln!(
+            w,
+            "    {module}Meshlet {{ vertex_offset: {}, triangle_offset: {}, vertex_count: {}, triangle_count: {}, \
+             sphere: ([{x:?}, {y:?}, {z:?}], {r:?}), cone: ([{a:?}, {b:?}, {d:?}], {k:?}) }},",
+            m.vertex_offset, m.triangle_offset, m.vertex_count, m.triangle_count
+        );
+    }
+    let _ = writeln!(w, "];\n\n/// Mesh vertex of each cluster-local vertex of [`{name}_MESHLETS`].");
+    let _ = writeln!(w, "#[rustfmt::skip]\npub static {name}_MESHLET_VERTICES: [u16; {nl}] = [");
+    for chunk in c.vertices.chunks(16) {
+        let row: Vec<String> = chunk.iter().map(u16::to_string).collect();
+        let _ = writeln!(w, "    {},", row.join(", "));
+    }
+    let _ = writeln!(w, "];\n\n/// Cluster-local triangles of [`{name}_MESHLETS`].");
+    let _ = writeln!(w, "#[rustfmt::skip]\npub static {name}_MESHLET_TRIANGLES: [[u8; 3]; {nt}] = [");
+    for chunk in c.triangles.chunks(8) {
+        let row: Vec<String> = chunk.iter().map(|[a, b, d]| format!("[{a}, {b}, {d}]")).collect();
+        let _ = writeln!(w, "    {},", row.join(", "));
+    }
+    let _ = writeln!(w, "];\n\n/// [`{name}`] with its clusters.");
+    let _ =
+        writeln!(w, "pub static {name}_MESHLET_MESH: {module}MeshletMesh<'static> = {module}MeshletMesh {{");
+    let _ = writeln!(
+        w,
+        "    mesh: {name},\n    meshlets: &{name}_MESHLETS,\n    vertices: &{name}_MESHLET_VERTICES,"
+    );
+    let _ = writeln!(w, "    triangles: &{name}_MESHLET_TRIANGLES,\n}};");
+    Ok(s)
+}
