@@ -32,6 +32,9 @@
 
 use crate::{ClipRect, SubPoint};
 
+mod small;
+pub use small::SMALL_PX;
+
 /// Which triangles to drop by their winding on screen (y pointing down).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum Cull {
@@ -255,6 +258,7 @@ impl<T: EdgeInt> Walker<T> {
 #[derive(Debug, Clone)]
 enum Path {
     Empty,
+    Small(small::Small),
     Narrow(Walker<i32>),
     Wide(Walker<i64>),
 }
@@ -279,7 +283,18 @@ impl TriangleSpans {
     /// Sets up the edge functions of `v` for the pixels inside `clip`.
     ///
     /// Zero-area triangles (after snapping) and culled windings yield no spans.
+    #[inline]
     pub fn new<const S: u32>(v: [SubPoint<S>; 3], clip: ClipRect, cull: Cull) -> Self {
+        match small::setup(v, clip, cull) {
+            Some(path) => TriangleSpans { path },
+            None => Self::solved(v, clip, cull),
+        }
+    }
+
+    /// [`TriangleSpans::new`] by solving each row's span, whatever the size:
+    /// the reference the per-centre test of small triangles is checked
+    /// against.
+    pub(crate) fn solved<const S: u32>(v: [SubPoint<S>; 3], clip: ClipRect, cull: Cull) -> Self {
         let empty = TriangleSpans { path: Path::Empty };
         let p = v.map(|p| (2 * p.x() as i64, 2 * p.y() as i64));
         let det = signed_area2(p);
@@ -365,7 +380,7 @@ impl TriangleSpans {
 
     /// True if this triangle took the `i32` fast path.
     pub fn is_fast_path(&self) -> bool {
-        matches!(self.path, Path::Narrow(_))
+        matches!(self.path, Path::Narrow(_) | Path::Small(_))
     }
 }
 
@@ -376,6 +391,7 @@ impl Iterator for TriangleSpans {
     fn next(&mut self) -> Option<Span> {
         match &mut self.path {
             Path::Empty => None,
+            Path::Small(s) => s.next_span(),
             Path::Narrow(w) => w.next_span(),
             Path::Wide(w) => w.next_span(),
         }
@@ -387,6 +403,7 @@ impl Iterator for TriangleSpans {
     fn fold<B, G: FnMut(B, Span) -> B>(self, init: B, g: G) -> B {
         match &self.path {
             Path::Empty => init,
+            Path::Small(s) => s.fold(init, g),
             Path::Narrow(w) => w.fold(init, g),
             Path::Wide(w) => w.fold(init, g),
         }
@@ -398,6 +415,6 @@ pub(crate) fn signed_area2(p: [(i64, i64); 3]) -> i64 {
     (p[1].0 - p[0].0) * (p[2].1 - p[0].1) - (p[2].0 - p[0].0) * (p[1].1 - p[0].1)
 }
 
-fn min_max(a: i64, b: i64, c: i64) -> (i64, i64) {
+fn min_max<T: Ord + Copy>(a: T, b: T, c: T) -> (T, T) {
     (a.min(b).min(c), a.max(b).max(c))
 }
