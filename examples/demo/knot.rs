@@ -40,7 +40,7 @@ pub fn run(out: &Path) -> Result<()> {
     let mut total = MeshStats::default();
     Renderer::new(HEIGHT, BACKGROUND)
         .render_3d_direct(&mut band, &mut depth, DepthState::LESS_WRITE, Affine, &mut canvas, |band| {
-            let s = pipeline.draw_meshlets(&knot_mesh::KNOT, &model(), COLOR, &mut cache, band)?;
+            let s = pipeline.draw_meshlets(&knot_mesh::VALID_KNOT, &model(), COLOR, &mut cache, band)?;
             total.emitted += s.emitted;
             total.clusters_outside += s.clusters_outside;
             total.clusters_back_facing += s.clusters_back_facing;
@@ -54,7 +54,13 @@ pub fn run(out: &Path) -> Result<()> {
     pipeline.draw_valid_mesh(&mesh, &model(), COLOR, &mut bins)?;
     let mut binned = Canvas::new(W as u32, HEIGHT);
     Renderer::new(HEIGHT, BACKGROUND)
-        .render_3d::<_, Depth16, Affine, S, W, BAND_ROWS>(&bins, &mut band, &mut depth, DepthState::LESS_WRITE, &mut binned)
+        .render_3d::<_, Depth16, Affine, S, W, BAND_ROWS>(
+            &bins,
+            &mut band,
+            &mut depth,
+            DepthState::LESS_WRITE,
+            &mut binned,
+        )
         .map_err(|e| e.to_string())?;
     if binned.px != canvas.px {
         return Err("the meshlet stage and the binned path drew different knots".into());

@@ -308,7 +308,7 @@ fn meshlets<T: Scalar, M: Interpolation, const W: usize, const H: usize>(
     let pipeline = Scene3d::pipeline::<T, S>(W as u32, r.height())?;
     let model = knot_model::<T>();
     r.render_3d_direct(band, depth, DEPTH_STATE, interp, sink, |band| {
-        pipeline.draw_meshlets(&knot_mesh::KNOT, &model, KNOT_COLOR, cache, band).map(|_| ())
+        pipeline.draw_meshlets(&knot_mesh::VALID_KNOT, &model, KNOT_COLOR, cache, band).map(|_| ())
     })
     .map_err(input)
 }

@@ -24,7 +24,7 @@ use super::{Band, MeshStats, Pipeline, row_f32};
 use crate::depth::DepthFormat;
 use crate::edge::Cull;
 use crate::math::{Mat4, Scalar, Vec3, Vec4};
-use crate::mesh::{MAX_MESHLET_VERTICES, Mesh, Meshlet, MeshletMesh};
+use crate::mesh::{MAX_MESHLET_VERTICES, Mesh, Meshlet, MeshletMesh, ValidMeshletMesh};
 use crate::raster3d::Interpolation;
 use crate::render::Band3d;
 use crate::{Error, Interpolate};
@@ -172,11 +172,16 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     /// are skipped before any vertex work. [`Pipeline::rows`] is ignored: the
     /// band's rows apply.
     ///
-    /// Errors: [`Error::InvalidMeshlet`] for cluster ranges outside the
-    /// mesh's arrays; [`Error::InvalidParameter`] if `model` is singular.
+    /// The mesh is a [`ValidMeshletMesh`]: the cluster tests rely on each
+    /// cluster's sphere and cone containing its triangles.
+    ///
+    /// Errors: [`Error::InvalidParameter`] if `model` is singular; the errors
+    /// of [`Lighting::validate`](crate::light::Lighting::validate); for
+    /// [`Fx`](crate::math::Fx), [`Error::CoordinateOutOfRange`] as for
+    /// [`Pipeline::draw_valid_mesh`].
     pub fn draw_meshlets<C, F, M, const W: usize>(
         &self,
-        mesh: &MeshletMesh<'_>,
+        mesh: &ValidMeshletMesh<'_>,
         model: &Mat4<T>,
         color: C,
         cache: &mut ClusterCache<T, S>,
@@ -187,6 +192,8 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         F: DepthFormat,
         M: Interpolation,
     {
+        // Validated: the culling relies on each cluster's sphere and cone.
+        let mesh = mesh.get();
         let pipe = Pipeline { rows: Some(band.rows()), ..*self };
         let mut stats = MeshStats::default();
         let Some(setup) = pipe.mesh_setup(&mesh.mesh, model, color, &mut stats)? else {

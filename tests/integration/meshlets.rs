@@ -11,7 +11,7 @@ use embedded_graphics_core::prelude::RgbColor;
 use microraster::depth::{Depth16, DepthBand, DepthState};
 use microraster::edge::Cull;
 use microraster::math::{Fx, Mat4, Scalar, Vec3, transform};
-use microraster::mesh::{self, Mesh, Meshlet, MeshletMesh, ValidMesh};
+use microraster::mesh::{self, Mesh, Meshlet, MeshletMesh, ValidMesh, ValidMeshletMesh};
 use microraster::pipeline::{ClusterCache, Pipeline};
 use microraster::raster3d::{Affine, Interpolation, PerspectiveCorrect};
 use microraster::scenes3d::Scene3d;
@@ -106,13 +106,14 @@ impl Clustered {
     fn mesh(&self) -> Mesh<'_> {
         Mesh::new(&self.positions, &self.normals, &self.indices, self.sphere)
     }
-    fn meshlets(&self) -> MeshletMesh<'_> {
-        MeshletMesh {
+    fn meshlets(&self) -> ValidMeshletMesh<'_> {
+        ValidMeshletMesh::new(MeshletMesh {
             mesh: Mesh::new(&self.positions, &self.normals, &[], self.sphere),
             meshlets: &self.meshlets,
             vertices: &self.vertices,
             triangles: &self.triangles,
-        }
+        })
+        .unwrap()
     }
 }
 
