@@ -199,7 +199,8 @@ pub struct Buffers<'a, const W: usize, const H: usize, const N: usize, const P: 
     /// Vertex cache ([`Work::Vertex3dCached`]; none on the Cortex-M0).
     pub cache: Option<&'a mut Cache>,
     /// One meshlet's vertices ([`Work::Meshlets`]), per numeric path.
-    pub cluster: (&'a mut ClusterCache<f32, S>, &'a mut ClusterCache<Fx, S>),
+    /// None on the Cortex-M0 (its 16 KB hold no knot row).
+    pub cluster: Option<(&'a mut ClusterCache<f32, S>, &'a mut ClusterCache<Fx, S>)>,
 }
 
 /// The vertex cache of [`Work::Vertex3dCached`].
@@ -280,15 +281,11 @@ pub fn frame<const W: usize, const H: usize, const N: usize, const P: usize>(
         Work::PerBand3d(Fix, Aff) => per_band3d::<Fx, Affine, W, H, N, P>(r, b, sink),
         // The knot's 460 KB of flash data do not fit the micro:bit: Cortex-M4F only.
         #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
-        Work::Meshlets(t, i) => match (t, i) {
-            (F32, Aff) => meshlets::<f32, _, W, H>(r, b.band, b.depth, b.cluster.0, Affine, sink),
-            (F32, Persp) => {
-                meshlets::<f32, _, W, H>(r, b.band, b.depth, b.cluster.0, PerspectiveCorrect, sink)
-            }
-            (Fix, Aff) => meshlets::<Fx, _, W, H>(r, b.band, b.depth, b.cluster.1, Affine, sink),
-            (Fix, Persp) => {
-                meshlets::<Fx, _, W, H>(r, b.band, b.depth, b.cluster.1, PerspectiveCorrect, sink)
-            }
+        Work::Meshlets(t, i) => match (t, i, b.cluster.as_mut().ok_or(Error::BufferTooSmall)?) {
+            (F32, Aff, c) => meshlets::<f32, _, W, H>(r, b.band, b.depth, c.0, Affine, sink),
+            (F32, Persp, c) => meshlets::<f32, _, W, H>(r, b.band, b.depth, c.0, PerspectiveCorrect, sink),
+            (Fix, Aff, c) => meshlets::<Fx, _, W, H>(r, b.band, b.depth, c.1, Affine, sink),
+            (Fix, Persp, c) => meshlets::<Fx, _, W, H>(r, b.band, b.depth, c.1, PerspectiveCorrect, sink),
         },
         #[cfg(not(any(not(target_os = "none"), target_abi = "eabihf")))]
         Work::Meshlets(..) => Err(Error::InvalidParameter),

@@ -74,7 +74,7 @@ mod firmware {
         static mut CACHE: benches::Cache = benches::Cache::new();
         static mut CLUSTER: ClusterCache<f32, S> = ClusterCache::new();
         static mut CLUSTER_FX: ClusterCache<Fx, S> = ClusterCache::new();
-        let cluster = (CLUSTER, CLUSTER_FX);
+        let cluster = Some((CLUSTER, CLUSTER_FX));
         let b = Buffers { prims: PRIMS, band: BAND, depth: DEPTH, bins: BINS, cache: Some(CACHE), cluster };
         finish(run(benches::M4F, benches::M4F_SIZE.1, b))
     }
@@ -89,10 +89,7 @@ mod firmware {
         static mut DEPTH: DepthBand<Depth16, { benches::M0_SIZE.0 }, { benches::M0_BAND }> =
             DepthBand::zeroed();
         static mut BINS: heapless::Vec<ScreenTriangle<S>, { benches::BAND_BINS }> = heapless::Vec::new();
-        static mut CLUSTER: ClusterCache<f32, S> = ClusterCache::new();
-        static mut CLUSTER_FX: ClusterCache<Fx, S> = ClusterCache::new();
-        let cluster = (CLUSTER, CLUSTER_FX);
-        let b = Buffers { prims: PRIMS, band: BAND, depth: DEPTH, bins: BINS, cache: None, cluster };
+        let b = Buffers { prims: PRIMS, band: BAND, depth: DEPTH, bins: BINS, cache: None, cluster: None };
         finish(run(benches::M0, benches::M0_SIZE.1, b))
     }
 

@@ -69,7 +69,7 @@ fn records<const W: usize, const H: usize, const N: usize, const P: usize>(
         depth: &mut depth,
         bins: &mut bins,
         cache: Some(&mut cache),
-        cluster: (&mut cluster, &mut cluster_fx),
+        cluster: Some((&mut cluster, &mut cluster_fx)),
     };
     let mut out = Vec::new();
     for (index, &bench) in list.iter().enumerate() {

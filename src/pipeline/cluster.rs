@@ -1,5 +1,5 @@
 //! The vertex stage per band over meshlets: for each band, each cluster of a
-//! [`MeshletMesh`] is tested against the band's slab, the view volume and
+//! [`MeshletMesh`](crate::mesh::MeshletMesh) is tested against the band's slab, the view volume and
 //! (when back faces are culled) its normal cone, all from its bounding
 //! sphere and before any vertex work; a surviving cluster's vertices go
 //! through the cached path ([`super::cache`]) into a cache of
@@ -24,7 +24,7 @@ use super::{Band, MeshStats, Pipeline, row_f32};
 use crate::depth::DepthFormat;
 use crate::edge::Cull;
 use crate::math::{Mat4, Scalar, Vec3, Vec4};
-use crate::mesh::{MAX_MESHLET_VERTICES, Mesh, Meshlet, MeshletMesh, ValidMeshletMesh};
+use crate::mesh::{MAX_MESHLET_VERTICES, Mesh, Meshlet, ValidMeshletMesh};
 use crate::raster3d::Interpolation;
 use crate::render::Band3d;
 use crate::{Error, Interpolate};
@@ -116,7 +116,7 @@ impl ClusterCull {
     }
 }
 
-/// The cone test of [`MeshletMesh`]: `axis · v > cutoff · |v| + r · ew ·
+/// The cone test of [`MeshletMesh`](crate::mesh::MeshletMesh): `axis · v > cutoff · |v| + r · ew ·
 /// (1 + cutoff)` with `v = c · ew − e`, evaluated on `v` scaled by its
 /// largest component `m`, with a slack of `2^-6` in the normalised terms
 /// (`f32` rounding is far below it).
