@@ -189,7 +189,8 @@ impl Output<'_> {
         // The cluster passes by construction, except where rounding is
         // coarse (subnormal triangles: then a cone that never rejects) or
         // the radius squared overflows (coordinates near 10¹⁹).
-        let view = MeshletMesh { mesh: *mesh, meshlets: &[], vertices: self.vertices, triangles: self.triangles };
+        let view =
+            MeshletMesh { mesh: *mesh, meshlets: &[], vertices: self.vertices, triangles: self.triangles };
         if view.validate_cluster(&m) == Err(Error::InvalidMeshlet) {
             m.cone = ([0.0, 0.0, 1.0], 1.0);
             if view.validate_cluster(&m) == Err(Error::InvalidMeshlet) {
