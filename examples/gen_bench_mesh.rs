@@ -89,9 +89,12 @@ fn round4(x: f32) -> f32 {
     (x * 1.0e4).round() / 1.0e4
 }
 
+/// Positions, normals and triangles.
+pub type Arrays = (Vec<[f32; 3]>, Vec<[f32; 3]>, Vec<[u16; 3]>);
+
 /// The knot's tube: positions, area-weighted vertex normals and the grid's
 /// triangles (counter-clockwise from outside).
-pub fn tube() -> (Vec<[f32; 3]>, Vec<[f32; 3]>, Vec<[u16; 3]>) {
+pub fn tube() -> Arrays {
     let tau = core::f32::consts::TAU;
     let phi = |i: usize| tau * (i % ALONG) as f32 / ALONG as f32;
     let mut positions = Vec::with_capacity(ALONG * AROUND);

@@ -218,7 +218,7 @@ fn normal_cone<I: Iterator<Item = [[f32; 3]; 3]> + Clone>(tris: I) -> ([f32; 3],
     }
     let len = sqrt(dot(sum, sum));
     // Normals that cancel out (or only degenerate triangles): no cone.
-    if !(len > 1.0e-3) {
+    if len.is_nan() || len <= 1.0e-3 {
         return NEVER;
     }
     let axis = sum.map(|x| x / len);
@@ -285,9 +285,8 @@ impl Open {
         out.triangles[out.tris] = local;
         out.tris += 1;
         self.tris += 1;
-        let c = centroid(mesh, tri);
-        for k in 0..3 {
-            self.sum[k] += c[k];
+        for (s, c) in self.sum.iter_mut().zip(centroid(mesh, tri)) {
+            *s += c;
         }
         st.emit(t, tri);
         Ok(())

@@ -9,6 +9,14 @@
 //! ([`cube_vertex_count`], [`icosphere_triangle_count`], …), so the buffers
 //! can be plain arrays.
 //!
+//! A [`MeshletMesh`] adds clusters of at most 64 vertices, each with a
+//! bounding sphere and a normal cone, so whole clusters are rejected before
+//! any vertex work; [`build_meshlets`] makes them without allocating (the
+//! `obj2rs` converter's `--meshlets` option emits them as statics), and
+//! [`MeshletMesh::validate`] / [`ValidMeshletMesh`] check them, at compile
+//! time for statics. [`Mesh::check_winding`] is the opt-in check that
+//! windings agree with the normals.
+//!
 //! # Conventions
 //!
 //! * Right-handed coordinates.

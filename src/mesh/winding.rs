@@ -35,7 +35,9 @@ pub(crate) const fn winding_agrees(p: [[f32; 3]; 3], n: [[f32; 3]; 3]) -> bool {
         None => true,
         Some((face, _)) => {
             let sum = [n[0][0] + n[1][0] + n[2][0], n[0][1] + n[1][1] + n[2][1], n[0][2] + n[1][2] + n[2][2]];
-            !(dot(face, sum) < 0.0)
+            // NaN (an overflow) is no evidence of a mismatch.
+            let d = dot(face, sum);
+            d >= 0.0 || d.is_nan()
         }
     }
 }
