@@ -283,7 +283,6 @@ impl TriangleSpans {
     /// Sets up the edge functions of `v` for the pixels inside `clip`.
     ///
     /// Zero-area triangles (after snapping) and culled windings yield no spans.
-    #[inline]
     pub fn new<const S: u32>(v: [SubPoint<S>; 3], clip: ClipRect, cull: Cull) -> Self {
         match small::setup(v, clip, cull) {
             Some(path) => TriangleSpans { path },

@@ -221,13 +221,15 @@ fn draw_spans<C, F, Sh, R, const W: usize>(
     R: DepthRule,
 {
     let y0 = color.y0();
-    for span in spans {
+    // Internal iteration: one loop per coverage path (`TriangleSpans::fold`),
+    // each with the fragment loop inlined, instead of a dispatch per span.
+    spans.for_each(|span| {
         let (x0, len) = (span.x as usize, span.len as usize);
-        let Some(cspan) = color.row_mut(span.y).and_then(|r| r.get_mut(x0..x0 + len)) else { continue };
+        let Some(cspan) = color.row_mut(span.y).and_then(|r| r.get_mut(x0..x0 + len)) else { return };
         let mut sh = shade.start(span.x, span.y);
         if F::ENABLED {
             let drow = depth.get_mut((span.y - y0) as usize).and_then(|r| r.get_mut(x0..x0 + len));
-            let Some(dspan) = drow else { continue };
+            let Some(dspan) = drow else { return };
             let mut z = DepthSpan::<F>::new(zplane, span.x, span.y);
             for (p, slot) in cspan.iter_mut().zip(dspan.iter_mut()) {
                 let zq = z.value();
@@ -246,7 +248,7 @@ fn draw_spans<C, F, Sh, R, const W: usize>(
                 sh.step();
             }
         }
-    }
+    });
 }
 
 /// The depth plane along a span. Formats of at most 16 bits step in `u32`:
