@@ -30,9 +30,11 @@
 //! scene does not use is not compiled.
 //!
 //! # Set-up cost
-//! Per triangle and band: the edge functions, one determinant with its
-//! reciprocal, and per plane three exact divisions done as multiplications
-//! (`attr`). Nothing is cached between bands (no RAM per triangle).
+//! Per triangle and band: the edge functions (for a small triangle in `i32`
+//! only, see [`crate::edge`]), one determinant with its reciprocal, and per
+//! plane three exact divisions done as multiplications (`attr`); a depth
+//! plane only with a depth buffer, colour planes only for Gouraud triangles.
+//! Nothing is cached between bands (no RAM per triangle).
 
 use crate::attr::{COLOR_FRAC, Plane, PlaneFrame, PlaneSetup, channel};
 use crate::band::BandView;
