@@ -105,7 +105,6 @@ use Vertex::{F32, Fx as Fix};
 pub const M4F: &[Bench] = &[
     bench("band loop", Work::Clear),
     bench("mixed", Work::Frame2d(scenes::mixed)),
-    bench("tiny", Work::Frame2d(scenes::tiny)),
     bench("scene3d", Work::Frame3d(F32, Persp)),
     bench("scene3d", Work::Frame3d(Fix, Persp)),
     bench("scene3d", Work::Frame3d(F32, Aff)),
@@ -124,10 +123,8 @@ pub const M0: &[Bench] = &[
     bench("scene3d", Work::VertexPerBand3d(F32)),
 ];
 
-/// Primitives the Cortex-M4F configuration can hold ([`Work::Frame2d`]):
-/// the larger of the 2D scenes it times.
-pub const PRIMS: usize =
-    if scenes::TINY_LEN > scenes::MIXED_LEN { scenes::TINY_LEN } else { scenes::MIXED_LEN };
+/// Primitives the Cortex-M4F configuration can hold ([`Work::Frame2d`]).
+pub const PRIMS: usize = scenes::MIXED_LEN;
 
 impl Work {
     /// How the frame is produced, for the table.
