@@ -9,13 +9,16 @@
 //! ```
 //!
 //! Arguments: the scene (`scatter`, `large`, `tiny`, `lines`, or `empty`, a
-//! frame with no primitive); a frame count (default 10), or `time` to print
+//! frame with no primitive; or `scene3d` / `scene3d_persp`, the standard 3D
+//! scene through the `f32` vertex stage and `render_3d` with 16-bit depth,
+//! affine or perspective-correct colour, vertex stage included); a frame count (default 10), or `time` to print
 //! the median thread CPU time per frame and the scene's fill rate against the
 //! slice-fill ceiling (the report's timing loop, `examples/report/timing.rs`);
 //! and what to run: `render` (default: `Renderer::render` with 16-row bands
 //! into the benchmarks' `SliceFb`, `benches/common/mod.rs`) or `spans` (the
 //! triangles' per-band set-up and row walk only, summing span lengths,
-//! nothing written). Under callgrind, subtract a run with 0 frames to leave
+//! nothing written), or `reference` (the f64 bounding-box reference rasterizer of
+//! `benches/common`, the report's baseline). Under callgrind, subtract a run with 0 frames to leave
 //! out the scene's preparation.
 
 use embedded_graphics_core::pixelcolor::Rgb565;
@@ -33,6 +36,13 @@ fn main() {
     let args: Vec<String> = std::env::args().collect();
     let arg = |i: usize, default: &'static str| args.get(i).map_or(default, String::as_str);
     let (scene, frames, mode) = (arg(1, "large"), arg(2, "10"), arg(3, "render"));
+    if let Some(persp) = match scene {
+        "scene3d" => Some(false),
+        "scene3d_persp" => Some(true),
+        _ => None,
+    } {
+        return scene3d(persp, frames.parse().expect("frame count"));
+    }
     let s = match scene {
         "scatter" => Scene2d::<4>::new(scenes::scatter),
         "large" => Scene2d::<4>::new(scenes::large),
@@ -48,6 +58,11 @@ fn main() {
         "spans" => Box::new(|| {
             black_box(spans(black_box(&s)));
         }),
+        "reference" => {
+            let s = &s;
+            let mut out = vec![BG; W * H];
+            Box::new(move || reference(black_box(s), &mut out))
+        }
         _ => panic!("unknown mode {mode}"),
     };
     if frames == "time" {
@@ -80,4 +95,25 @@ fn spans(s: &Scene2d<4>) -> u64 {
         }
     }
     n
+}
+
+/// `frames` frames of the standard 3D scene (see the header).
+fn scene3d(persp: bool, frames: usize) {
+    use microraster::depth::{Depth16, DepthBand};
+    use microraster::raster3d::{Affine, PerspectiveCorrect};
+    let pipeline = pipeline3d::<f32, 4>();
+    let mut bins = Box::new(Bins::<4>::new());
+    let mut band = Box::new(Band::<Rgb565, W, 16>::new(BG));
+    let mut depth = Box::new(DepthBand::<Depth16, W, 16>::new());
+    let mut fb = SliceFb::default();
+    for _ in 0..frames {
+        if persp {
+            mr3d::<f32, Depth16, PerspectiveCorrect, 4, 16>(
+                &pipeline, &mut bins, &mut band, &mut depth, &mut fb,
+            );
+        } else {
+            mr3d::<f32, Depth16, Affine, 4, 16>(&pipeline, &mut bins, &mut band, &mut depth, &mut fb);
+        }
+    }
+    black_box(&fb);
 }

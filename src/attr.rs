@@ -146,9 +146,7 @@ impl PlaneSetup {
 }
 
 /// Division by a fixed `d > 0` through the reciprocal `r = ⌊(2^64 − 1)/d⌋`:
-/// found with 32-bit divisions when `d < 2^32` (every triangle up to about
-/// 2^15 px on a side at `S = 0`, 2^11 px at `S = 4`: [`reciprocal_u32`]), else
-/// one library division; then multiplications. For `n < 2^64`,
+/// one library division at set-up, then multiplications. For `n < 2^64`,
 /// `q̂ = ⌊n·r/2^64⌋` satisfies `n/d − 3 < q̂ ≤ n/d` (as
 /// `r > (2^64 − 1)/d − 1`), so at most two corrections give `⌊n/d⌋` exactly.
 #[derive(Debug, Clone, Copy)]
@@ -159,9 +157,7 @@ struct Divisor {
 
 impl Divisor {
     fn new(d: u64) -> Divisor {
-        // A u64 division is a library call on Cortex-M; 32-bit ones are not.
-        let r = if d >> 32 == 0 { reciprocal_u32(d as u32) } else { u64::MAX / d };
-        Divisor { d, r }
+        Divisor { d, r: u64::MAX / d }
     }
 
     /// `⌊n/d⌋`.
@@ -185,48 +181,6 @@ impl Divisor {
         let q = self.div_floor(n.unsigned_abs() + self.d / 2) as i64;
         if (n < 0) != neg { -q } else { q }
     }
-}
-
-/// `⌊(2^64 − 1)/d⌋` for `d > 0` with 32-bit divisions only (one
-/// instruction each on Cortex-M3/M4), exact. With
-/// `2^32 − 1 = hi·d + rem` (`rem < d`),
-/// `2^64 − 1 = hi·d·2^32 + (rem·2^32 + 2^32 − 1)`, and the last term is
-/// below `d·2^32`, so the result is `hi·2^32 + ⌊(rem·2^32 + 2^32 − 1)/d⌋`
-/// with the second quotient below `2^32` ([`div_2by1`]).
-fn reciprocal_u32(d: u32) -> u64 {
-    let hi = u32::MAX / d;
-    let rem = u32::MAX - hi * d;
-    ((hi as u64) << 32) | div_2by1(rem, u32::MAX, d) as u64
-}
-
-/// `⌊(u1·2^32 + u0)/v⌋` for `u1 < v` (so the quotient is below `2^32`),
-/// exact: schoolbook division in base `2^16` (Knuth's algorithm D) with the
-/// divisor normalised to its top bit, two quotient digits.
-fn div_2by1(u1: u32, u0: u32, v: u32) -> u32 {
-    let s = v.leading_zeros();
-    let vn = v << s; // top bit set: its high digit vh ≥ 2^15
-    // u·2^s < v·2^32·2^s = vn·2^32 < 2^64: fits, and its high word is < vn.
-    let u = (((u1 as u64) << 32) | u0 as u64) << s;
-    let (top, u_mid, u_low) = ((u >> 32) as u32, (u >> 16) as u32 & 0xFFFF, u as u32 & 0xFFFF);
-    let q1 = div_digit(top, u_mid, vn);
-    // The remainder of the first digit, below vn (so it fits u32).
-    let r1 = (((top as u64) << 16) | u_mid as u64) - q1 as u64 * vn as u64;
-    let q0 = div_digit(r1 as u32, u_low, vn);
-    (q1 << 16) | q0
-}
-
-/// `q = ⌊(top·2^16 + next)/vn⌋` for `top < vn`, `next < 2^16` and `vn ≥ 2^31`
-/// (so `q < 2^16`). Knuth's theorem B (TAOCP 4.3.1): with the divisor's high
-/// digit `vh = ⌊vn/2^16⌋ ≥ 2^15`, the estimate `q̂ = min(⌊top/vh⌋, 2^16 − 1)`
-/// satisfies `q ≤ q̂ ≤ q + 2`, so at most two decrements make it exact.
-#[inline(always)]
-fn div_digit(top: u32, next: u32, vn: u32) -> u32 {
-    let n = ((top as u64) << 16) | next as u64;
-    let mut q = (top / (vn >> 16)).min(0xFFFF);
-    while q as u64 * vn as u64 > n {
-        q -= 1;
-    }
-    q
 }
 
 /// Bit length of `v`.
@@ -310,7 +264,6 @@ mod tests {
             seed ^= seed << 17;
             (seed >> (64 - bits)) as i64 - (1 << (bits - 1))
         };
-        let mut small_det = 0;
         for i in 0..200_000 {
             let cb = 2 + (i % 29) as u32;
             let v = [0; 3].map(|_| (next(cb), next(cb)));
@@ -319,8 +272,6 @@ mod tests {
             let vals = [0; 3].map(|_| next(vb));
             let (rx, ry) = ((next(12) & 4095) as i32, (next(12) & 4095) as i32);
             let Some(p) = Plane::new(&frame, vals, rx, ry) else { continue };
-            let setup = PlaneSetup::new(&frame, rx, ry).unwrap();
-            small_det += (setup.div.d >> 32 == 0) as u32;
             // Reference: everything in i128.
             let [(x0, y0), (x1, y1), (x2, y2)] = v.map(|(x, y)| (x as i128, y as i128));
             let det = (x1 - x0) * (y2 - y0) - (x2 - x0) * (y1 - y0);
@@ -332,36 +283,6 @@ mod tests {
             assert_eq!(p.gy, div_round_i128(ny * one, det) as i64, "{frame:?} {vals:?}");
             let off = div_round_i128(nx * px + ny * py, det) as i64;
             assert_eq!(p.base, vals[0].wrapping_add(off), "{frame:?} {vals:?}");
-        }
-        // Both reciprocals (32-bit divisions, and u64) were exercised.
-        assert!(small_det > 50_000 && small_det < 150_000, "{small_det}");
-    }
-
-    /// The reciprocal from 32-bit divisions equals the u64 division's.
-    #[test]
-    fn reciprocal_u32_is_exact() {
-        let check = |d: u32| assert_eq!(reciprocal_u32(d), u64::MAX / d as u64, "{d}");
-        (1..=100_000).for_each(check);
-        for k in 0..32 {
-            for e in [-2i64, -1, 0, 1, 2] {
-                let d = (1i64 << k) + e;
-                if d > 0 && d <= u32::MAX as i64 {
-                    check(d as u32);
-                }
-            }
-        }
-        let mut seed = 0x9E37_79B9_7F4A_7C15u64;
-        for i in 0..1_000_000 {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            // Every bit length, the low bits random.
-            let d = ((seed >> 32) as u32) >> (i % 32);
-            check(d.max(1));
-            let u1 = (seed as u32) % d.max(1);
-            let u0 = (seed >> 16) as u32;
-            let n = ((u1 as u64) << 32) | u0 as u64;
-            assert_eq!(div_2by1(u1, u0, d.max(1)) as u64, n / d.max(1) as u64, "{u1} {u0} {d}");
         }
     }
 

@@ -20,6 +20,10 @@
 //! is then filled without per-pixel tests, which is what brings flat fills
 //! near the speed of a slice fill.
 //!
+//! Triangles at most [`SMALL_PX`] pixels on a side skip all of that: each
+//! candidate centre is tested with the same edge functions in `i32`
+//! (`edge::small`), which gives the same spans for less set-up.
+//!
 //! # Overflow proof
 //! Coordinates are bounded by `|v| ≤ 2^28` subpixels ([`SubPoint`]), so in
 //! internal units differences are at most `2^30`, products `2^60` and the sum
@@ -283,7 +287,9 @@ impl TriangleSpans {
     /// Sets up the edge functions of `v` for the pixels inside `clip`.
     ///
     /// Zero-area triangles (after snapping) and culled windings yield no spans.
-    #[inline]
+    // Inlined, so a small triangle's path is known to the caller's loop
+    // (`fold`) without going through the whole enum; the row solver is not.
+    #[inline(always)]
     pub fn new<const S: u32>(v: [SubPoint<S>; 3], clip: ClipRect, cull: Cull) -> Self {
         match small::setup(v, clip, cull) {
             Some(path) => TriangleSpans { path },
@@ -294,6 +300,7 @@ impl TriangleSpans {
     /// [`TriangleSpans::new`] by solving each row's span, whatever the size:
     /// the reference the per-centre test of small triangles is checked
     /// against.
+    #[inline(never)]
     pub(crate) fn solved<const S: u32>(v: [SubPoint<S>; 3], clip: ClipRect, cull: Cull) -> Self {
         let empty = TriangleSpans { path: Path::Empty };
         let p = v.map(|p| (2 * p.x() as i64, 2 * p.y() as i64));

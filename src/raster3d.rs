@@ -30,9 +30,11 @@
 //! scene does not use is not compiled.
 //!
 //! # Set-up cost
-//! Per triangle and band: the edge functions, one determinant with its
-//! reciprocal, and per plane three exact divisions done as multiplications
-//! (`attr`). Nothing is cached between bands (no RAM per triangle).
+//! Per triangle and band: the edge functions (for a small triangle in `i32`
+//! only, see [`crate::edge`]), one determinant with its reciprocal, and per
+//! plane three exact divisions done as multiplications (`attr`); a depth
+//! plane only with a depth buffer, colour planes only for Gouraud triangles.
+//! Nothing is cached between bands (no RAM per triangle).
 
 use crate::attr::{COLOR_FRAC, Plane, PlaneFrame, PlaneSetup, channel};
 use crate::band::BandView;
@@ -221,13 +223,15 @@ fn draw_spans<C, F, Sh, R, const W: usize>(
     R: DepthRule,
 {
     let y0 = color.y0();
-    for span in spans {
+    // Internal iteration: one loop per coverage path (`TriangleSpans::fold`),
+    // each with the fragment loop inlined, instead of a dispatch per span.
+    spans.for_each(|span| {
         let (x0, len) = (span.x as usize, span.len as usize);
-        let Some(cspan) = color.row_mut(span.y).and_then(|r| r.get_mut(x0..x0 + len)) else { continue };
+        let Some(cspan) = color.row_mut(span.y).and_then(|r| r.get_mut(x0..x0 + len)) else { return };
         let mut sh = shade.start(span.x, span.y);
         if F::ENABLED {
             let drow = depth.get_mut((span.y - y0) as usize).and_then(|r| r.get_mut(x0..x0 + len));
-            let Some(dspan) = drow else { continue };
+            let Some(dspan) = drow else { return };
             let mut z = DepthSpan::<F>::new(zplane, span.x, span.y);
             for (p, slot) in cspan.iter_mut().zip(dspan.iter_mut()) {
                 let zq = z.value();
@@ -246,7 +250,7 @@ fn draw_spans<C, F, Sh, R, const W: usize>(
                 sh.step();
             }
         }
-    }
+    });
 }
 
 /// The depth plane along a span. Formats of at most 16 bits step in `u32`:
