@@ -125,8 +125,9 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     /// [`transform::look_at`]), vertical field of view `fov_y` in radians and
     /// near/far distances, with the aspect ratio of the viewport.
     ///
-    /// Errors: [`Error::InvalidFrameSize`] for a zero or too large viewport
-    /// (checked first), then those of [`transform::perspective`] and
+    /// Errors: [`Error::NonFiniteCoordinate`] for a NaN or infinite
+    /// `fov_y`, `near` or `far`; then [`Error::InvalidFrameSize`] for a zero
+    /// or too large viewport; then those of [`transform::perspective`] and
     /// [`Pipeline::new`].
     pub fn perspective(
         view: Mat4<T>,
@@ -136,8 +137,12 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         width: u32,
         height: u32,
     ) -> Result<Self, Error> {
-        // The viewport first, as in `Pipeline::new` (a zero size would
-        // otherwise give a zero or infinite aspect and `InvalidParameter`).
+        // Non-finite input first (as `transform::perspective`), then the
+        // viewport as in `Pipeline::new` (a zero size would otherwise give a
+        // zero or infinite aspect ratio and `InvalidParameter`).
+        if ![fov_y, near, far].iter().all(|v| v.is_finite()) {
+            return Err(Error::NonFiniteCoordinate);
+        }
         if width == 0 || height == 0 || width > MAX_FRAME_DIM || height > MAX_FRAME_DIM {
             return Err(Error::InvalidFrameSize);
         }
