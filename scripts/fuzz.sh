@@ -118,7 +118,7 @@ case "$cmd" in
       ft=$(echo "$last" | grep -o 'ft: [0-9]*' | grep -o '[0-9]*')
       corp=$(echo "$last" | grep -o 'corp: [0-9]*' | grep -o '[0-9]*')
       if [ "$r" -eq 0 ]; then result="no finding"; else result="**crash** (fuzz/artifacts/$t/)"; status=1; fi
-      row="| $(date -u +%F) | \`$t\` (library at $commit) | ${secs} s | ${execs:-?} | cov ${cov:-?}, ft ${ft:-?}, corpus ${corp:-?} | $result | \`bash scripts/fuzz.sh long $runs $t\` |"
+      row="| $(date -u +%F) | \`$t\` (library at $commit) | ${secs} s | ${execs:-?} | cov ${cov:-?}, ft ${ft:-?}, corpus ${corp:-?} | $result | \`${LONG_MAX_SECONDS:+LONG_MAX_SECONDS=$LONG_MAX_SECONDS }bash scripts/fuzz.sh long $runs $t\` |"
       echo "$row"
       echo "$row" >> ../docs/fuzzing.md
     done
