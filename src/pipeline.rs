@@ -583,6 +583,13 @@ const FX_LIMIT: f32 = 32767.0;
 /// within [`FX_LIMIT`] for every entry, in `f32`), and no entry of `a` or
 /// `b` is itself saturated.
 fn fx_product_fits<T: Scalar>(a: &Mat4<T>, b: &Mat4<T>) -> bool {
+    // Quick accept, in `T` (integer compares for `Fx`): every partial sum is
+    // at most 4·max|a|·max|b| (ordinary matrices: entries below ~90).
+    let max =
+        |m: &Mat4<T>| m.cols.iter().flatten().fold(T::ZERO, |m, &v| if v.abs() > m { v.abs() } else { m });
+    if 4.0 * max(a).to_f32() * max(b).to_f32() < FX_LIMIT {
+        return true;
+    }
     let (a, b) = (a.to_f32(), b.to_f32());
     let ok = |v: f32| v.abs() < FX_LIMIT;
     if !a.iter().chain(&b).flatten().all(|&v| ok(v)) {
