@@ -9,6 +9,11 @@
 #   bash scripts/fuzz.sh merge <target>      add the inputs of the last runs that reach new
 #                                            coverage to the committed corpus (fuzz/corpus/<target>)
 #   bash scripts/fuzz.sh build               build the targets only
+#   bash scripts/fuzz.sh long <runs> [targets…]  a long run: <runs> executions per target (all
+#                                            targets by default; each also capped at
+#                                            LONG_MAX_SECONDS, default 86400), its numbers
+#                                            (executions, time, coverage, features, corpus,
+#                                            result) appended to docs/fuzzing.md with the command
 #
 # Works with the stable toolchain: cargo-fuzz needs nightly-only flags
 # (-Zsanitizer, -Cpasses=sancov), which RUSTC_BOOTSTRAP=1 unlocks on stable.
@@ -90,12 +95,40 @@ case "$cmd" in
     t=${2:?usage: fuzz.sh merge <target>}; check_target "$t"
     ensure_cargo_fuzz; build
     cargo fuzz run "${FLAGS[@]}" "$t" "corpus/$t" "target/work-corpus/$t" -- -merge=1 -set_cover_merge=1 -use_counters=0 "${LIBFUZZER[@]}" ;;
+  long)
+    runs=${2:?usage: fuzz.sh long <runs per target> [targets…]}
+    shift 2
+    targets=("$@")
+    [ ${#targets[@]} -eq 0 ] && targets=("${TARGETS[@]}")
+    for t in "${targets[@]}"; do check_target "$t"; done
+    ensure_cargo_fuzz; build
+    commit=$(git -C .. rev-parse --short HEAD)
+    dirty=$(git -C .. status --porcelain -- src | head -1)
+    [ -n "$dirty" ] && commit="$commit+changes"
+    status=0
+    for t in "${targets[@]}"; do
+      start=$SECONDS
+      r=0
+      fuzz "$t" "${LONG_MAX_SECONDS:-86400}" -runs="$runs" || r=$?
+      secs=$((SECONDS - start))
+      log="target/fuzz-$t.log"
+      execs=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$' | tail -1)
+      last=$(grep -E '^#[0-9]+' "$log" | tail -1)
+      cov=$(echo "$last" | grep -o 'cov: [0-9]*' | grep -o '[0-9]*')
+      ft=$(echo "$last" | grep -o 'ft: [0-9]*' | grep -o '[0-9]*')
+      corp=$(echo "$last" | grep -o 'corp: [0-9]*' | grep -o '[0-9]*')
+      if [ "$r" -eq 0 ]; then result="no finding"; else result="**crash** (fuzz/artifacts/$t/)"; status=1; fi
+      row="| $(date -u +%F) | \`$t\` (library at $commit) | ${secs} s | ${execs:-?} | cov ${cov:-?}, ft ${ft:-?}, corpus ${corp:-?} | $result | \`${LONG_MAX_SECONDS:+LONG_MAX_SECONDS=$LONG_MAX_SECONDS }bash scripts/fuzz.sh long $runs $t\` |"
+      echo "$row"
+      echo "$row" >> ../docs/fuzzing.md
+    done
+    exit "$status" ;;
   all)
     secs=${2:?usage: fuzz.sh all <seconds per target>}
     ensure_cargo_fuzz; build
     for t in "${TARGETS[@]}"; do fuzz "$t" "$secs"; done ;;
   "" | -h | --help)
-    sed -n '2,20p' "$0"; exit 2 ;;
+    sed -n '2,25p' "$0"; exit 2 ;;
   *)
     check_target "$cmd"
     secs=${2:?usage: fuzz.sh <target> <seconds>}

@@ -89,6 +89,23 @@ impl<T: Scalar, const A: usize> ClipVertex<T, A> {
         }
     }
 
+    /// [`ClipVertex::lerp`] at a cut `t` computed in `f32`. `Fx` interpolates
+    /// in `f32` too, with the same formula as the `f32` path: `t` rounded to
+    /// 16.16 first is off by up to 2^-17, which moves a cut of a long edge
+    /// by 2^-17 of its length (several pixels for an edge 10^4 long cut near
+    /// its inside end; issue 13). `f32` is unchanged.
+    fn lerp_at(self, o: Self, t: f32) -> Self {
+        if crate::math::vec::is_float::<T>() {
+            return self.lerp(o, T::from_f32(t));
+        }
+        let s = 1.0 - t;
+        let mix = |a: T, b: T| T::from_f32(a.to_f32() * s + b.to_f32() * t);
+        ClipVertex {
+            pos: core::array::from_fn(|i| mix(self.pos[i], o.pos[i])),
+            attr: core::array::from_fn(|i| mix(self.attr[i], o.attr[i])),
+        }
+    }
+
     fn is_valid(&self) -> bool {
         let lim = T::from_f32(INPUT_LIMIT);
         self.pos.iter().chain(self.attr.iter()).all(|c| c.is_finite() && c.abs() <= lim)
@@ -127,10 +144,15 @@ impl<T: Scalar> Ctx<T> {
     /// `t ∈ [0, 1]` from `a`. Computed in `f32` for both paths: Fx distances
     /// and their difference could saturate (`g·w` beyond 32768, say).
     fn cut(&self, a: &[T; 4], b: &[T; 4], p: Plane) -> T {
+        T::from_f32(self.cut_f32(a, b, p))
+    }
+
+    /// [`Ctx::cut`] before its conversion to `T`.
+    fn cut_f32(&self, a: &[T; 4], b: &[T; 4], p: Plane) -> f32 {
         let (g, w_min) = (self.g.to_f32(), self.w_min.to_f32());
         let da = plane_dist(g, w_min, a.map(T::to_f32), p);
         let t = da / (da - plane_dist(g, w_min, b.map(T::to_f32), p));
-        T::from_f32(if t >= 0.0 { t.min(1.0) } else { 0.0 }) // NaN (0/0) → 0
+        if t >= 0.0 { t.min(1.0) } else { 0.0 } // NaN (0/0) → 0
     }
 
     fn active(&self, p: Plane) -> bool {
@@ -377,7 +399,7 @@ fn clip_polygon<T: Scalar, const A: usize>(
         if pin != cin {
             // Always from the inside end: shared edges give identical vertices.
             let (a, b) = if pin { (prev, cur) } else { (cur, prev) };
-            let mut x = a.lerp(b, c.cut(&a.pos, &b.pos, p));
+            let mut x = a.lerp_at(b, c.cut_f32(&a.pos, &b.pos, p));
             c.snap(&mut x.pos, p);
             if !dst.push(x) {
                 return false;

@@ -133,8 +133,9 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     /// [`transform::look_at`]), vertical field of view `fov_y` in radians and
     /// near/far distances, with the aspect ratio of the viewport.
     ///
-    /// Errors: [`Error::InvalidFrameSize`] for a zero or too large viewport
-    /// (checked first), then those of [`transform::perspective`] and
+    /// Errors: [`Error::NonFiniteCoordinate`] for a NaN or infinite
+    /// `fov_y`, `near` or `far`; then [`Error::InvalidFrameSize`] for a zero
+    /// or too large viewport; then those of [`transform::perspective`] and
     /// [`Pipeline::new`].
     pub fn perspective(
         view: Mat4<T>,
@@ -144,8 +145,12 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         width: u32,
         height: u32,
     ) -> Result<Self, Error> {
-        // The viewport first, as in `Pipeline::new` (a zero size would
-        // otherwise give a zero or infinite aspect and `InvalidParameter`).
+        // Non-finite input first (as `transform::perspective`), then the
+        // viewport as in `Pipeline::new` (a zero size would otherwise give a
+        // zero or infinite aspect ratio and `InvalidParameter`).
+        if ![fov_y, near, far].iter().all(|v| v.is_finite()) {
+            return Err(Error::NonFiniteCoordinate);
+        }
         if width == 0 || height == 0 || width > MAX_FRAME_DIM || height > MAX_FRAME_DIM {
             return Err(Error::InvalidFrameSize);
         }
@@ -491,6 +496,13 @@ const FX_LIMIT: f32 = 32767.0;
 /// within [`FX_LIMIT`] for every entry, in `f32`), and no entry of `a` or
 /// `b` is itself saturated.
 fn fx_product_fits<T: Scalar>(a: &Mat4<T>, b: &Mat4<T>) -> bool {
+    // Quick accept, in `T` (integer compares for `Fx`): every partial sum is
+    // at most 4·max|a|·max|b| (ordinary matrices: entries below ~90).
+    let max =
+        |m: &Mat4<T>| m.cols.iter().flatten().fold(T::ZERO, |m, &v| if v.abs() > m { v.abs() } else { m });
+    if 4.0 * max(a).to_f32() * max(b).to_f32() < FX_LIMIT {
+        return true;
+    }
     let (a, b) = (a.to_f32(), b.to_f32());
     let ok = |v: f32| v.abs() < FX_LIMIT;
     if !a.iter().chain(&b).flatten().all(|&v| ok(v)) {

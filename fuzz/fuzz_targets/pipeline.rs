@@ -153,6 +153,11 @@ fn run<T: Scalar, const S: u32>(inp: &mut Input) {
             if is_f32::<T>() && inputs.iter().all(|v| v.is_finite()) && !(near > 0.0 && far > near) {
                 assert!(r.is_err(), "perspective{inputs:?}: near ≤ 0 or far ≤ near accepted");
             }
+            // A bad viewport with finite camera input: InvalidFrameSize, as
+            // `Pipeline::new` (issue 13).
+            if inputs.iter().all(|v| v.is_finite()) && !size_ok {
+                assert_eq!(r.as_ref().err(), Some(&Error::InvalidFrameSize), "perspective {width}×{height}");
+            }
             (r, proj)
         }
         1 => {
@@ -232,10 +237,17 @@ fn run<T: Scalar, const S: u32>(inp: &mut Input) {
     }
     p.cull = inp.pick(&[Cull::None, Cull::Clockwise, Cull::CounterClockwise]);
     p.shade = if inp.bool() { Shade::Flat } else { Shade::Gouraud };
+    let mut light_error = None;
     if inp.bool() {
         let (_, dir) = vec3::<T>(inp);
         let l = Lighting::new(T::from_f32(small(inp)), dir, T::from_f32(small(inp)));
         let l = if inp.bool() { l.with_specular(T::from_f32(small(inp)), u32::from(inp.u8())) } else { l };
+        // The vertex stage reports exactly `validate`'s error (issue 13).
+        light_error = l.validate().err();
+        assert!(
+            matches!(light_error, None | Some(Error::NonFiniteCoordinate | Error::InvalidParameter)),
+            "Lighting::validate: undocumented error {light_error:?}"
+        );
         p = p.with_lighting(l);
     }
     if inp.u8() % 4 == 0 {
@@ -276,11 +288,17 @@ fn run<T: Scalar, const S: u32>(inp: &mut Input) {
     match p.draw_mesh(&mesh, &model, color, &mut bins) {
         Ok(st) => {
             assert_eq!(valid, Ok(()), "draw_mesh accepted a mesh validate rejects");
+            assert_eq!(light_error, None, "draw_mesh accepted lighting validate rejects");
             assert_eq!(st.emitted as usize, bins.len())
         }
         // draw_mesh validates the mesh first: exactly validate's error.
-        Err(e @ (Error::InvalidMesh | Error::NonFiniteCoordinate | Error::CoordinateOutOfRange)) => {
-            assert_eq!(valid, Err(e), "draw_mesh error {e:?} without validate's")
+        Err(e) if valid.is_err() => assert_eq!(valid, Err(e), "draw_mesh error {e:?}, validate's {valid:?}"),
+        // Then the lighting: exactly its `validate` error.
+        Err(e) if light_error.is_some() => assert_eq!(light_error, Some(e), "draw_mesh error {e:?} with bad lighting"),
+        // Fx: a coordinate 16.16 cannot hold (issue 13); never f32.
+        Err(Error::CoordinateOutOfRange) => assert!(!is_f32::<T>(), "f32 draw_mesh: CoordinateOutOfRange"),
+        Err(e @ (Error::InvalidMesh | Error::NonFiniteCoordinate)) => {
+            panic!("draw_mesh error {e:?} without validate's")
         }
         Err(Error::BufferTooSmall) => assert_eq!(bins.len(), BINS),
         Err(Error::InvalidParameter) => {}

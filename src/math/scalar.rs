@@ -220,6 +220,19 @@ impl Fx {
     pub const fn from_bits(b: i32) -> Self {
         Fx(I16F16::from_bits(b))
     }
+    /// The nearest value to `v`, or [`Error::NonFiniteCoordinate`] for NaN and
+    /// ±infinity and [`Error::CoordinateOutOfRange`] for `|v| ≥ 32767` (where
+    /// [`Scalar::from_f32`] would saturate, or nearly): the checked
+    /// conversion for camera and projection parameters.
+    pub fn try_from_f32(v: f32) -> Result<Self, crate::Error> {
+        if !v.is_finite() {
+            Err(crate::Error::NonFiniteCoordinate)
+        } else if v.abs() >= 32767.0 {
+            Err(crate::Error::CoordinateOutOfRange)
+        } else {
+            Ok(Fx::from_bits(fx_bits_from_f32(v)))
+        }
+    }
 }
 
 impl Add for Fx {
