@@ -458,15 +458,18 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     }
 
     /// One vertex of [`Pipeline::snap_positions`].
+    /// `w` is prepared once for the four quotients ([`Scalar::divisor`]:
+    /// for [`Fx`](crate::math::Fx) one reciprocal, each quotient still exact).
     fn snap_vertex(&self, [x, y, z, w]: [T; 4]) -> Option<ScreenVertex<S>> {
+        let w = w.divisor()?;
         let px = self.ndc_to_sub(x, w, self.size.0, self.origin.0, false)?;
         let py = self.ndc_to_sub(y, w, self.size.1, self.origin.1, true)?;
         Some(ScreenVertex {
             pos: SubPoint::new(i32::try_from(px).ok()?, i32::try_from(py).ok()?).ok()?,
-            depth: z.div_scaled(w, u32::MAX as i64)?.clamp(0, u32::MAX as i64) as u32,
+            depth: z.div_scaled_by(w, u32::MAX as i64)?.clamp(0, u32::MAX as i64) as u32,
             // Only ratios of 1/w matter; a vertex nearer than w_ref/4 (which
             // the w_ref contract excludes) saturates rather than vanishing.
-            inv_w: self.w_ref.div_scaled(w, 1 << 30).unwrap_or(i64::MAX).clamp(1, u32::MAX as i64) as u32,
+            inv_w: self.w_ref.div_scaled_by(w, 1 << 30).unwrap_or(i64::MAX).clamp(1, u32::MAX as i64) as u32,
             color: [0; 3],
         })
     }
@@ -521,11 +524,12 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     }
 
     /// `origin + (1 ± ndc)·size/2` in subpixels, `ndc = c/w` (y flipped).
-    fn ndc_to_sub(&self, c: T, w: T, size: u32, origin: i64, flip: bool) -> Option<i64> {
+    fn ndc_to_sub(&self, c: T, w: T::Divisor, size: u32, origin: i64, flip: bool) -> Option<i64> {
         let full = (size as i64) << S; // viewport extent in subpixels
         let c = if flip { -c } else { c };
         // Halve exactly when possible; only S = 0 with an odd size rounds twice.
-        let t = if full % 2 == 0 { c.div_scaled(w, full / 2)? } else { (c.div_scaled(w, full)? + 1) >> 1 };
+        let t =
+            if full % 2 == 0 { c.div_scaled_by(w, full / 2)? } else { (c.div_scaled_by(w, full)? + 1) >> 1 };
         Some((origin << S) + full / 2 + t)
     }
 }

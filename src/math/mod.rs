@@ -1,5 +1,6 @@
 //! Numbers, vectors and matrices for the vertex stage.
 
+pub mod divisor;
 pub mod mat;
 pub mod scalar;
 pub mod transform;
