@@ -51,7 +51,7 @@ impl<T: Scalar> Lighting<T> {
         let spec = match self.specular {
             Some((strength, exp)) if lambert > T::ZERO => {
                 // Half vector between the light and the viewer (at the origin).
-                let h = (self.direction + (-p).normalize()).normalize();
+                let h = (self.direction + (-p).normalize_fast()).normalize_fast();
                 strength * powi(positive(n.dot(h)), exp)
             }
             _ => T::ZERO,

@@ -735,7 +735,7 @@ impl<T: Scalar> VertexCtx<T> {
     fn lit(&self, p: Vec3<T>, normal: Option<[f32; 3]>) -> [T; 3] {
         match (self.lighting, normal) {
             (Some(l), Some(n)) => {
-                let n_eye = (self.nm * Vec3::from_f32(n)).normalize();
+                let n_eye = (self.nm * Vec3::from_f32(n)).normalize_fast();
                 let p_eye = self.mv.transform_point(p).xyz();
                 l.shade(n_eye, p_eye, self.base)
             }

@@ -70,6 +70,10 @@ pub trait Scalar:
     /// [`Scalar::divisor`]: bit-identical, with the denominator's work done
     /// once ([`divisor`](super::divisor)).
     fn div_scaled_by(self, den: Self::Divisor, scale: i64) -> Option<i64>;
+    /// The components of [`Vec3::normalize_fast`](super::Vec3::normalize_fast)
+    /// (see there), `None` for the zero vector.
+    #[doc(hidden)]
+    fn unit3(v: [Self; 3]) -> Option<[Self; 3]>;
     /// The value in `[0, 1]` (clamped; NaN gives 0) times `max`, rounded to
     /// nearest: a colour channel from an intensity.
     fn to_channel(self, max: u8) -> u8;
@@ -136,6 +140,10 @@ impl Scalar for f32 {
             return None;
         }
         Some(super::divisor::round_even_f32(v))
+    }
+    fn unit3(v: [f32; 3]) -> Option<[f32; 3]> {
+        let u = super::Vec3::new(v[0], v[1], v[2]).normalize();
+        Some([u.x, u.y, u.z])
     }
     fn to_channel(self, max: u8) -> u8 {
         let c = if self > 1.0 {
@@ -481,6 +489,9 @@ impl Scalar for Fx {
             }
         }
         self.div_scaled(Fx::from_bits(den.d as i32), scale)
+    }
+    fn unit3(v: [Fx; 3]) -> Option<[Fx; 3]> {
+        super::unit::unit_bits(v.map(Fx::to_bits)).map(|u| u.map(Fx::from_bits))
     }
     fn to_channel(self, max: u8) -> u8 {
         let b = self.to_bits().clamp(0, 1 << 16) as u32;
