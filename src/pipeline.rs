@@ -736,7 +736,13 @@ impl<T: Scalar> VertexCtx<T> {
         match (self.lighting, normal) {
             (Some(l), Some(n)) => {
                 let n_eye = (self.nm * Vec3::from_f32(n)).normalize_fast();
-                let p_eye = self.mv.transform_point(p).xyz();
+                // mv·(p, 1) without its w (the same sums as transform_point).
+                let [a, b, c, d] = &self.mv.cols;
+                let p_eye = Vec3::new(
+                    a[0] * p.x + b[0] * p.y + c[0] * p.z + d[0],
+                    a[1] * p.x + b[1] * p.y + c[1] * p.z + d[1],
+                    a[2] * p.x + b[2] * p.y + c[2] * p.z + d[2],
+                );
                 l.shade(n_eye, p_eye, self.base)
             }
             // No light, or a degenerate face without a normal: ambient only.

@@ -70,10 +70,9 @@ pub trait Scalar:
     /// [`Scalar::divisor`]: bit-identical, with the denominator's work done
     /// once ([`divisor`](super::divisor)).
     fn div_scaled_by(self, den: Self::Divisor, scale: i64) -> Option<i64>;
-    /// The components of [`Vec3::normalize_fast`](super::Vec3::normalize_fast)
-    /// (see there), `None` for the zero vector.
+    /// [`Vec3::normalize_fast`](super::Vec3::normalize_fast) (see there).
     #[doc(hidden)]
-    fn unit3(v: [Self; 3]) -> Option<[Self; 3]>;
+    fn unit3(v: super::Vec3<Self>) -> super::Vec3<Self>;
     /// The value in `[0, 1]` (clamped; NaN gives 0) times `max`, rounded to
     /// nearest: a colour channel from an intensity.
     fn to_channel(self, max: u8) -> u8;
@@ -141,9 +140,8 @@ impl Scalar for f32 {
         }
         Some(super::divisor::round_even_f32(v))
     }
-    fn unit3(v: [f32; 3]) -> Option<[f32; 3]> {
-        let u = super::Vec3::new(v[0], v[1], v[2]).normalize();
-        Some([u.x, u.y, u.z])
+    fn unit3(v: super::Vec3<f32>) -> super::Vec3<f32> {
+        super::unit::unit_f32(v)
     }
     fn to_channel(self, max: u8) -> u8 {
         let c = if self > 1.0 {
@@ -490,8 +488,11 @@ impl Scalar for Fx {
         }
         self.div_scaled(Fx::from_bits(den.d as i32), scale)
     }
-    fn unit3(v: [Fx; 3]) -> Option<[Fx; 3]> {
-        super::unit::unit_bits(v.map(Fx::to_bits)).map(|u| u.map(Fx::from_bits))
+    fn unit3(v: super::Vec3<Fx>) -> super::Vec3<Fx> {
+        match super::unit::unit_bits([v.x, v.y, v.z].map(Fx::to_bits)) {
+            Some([x, y, z]) => super::Vec3::new(Fx::from_bits(x), Fx::from_bits(y), Fx::from_bits(z)),
+            None => v,
+        }
     }
     fn to_channel(self, max: u8) -> u8 {
         let b = self.to_bits().clamp(0, 1 << 16) as u32;

@@ -115,17 +115,15 @@ impl<T: Scalar> Vec3<T> {
         Vec3::new((self.x / m) / s, (self.y / m) / s, (self.z / m) / s)
     }
 
-    /// The unit vector for shading: for `f32` exactly [`Vec3::normalize`];
-    /// for `Fx` within `2^-16` of the exact unit vector per component (an
-    /// eighth of [`Vec3::normalize`]'s bound), without a division or a
-    /// bit-by-bit square root (a reciprocal square root by table and Newton
-    /// steps in integers: a quarter of the instructions on the Cortex-M0).
-    /// The zero vector is returned unchanged.
+    /// The unit vector for shading, without a division or a square root
+    /// (a reciprocal square root by Newton steps): for `f32` within
+    /// `6·2^-24` of the exact unit vector per component (where the squared
+    /// length lies in `[2^-100, 2^100]`; beyond, and for NaN, exactly
+    /// [`Vec3::normalize`]); for `Fx` within `2^-16` per component (an eighth
+    /// of [`Vec3::normalize`]'s bound) at a quarter of its instructions on
+    /// the Cortex-M0. The zero vector is returned unchanged.
     pub fn normalize_fast(self) -> Self {
-        match T::unit3([self.x, self.y, self.z]) {
-            Some([x, y, z]) => Vec3::new(x, y, z),
-            None => self,
-        }
+        T::unit3(self)
     }
 
     /// `|v/m|²` for `m` the largest component: always within [1, 3].
