@@ -85,6 +85,7 @@ fn rsqrt_q29(n: u32) -> u32 {
 /// (`2^-30` relative), `ρ` is within `2^-21` relative, and the product
 /// `X·ρ` rounds once to 16.16 (`2^-17`). So each component is within
 /// `2^-17 + 2^-20.9 < 2^-16` of the exact unit vector's.
+#[inline(never)] // inlined, its 64-bit temporaries would grow the callers' stack frames
 pub(crate) fn unit_bits(v: [i32; 3]) -> Option<[i32; 3]> {
     let a = v.map(i32::unsigned_abs);
     let m = a[0].max(a[1]).max(a[2]);
