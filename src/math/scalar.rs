@@ -119,7 +119,7 @@ impl Scalar for f32 {
         (self > 0.0 && self <= f32::MAX).then_some(self)
     }
     fn div_scaled_by(self, den: f32, scale: i64) -> Option<i64> {
-        if !(micromath::F32Ext::abs(self) <= f32::MAX) {
+        if !self.is_finite() {
             return None;
         }
         // `as f32` of an i32 rounds like that of the same i64 value, without
@@ -134,8 +134,7 @@ impl Scalar for f32 {
             scale as f32
         };
         let v = self / den * s;
-        // NaN fails this test too.
-        if !(v.abs() <= (1u64 << 40) as f32) {
+        if v.is_nan() || v.abs() > (1u64 << 40) as f32 {
             return None;
         }
         Some(super::divisor::round_even_f32(v))
