@@ -410,15 +410,18 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     }
 
     /// One vertex of [`Pipeline::snap_positions`].
+    /// `w` is prepared once for the four quotients ([`Scalar::divisor`]:
+    /// for [`Fx`](crate::math::Fx) one reciprocal, each quotient still exact).
     fn snap_vertex(&self, [x, y, z, w]: [T; 4]) -> Option<ScreenVertex<S>> {
+        let w = w.divisor()?;
         let px = self.ndc_to_sub(x, w, self.size.0, self.origin.0, false)?;
         let py = self.ndc_to_sub(y, w, self.size.1, self.origin.1, true)?;
         Some(ScreenVertex {
             pos: SubPoint::new(i32::try_from(px).ok()?, i32::try_from(py).ok()?).ok()?,
-            depth: z.div_scaled(w, u32::MAX as i64)?.clamp(0, u32::MAX as i64) as u32,
+            depth: z.div_scaled_by(w, u32::MAX as i64)?.clamp(0, u32::MAX as i64) as u32,
             // Only ratios of 1/w matter; a vertex nearer than w_ref/4 (which
             // the w_ref contract excludes) saturates rather than vanishing.
-            inv_w: self.w_ref.div_scaled(w, 1 << 30).unwrap_or(i64::MAX).clamp(1, u32::MAX as i64) as u32,
+            inv_w: self.w_ref.div_scaled_by(w, 1 << 30).unwrap_or(i64::MAX).clamp(1, u32::MAX as i64) as u32,
             color: [0; 3],
         })
     }
@@ -473,11 +476,12 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     }
 
     /// `origin + (1 ± ndc)·size/2` in subpixels, `ndc = c/w` (y flipped).
-    fn ndc_to_sub(&self, c: T, w: T, size: u32, origin: i64, flip: bool) -> Option<i64> {
+    fn ndc_to_sub(&self, c: T, w: T::Divisor, size: u32, origin: i64, flip: bool) -> Option<i64> {
         let full = (size as i64) << S; // viewport extent in subpixels
         let c = if flip { -c } else { c };
         // Halve exactly when possible; only S = 0 with an odd size rounds twice.
-        let t = if full % 2 == 0 { c.div_scaled(w, full / 2)? } else { (c.div_scaled(w, full)? + 1) >> 1 };
+        let t =
+            if full % 2 == 0 { c.div_scaled_by(w, full / 2)? } else { (c.div_scaled_by(w, full)? + 1) >> 1 };
         Some((origin << S) + full / 2 + t)
     }
 }
@@ -709,8 +713,14 @@ impl<T: Scalar> VertexCtx<T> {
     fn lit(&self, p: Vec3<T>, normal: Option<[f32; 3]>) -> [T; 3] {
         match (self.lighting, normal) {
             (Some(l), Some(n)) => {
-                let n_eye = (self.nm * Vec3::from_f32(n)).normalize();
-                let p_eye = self.mv.transform_point(p).xyz();
+                let n_eye = (self.nm * Vec3::from_f32(n)).normalize_fast();
+                // mv·(p, 1) without its w (the same sums as transform_point).
+                let [a, b, c, d] = &self.mv.cols;
+                let p_eye = Vec3::new(
+                    a[0] * p.x + b[0] * p.y + c[0] * p.z + d[0],
+                    a[1] * p.x + b[1] * p.y + c[1] * p.z + d[1],
+                    a[2] * p.x + b[2] * p.y + c[2] * p.z + d[2],
+                );
                 l.shade(n_eye, p_eye, self.base)
             }
             // No light, or a degenerate face without a normal: ambient only.

@@ -152,7 +152,10 @@ impl Scene3d {
         Ok(total)
     }
 
-    /// Model matrices and colours of the three meshes at `angle`.
+    /// Model matrices and colours of the three meshes at `angle`. Not
+    /// inlined: its matrix temporaries would stay in [`Scene3d::draw`]'s
+    /// stack frame during the vertex stage (the Cortex-M0 has 16 KB of RAM).
+    #[inline(never)]
     fn models<T: Scalar, C: Interpolate>(angle: f32) -> [(Mat4<T>, C); 3] {
         let f = T::from_f32;
         let color = |rgb: [f32; 3]| {

@@ -1,8 +1,10 @@
 //! Numbers, vectors and matrices for the vertex stage.
 
+pub mod divisor;
 pub mod mat;
 pub mod scalar;
 pub mod transform;
+mod unit;
 pub mod vec;
 
 pub use mat::{Mat3, Mat4};

@@ -60,6 +60,19 @@ pub trait Scalar:
     /// its full precision (one `i64` division) instead of rounding `self/den`
     /// to 16 fractional bits first. `f32` rounds to nearest, ties to even.
     fn div_scaled(self, den: Self, scale: i64) -> Option<i64>;
+    /// A denominator prepared for several [`Scalar::div_scaled_by`].
+    type Divisor: Copy + Debug;
+    /// `self` prepared as the denominator of [`Scalar::div_scaled_by`], or
+    /// `None` where [`Scalar::div_scaled`] would fail for any numerator (not
+    /// finite, or `≤ 0`).
+    fn divisor(self) -> Option<Self::Divisor>;
+    /// `self.div_scaled(den, scale)` for `den` prepared by
+    /// [`Scalar::divisor`]: bit-identical, with the denominator's work done
+    /// once ([`divisor`](super::divisor)).
+    fn div_scaled_by(self, den: Self::Divisor, scale: i64) -> Option<i64>;
+    /// [`Vec3::normalize_fast`](super::Vec3::normalize_fast) (see there).
+    #[doc(hidden)]
+    fn unit3(v: super::Vec3<Self>) -> super::Vec3<Self>;
     /// The value in `[0, 1]` (clamped; NaN gives 0) times `max`, rounded to
     /// nearest: a colour channel from an intensity.
     fn to_channel(self, max: u8) -> u8;
@@ -97,42 +110,37 @@ impl Scalar for f32 {
         crate::subpixel::snap_f32_bits(self, s).ok()
     }
     fn div_scaled(self, den: Self, scale: i64) -> Option<i64> {
-        if !(self.is_finite() && den.is_finite() && den > 0.0) {
+        self.div_scaled_by(den.divisor()?, scale)
+    }
+    type Divisor = f32;
+    #[inline]
+    fn divisor(self) -> Option<f32> {
+        // False for NaN too.
+        (self > 0.0 && self <= f32::MAX).then_some(self)
+    }
+    fn div_scaled_by(self, den: f32, scale: i64) -> Option<i64> {
+        if !self.is_finite() {
             return None;
         }
         // `as f32` of an i32 rounds like that of the same i64 value, without
         // the 64-bit conversion (a library call on 32-bit targets).
-        let s = match (i32::try_from(scale), u32::try_from(scale)) {
-            (Ok(s), _) => s as f32,
-            (_, Ok(s)) => s as f32,
-            _ => scale as f32,
+        // (An `if` chain, since LLVM hoists a `match` on both conversions'
+        // results above the branch, library call included.)
+        let s = if let Ok(s) = u32::try_from(scale) {
+            s as f32
+        } else if let Ok(s) = i32::try_from(scale) {
+            s as f32
+        } else {
+            scale as f32
         };
         let v = self / den * s;
-        // NaN fails this test too.
         if v.is_nan() || v.abs() > (1u64 << 40) as f32 {
             return None;
         }
-        if (0.0..4_294_967_296.0).contains(&v) {
-            // The same rounding in u32 (t ≤ 2^32 − 256, so t + 1 fits).
-            let t = v as u32;
-            let frac = v - t as f32;
-            let r = if frac > 0.5 || (frac == 0.5 && t & 1 == 1) { t + 1 } else { t };
-            return Some(r as i64);
-        }
-        if v.abs() < 2_147_483_648.0 {
-            // The same rounding in i32 (|t| ≤ 2^31 − 128, so t ± 1 fits).
-            let t = v as i32;
-            let frac = v - t as f32;
-            let step = if v < 0.0 { -1 } else { 1 };
-            let r = if frac.abs() > 0.5 || (frac.abs() == 0.5 && t & 1 == 1) { t + step } else { t };
-            return Some(r as i64);
-        }
-        // |v| ≤ 2^40: the cast is exact after rounding; ties to even as in snapping.
-        let t = v as i64;
-        let frac = v - t as f32;
-        let step = if v < 0.0 { -1 } else { 1 };
-        let r = if frac.abs() > 0.5 || (frac.abs() == 0.5 && t & 1 == 1) { t + step } else { t };
-        Some(r)
+        Some(super::divisor::round_even_f32(v))
+    }
+    fn unit3(v: super::Vec3<f32>) -> super::Vec3<f32> {
+        super::unit::unit_f32(v)
     }
     fn to_channel(self, max: u8) -> u8 {
         let c = if self > 1.0 {
@@ -474,6 +482,29 @@ impl Scalar for Fx {
             }
         };
         if q.abs() <= 1 << 40 { Some(q) } else { None }
+    }
+    type Divisor = super::divisor::FxDivisor;
+    #[inline]
+    fn divisor(self) -> Option<Self::Divisor> {
+        super::divisor::FxDivisor::new(self.to_bits())
+    }
+    #[inline]
+    fn div_scaled_by(self, den: Self::Divisor, scale: i64) -> Option<i64> {
+        // Scales up to 2^32 (all of snapping's): |bits·scale| < 2^63 in u64.
+        if let Ok(sa) = u32::try_from(scale.unsigned_abs()) {
+            let m = super::divisor::mul_wide_u32(self.to_bits().unsigned_abs(), sa);
+            if let Some(q) = den.div_round(m) {
+                let q = q as i64;
+                return Some(if (self.to_bits() < 0) != (scale < 0) { -q } else { q });
+            }
+        }
+        self.div_scaled(Fx::from_bits(den.d as i32), scale)
+    }
+    fn unit3(v: super::Vec3<Fx>) -> super::Vec3<Fx> {
+        match super::unit::unit_bits([v.x, v.y, v.z].map(Fx::to_bits)) {
+            Some([x, y, z]) => super::Vec3::new(Fx::from_bits(x), Fx::from_bits(y), Fx::from_bits(z)),
+            None => v,
+        }
     }
     fn to_channel(self, max: u8) -> u8 {
         let b = self.to_bits().clamp(0, 1 << 16) as u32;

@@ -1,0 +1,235 @@
+//! One divisor, several quotients: the perspective divide of a vertex
+//! ([`Scalar::divisor`](super::Scalar::divisor) and
+//! [`Scalar::div_scaled_by`](super::Scalar::div_scaled_by)).
+//!
+//! A snapped vertex needs `x/w`, `y/w`, `z/w` and `w_ref/w`, each scaled and
+//! rounded to an integer. [`Fx`](super::Fx) prepares `w` once (normalised,
+//! with a 32-bit reciprocal) and then divides each numerator by one
+//! 32×32→64-bit multiply, one 32-bit multiply and at most two corrections
+//! (Möller and Granlund, "Improved division by invariant integers", 2011,
+//! algorithm 4): the quotient is *exact*, bit-identical to
+//! [`Scalar::div_scaled`](super::Scalar::div_scaled), with no 64-bit division
+//! (a library call on Cortex-M, and a 32-step loop on the Cortex-M0).
+//!
+//! `f32` keeps one correctly rounded division per numerator (one instruction
+//! with an FPU; a reciprocal shared by the four would change the rounding of
+//! `x/w` and so the snapped positions) and rounds to an integer with the
+//! `2^23` trick instead of branches on the fraction: the same result.
+
+/// True on the Cortex-M0 (ARMv6-M): no 32×32→64-bit multiply, no divider.
+const ARMV6M: bool = cfg!(all(target_arch = "arm", not(target_feature = "thumb2")));
+
+/// `a·b` exactly. On the Cortex-M0 from four 16×16-bit products (each fits
+/// a `u32`), elsewhere one widening multiply (`__aeabi_lmul` would handle
+/// 64×64 bits on the Cortex-M0).
+#[inline]
+pub(crate) fn mul_wide_u32(a: u32, b: u32) -> u64 {
+    if ARMV6M { mul_wide_u32_16(a, b) } else { a as u64 * b as u64 }
+}
+
+/// [`mul_wide_u32`] from four 16×16-bit products (tested on every target).
+#[inline]
+fn mul_wide_u32_16(a: u32, b: u32) -> u64 {
+    let (ah, al, bh, bl) = (a >> 16, a & 0xFFFF, b >> 16, b & 0xFFFF);
+    let mid = (ah * bl) as u64 + (al * bh) as u64; // < 2^33
+    (((ah * bh) as u64) << 32) + (mid << 16) + (al * bl) as u64
+}
+
+/// A positive [`Fx`](super::Fx) denominator prepared for exact rounding
+/// division of 64-bit numerators ([`FxDivisor::div_round`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct FxDivisor {
+    /// The raw 16.16 bits of the denominator, `0 < d < 2^31`.
+    pub(crate) d: u32,
+    /// `d << sh` has bit 31 set.
+    sh: u32,
+    /// `⌊(2^64 − 1)/(d << sh)⌋ − 2^32`, the reciprocal of algorithm 4.
+    v: u32,
+}
+
+impl FxDivisor {
+    /// The divisor `d` (raw bits), `None` unless `0 < d`.
+    pub(crate) fn new(d: i32) -> Option<Self> {
+        let d = u32::try_from(d).ok().filter(|&d| d > 0)?;
+        let sh = d.leading_zeros();
+        let dn = d << sh;
+        Some(FxDivisor { d, sh, v: reciprocal(dn) })
+    }
+
+    /// `⌊(m + ⌊d/2⌋) / d⌋` (the rounding of
+    /// [`Scalar::div_scaled`](super::Scalar::div_scaled)), exactly, or
+    /// `None` if it is `2^32` or more (the caller then divides the slow way).
+    #[inline]
+    pub(crate) fn div_round(&self, m: u64) -> Option<u32> {
+        // m < 2^63 and d/2 < 2^30: no overflow.
+        let m = m + (self.d / 2) as u64;
+        // The quotient fits 32 bits iff ⌊m / 2^32⌋ < d; then m·2^sh < 2^64.
+        if (m >> 32) >= self.d as u64 {
+            return None;
+        }
+        Some(div_2by1(m << self.sh, self.d << self.sh, self.v))
+    }
+}
+
+/// `⌊u / d⌋` for `d ≥ 2^31` and `⌊u / 2^32⌋ < d`, with `v` from
+/// [`reciprocal`] (Möller–Granlund algorithm 4: the estimate is at most one
+/// too large or two too small, fixed by the remainder tests).
+#[inline]
+fn div_2by1(u: u64, d: u32, v: u32) -> u32 {
+    let (u1, u0) = ((u >> 32) as u32, u as u32);
+    // (q1, q0) = v·u1 + (u1 + 1, u0) mod 2^64; u1 + 1 ≤ d fits a u32.
+    let q = mul_wide_u32(v, u1).wrapping_add((((u1 + 1) as u64) << 32) | u0 as u64);
+    let (mut q1, q0) = ((q >> 32) as u32, q as u32);
+    let mut r = u0.wrapping_sub(q1.wrapping_mul(d));
+    if r > q0 {
+        q1 = q1.wrapping_sub(1);
+        r = r.wrapping_add(d);
+    }
+    if r >= d {
+        q1 += 1;
+    }
+    q1
+}
+
+/// `⌊(2^64 − 1)/d⌋ − 2^32` for `d ≥ 2^31` (in `[0, 2^32)`): the quotient
+/// of `(2^32 − 1 − d, 2^32 − 1)` by `d`. One 64-bit division where there is
+/// a 32×32→64 multiply (its library call is short there), 32 restoring
+/// steps on the Cortex-M0.
+fn reciprocal(d: u32) -> u32 {
+    if ARMV6M { reciprocal_by_steps(d) } else { (u64::MAX / d as u64 - (1 << 32)) as u32 }
+}
+
+/// [`reciprocal`] by restoring division (tested on every target).
+fn reciprocal_by_steps(d: u32) -> u32 {
+    let (mut r, mut lo, mut q) = (!d, u32::MAX, 0u32);
+    for _ in 0..32 {
+        // r < d < 2^32: the bit shifted out of r means 2r ≥ 2^32 > d.
+        let top = r >> 31;
+        r = (r << 1) | (lo >> 31);
+        lo <<= 1;
+        q <<= 1;
+        if top != 0 || r >= d {
+            r = r.wrapping_sub(d);
+            q |= 1;
+        }
+    }
+    q
+}
+
+/// `v` rounded to the nearest integer, ties to even, for `|v| ≤ 2^40`
+/// (finite): adding and subtracting `2^23` rounds exactly (IEEE addition
+/// rounds to nearest even on every target), and from `2^23` on every `f32`
+/// is an integer.
+#[inline]
+pub(crate) fn round_even_f32(v: f32) -> i64 {
+    const TWO23: f32 = 8_388_608.0;
+    let a = if v < 0.0 { -v } else { v };
+    let r = if a < TWO23 {
+        ((a + TWO23) - TWO23) as i32 as i64
+    } else if a < 2_147_483_648.0 {
+        a as i32 as i64 // an i32 conversion: no 64-bit library call
+    } else {
+        a as i64
+    };
+    if v < 0.0 { -r } else { r }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::math::vec::tests::Rng;
+    use crate::math::{Fx, Scalar};
+
+    #[test]
+    fn prepared_division_is_exact() {
+        let mut rng = Rng(0xD1_5EED);
+        let mut n = 0;
+        for i in 0..1_000_000u32 {
+            let r = rng.next();
+            let d = ((r as u32) >> (1 + i % 31)).max(1);
+            let Some(p) = FxDivisor::new(d as i32) else { panic!("{d}") };
+            let m = rng.next() >> (1 + (r >> 40) % 63);
+            let want = (u128::from(m) + u128::from(d / 2)) / u128::from(d);
+            match p.div_round(m) {
+                Some(q) => assert_eq!(u128::from(q), want, "{m} / {d}"),
+                None => assert!(want >= 1 << 32, "{m} / {d}: {want}"),
+            }
+            n += 1;
+        }
+        assert_eq!(n, 1_000_000);
+        // Extremes of the normalised form and of the quotient.
+        for d in [1u32, 2, 3, 0x7FFF_FFFF, 0x4000_0000, 0x4000_0001, 65536] {
+            let p = FxDivisor::new(d as i32).unwrap();
+            for m in
+                [0u64, 1, d as u64 - 1, d as u64, (d as u64) << 31, ((d as u64) << 32) - 1 - d as u64 / 2]
+            {
+                let want = (u128::from(m) + u128::from(d / 2)) / u128::from(d);
+                assert_eq!(p.div_round(m).map(u128::from), Some(want), "{m} / {d}");
+            }
+            assert_eq!(p.div_round(((d as u64) << 32) - d as u64 / 2), None);
+        }
+        assert_eq!(FxDivisor::new(0), None);
+        assert_eq!(FxDivisor::new(-5), None);
+    }
+
+    #[test]
+    fn wide_product_and_reciprocal_are_exact() {
+        let mut rng = Rng(99);
+        for _ in 0..200_000 {
+            let r = rng.next();
+            let (a, b) = (r as u32, (r >> 32) as u32);
+            assert_eq!(mul_wide_u32(a, b), u64::from(a) * u64::from(b));
+            assert_eq!(mul_wide_u32_16(a, b), u64::from(a) * u64::from(b));
+            let d = a | 1 << 31;
+            assert_eq!(u64::from(reciprocal_by_steps(d)), u64::MAX / u64::from(d) - (1 << 32), "{d}");
+        }
+        for d in [1u32 << 31, u32::MAX, (1 << 31) + 1] {
+            assert_eq!(u64::from(reciprocal_by_steps(d)), u64::MAX / u64::from(d) - (1 << 32), "{d}");
+        }
+        assert_eq!(mul_wide_u32(u32::MAX, u32::MAX), u64::from(u32::MAX) * u64::from(u32::MAX));
+    }
+
+    #[test]
+    fn round_even_matches_the_definition() {
+        let mut rng = Rng(5);
+        for i in 0..400_000u32 {
+            let v = match i % 3 {
+                0 => rng.range(-2e7, 2e7),
+                1 => (rng.next() as i32 >> (i % 24)) as f32 * 0.5, // ties
+                _ => rng.range(-1.0995e12, 1.0995e12),
+            };
+            let x = f64::from(v);
+            let want = {
+                let f = x.floor();
+                let frac = x - f;
+                if frac > 0.5 || (frac == 0.5 && f.rem_euclid(2.0) == 1.0) { f + 1.0 } else { f }
+            };
+            assert_eq!(round_even_f32(v) as f64, want, "{v}");
+        }
+    }
+
+    /// The prepared forms against `div_scaled` itself (whose rounding the
+    /// tests in `scalar.rs` check against f64), for the scales snapping uses.
+    #[test]
+    fn div_scaled_by_equals_div_scaled() {
+        let mut rng = Rng(17);
+        let scales = [2560i64, 1280, 5120 * 16, 1 << 30, u32::MAX as i64, 1, 3, -7, 1 << 40];
+        let mut n = 0;
+        for i in 0..300_000u32 {
+            let r = rng.next();
+            let (c, w) = (r as i32 >> (i % 29), ((r >> 32) as i32 >> (i / 29 % 31)).wrapping_abs());
+            let (c, w) = (Fx::from_bits(c), Fx::from_bits(if i % 7 == 0 { -w } else { w }));
+            let s = scales[i as usize % scales.len()];
+            let want = c.div_scaled(w, s);
+            let got = w.divisor().and_then(|d| c.div_scaled_by(d, s));
+            assert_eq!(got, want, "{c:?} / {w:?} · {s}");
+            let (cf, wf) = (rng.range(-3000.0, 3000.0), rng.range(-1.0, 200.0));
+            let wf = if i % 11 == 0 { f32::NAN } else { wf };
+            let cf = if i % 13 == 0 { f32::INFINITY } else { cf };
+            let want = cf.div_scaled(wf, s);
+            assert_eq!(wf.divisor().and_then(|d| cf.div_scaled_by(d, s)), want, "{cf} / {wf} · {s}");
+            n += usize::from(want.is_some());
+        }
+        assert!(n > 200_000, "{n}");
+    }
+}
