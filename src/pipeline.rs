@@ -375,11 +375,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     /// mesh (one `f32` test per mesh, a few soft-float operations on parts
     /// without an FPU).
     fn sphere_visible(&self, mvp: &Mat4<T>, (c, r): ([f32; 3], f32)) -> bool {
-        let (x, y, z, w) = (row_f32(mvp, 0), row_f32(mvp, 1), row_f32(mvp, 2), row_f32(mvp, 3));
-        let mut planes = [w + x, w - x, w + y, w - y, z, w - z];
-        if !self.clip.far() {
-            planes[5] = planes[4]; // no far plane: test near twice
-        }
+        let planes = view_planes(rows_f32(mvp), self.clip.far());
         let centre = Vec4::new(c[0], c[1], c[2], 1.0);
         planes.iter().all(|p| p.dot(centre) >= -(r * p.xyz().length()))
     }
@@ -490,6 +486,18 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
 fn row_f32<T: Scalar>(m: &Mat4<T>, i: usize) -> Vec4<f32> {
     let c = &m.cols;
     Vec4::new(c[0][i].to_f32(), c[1][i].to_f32(), c[2][i].to_f32(), c[3][i].to_f32())
+}
+
+/// The four rows `x, y, z, w` of `m` in `f32` ([`row_f32`]).
+fn rows_f32<T: Scalar>(m: &Mat4<T>) -> [Vec4<f32>; 4] {
+    [0, 1, 2, 3].map(|i| row_f32(m, i))
+}
+
+/// The view-volume planes from the rows of a model-view-projection matrix,
+/// `p · (x, 1) ≥ 0` inside: left, right, bottom, top, near, and far (near
+/// again when there is no far plane).
+fn view_planes([x, y, z, w]: [Vec4<f32>; 4], far: bool) -> [Vec4<f32>; 6] {
+    [w + x, w - x, w + y, w - y, z, if far { w - z } else { z }]
 }
 
 /// The largest magnitude an `Fx` sum of products may reach without

@@ -18,12 +18,8 @@ use std::path::Path;
 #[path = "../common/knot_mesh.rs"]
 mod knot_mesh;
 
-const W: usize = 320;
-const HEIGHT: u32 = 240;
-const S: u32 = super::S;
-const BAND_ROWS: usize = 16;
-const ANGLE: f32 = 3.0;
-const BACKGROUND: Rgb888 = Rgb888::new(18, 22, 34);
+// The standard 3D scene's frame, bands, angle and background.
+use super::scene3d::{ANGLE, BACKGROUND, BAND_ROWS, HEIGHT, S, W};
 const COLOR: Rgb888 = Rgb888::new(222, 186, 98);
 
 fn model() -> Mat4<f32> {

@@ -13,16 +13,16 @@ use microraster::scenes3d::{BINS, Scene3d, Stats, TRIANGLES};
 use microraster::{Band, Renderer};
 use std::path::Path;
 
-const W: usize = 320;
-const HEIGHT: u32 = 240;
+pub const W: usize = 320;
+pub const HEIGHT: u32 = 240;
 /// Subpixel bits, as in the 2D scenes: 1/16 px.
-const S: u32 = super::S;
+pub const S: u32 = super::S;
 /// Band rows of the main frame.
-const BAND_ROWS: usize = 16;
+pub const BAND_ROWS: usize = 16;
 /// Animation angle (radians) of the frame shown.
-const ANGLE: f32 = 3.0;
+pub const ANGLE: f32 = 3.0;
 /// Frame background: a dark slate, so that unlit sides stand out from it.
-const BACKGROUND: Rgb888 = Rgb888::new(18, 22, 34);
+pub const BACKGROUND: Rgb888 = Rgb888::new(18, 22, 34);
 
 type Z = Depth16;
 type Bins = heapless::Vec<ScreenTriangle<S>, BINS>;

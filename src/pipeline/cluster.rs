@@ -20,7 +20,7 @@
 //! images.
 
 use super::cache::{VertexCache, VertexSource};
-use super::{Band, MeshStats, Pipeline, row_f32};
+use super::{Band, MeshStats, Pipeline, rows_f32, view_planes};
 use crate::depth::DepthFormat;
 use crate::edge::Cull;
 use crate::math::{Mat4, Scalar, Vec3, Vec4};
@@ -60,7 +60,7 @@ impl VertexSource for ClusterSource<'_> {
 struct ClusterCull {
     /// Planes `p` with `p · (x, 1) ≥ 0` inside: the view volume and the
     /// band's slab, with `|p.xyz|`.
-    planes: [(Vec4<f32>, f32); 8],
+    planes: [(Vec4<f32>, f32); 8], // the slab's two, then the view volume's six
     count: usize,
     /// The eye as a homogeneous model-space point `(e, ew)`, `ew ≥ 0`
     /// (`ew = 0`: orthographic, `e` points towards the viewer); `None`: no
@@ -70,7 +70,8 @@ struct ClusterCull {
 
 impl ClusterCull {
     fn new<T: Scalar>(mvp: &Mat4<T>, far: bool, band: &Band<T>, cone: bool) -> Self {
-        let (x, y, z, w) = (row_f32(mvp, 0), row_f32(mvp, 1), row_f32(mvp, 2), row_f32(mvp, 3));
+        let rows = rows_f32(mvp);
+        let [x, y, z, w] = rows;
         let mut planes = [(Vec4::new(0.0, 0.0, 0.0, 0.0), 0.0); 8];
         let mut count = 0;
         let mut add = |p: Vec4<f32>| {
@@ -84,11 +85,8 @@ impl ClusterCull {
         if let Some(k) = band.below {
             add(y - w * k.to_f32());
         }
-        for p in [w + x, w - x, w + y, w - y, z] {
+        for p in view_planes(rows, far) {
             add(p);
-        }
-        if far {
-            add(w - z);
         }
         ClusterCull { planes, count, eye: if cone { eye_point(x, y, z, w) } else { None } }
     }
@@ -116,21 +114,18 @@ impl ClusterCull {
     }
 }
 
-/// The cone test of [`MeshletMesh`](crate::mesh::MeshletMesh): `axis · v > cutoff · |v| + r · ew ·
-/// (1 + cutoff)` with `v = c · ew − e`, evaluated on `v` scaled by its
-/// largest component `m`, with a slack of `2^-6` in the normalised terms
-/// (`f32` rounding is far below it).
+/// The cone test of [`MeshletMesh`](crate::mesh::MeshletMesh): `axis · v >
+/// cutoff · |v| + r · ew · (1 + cutoff)` with `v = c · ew − e`, with a
+/// slack of `2^-6` relative to `|v|` and to the right-hand side (`f32`
+/// rounding is far below it).
 fn faces_away(c: Vec3<f32>, r: f32, axis: [f32; 3], cutoff: f32, e: Vec3<f32>, ew: f32) -> bool {
+    const SLACK: f32 = 1.0 / 64.0;
     let v = c * ew - e;
-    let m = v.x.abs().max(v.y.abs()).max(v.z.abs());
-    if !(m > 0.0 && m.is_finite()) {
+    let len = v.length();
+    if !(len > 0.0 && len.is_finite()) {
         return false;
     }
-    let u = v * (1.0 / m);
-    let a = Vec3::from_f32(axis);
-    const SLACK: f32 = 1.0 / 64.0;
-    let lhs = a.dot(u) - cutoff * u.length() - SLACK;
-    lhs > 0.0 && lhs * m > r * ew * (1.0 + cutoff) * (1.0 + SLACK)
+    Vec3::from_f32(axis).dot(v) - (cutoff + SLACK) * len > r * ew * (1.0 + cutoff) * (1.0 + SLACK)
 }
 
 /// The centre of projection in model space: the homogeneous point `E` with
