@@ -218,7 +218,7 @@ impl<C: Interpolate> Renderer<C> {
 
     /// The band loop itself, for custom passes: for each band, clear it to the
     /// background, call `draw(view, y0, y1)` to fill frame rows `y0..y1`
-    /// (mix 2D [`Primitive`]s, [`draw_triangle`] calls with your own
+    /// (mix 2D [`Primitive`]s, [`draw_triangle`](crate::raster3d::draw_triangle) calls with your own
     /// [`DepthBand`], or anything that writes through the
     /// [`Blitter`](crate::blit::Blitter) trait), then send the band with one
     /// `fill_contiguous`. [`Renderer::render`] and [`Renderer::render_3d`] are

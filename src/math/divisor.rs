@@ -36,7 +36,7 @@ fn mul_wide_u32_16(a: u32, b: u32) -> u64 {
 }
 
 /// A positive [`Fx`](super::Fx) denominator prepared for exact rounding
-/// division of 64-bit numerators ([`FxDivisor::div_round`]).
+/// division of 64-bit numerators (`FxDivisor::div_round`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct FxDivisor {
     /// The raw 16.16 bits of the denominator, `0 < d < 2^31`.

@@ -228,8 +228,8 @@ impl Fx {
     pub const fn from_bits(b: i32) -> Self {
         Fx(I16F16::from_bits(b))
     }
-    /// The nearest value to `v`, or [`Error::NonFiniteCoordinate`] for NaN and
-    /// ±infinity and [`Error::CoordinateOutOfRange`] for `|v| ≥ 32767` (where
+    /// The nearest value to `v`, or [`Error::NonFiniteCoordinate`](crate::Error::NonFiniteCoordinate) for NaN and
+    /// ±infinity and [`Error::CoordinateOutOfRange`](crate::Error::CoordinateOutOfRange) for `|v| ≥ 32767` (where
     /// [`Scalar::from_f32`] would saturate, or nearly): the checked
     /// conversion for camera and projection parameters.
     pub fn try_from_f32(v: f32) -> Result<Self, crate::Error> {
