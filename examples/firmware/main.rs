@@ -30,6 +30,7 @@ mod stack;
 
 #[cfg(target_os = "none")]
 mod firmware {
+    #[cfg(target_abi = "eabihf")]
     use crate::fragment;
     use crate::stack;
     use crate::workload::*;
