@@ -8,6 +8,8 @@ use crate::raster3d::{Interpolation, ScreenTriangle};
 mod band3d;
 mod dirty;
 pub mod link;
+#[cfg(feature = "std")]
+mod threads;
 use crate::{Error, Interpolate, Primitive, RenderError};
 pub use band3d::Band3d;
 pub use dirty::{DirtyBands, signature};

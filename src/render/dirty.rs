@@ -30,7 +30,7 @@ use crate::{Error, Interpolate};
 /// use embedded_graphics_core::pixelcolor::Gray8;
 /// use microraster::render::DirtyBands;
 /// use microraster::{Band, Renderer};
-/// let mut bands = [Band::<Gray8, 8, 4>::new(Gray8::new(0)); 2];
+/// let mut bands = [const { Band::<Gray8, 8, 4>::new(Gray8::new(0)) }; 2];
 /// let mut sink = DirtyBands::<(), 4>::new(());
 /// let r = Renderer::new(16, Gray8::new(0));
 /// r.render_with_linked(&mut bands, &mut sink, |_, _, _| {}).unwrap();

@@ -103,7 +103,7 @@ impl FrameBands {
 ///         Ok(self.wire.take()) // wait for the transfer here
 ///     }
 /// }
-/// let mut bands = [microraster::Band::<Gray8, 8, 2>::new(Gray8::new(0)); 2];
+/// let mut bands = [const { microraster::Band::<Gray8, 8, 2>::new(Gray8::new(0)) }; 2];
 /// let mut sink = Dma { wire: None, sent: 0 };
 /// microraster::Renderer::new(5, Gray8::new(0)).render_linked::<_, 4, 8, 2, 2>(&[], &mut bands, &mut sink).unwrap();
 /// assert_eq!(sink.sent, 8 * 5);
@@ -142,7 +142,7 @@ pub trait BandSink<'a, C, const W: usize> {
 /// use embedded_graphics_core::pixelcolor::BinaryColor;
 /// use microraster::render::Blocking;
 /// use microraster::{Band, Renderer};
-/// let mut bands = [Band::<BinaryColor, 4, 2>::new(BinaryColor::Off); 2];
+/// let mut bands = [const { Band::<BinaryColor, 4, 2>::new(BinaryColor::Off) }; 2];
 /// let mut display = MockDisplay::new();
 /// Renderer::new(4, BinaryColor::Off)
 ///     .render_linked::<_, 4, 4, 2, 2>(&[], &mut bands, &mut Blocking(&mut display))
@@ -187,7 +187,7 @@ impl<C: Interpolate> Renderer<C> {
     /// use microraster::{Band, Primitive, Renderer, SubPoint, Triangle};
     /// let p = |x, y| SubPoint::<4>::from_pixels(x, y).unwrap();
     /// let scene = [Primitive::from(Triangle::flat([p(0, 0), p(4, 0), p(0, 4)], BinaryColor::On))];
-    /// let mut bands = [Band::<BinaryColor, 4, 1>::new(BinaryColor::Off); 2];
+    /// let mut bands = [const { Band::<BinaryColor, 4, 1>::new(BinaryColor::Off) }; 2];
     /// let mut display = MockDisplay::new();
     /// let r = Renderer::new(4, BinaryColor::Off);
     /// r.render_linked(&scene, &mut bands, &mut Blocking(&mut display)).unwrap();
@@ -214,7 +214,7 @@ impl<C: Interpolate> Renderer<C> {
     /// ```
     /// use embedded_graphics_core::pixelcolor::Gray8;
     /// use microraster::{Band, Renderer};
-    /// let mut bands = [Band::<Gray8, 8, 4>::new(Gray8::new(0)); 2];
+    /// let mut bands = [const { Band::<Gray8, 8, 4>::new(Gray8::new(0)) }; 2];
     /// let mut rows = 0;
     /// Renderer::new(10, Gray8::new(0)).render_with_linked(&mut bands, &mut (), |view, y0, y1| {
     ///     assert_eq!(view.height() as i32, y1 - y0);
