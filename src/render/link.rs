@@ -19,6 +19,8 @@ use embedded_graphics_core::primitives::Rectangle;
 
 use super::Renderer;
 use crate::band::{Band, BandView};
+use crate::depth::{DepthBand, DepthFormat, DepthState};
+use crate::raster3d::{Interpolation, ScreenTriangle};
 use crate::{Error, Interpolate, MAX_FRAME_DIM, Primitive, RenderError};
 
 /// A finished band lent to a [`BandSink`]: frame rows [`Lent::area`], pixels
@@ -233,6 +235,46 @@ impl<C: Interpolate> Renderer<C> {
     {
         let () = Pool::<N>::TWO_OR_MORE;
         run(self, bands, sink, true, draw)
+    }
+
+    /// [`Renderer::render_3d`] over `N ≥ 2` bands into a [`BandSink`] (see
+    /// [`Renderer::render_linked`]). One depth band serves every band: only
+    /// the band being drawn uses it. Same pixels as [`Renderer::render_3d`].
+    ///
+    /// ```
+    /// use embedded_graphics_core::pixelcolor::Gray8;
+    /// use microraster::depth::{Depth16, DepthBand, DepthState};
+    /// use microraster::raster3d::Affine;
+    /// use microraster::render::DirtyBands;
+    /// use microraster::{Band, Renderer};
+    /// let mut bands = [const { Band::<Gray8, 8, 4>::new(Gray8::new(0)) }; 2];
+    /// let mut depth = DepthBand::<Depth16, 8, 4>::zeroed();
+    /// let mut sink = DirtyBands::<(), 2>::new(());
+    /// Renderer::new(8, Gray8::new(0))
+    ///     .render_3d_linked::<_, _, _, 4, 8, 4, 2>(&[], &mut bands, &mut depth, DepthState::LESS_WRITE, Affine, &mut sink)
+    ///     .unwrap();
+    /// assert_eq!(sink.sent_bands(), 2);
+    /// ```
+    #[allow(clippy::too_many_arguments)]
+    pub fn render_3d_linked<'a, S, F, M, const P: u32, const W: usize, const H: usize, const N: usize>(
+        &self,
+        triangles: &[ScreenTriangle<P>],
+        bands: &'a mut [Band<C, W, H>; N],
+        depth: &mut DepthBand<F, W, H>,
+        state: DepthState,
+        interp: M,
+        sink: &mut S,
+    ) -> Result<(), RenderError<S::Error>>
+    where
+        S: BandSink<'a, C, W>,
+        F: DepthFormat,
+        M: Interpolation,
+    {
+        let _ = interp; // a value, so the call needs no turbofish
+        let () = Pool::<N>::TWO_OR_MORE;
+        run(self, bands, sink, true, |view, y0, y1| {
+            super::band3d::<C, F, M, W, H>(view, depth, state, y0, y1).draw_all(triangles)
+        })
     }
 
     /// The frame's bands, if the renderer's size and offset are valid for
