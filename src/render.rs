@@ -84,7 +84,7 @@ impl<C: Interpolate> Renderer<C> {
     /// Renders `scene` through `band` into `target`.
     ///
     /// Errors: [`Error::InvalidFrameSize`] if the height is 0 or above
-    /// [`MAX_FRAME_DIM`]; [`Error::CoordinateOutOfRange`] if the offset puts
+    /// [`MAX_FRAME_DIM`](crate::MAX_FRAME_DIM); [`Error::CoordinateOutOfRange`] if the offset puts
     /// the frame beyond `i32` coordinates; [`RenderError::Target`] if the
     /// target fails (the remaining bands are not sent).
     pub fn render<D, const S: u32, const W: usize, const H: usize>(

@@ -210,7 +210,7 @@ impl<C: Interpolate> Renderer<C> {
 
     /// [`Renderer::render_with`] over `N ≥ 2` bands into a [`BandSink`] (see
     /// [`Renderer::render_linked`]): the custom pass for 3D
-    /// ([`Renderer::render_3d`]'s is `band3d` on a [`DepthBand`](crate::depth::DepthBand),
+    /// ([`Renderer::render_3d`]'s is `band3d` on a [`DepthBand`],
     /// which only the band being drawn uses, so one depth band serves both).
     ///
     /// ```
