@@ -56,6 +56,12 @@ impl<C: PixelColor, const W: usize, const H: usize> Band<C, W, H> {
         view
     }
 
+    /// All `H` rows, for the band loop that lends them to a sink
+    /// ([`render::link`](crate::render::link)).
+    pub(crate) fn rows_mut(&mut self) -> &mut [[C; W]] {
+        &mut self.rows
+    }
+
     /// The same view with the rows as they are (see [`LazyClear`]).
     pub(crate) fn view_uncleared(&mut self, y0: i32, rows: usize) -> BandView<'_, C, W> {
         BandView { y0, rows: &mut self.rows[..rows.min(H)] }
@@ -69,7 +75,17 @@ pub struct BandView<'a, C, const W: usize> {
     rows: &'a mut [[C; W]],
 }
 
-impl<C: PixelColor, const W: usize> BandView<'_, C, W> {
+impl<'a, C: PixelColor, const W: usize> BandView<'a, C, W> {
+    /// `rows` placed at frame row `y0`, cleared to `background` if given.
+    pub(crate) fn from_rows(rows: &'a mut [[C; W]], y0: i32, background: Option<C>) -> Self {
+        if let Some(bg) = background {
+            for r in rows.iter_mut() {
+                fill_run(r, bg);
+            }
+        }
+        BandView { y0, rows }
+    }
+
     /// The pixels, row by row, as `fill_contiguous` expects them.
     pub fn pixels(&self) -> impl Iterator<Item = C> + '_ {
         // One flat slice: the nested iterator measured 9× slower on the host.

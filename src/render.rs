@@ -6,10 +6,15 @@ use crate::edge::Cull;
 use crate::raster3d::{Interpolation, ScreenTriangle};
 
 mod band3d;
-use crate::{Error, Interpolate, MAX_FRAME_DIM, Primitive, RenderError};
+mod dirty;
+pub mod link;
+#[cfg(feature = "std")]
+mod threads;
+use crate::{Error, Interpolate, Primitive, RenderError};
 pub use band3d::Band3d;
-use embedded_graphics_core::prelude::{DrawTarget, Point, Size};
-use embedded_graphics_core::primitives::Rectangle;
+pub use dirty::{DirtyBands, signature};
+use embedded_graphics_core::prelude::{DrawTarget, Point};
+pub use link::{BandSink, Blocking, FrameBands, Lent};
 
 /// Renders scenes of [`Primitive`]s, band by band, to a display.
 ///
@@ -79,7 +84,7 @@ impl<C: Interpolate> Renderer<C> {
     /// Renders `scene` through `band` into `target`.
     ///
     /// Errors: [`Error::InvalidFrameSize`] if the height is 0 or above
-    /// [`MAX_FRAME_DIM`]; [`Error::CoordinateOutOfRange`] if the offset puts
+    /// [`MAX_FRAME_DIM`](crate::MAX_FRAME_DIM); [`Error::CoordinateOutOfRange`] if the offset puts
     /// the frame beyond `i32` coordinates; [`RenderError::Target`] if the
     /// target fails (the remaining bands are not sent).
     pub fn render<D, const S: u32, const W: usize, const H: usize>(
@@ -91,25 +96,35 @@ impl<C: Interpolate> Renderer<C> {
     where
         D: DrawTarget<Color = C>,
     {
+        self.bands(band, target, false, |view, y0, y1| self.draw_scene::<S, W, H>(scene, view, y0, y1))
+    }
+
+    /// [`Renderer::render`]'s pass over one band: the primitives that touch
+    /// rows `y0..y1`, on an uncleared view.
+    fn draw_scene<const S: u32, const W: usize, const H: usize>(
+        &self,
+        scene: &[Primitive<C, S>],
+        view: &mut BandView<'_, C, W>,
+        y0: i32,
+        y1: i32,
+    ) {
         // Rows are cleared as they are first written (`LazyClear`): most
         // rows' first span then costs one pass over the row, not two.
-        self.bands(band, target, false, |view, y0, y1| {
-            let mut view = LazyClear::<C, W, H>::new(view, self.background);
-            for prim in scene {
-                let (lo, hi) = prim.rows();
-                if lo < y1 && hi >= y0 {
-                    match prim {
-                        Primitive::Triangle(t) => t.draw(&mut view, self.cull),
-                        // Pixel by pixel: clear the line's rows once, then no checks.
-                        Primitive::Line(l) => {
-                            view.clear_rows(lo, hi);
-                            l.draw(view.view());
-                        }
+        let mut view = LazyClear::<C, W, H>::new(view, self.background);
+        for prim in scene {
+            let (lo, hi) = prim.rows();
+            if lo < y1 && hi >= y0 {
+                match prim {
+                    Primitive::Triangle(t) => t.draw(&mut view, self.cull),
+                    // Pixel by pixel: clear the line's rows once, then no checks.
+                    Primitive::Line(l) => {
+                        view.clear_rows(lo, hi);
+                        l.draw(view.view());
                     }
                 }
             }
-            view.finish();
-        })
+        }
+        view.finish();
     }
 
     /// Renders screen-space triangles from the vertex stage
@@ -244,36 +259,14 @@ impl<C: Interpolate> Renderer<C> {
         band: &mut Band<C, W, H>,
         target: &mut D,
         clear: bool,
-        mut draw: impl FnMut(&mut BandView<'_, C, W>, i32, i32),
+        draw: impl FnMut(&mut BandView<'_, C, W>, i32, i32),
     ) -> Result<(), RenderError<D::Error>>
     where
         D: DrawTarget<Color = C>,
     {
-        if self.height == 0 || self.height > MAX_FRAME_DIM {
-            return Err(Error::InvalidFrameSize.into());
-        }
-        // Every band rectangle must be addressable: offset + frame within i32.
-        if self.offset.x.checked_add(W as i32).is_none()
-            || self.offset.y.checked_add(self.height as i32).is_none()
-        {
-            return Err(Error::CoordinateOutOfRange.into());
-        }
-        let height = self.height as i32;
-        let mut y0 = 0i32;
-        while y0 < height {
-            let rows = (height - y0).min(H as i32);
-            let y1 = y0 + rows;
-            let mut view = if clear {
-                band.view(y0, rows as usize, self.background)
-            } else {
-                band.view_uncleared(y0, rows as usize)
-            };
-            draw(&mut view, y0, y1);
-            let area = Rectangle::new(self.offset + Point::new(0, y0), Size::new(W as u32, rows as u32));
-            target.fill_contiguous(&area, view.pixels()).map_err(RenderError::Target)?;
-            y0 = y1;
-        }
-        Ok(())
+        // The linked loop with one band and a sink that sends before it
+        // returns: the plain render-then-send loop.
+        link::run(self, core::slice::from_mut(band), &mut link::Blocking(target), clear, draw)
     }
 }
 

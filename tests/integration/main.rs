@@ -37,6 +37,7 @@ mod interpenetrate;
 mod limits;
 mod line_aa;
 mod lines;
+mod link;
 mod meshlets;
 mod mock_display;
 mod per_band;
