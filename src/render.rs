@@ -6,6 +6,7 @@ use crate::edge::Cull;
 use crate::raster3d::{Interpolation, ScreenTriangle};
 
 mod band3d;
+mod overlay;
 use crate::{Error, Interpolate, MAX_FRAME_DIM, Primitive, RenderError};
 pub use band3d::Band3d;
 use embedded_graphics_core::prelude::{DrawTarget, Point, Size};
