@@ -83,7 +83,11 @@ impl<C: PixelColor, const W: usize> DrawTarget for BandView<'_, C, W> {
         Ok(())
     }
 
-    fn fill_contiguous<I: IntoIterator<Item = C>>(&mut self, area: &Rectangle, colors: I) -> Result<(), Infallible> {
+    fn fill_contiguous<I: IntoIterator<Item = C>>(
+        &mut self,
+        area: &Rectangle,
+        colors: I,
+    ) -> Result<(), Infallible> {
         let Some((x0, x1, r0, r1)) = self.overlap(area) else { return Ok(()) };
         // Colours run row by row over the whole `area`: skip the rows above
         // the view and, in each row, the columns left and right of it.

@@ -132,7 +132,11 @@ where
         self.view.draw_iter(pixels)
     }
 
-    fn fill_contiguous<I: IntoIterator<Item = C>>(&mut self, area: &Rectangle, colors: I) -> Result<(), Infallible> {
+    fn fill_contiguous<I: IntoIterator<Item = C>>(
+        &mut self,
+        area: &Rectangle,
+        colors: I,
+    ) -> Result<(), Infallible> {
         self.view.fill_contiguous(area, colors)
     }
 

@@ -12,6 +12,8 @@
 //! - `blend`: every blend mode × colour format vs an `f64` reference; translucent drawing; depth sort.
 //! - `gouraud`: Gouraud colour vs an `f64` barycentric reference.
 //! - `bands`: identical images for every band height; one `fill_contiguous` per band.
+//! - `drawables`: embedded-graphics text, images and styled primitives drawn into bands
+//!   match e-g into a framebuffer, for every band height; HUD over 3D.
 //! - `mock_display`: embedded-graphics `MockDisplay` pattern tests (overdraw panics).
 //! - `per_band`: the per-band vertex stage draws what the per-frame one draws.
 //! - `varyings`: per-vertex value vectors vs f64; the fragment hook's coverage.
@@ -29,6 +31,7 @@ mod blend;
 mod clip3d_raster;
 mod clip3d_ref;
 mod depth3d;
+mod drawables;
 mod fragment;
 mod framebuffer;
 mod gouraud;
