@@ -76,15 +76,19 @@
 //! [`PerspectiveCorrect`]: crate::raster3d::PerspectiveCorrect
 //! [`Affine`]: crate::raster3d::Affine
 
+mod alpha;
 mod format;
 mod sampler;
 mod shade;
+mod sprite;
 #[cfg(test)]
 mod tests;
 
+pub use alpha::{A8, Argb4444};
 pub use format::TexelFormat;
 pub use sampler::{Address, Bilinear, Filter, Nearest, Sampler};
 pub use shade::{from_rgb8, luma, modulate, to_rgb8};
+pub use sprite::{SPRITE_SCALE_RANGE, Sprite};
 
 use crate::Error;
 use sampler::Axis;
