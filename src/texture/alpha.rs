@@ -14,9 +14,9 @@
 //! colour of the opaque texels next to them (or black for an additive
 //! look); `png2rs` keeps what the PNG stores.
 
+use super::Texture;
 use super::format::TexelFormat;
 use super::sampler::{Filter, Sampler, bilerp};
-use super::Texture;
 
 /// An 8-bit alpha mask: `u8` coverage per texel, colour white.
 ///

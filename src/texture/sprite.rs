@@ -180,7 +180,8 @@ impl<'t, F: TexelFormat, C, Fi: Filter> Sprite<'t, F, C, Fi> {
             for x in xa..xb {
                 if (0..ONE).contains(&u) && (0..ONE).contains(&v) {
                     // In [0, 2^32): the 2^-16 coordinate fits i32.
-                    let [r, g, b, a] = self.texture.sample_rgba(sampler, [(u >> 16) as i32, (v >> 16) as i32]);
+                    let [r, g, b, a] =
+                        self.texture.sample_rgba(sampler, [(u >> 16) as i32, (v >> 16) as i32]);
                     let [r, g, b] = modulate([r, g, b], self.tint);
                     pixel(x, y, [r, g, b, div255_round(u32::from(a) * u32::from(self.opacity)) as u8]);
                 }
@@ -209,7 +210,7 @@ impl<'t, F: TexelFormat, C, Fi: Filter> Sprite<'t, F, C, Fi> {
     /// let mut view = band.view(0, 1, Rgb565::BLACK);
     /// Sprite::new(&MASK).at(Point::new(1, 0)).tint([255, 0, 0]).blend_into(&mut view)?;
     /// let half_red = Mix.blend(Rgb565::RED, Rgb565::BLACK, 128);
-/// assert_eq!(band.rows()[0], [Rgb565::BLACK, Rgb565::RED, half_red, Rgb565::BLACK]);
+    /// assert_eq!(band.rows()[0], [Rgb565::BLACK, Rgb565::RED, half_red, Rgb565::BLACK]);
     /// let mut view = band.view(0, 1, Rgb565::BLACK);
     /// assert_eq!(Sprite::new(&MASK).scale(f32::NAN).blend_into(&mut view), Err(Error::NonFiniteCoordinate));
     /// assert_eq!(Sprite::new(&MASK).scale(-1.0).blend_into(&mut view), Err(Error::InvalidParameter));
@@ -249,7 +250,8 @@ impl<F: TexelFormat, C: Interpolate, Fi: Filter> Drawable for Sprite<'_, F, C, F
     fn draw<D: DrawTarget<Color = C>>(&self, target: &mut D) -> Result<Result<(), Error>, D::Error> {
         let b = target.bounding_box();
         let end = |o: i32, n: u32| i64::from(o).saturating_add(i64::from(n)).min(i64::from(i32::MAX)) as i32;
-        let clip = [b.top_left.x, b.top_left.y, end(b.top_left.x, b.size.width), end(b.top_left.y, b.size.height)];
+        let clip =
+            [b.top_left.x, b.top_left.y, end(b.top_left.x, b.size.width), end(b.top_left.y, b.size.height)];
         // Pixels go out a row at a time: one `draw_iter` per row.
         let mut row = heapless::Vec::<Pixel<C>, 64>::new();
         let mut failed = Ok(());

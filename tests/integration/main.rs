@@ -18,6 +18,8 @@
 //! - `per_band`: the per-band vertex stage draws what the per-frame one draws.
 //! - `varyings`: per-vertex value vectors vs f64; the fragment hook's coverage.
 //! - `fragment`: the fragment stage: Phong vs f64 and Gouraud, translucency, varyings through the clipper.
+//! - `sprite`: sprites (alpha textures, scaled, rotated, nearest/bilinear) vs an f64 sampler;
+//!   band invariance; bad input.
 //! - `texture`: texture sampling vs f64; textured triangles (affine and perspective-correct).
 //! - 3D: `depth3d`, `zfight`, `perspective`, `clip3d_raster`, `interpenetrate`, `pipeline3d` (references in `ref3d`, `clip3d_ref`).
 //! - `antialias`, `antialias_images`: anti-aliasing (`microraster::aa`): coverage vs exact area,
@@ -50,6 +52,7 @@ mod props3d;
 mod ref3d;
 mod reference;
 mod regressions;
+mod sprite;
 mod texture;
 mod triangles_exact;
 mod triangles_float;
