@@ -304,3 +304,63 @@ fn bad_input_is_a_typed_error() {
         assert!(r.seen.is_empty());
     }
 }
+
+#[test]
+fn discarding_shader_skips_and_blends_by_texel_alpha() {
+    use microraster::SubPoint;
+    use microraster::blend::{Mix, Replace};
+    use microraster::depth::{DepthBand, DepthState, NoDepth};
+    use microraster::fragment::{FragTriangle, Output, TexturedAlpha, draw_fragment_triangle};
+    use microraster::raster3d::{Affine, ScreenTriangle, ScreenVertex};
+    use microraster::texture::{Sampler, UV_ONE, from_rgb8};
+
+    let mut rng = Rng::new(0x5976);
+    let texels: Vec<u16> = (0..8 * 8).map(|_| rng.next_u64() as u16).collect();
+    let tex = Texture::<Argb4444>::new(&texels, 8, 8).unwrap();
+    let bg = Rgb888::new(20, 40, 60);
+    let v = |x, y| ScreenVertex {
+        pos: SubPoint::<4>::from_pixels(x, y).unwrap(),
+        inv_w: 1 << 30,
+        ..Default::default()
+    };
+    let tri = FragTriangle {
+        tri: ScreenTriangle { v: [v(0, 0), v(32, 0), v(0, 32)], flat: false },
+        varyings: [[0, 0, 255, 200, 100], [UV_ONE, 0, 255, 200, 100], [0, UV_ONE, 255, 200, 100]],
+    };
+    for (cutoff, draw_alpha) in [(1u8, 255u8), (128, 255), (100, 90)] {
+        let shader = TexturedAlpha { texture: &tex, sampler: Sampler::BILINEAR_CLAMP, cutoff };
+        let mut band = Band::<Rgb888, 32, 32>::new(bg);
+        let mut depth = DepthBand::<NoDepth, 32, 32>::new();
+        let out = Output { depth: DepthState::DISABLED, blend: Mix, alpha: draw_alpha };
+        let mut view = band.view(0, 32, bg);
+        draw_fragment_triangle::<_, NoDepth, Affine, _, _, 4, 32, 5>(
+            &tri,
+            &mut view,
+            depth.rows_mut(32),
+            &shader,
+            out,
+        )
+        .unwrap();
+        // Reference: the same coverage and varyings, discard and alpha done by hand.
+        let mut want = Band::<Rgb888, 32, 32>::new(bg);
+        let mut view = want.view(0, 32, bg);
+        let by_hand = |f: &microraster::fragment::Fragment<5>| {
+            let [r, g, b, a] = tex.sample_rgba(Sampler::BILINEAR_CLAMP, [f.varyings[0], f.varyings[1]]);
+            let c = from_rgb8::<Rgb888>(microraster::texture::modulate([r, g, b], [255, 200, 100]));
+            let alpha = (a as f64 * draw_alpha as f64 / 255.0).round() as u8;
+            if a < cutoff { bg } else { Mix.blend(c, bg, alpha) }
+        };
+        let replace = Output { depth: DepthState::DISABLED, blend: Replace, alpha: 255 };
+        draw_fragment_triangle::<_, NoDepth, Affine, _, _, 4, 32, 5>(
+            &tri,
+            &mut view,
+            depth.rows_mut(32),
+            &by_hand,
+            replace,
+        )
+        .unwrap();
+        assert_eq!(band.rows(), want.rows(), "cutoff {cutoff}, alpha {draw_alpha}");
+        let kept = band.rows().iter().flatten().filter(|&&c| c == bg).count();
+        assert!(kept > 0 && kept < 32 * 32, "some pixels discarded, some drawn");
+    }
+}
