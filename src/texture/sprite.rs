@@ -138,7 +138,8 @@ impl<'t, F: TexelFormat, C, Fi: Filter> Sprite<'t, F, C, Fi> {
         if !(SPRITE_SCALE_RANGE.0..=SPRITE_SCALE_RANGE.1).contains(&s) {
             return Err(Error::InvalidParameter);
         }
-        let (sin, cos) = a.sin_cos();
+        // The crate's sin/cos (std's inherent one would shadow it in host tests).
+        let (sin, cos) = Scalar::sin_cos(a);
         let (sin, cos, s) = (f64::from(sin), f64::from(cos), f64::from(s));
         let (w, h) = (f64::from(self.texture.width()), f64::from(self.texture.height()));
         let (hw, hh) = (w * s / 2.0, h * s / 2.0); // half the box, in pixels
