@@ -2,10 +2,11 @@
 //!
 //! A [`Texture<'a, F>`](Texture) is a row-major slice of texels in format
 //! `F` ([`Rgb565`](embedded_graphics_core::pixelcolor::Rgb565): `u16` raw
-//! bits; [`Gray8`](embedded_graphics_core::pixelcolor::Gray8): `u8`; see
-//! [`TexelFormat`]) and its size, 1 to [`MAX_TEXTURE_DIM`] texels each way
+//! bits; [`Gray8`](embedded_graphics_core::pixelcolor::Gray8): `u8`; with
+//! alpha, [`A8`] and [`Argb4444`]; see [`TexelFormat`]) and its size, 1 to [`MAX_TEXTURE_DIM`] texels each way
 //! (any size; powers of two index with shifts instead of multiplies).
 //! `cargo run --example png2rs` converts a PNG to a `static` texture.
+//! [`Sprite`] draws a texture at a position, scaled and rotated, in one call.
 //!
 //! # Coordinates
 //! `u` (across) and `v` (down) are `i32` fixed point with [`UV_FRAC`] = 16
