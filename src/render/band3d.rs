@@ -50,6 +50,30 @@ where
         (self.y0, self.y1 - 1)
     }
 
+    /// The band's colour rows alone, for writers that need the
+    /// [`BandView`] itself rather than a `DrawTarget` (blending: a
+    /// [`Sprite`](crate::texture::Sprite)'s `blend_into`,
+    /// [`BlendBlitter`](crate::blend::BlendBlitter)). Depth is untouched.
+    ///
+    /// ```
+    /// use embedded_graphics_core::pixelcolor::{Rgb565, RgbColor};
+    /// use microraster::depth::{Depth16, DepthBand, DepthState};
+    /// use microraster::raster3d::Affine;
+    /// use microraster::{Band, Renderer};
+    /// let mut band = Band::<Rgb565, 8, 4>::new(Rgb565::BLACK);
+    /// let mut depth = DepthBand::<Depth16, 8, 4>::new();
+    /// # let mut display = embedded_graphics::mock_display::MockDisplay::new();
+    /// Renderer::new(8, Rgb565::BLACK).render_3d_direct(&mut band, &mut depth, DepthState::LESS_WRITE, Affine, &mut display, |b| {
+    ///     let (first, _) = b.rows();
+    ///     assert_eq!(b.color_view().y0(), first);
+    ///     Ok(())
+    /// })?;
+    /// # Ok::<(), microraster::RenderError<core::convert::Infallible>>(())
+    /// ```
+    pub fn color_view(&mut self) -> &mut BandView<'v, C, W> {
+        self.view
+    }
+
     /// Draws one triangle (clipped to the band; rows outside it cost only the
     /// coverage set-up).
     #[inline]
