@@ -1,5 +1,7 @@
 //! The band buffer: a few full-width rows of colour, owned by the user.
 
+mod canvas;
+
 use crate::blit::Blitter;
 use crate::edge::Span;
 use crate::{ClipRect, MAX_FRAME_DIM};
@@ -69,7 +71,10 @@ impl<C: PixelColor, const W: usize, const H: usize> Band<C, W, H> {
 }
 
 /// Some rows of a [`Band`] placed at frame row `y0`: a [`Blitter`] whose clip
-/// is exactly those rows.
+/// is exactly those rows, and an `embedded-graphics`
+/// [`DrawTarget`](embedded_graphics_core::draw_target::DrawTarget) in frame
+/// coordinates (any e-g drawable draws into it; pixels outside its rows are
+/// dropped).
 pub struct BandView<'a, C, const W: usize> {
     y0: i32,
     rows: &'a mut [[C; W]],

@@ -55,6 +55,23 @@ impl fmt::Display for Error {
 
 impl core::error::Error for Error {}
 
+/// Drawing into a band cannot fail (its `DrawTarget::Error` is
+/// [`Infallible`](core::convert::Infallible)); this lets `?` pass an
+/// `embedded-graphics` draw result up from the closures of
+/// [`Renderer::render_drawables`](crate::Renderer::render_drawables) and
+/// friends, which return `Result<(), Error>`.
+///
+/// ```
+/// fn never() -> Result<(), core::convert::Infallible> { Ok(()) }
+/// fn pass() -> Result<(), microraster::Error> { never()?; Ok(()) }
+/// assert_eq!(pass(), Ok(()));
+/// ```
+impl From<core::convert::Infallible> for Error {
+    fn from(never: core::convert::Infallible) -> Self {
+        match never {}
+    }
+}
+
 /// Error returned by [`Renderer::render`](crate::Renderer::render).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum RenderError<E> {

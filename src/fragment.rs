@@ -24,7 +24,11 @@
 
 mod shaders;
 
-pub use shaders::{NORMAL_ONE, POSITION_ONE, Phong, Textured, phong_varyings, textured_varyings};
+pub use shaders::{
+    NORMAL_ONE, POSITION_ONE, Phong, Textured, TexturedAlpha, phong_varyings, textured_varyings,
+};
+
+use crate::texture::div255_round;
 
 use crate::band::BandView;
 use crate::blend::Blend;
@@ -68,6 +72,20 @@ pub struct Fragment<const A: usize> {
 pub trait FragmentShader<C, const A: usize> {
     /// The source colour of `frag`, before blending.
     fn shade(&self, frag: &Fragment<A>) -> C;
+
+    /// The source colour and alpha of `frag`, or `None` to discard it (the
+    /// pixel keeps its colour). The draw calls this, not
+    /// [`FragmentShader::shade`]; the alpha multiplies the draw's
+    /// [`Output::alpha`] (exactly `round(a·b/255)`; 255 leaves it as it is).
+    /// The default is `shade` at alpha 255. The depth test and write come
+    /// first (see the [module docs](self)): a discarded fragment that passed
+    /// a writing depth test has still written its depth, so draw discarding
+    /// geometry with [`DepthState::READ_ONLY`] or depth off, after the
+    /// opaque geometry.
+    #[inline]
+    fn shade_or_discard(&self, frag: &Fragment<A>) -> Option<(C, u8)> {
+        Some((self.shade(frag), 255))
+    }
 }
 
 impl<C, const A: usize, F: Fn(&Fragment<A>) -> C> FragmentShader<C, A> for F {
@@ -126,8 +144,13 @@ where
     let Some(vary) = Varyings::<A>::new::<M, S>(&t.tri, t.varyings)? else { return Ok(()) };
     let base = t.tri.v[0].color;
     crate::varyings::for_each_fragment::<C, F, S, W>(&t.tri, color, depth, out.depth, |x, y, dst| {
-        let src = shader.shade(&Fragment { x, y, varyings: vary.at(x, y), color: base });
-        *dst = out.blend.blend(src, *dst, out.alpha);
+        let frag = Fragment { x, y, varyings: vary.at(x, y), color: base };
+        if let Some((src, a)) = shader.shade_or_discard(&frag) {
+            // The default's 255 folds away: the same code as without discard.
+            let alpha =
+                if a == 255 { out.alpha } else { div255_round(u32::from(out.alpha) * u32::from(a)) as u8 };
+            *dst = out.blend.blend(src, *dst, alpha);
+        }
     });
     Ok(())
 }

@@ -8,6 +8,7 @@ use crate::raster3d::{Interpolation, ScreenTriangle};
 mod band3d;
 mod dirty;
 pub mod link;
+mod overlay;
 #[cfg(feature = "std")]
 mod threads;
 use crate::{Error, Interpolate, Primitive, RenderError};

@@ -8,9 +8,14 @@
 //!   source becomes its Rec. 601 luma `0.299 r + 0.587 g + 0.114 b` (on the
 //!   channels scaled to 0–255), computed exactly in integers and rounded
 //!   half up.
-//! * Alpha: textures have none. Images whose every pixel is opaque convert;
-//!   any other pixel is an error unless alpha is ignored (`--ignore-alpha`),
-//!   which keeps each pixel's colour and drops its alpha.
+//! * `argb4444`: every channel and alpha `round(v·15/max)`, packed
+//!   `0xARGB` (microraster's `texture::Argb4444`).
+//! * `a8`: the alpha channel alone, `round(a·255/max)` (`texture::A8`, an
+//!   alpha mask; the colour is dropped). An image without alpha is opaque.
+//! * Alpha in `rgb565` and `gray8`: they have none. Images whose every pixel
+//!   is opaque convert; any other pixel is an error unless alpha is ignored
+//!   (`--ignore-alpha`), which keeps each pixel's colour and drops its
+//!   alpha. The alpha formats keep it (straight, not premultiplied).
 
 use crate::decode::Image;
 
@@ -21,16 +26,28 @@ pub enum Format {
     Rgb565,
     /// `u8` grey levels.
     Gray8,
+    /// `u16` colour and alpha, 4 bits each.
+    Argb4444,
+    /// `u8` alpha.
+    A8,
 }
 
 impl Format {
-    /// The format named on the command line (`rgb565`, `gray8`).
+    /// The format named on the command line (`rgb565`, `gray8`,
+    /// `argb4444`, `a8`).
     pub fn parse(s: &str) -> Option<Format> {
         match s {
             "rgb565" => Some(Format::Rgb565),
             "gray8" => Some(Format::Gray8),
+            "argb4444" => Some(Format::Argb4444),
+            "a8" => Some(Format::A8),
             _ => None,
         }
+    }
+
+    /// Whether the format keeps alpha.
+    pub fn has_alpha(self) -> bool {
+        matches!(self, Format::Argb4444 | Format::A8)
     }
 }
 
@@ -41,6 +58,10 @@ pub enum Texels {
     Rgb565(Vec<u16>),
     /// Grey levels, row by row.
     Gray8(Vec<u8>),
+    /// `0xARGB` nibbles, row by row.
+    Argb4444(Vec<u16>),
+    /// Alpha, row by row.
+    A8(Vec<u8>),
 }
 
 /// How pixels that are not fully opaque are handled.
@@ -59,10 +80,10 @@ fn scale(v: u16, m: u32, max: u16) -> u32 {
 }
 
 /// Converts `image` to `format`; the second value counts pixels that were
-/// not fully opaque (0 unless alpha is ignored).
+/// not fully opaque (0 unless alpha is ignored or kept).
 pub fn convert(image: &Image, format: Format, alpha: Alpha) -> Result<(Texels, usize), String> {
     let translucent = image.pixels.iter().filter(|p| p[3] != image.max).count();
-    if translucent > 0 && alpha == Alpha::Reject {
+    if translucent > 0 && alpha == Alpha::Reject && !format.has_alpha() {
         let first = image.pixels.iter().position(|p| p[3] != image.max).unwrap_or(0);
         let (x, y) = (first as u32 % image.width, first as u32 / image.width);
         return Err(format!(
@@ -97,6 +118,14 @@ pub fn convert(image: &Image, format: Format, alpha: Alpha) -> Result<(Texels, u
                 })
                 .collect(),
         ),
+        Format::Argb4444 => Texels::Argb4444(
+            image
+                .pixels
+                .iter()
+                .map(|&[r, g, b, a]| [a, r, g, b].iter().fold(0, |t, &v| (t << 4) | scale(v, 15, max) as u16))
+                .collect(),
+        ),
+        Format::A8 => Texels::A8(image.pixels.iter().map(|&[_, _, _, a]| scale(a, 255, max) as u8).collect()),
     };
     Ok((texels, translucent))
 }

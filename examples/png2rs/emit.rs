@@ -50,8 +50,8 @@ pub fn rust_source(
         }
     }
     let n = match texels {
-        Texels::Rgb565(t) => t.len(),
-        Texels::Gray8(t) => t.len(),
+        Texels::Rgb565(t) | Texels::Argb4444(t) => t.len(),
+        Texels::Gray8(t) | Texels::A8(t) => t.len(),
     };
     if width == 0 || height == 0 || n != (width as usize) * (height as usize) {
         return Err(format!("{n} texels do not make {width}×{height}"));
@@ -76,6 +76,8 @@ fn write_source(
     let (format, storage, bytes, layout) = match texels {
         Texels::Rgb565(_) => ("Rgb565", "u16", 2, "raw Rgb565 bits: red 15–11, green 10–5, blue 4–0"),
         Texels::Gray8(_) => ("Gray8", "u8", 1, "grey levels"),
+        Texels::Argb4444(_) => ("Argb4444", "u16", 2, "0xARGB, 4 bits each, straight alpha"),
+        Texels::A8(_) => ("A8", "u8", 1, "alpha"),
     };
     let flash = w * h * bytes;
     // `{:?}` escapes anything (newlines…) that could break a comment.
@@ -90,8 +92,8 @@ fn write_source(
             let items: Vec<String> = chunk
                 .iter()
                 .map(|&x| match texels {
-                    Texels::Rgb565(t) => format!("0x{:04X}", t[y * w + x]),
-                    Texels::Gray8(t) => format!("{:3}", t[y * w + x]),
+                    Texels::Rgb565(t) | Texels::Argb4444(t) => format!("0x{:04X}", t[y * w + x]),
+                    Texels::Gray8(t) | Texels::A8(t) => format!("{:3}", t[y * w + x]),
                 })
                 .collect();
             writeln!(s, "        {},", items.join(", "))?;
@@ -104,7 +106,12 @@ fn write_source(
         s,
         "/// The texture converted from {source:?}: {w} × {h} texels, {format}, {flash} bytes of flash."
     )?;
-    let ty = format!("{krate}::texture::Texture<'static, {pixelcolor}::{format}>");
+    // The alpha formats are microraster's own types, the others e-g colours.
+    let module = match texels {
+        Texels::Argb4444(_) | Texels::A8(_) => format!("{krate}::texture"),
+        _ => pixelcolor.to_string(),
+    };
+    let ty = format!("{krate}::texture::Texture<'static, {module}::{format}>");
     let init = format!("{krate}::texture::Texture::from_rows(&{name}_TEXELS);");
     // rustfmt's layout: on one line if it fits, else the value indented on the next.
     let one_line = format!("pub static {name}: {ty} = {init}");

@@ -2,12 +2,13 @@
 //! [`microraster::texture::Texture`] (texels in flash, no RAM).
 //!
 //! ```text
-//! cargo run --example png2rs -- INPUT.png --name NAME --format rgb565|gray8 [--out FILE]
+//! cargo run --example png2rs -- INPUT.png --name NAME --format rgb565|gray8|argb4444|a8 [--out FILE]
 //!     [--ignore-alpha] [--crate PATH] [--pixelcolor PATH]
 //! ```
 //!
 //! Writes `NAME_TEXELS` (a `[[u16 or u8; W]; H]` array) and
-//! `NAME: Texture<'static, Rgb565 or Gray8>` (NAME upper-cased) to `FILE`, or
+//! `NAME: Texture<'static, Rgb565, Gray8, Argb4444 or A8>` (NAME upper-cased;
+//! the last two keep the PNG's alpha) to `FILE`, or
 //! to standard output; `INPUT` `-` reads standard input. `--crate` sets the
 //! path of microraster in the output (default `microraster`; `crate` inside
 //! it), `--pixelcolor` that of the module with `Rgb565` and `Gray8` (default
@@ -26,7 +27,7 @@ use std::process::ExitCode;
 
 use convert::{Alpha, Format};
 
-const USAGE: &str = "usage: png2rs INPUT.png --name NAME --format rgb565|gray8 [--out FILE] \
+const USAGE: &str = "usage: png2rs INPUT.png --name NAME --format rgb565|gray8|argb4444|a8 [--out FILE] \
                      [--ignore-alpha] [--crate PATH] [--pixelcolor PATH]   (INPUT `-` = stdin)";
 
 fn main() -> ExitCode {
@@ -79,10 +80,9 @@ fn parse_args(args: &[String]) -> Result<Option<Options>, Failure> {
             "--name" => name = Some(value("--name")?),
             "--format" => {
                 let f = value("--format")?;
-                format = Some(
-                    Format::parse(&f)
-                        .ok_or_else(|| Failure::Usage(format!("unknown format `{f}` (rgb565 or gray8)")))?,
-                );
+                format = Some(Format::parse(&f).ok_or_else(|| {
+                    Failure::Usage(format!("unknown format `{f}` (rgb565, gray8, argb4444 or a8)"))
+                })?);
             }
             "--out" => out = Some(value("--out")?),
             "--crate" => krate = value("--crate")?,
@@ -98,7 +98,7 @@ fn parse_args(args: &[String]) -> Result<Option<Options>, Failure> {
     }
     let input = input.ok_or_else(|| Failure::Usage("expected INPUT".into()))?;
     let name = name.ok_or_else(|| Failure::Usage("expected --name NAME".into()))?;
-    let format = format.ok_or_else(|| Failure::Usage("expected --format rgb565|gray8".into()))?;
+    let format = format.ok_or_else(|| Failure::Usage("expected --format rgb565|gray8|argb4444|a8".into()))?;
     emit::static_name(&name).map_err(Failure::Usage)?;
     for p in [&krate, &pixelcolor] {
         if !emit::is_path(p) {
@@ -146,9 +146,12 @@ fn run(args: &[String]) -> Result<(), Failure> {
         match o.format {
             Format::Rgb565 => "Rgb565",
             Format::Gray8 => "Gray8",
+            Format::Argb4444 => "Argb4444",
+            Format::A8 => "A8",
         },
         match translucent {
             0 => String::new(),
+            n if o.format.has_alpha() => format!(" ({n} pixels not opaque: alpha kept)"),
             n => format!(" ({n} pixels were not opaque: alpha ignored)"),
         }
     ));

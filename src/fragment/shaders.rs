@@ -1,5 +1,6 @@
-//! Two fragment shaders: [`Textured`] (a texture modulated by the
-//! interpolated colour) and [`Phong`] (lighting per pixel from interpolated
+//! Fragment shaders: [`Textured`] (a texture modulated by the
+//! interpolated colour), [`TexturedAlpha`] (the same with alpha, discarding)
+//! and [`Phong`] (lighting per pixel from interpolated
 //! normals), with the functions that make their varyings in the vertex stage.
 
 use super::{Fragment, FragmentShader};
@@ -46,6 +47,49 @@ impl<C: Interpolate, F: TexelFormat, Fi: Filter> FragmentShader<C, 5> for Textur
         let texel = self.texture.sample(self.sampler, [v[0], v[1]]);
         let tint = [v[2], v[3], v[4]].map(|c| c.clamp(0, 255) as u8);
         from_rgb8(modulate(texel, tint))
+    }
+}
+
+/// [`Textured`] with the texture's alpha, and a shader that discards: a
+/// fragment whose sampled alpha ([`Texture::sample_rgba`]) is below `cutoff`
+/// is discarded, the others are blended at that alpha (times the draw's).
+/// With [`Replace`](crate::blend::Replace) and `cutoff` 128 it cuts shapes
+/// out of a texture with hard edges; with [`Mix`](crate::blend::Mix) and
+/// `cutoff` 1 it blends them smoothly. Same varyings as [`Textured`].
+///
+/// ```
+/// use embedded_graphics_core::pixelcolor::{Rgb888, RgbColor};
+/// use microraster::fragment::{Fragment, FragmentShader, TexturedAlpha};
+/// use microraster::texture::{A8, Sampler, Texture, UV_ONE};
+/// static MASK: Texture<'static, A8> = Texture::from_rows(&[[0, 200]]);
+/// let shader = TexturedAlpha { texture: &MASK, sampler: Sampler::NEAREST_CLAMP, cutoff: 1 };
+/// let at = |u| Fragment { x: 0, y: 0, varyings: [u, 0, 255, 0, 0], color: [0; 3] };
+/// assert_eq!(FragmentShader::<Rgb888, 5>::shade_or_discard(&shader, &at(UV_ONE / 4)), None);
+/// assert_eq!(shader.shade_or_discard(&at(3 * UV_ONE / 4)), Some((Rgb888::RED, 200)));
+/// ```
+#[derive(Debug, Clone, Copy)]
+pub struct TexturedAlpha<'a, F: TexelFormat, Fi: Filter> {
+    /// The texture.
+    pub texture: &'a Texture<'a, F>,
+    /// Filter and addressing.
+    pub sampler: Sampler<Fi>,
+    /// Fragments with a lower alpha are discarded.
+    pub cutoff: u8,
+}
+
+impl<C: Interpolate, F: TexelFormat, Fi: Filter> FragmentShader<C, 5> for TexturedAlpha<'_, F, Fi> {
+    /// The colour alone, as [`Textured`] (alpha ignored).
+    #[inline]
+    fn shade(&self, frag: &Fragment<5>) -> C {
+        Textured { texture: self.texture, sampler: self.sampler }.shade(frag)
+    }
+
+    #[inline]
+    fn shade_or_discard(&self, frag: &Fragment<5>) -> Option<(C, u8)> {
+        let v = frag.varyings;
+        let [r, g, b, a] = self.texture.sample_rgba(self.sampler, [v[0], v[1]]);
+        let tint = [v[2], v[3], v[4]].map(|c| c.clamp(0, 255) as u8);
+        (a >= self.cutoff).then(|| (from_rgb8(modulate([r, g, b], tint)), a))
     }
 }
 

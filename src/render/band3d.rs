@@ -3,7 +3,13 @@
 //! ([`Pipeline::draw_meshlets`](crate::pipeline::Pipeline::draw_meshlets))
 //! instead of collecting a frame's bins first.
 
+use core::convert::Infallible;
 use core::marker::PhantomData;
+
+use embedded_graphics_core::Pixel;
+use embedded_graphics_core::draw_target::DrawTarget;
+use embedded_graphics_core::geometry::Dimensions;
+use embedded_graphics_core::primitives::Rectangle;
 
 use crate::Interpolate;
 use crate::band::BandView;
@@ -44,6 +50,30 @@ where
         (self.y0, self.y1 - 1)
     }
 
+    /// The band's colour rows alone, for writers that need the
+    /// [`BandView`] itself rather than a `DrawTarget` (blending: a
+    /// [`Sprite`](crate::texture::Sprite)'s `blend_into`,
+    /// [`BlendBlitter`](crate::blend::BlendBlitter)). Depth is untouched.
+    ///
+    /// ```
+    /// use embedded_graphics_core::pixelcolor::{Rgb565, RgbColor};
+    /// use microraster::depth::{Depth16, DepthBand, DepthState};
+    /// use microraster::raster3d::Affine;
+    /// use microraster::{Band, Renderer};
+    /// let mut band = Band::<Rgb565, 8, 4>::new(Rgb565::BLACK);
+    /// let mut depth = DepthBand::<Depth16, 8, 4>::new();
+    /// # let mut display = embedded_graphics::mock_display::MockDisplay::new();
+    /// Renderer::new(8, Rgb565::BLACK).render_3d_direct(&mut band, &mut depth, DepthState::LESS_WRITE, Affine, &mut display, |b| {
+    ///     let (first, _) = b.rows();
+    ///     assert_eq!(b.color_view().y0(), first);
+    ///     Ok(())
+    /// })?;
+    /// # Ok::<(), microraster::RenderError<core::convert::Infallible>>(())
+    /// ```
+    pub fn color_view(&mut self) -> &mut BandView<'v, C, W> {
+        self.view
+    }
+
     /// Draws one triangle (clipped to the band; rows outside it cost only the
     /// coverage set-up).
     #[inline]
@@ -66,5 +96,75 @@ where
                 self.draw(tri);
             }
         }
+    }
+}
+
+/// The band's colour rows as an `embedded-graphics` target, for 2D drawn in
+/// the same pass as the meshes (a HUD drawn after them, a backdrop before):
+/// frame coordinates, clipped to the band. It writes colour only: the depth
+/// rows are neither tested nor written, so 2D drawn *before* meshes is
+/// covered by them wherever they are, and 2D drawn after them covers them.
+///
+/// ```
+/// use embedded_graphics::mono_font::{MonoTextStyle, ascii::FONT_6X10};
+/// use embedded_graphics::text::Text;
+/// use embedded_graphics::mock_display::MockDisplay;
+/// use embedded_graphics::primitives::Rectangle;
+/// use embedded_graphics_core::{pixelcolor::Rgb565, prelude::*};
+/// use microraster::depth::{DepthBand, DepthState, Depth16};
+/// use microraster::raster3d::Affine;
+/// use microraster::{Band, Renderer};
+/// let mut display = MockDisplay::new();
+/// let mut band = Band::<Rgb565, 48, 8>::new(Rgb565::BLACK);
+/// let mut depth = DepthBand::<Depth16, 48, 8>::new();
+/// let hud = MonoTextStyle::new(&FONT_6X10, Rgb565::WHITE);
+/// Renderer::new(16, Rgb565::BLACK).render_3d_direct(
+///     &mut band, &mut depth, DepthState::LESS_WRITE, Affine, &mut display,
+///     |b| {
+///         // … the meshes first (`pipeline.draw_meshlets(b, …)`), then the HUD:
+///         Text::new("42", Point::new(1, 9), hud).draw(b)?;
+///         Ok(())
+///     },
+/// )?;
+/// // The same as the text drawn by e-g over the (empty) 3D frame:
+/// let mut expected = MockDisplay::new();
+/// expected.set_allow_overdraw(true);
+/// expected.fill_solid(&Rectangle::new(Point::zero(), Size::new(48, 16)), Rgb565::BLACK).unwrap();
+/// Text::new("42", Point::new(1, 9), hud).draw(&mut expected).unwrap();
+/// display.assert_eq(&expected);
+/// # Ok::<(), microraster::RenderError<core::convert::Infallible>>(())
+/// ```
+impl<C, F, M, const W: usize> Dimensions for Band3d<'_, '_, C, F, M, W>
+where
+    C: Interpolate,
+    F: DepthFormat,
+{
+    fn bounding_box(&self) -> Rectangle {
+        self.view.bounding_box()
+    }
+}
+
+impl<C, F, M, const W: usize> DrawTarget for Band3d<'_, '_, C, F, M, W>
+where
+    C: Interpolate,
+    F: DepthFormat,
+{
+    type Color = C;
+    type Error = Infallible;
+
+    fn draw_iter<I: IntoIterator<Item = Pixel<C>>>(&mut self, pixels: I) -> Result<(), Infallible> {
+        self.view.draw_iter(pixels)
+    }
+
+    fn fill_contiguous<I: IntoIterator<Item = C>>(
+        &mut self,
+        area: &Rectangle,
+        colors: I,
+    ) -> Result<(), Infallible> {
+        self.view.fill_contiguous(area, colors)
+    }
+
+    fn fill_solid(&mut self, area: &Rectangle, color: C) -> Result<(), Infallible> {
+        self.view.fill_solid(area, color)
     }
 }

@@ -8,11 +8,14 @@ mod sealed {
     pub trait Sealed {}
     impl Sealed for embedded_graphics_core::pixelcolor::Rgb565 {}
     impl Sealed for embedded_graphics_core::pixelcolor::Gray8 {}
+    impl Sealed for crate::texture::A8 {}
+    impl Sealed for crate::texture::Argb4444 {}
 }
 
 /// A texel format. Sealed: implemented by the `embedded-graphics` colour
 /// types [`Rgb565`] (a `u16` per texel) and [`Gray8`] (a `u8`), so a texture
-/// reads as `Texture<'static, Rgb565>`.
+/// reads as `Texture<'static, Rgb565>`, and by the formats with alpha
+/// [`A8`](crate::texture::A8) and [`Argb4444`](crate::texture::Argb4444).
 ///
 /// ```
 /// use embedded_graphics_core::pixelcolor::{Gray8, Rgb565};
@@ -39,6 +42,17 @@ pub trait TexelFormat: sealed::Sealed {
     /// all but 4 of 32 and 10 of 64 inputs). [`Gray8`]: the grey level in all
     /// three channels.
     fn expand(texel: Self::Storage) -> [u8; 3];
+
+    /// True for formats with an alpha channel ([`A8`](crate::texture::A8),
+    /// [`Argb4444`](crate::texture::Argb4444)).
+    const ALPHA: bool = false;
+
+    /// The texel's alpha at 8 bits (255, opaque, for formats without one).
+    #[inline]
+    fn alpha(texel: Self::Storage) -> u8 {
+        let _ = texel;
+        255
+    }
 }
 
 impl TexelFormat for Rgb565 {

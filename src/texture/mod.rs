@@ -2,10 +2,11 @@
 //!
 //! A [`Texture<'a, F>`](Texture) is a row-major slice of texels in format
 //! `F` ([`Rgb565`](embedded_graphics_core::pixelcolor::Rgb565): `u16` raw
-//! bits; [`Gray8`](embedded_graphics_core::pixelcolor::Gray8): `u8`; see
-//! [`TexelFormat`]) and its size, 1 to [`MAX_TEXTURE_DIM`] texels each way
+//! bits; [`Gray8`](embedded_graphics_core::pixelcolor::Gray8): `u8`; with
+//! alpha, [`A8`] and [`Argb4444`]; see [`TexelFormat`]) and its size, 1 to [`MAX_TEXTURE_DIM`] texels each way
 //! (any size; powers of two index with shifts instead of multiplies).
 //! `cargo run --example png2rs` converts a PNG to a `static` texture.
+//! [`Sprite`] draws a texture at a position, scaled and rotated, in one call.
 //!
 //! # Coordinates
 //! `u` (across) and `v` (down) are `i32` fixed point with [`UV_FRAC`] = 16
@@ -76,15 +77,20 @@
 //! [`PerspectiveCorrect`]: crate::raster3d::PerspectiveCorrect
 //! [`Affine`]: crate::raster3d::Affine
 
+mod alpha;
 mod format;
 mod sampler;
 mod shade;
+mod sprite;
 #[cfg(test)]
 mod tests;
 
+pub use alpha::{A8, Argb4444};
 pub use format::TexelFormat;
 pub use sampler::{Address, Bilinear, Filter, Nearest, Sampler};
+pub(crate) use shade::div255_round;
 pub use shade::{from_rgb8, luma, modulate, to_rgb8};
+pub use sprite::{SPRITE_SCALE_RANGE, Sprite};
 
 use crate::Error;
 use sampler::Axis;

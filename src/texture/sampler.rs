@@ -198,18 +198,25 @@ impl<F: TexelFormat> Texture<'_, F> {
         let [t00, t10, t01, t11] = [(x0, y0), (x1, y0), (x0, y1), (x1, y1)].map(|(x, y)| self.fetch(x, y));
         let mut out = [0u8; 3];
         for k in 0..F::CHANNELS {
-            // Each row lerp is exact (< 255·2^16 < 2^24), then rounded to
-            // 2^-8 (error ≤ 2^-9) so the column lerp fits u32:
-            // 255·2^8·2^16 + 2^23 < 2^32.
-            let lerp16 = |a: u8, b: u8, f: u32| u32::from(a) * ((1 << 16) - f) + u32::from(b) * f;
-            let top = (lerp16(t00[k], t10[k], fx) + (1 << 7)) >> 8;
-            let bottom = (lerp16(t01[k], t11[k], fx) + (1 << 7)) >> 8;
-            let v = (top * ((1 << 16) - fy) + bottom * fy + (1 << 23)) >> 24;
-            out[k] = v as u8; // ≤ 255: a convex combination of ≤ 255·2^24, rounded
+            out[k] = bilerp([t00[k], t10[k], t01[k], t11[k]], fx, fy);
         }
         if F::CHANNELS == 1 {
             out = [out[0]; 3];
         }
         out
     }
+}
+
+/// The bilinear blend of the corner values `[c00, c10, c01, c11]` with
+/// weights `fx`, `fy` (of the second column and row) in 2^-16.
+#[inline(always)]
+pub(crate) fn bilerp(c: [u8; 4], fx: u32, fy: u32) -> u8 {
+    // Each row lerp is exact (< 255·2^16 < 2^24), then rounded to
+    // 2^-8 (error ≤ 2^-9) so the column lerp fits u32:
+    // 255·2^8·2^16 + 2^23 < 2^32.
+    let lerp16 = |a: u8, b: u8, f: u32| u32::from(a) * ((1 << 16) - f) + u32::from(b) * f;
+    let top = (lerp16(c[0], c[1], fx) + (1 << 7)) >> 8;
+    let bottom = (lerp16(c[2], c[3], fx) + (1 << 7)) >> 8;
+    let v = (top * ((1 << 16) - fy) + bottom * fy + (1 << 23)) >> 24;
+    v as u8 // ≤ 255: a convex combination of ≤ 255·2^24, rounded
 }

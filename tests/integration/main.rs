@@ -12,10 +12,14 @@
 //! - `blend`: every blend mode × colour format vs an `f64` reference; translucent drawing; depth sort.
 //! - `gouraud`: Gouraud colour vs an `f64` barycentric reference.
 //! - `bands`: identical images for every band height; one `fill_contiguous` per band.
+//! - `drawables`: embedded-graphics text, images and styled primitives drawn into bands
+//!   match e-g into a framebuffer, for every band height; HUD over 3D.
 //! - `mock_display`: embedded-graphics `MockDisplay` pattern tests (overdraw panics).
 //! - `per_band`: the per-band vertex stage draws what the per-frame one draws.
 //! - `varyings`: per-vertex value vectors vs f64; the fragment hook's coverage.
 //! - `fragment`: the fragment stage: Phong vs f64 and Gouraud, translucency, varyings through the clipper.
+//! - `sprite`: sprites (alpha textures, scaled, rotated, nearest/bilinear) vs an f64 sampler;
+//!   band invariance; bad input.
 //! - `texture`: texture sampling vs f64; textured triangles (affine and perspective-correct).
 //! - 3D: `depth3d`, `zfight`, `perspective`, `clip3d_raster`, `interpenetrate`, `pipeline3d` (references in `ref3d`, `clip3d_ref`).
 //! - `antialias`, `antialias_images`: anti-aliasing (`microraster::aa`): coverage vs exact area,
@@ -29,6 +33,7 @@ mod blend;
 mod clip3d_raster;
 mod clip3d_ref;
 mod depth3d;
+mod drawables;
 mod fragment;
 mod framebuffer;
 mod gouraud;
@@ -48,6 +53,7 @@ mod props3d;
 mod ref3d;
 mod reference;
 mod regressions;
+mod sprite;
 mod texture;
 mod triangles_exact;
 mod triangles_float;
