@@ -41,6 +41,10 @@ mod fragment;
 #[allow(dead_code)]
 #[path = "../fw_sweep/frame.rs"]
 mod frame;
+// The 20k-triangle knot (issue 12), used by `configs` and `common::knot`.
+#[allow(dead_code)]
+#[path = "../common/knot_mesh.rs"]
+mod knot_mesh;
 mod timing;
 
 use charts::Point2;
