@@ -44,6 +44,8 @@ use microraster::raster3d::{Interpolation, ScreenTriangle};
 use microraster::scenes3d::{BINS, Scene3d};
 use microraster::{Band, Interpolate, Primitive, Renderer, SubPoint, scenes};
 
+pub mod knot;
+
 /// Frame width.
 pub const W: usize = 320;
 /// Frame height.
@@ -510,6 +512,42 @@ fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
     [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
 }
 
+/// The standard scene's light (`Scene3d::pipeline`): direction in eye
+/// space (not normalised), ambient, diffuse and specular weights, exponent.
+const LIGHT: [f64; 3] = [-0.4, 0.7, 0.6];
+const AMBIENT: f64 = 0.25;
+const DIFFUSE: f64 = 0.75;
+const SPECULAR: f64 = 0.4;
+const SHININESS: i32 = 24;
+/// The near plane's distance.
+const NEAR: f64 = 1.0;
+
+/// The standard scene's view and projection matrices (`Scene3d::pipeline`:
+/// `look_at` from (0, 1.9, 5.6) to the origin, 0.9 rad vertical field of
+/// view, near 1, far 20, `W × H`), in f64, rows.
+fn camera() -> (M4, M4) {
+    let eye = [0.0, 1.9, 5.6];
+    let f = norm([-eye[0], -eye[1], -eye[2]]);
+    let s = norm(cross(f, [0.0, 1.0, 0.0]));
+    let u = cross(s, f);
+    let view: M4 = [
+        [s[0], s[1], s[2], -dot(s, eye)],
+        [u[0], u[1], u[2], -dot(u, eye)],
+        [-f[0], -f[1], -f[2], dot(f, eye)],
+        [0.0, 0.0, 0.0, 1.0],
+    ];
+    let (near, far, fov) = (NEAR, 20.0, 0.9f64);
+    let fy = 1.0 / (fov / 2.0).tan();
+    let a = far / (near - far);
+    let proj: M4 = [
+        [fy / (W as f64 / H as f64), 0.0, 0.0, 0.0],
+        [0.0, fy, 0.0, 0.0],
+        [0.0, 0.0, a, near * a],
+        [0.0, 0.0, -1.0, 0.0],
+    ];
+    (view, proj)
+}
+
 /// One front-facing triangle of the f64 pipeline, in screen space (unsnapped).
 #[derive(Clone, Copy, Debug)]
 pub struct RefTri {
@@ -552,27 +590,10 @@ impl Ref3d {
     /// The vertex stage at `angle`, with materials quantized for `C` as the
     /// library does.
     pub fn new<C: Interpolate>(angle: f32) -> Self {
-        let eye = [0.0, 1.9, 5.6];
-        let f = norm([-eye[0], -eye[1], -eye[2]]);
-        let s = norm(cross(f, [0.0, 1.0, 0.0]));
-        let u = cross(s, f);
-        let view: M4 = [
-            [s[0], s[1], s[2], -dot(s, eye)],
-            [u[0], u[1], u[2], -dot(u, eye)],
-            [-f[0], -f[1], -f[2], dot(f, eye)],
-            [0.0, 0.0, 0.0, 1.0],
-        ];
-        let (near, far, fov) = (1.0, 20.0, 0.9f64);
-        let fy = 1.0 / (fov / 2.0).tan();
-        let a = far / (near - far);
-        let proj: M4 = [
-            [fy / (W as f64 / H as f64), 0.0, 0.0, 0.0],
-            [0.0, fy, 0.0, 0.0],
-            [0.0, 0.0, a, near * a],
-            [0.0, 0.0, -1.0, 0.0],
-        ];
-        let light = norm([-0.4, 0.7, 0.6]);
-        let (ambient, diffuse, spec, exp) = (0.25, 0.75, 0.4, 24);
+        let (view, proj) = camera();
+        let near = NEAR;
+        let light = norm(LIGHT);
+        let (ambient, diffuse, spec, exp) = (AMBIENT, DIFFUSE, SPECULAR, SHININESS);
         let ang = angle as f64;
         let models = [
             mul(&rot_y(ang), &scale(1.45)),
