@@ -12,7 +12,8 @@
 #                                           (QEMU -icount), static RAM, flash, stack,
 #                                           per scene and target (examples/fw_bench);
 #                                           its rows also go to docs/data/fw-bench.tsv
-#                                           for the report (`check` prints the table only)
+#                                           for the report, the table into README.md
+#                                           (`check` prints the table only)
 #   bash scripts/firmware.sh sweep          Cortex-M4F and Cortex-M0 instruction counts of the
 #                                           speed/accuracy report's configurations into
 #                                           docs/data/cortex-m.tsv (examples/fw_sweep); then
@@ -406,7 +407,7 @@ case ${1:-} in
   setup) setup ;;
   build) build "${2:?build m4f|m0 [EXAMPLE]}" "${3:-firmware}" ;;
   build-st7789) build_st7789 ;;
-  table) mkdir -p "$ROOT/docs/data" && table "$ROOT/docs/data/fw-bench.tsv" ;;
+  table) mkdir -p "$ROOT/docs/data" && table "$ROOT/docs/data/fw-bench.tsv" "$ROOT/README.md" ;;
   sweep) sweep ;;
   run) run "${2:?run m4f|m0}" ;;
   check) check ;;

@@ -311,3 +311,15 @@ pub fn table(input: &str) -> Result<(String, String), String> {
     }
     Ok((out, tsv))
 }
+
+/// Replaces the README's firmware table (between its
+/// `<!-- fw-table:begin -->` and `<!-- fw-table:end -->` markers) with `table`.
+pub fn update_readme(path: &str, table: &str) -> Result<(), String> {
+    let text = std::fs::read_to_string(path).map_err(|e| format!("{path}: {e}"))?;
+    let (begin, end) = ("<!-- fw-table:begin -->", "<!-- fw-table:end -->");
+    let (Some(a), Some(b)) = (text.find(begin), text.find(end)) else {
+        return Err(format!("{path}: no {begin} … {end} markers"));
+    };
+    let text = format!("{}{begin}\n{table}{}", &text[..a], &text[b..]);
+    std::fs::write(path, text).map_err(|e| format!("{path}: {e}"))
+}

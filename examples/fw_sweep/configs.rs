@@ -260,7 +260,9 @@ fn knot<T: Scalar, M: Interpolation + Default>(m: &mut dyn Meter, fb: &mut Frame
     m.start();
     let r = Renderer::new(H as u32, BG)
         .render_3d_direct(&mut band, &mut depth, DepthState::LESS_WRITE, M::default(), fb, |band| {
-            pipeline.draw_meshlets(&crate::knot_mesh::VALID_KNOT, &model, KNOT_COLOR, &mut cache, band).map(|_| ())
+            pipeline
+                .draw_meshlets(&crate::knot_mesh::VALID_KNOT, &model, KNOT_COLOR, &mut cache, band)
+                .map(|_| ())
         })
         .map_err(input);
     m.stop();

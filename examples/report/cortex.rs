@@ -85,7 +85,8 @@ impl FwBench {
     pub fn load(path: &Path) -> Result<Self, String> {
         let Ok(text) = std::fs::read_to_string(path) else { return Ok(FwBench::default()) };
         let mut map = HashMap::new();
-        for (i, line) in text.lines().enumerate().filter(|(_, l)| !l.trim().is_empty() && !l.starts_with('#')) {
+        for (i, line) in text.lines().enumerate().filter(|(_, l)| !l.trim().is_empty() && !l.starts_with('#'))
+        {
             let bad = |e: &dyn std::fmt::Display| format!("{}:{}: {e}", path.display(), i + 1);
             let f: Vec<&str> = line.split('\t').collect();
             let [core, key, n @ ..] = &f[..] else { return Err(bad(&"expected 7 fields")) };
@@ -93,7 +94,10 @@ impl FwBench {
             let [instructions, triangles, covered, static_ram, _stack] = n[..] else {
                 return Err(bad(&"expected 7 fields"));
             };
-            map.insert((core.to_string(), key.to_string()), FwRow { instructions, triangles, covered, static_ram });
+            map.insert(
+                (core.to_string(), key.to_string()),
+                FwRow { instructions, triangles, covered, static_ram },
+            );
         }
         Ok(FwBench(map))
     }
