@@ -35,6 +35,8 @@ use std::time::Duration;
 #[path = "common/mod.rs"]
 mod common;
 use common::*;
+#[path = "common/knot.rs"]
+mod knot;
 #[allow(dead_code)]
 #[path = "../examples/common/knot_mesh.rs"]
 mod knot_mesh;
@@ -116,7 +118,7 @@ fn mesh3d(c: &mut Criterion) {
 }
 
 fn knot20k(c: &mut Criterion) {
-    use common::knot::{EucKnot, mr_knot};
+    use knot::{EucKnot, mr_knot};
     use microraster::pipeline::ClusterCache;
     let mut g = c.benchmark_group("knot20k");
     let (p32, pfx) = (pipeline3d::<f32, 4>(), pipeline3d::<Fx, 4>());

@@ -17,15 +17,30 @@
 //!
 //! Both frames start from the background (euc clears its colour and depth
 //! buffers, microraster clears each band), so each timed call is a whole frame.
+//!
+//! Included with `#[path]` beside `benches/common/mod.rs` (as `crate::common`)
+//! and `examples/common/knot_mesh.rs` (as `crate::knot_mesh`) by the
+//! criterion benchmarks and the report.
 
-use super::*;
+// Each includer uses part of it (the benchmarks time, the report also counts).
+#![allow(dead_code)]
+
+use crate::common::*;
 use crate::knot_mesh::{KNOT_MESH, VALID_KNOT};
+use embedded_graphics::prelude::RgbColor;
+use embedded_graphics_core::pixelcolor::Rgb565;
 use euc::Pipeline as _;
 use euc::Target as _;
 use euc::buffer::Buffer2d;
 use euc::rasterizer::{BackfaceCullingEnabled, Triangles};
+use microraster::depth::{DepthBand, DepthState};
+use microraster::edge::Cull;
+use microraster::math::{Mat4, Scalar, transform};
 use microraster::pipeline::ClusterCache;
+use microraster::pipeline::Pipeline;
 use microraster::raster3d::Interpolation;
+use microraster::raster3d::ScreenTriangle;
+use microraster::{Band, Renderer};
 
 /// The knot's colour (`examples/fw_bench`'s and `examples/fw_sweep`'s).
 pub const KNOT_COLOR: Rgb565 = Rgb565::new(27, 46, 12);

@@ -44,8 +44,6 @@ use microraster::raster3d::{Interpolation, ScreenTriangle};
 use microraster::scenes3d::{BINS, Scene3d};
 use microraster::{Band, Interpolate, Primitive, Renderer, SubPoint, scenes};
 
-pub mod knot;
-
 /// Frame width.
 pub const W: usize = 320;
 /// Frame height.
@@ -455,9 +453,11 @@ pub fn path_name<T: Scalar>() -> &'static str {
 
 // --- the f64 reference pipeline ---------------------------------------------
 
-type M4 = [[f64; 4]; 4]; // rows
+/// A 4 × 4 matrix, rows.
+pub type M4 = [[f64; 4]; 4];
 
-fn mul(a: &M4, b: &M4) -> M4 {
+/// `a · b`.
+pub fn mul(a: &M4, b: &M4) -> M4 {
     let mut m = [[0.0; 4]; 4];
     for (i, row) in m.iter_mut().enumerate() {
         for (j, v) in row.iter_mut().enumerate() {
@@ -482,7 +482,8 @@ fn rot_x(a: f64) -> M4 {
     [[1.0, 0.0, 0.0, 0.0], [0.0, c, -s, 0.0], [0.0, s, c, 0.0], [0.0, 0.0, 0.0, 1.0]]
 }
 
-fn rot_y(a: f64) -> M4 {
+/// Rotation by `a` radians about y.
+pub fn rot_y(a: f64) -> M4 {
     let (s, c) = a.sin_cos();
     [[c, 0.0, s, 0.0], [0.0, 1.0, 0.0, 0.0], [-s, 0.0, c, 0.0], [0.0, 0.0, 0.0, 1.0]]
 }
@@ -499,7 +500,8 @@ fn translate(t: [f64; 3]) -> M4 {
     m
 }
 
-fn norm(v: [f64; 3]) -> [f64; 3] {
+/// `v` scaled to unit length.
+pub fn norm(v: [f64; 3]) -> [f64; 3] {
     let l = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
     v.map(|c| c / l)
 }
@@ -514,18 +516,22 @@ fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
 
 /// The standard scene's light (`Scene3d::pipeline`): direction in eye
 /// space (not normalised), ambient, diffuse and specular weights, exponent.
-const LIGHT: [f64; 3] = [-0.4, 0.7, 0.6];
-const AMBIENT: f64 = 0.25;
-const DIFFUSE: f64 = 0.75;
-const SPECULAR: f64 = 0.4;
-const SHININESS: i32 = 24;
+pub const LIGHT: [f64; 3] = [-0.4, 0.7, 0.6];
+/// Ambient weight of the standard scene's light.
+pub const AMBIENT: f64 = 0.25;
+/// Diffuse (Lambert) weight.
+pub const DIFFUSE: f64 = 0.75;
+/// Specular (Blinn–Phong) weight.
+pub const SPECULAR: f64 = 0.4;
+/// Specular exponent.
+pub const SHININESS: i32 = 24;
 /// The near plane's distance.
 const NEAR: f64 = 1.0;
 
 /// The standard scene's view and projection matrices (`Scene3d::pipeline`:
 /// `look_at` from (0, 1.9, 5.6) to the origin, 0.9 rad vertical field of
 /// view, near 1, far 20, `W × H`), in f64, rows.
-fn camera() -> (M4, M4) {
+pub fn camera() -> (M4, M4) {
     let eye = [0.0, 1.9, 5.6];
     let f = norm([-eye[0], -eye[1], -eye[2]]);
     let s = norm(cross(f, [0.0, 1.0, 0.0]));

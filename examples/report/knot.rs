@@ -1,12 +1,12 @@
 //! The real-mesh benchmark in the report (issue 12): the 20k-triangle knot
 //! on the host, microraster's meshlet stage against `euc`, same frame
-//! (renderers in `benches/common/knot.rs`). Its targets are in
+//! (renderers in `benches/common/knot.rs`, `crate::knot_renderers`). Its targets are in
 //! [`super::targets`].
 
 use super::Peer;
-use crate::common::knot::{self, EucKnot, mr_knot};
 use crate::common::*;
 use crate::cortex::{Counts, FwBench};
+use crate::knot_renderers::{self as knot, EucKnot, mr_knot};
 use crate::timing::median_ns;
 use embedded_graphics_core::pixelcolor::{Rgb565, RgbColor};
 use microraster::Band;

@@ -43,10 +43,13 @@ mod fragment;
 #[allow(dead_code)]
 #[path = "../fw_sweep/frame.rs"]
 mod frame;
-// The 20k-triangle knot (issue 12), used by `configs` and `common::knot`.
+// The 20k-triangle knot (issue 12), used by `configs` and `knot_renderers`.
 #[allow(dead_code)]
 #[path = "../common/knot_mesh.rs"]
 mod knot_mesh;
+// The knot's renderers (microraster's meshlet stage and euc), shared with the benchmarks.
+#[path = "../../benches/common/knot.rs"]
+mod knot_renderers;
 mod timing;
 
 use charts::Point2;
@@ -837,7 +840,7 @@ fn cost_rows(peers: &[Peer], s3: &[Row3d]) -> Vec<CostRow> {
             "scatter" => scenes::SCATTER_LEN,
             "large" => scenes::LARGE_LEN,
             "tiny" => scenes::TINY_LEN,
-            knot::SCENE => common::knot::triangles(),
+            knot::SCENE => knot_renderers::triangles(),
             _ => scenes::LINES_LEN,
         };
         let label =
