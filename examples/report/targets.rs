@@ -215,7 +215,7 @@ fn issue12(peers: &[Peer], breakdown: &[Breakdown], counts: &Counts, fw: &FwBenc
             w,
             "The knot on the Cortex-M4F: {:.0} instructions per mesh triangle affine, {:.0} perspective-correct, \
              for {} covered pixels ({px:.2} per mesh triangle). Perspective-correct colour adds {:.0} instructions \
-             per covered pixel (the per-pixel divisions). ",
+             per covered pixel (its per-pixel divisions and its extra plane set-up per triangle). ",
             per(a.instructions),
             per(p.instructions),
             a.covered,
