@@ -10,7 +10,10 @@
 //! 1,000 triangles of mixed sizes; (2) `large`, 8 large triangles (fill-rate
 //! bound); (3) `tiny`, 10,000 tiny triangles (setup bound); (4) `mesh3d`, the
 //! standard 3D scene (1,116 triangles, 16-bit depth, Gouraud); (5) `lines`,
-//! 1,000 lines. Renderers and targets: `benches/common/mod.rs`.
+//! 1,000 lines; `knot20k`, the 20k-triangle knot (10,240 vertices, Gouraud
+//! with specular, 16-bit depth, back faces culled) through the meshlet stage,
+//! against the `euc` crate. Renderers and targets: `benches/common/mod.rs`
+//! and `benches/common/knot.rs`.
 //!
 //! After criterion's own output, a table of ratios from this run's estimates
 //! (criterion's median per benchmark) is printed: peer time / microraster
@@ -32,6 +35,11 @@ use std::time::Duration;
 #[path = "common/mod.rs"]
 mod common;
 use common::*;
+#[path = "common/knot.rs"]
+mod knot;
+#[allow(dead_code)]
+#[path = "../examples/common/knot_mesh.rs"]
+mod knot_mesh;
 
 fn config() -> Criterion {
     Criterion::default()
@@ -109,6 +117,29 @@ fn mesh3d(c: &mut Criterion) {
     g.finish();
 }
 
+fn knot20k(c: &mut Criterion) {
+    use knot::{EucKnot, mr_knot};
+    use microraster::pipeline::ClusterCache;
+    let mut g = c.benchmark_group("knot20k");
+    let (p32, pfx) = (pipeline3d::<f32, 4>(), pipeline3d::<Fx, 4>());
+    let (mut c32, mut cfx) = (Box::new(ClusterCache::new()), Box::new(ClusterCache::new()));
+    let mut band = Box::new(Band::<Rgb565, W, 16>::new(BG3));
+    let mut depth = Box::new(DepthBand::<Depth16, W, 16>::new());
+    let mut slice = SliceFb::default();
+    run(&mut g, "mr_f32_persp_band16_slice", || {
+        mr_knot::<f32, PerspectiveCorrect>(&p32, &mut c32, &mut band, &mut depth, &mut slice);
+    });
+    run(&mut g, "mr_f32_affine_band16_slice", || {
+        mr_knot::<f32, Affine>(&p32, &mut c32, &mut band, &mut depth, &mut slice);
+    });
+    run(&mut g, "mr_fx_affine_band16_slice", || {
+        mr_knot::<Fx, Affine>(&pfx, &mut cfx, &mut band, &mut depth, &mut slice);
+    });
+    let mut euc = EucKnot::new();
+    run(&mut g, "euc", || euc.frame());
+    g.finish();
+}
+
 fn ceiling(c: &mut Criterion) {
     let mut g = c.benchmark_group("ceiling");
     let mut slice = SliceFb::default();
@@ -128,6 +159,7 @@ fn main() {
     scene2d(&mut c, "tiny", scenes::tiny, None);
     scene2d(&mut c, "lines", scenes::lines, None);
     mesh3d(&mut c);
+    knot20k(&mut c);
     c.final_summary();
     ratios();
 }
@@ -167,6 +199,19 @@ fn ratios() {
             r("skia", Some(mr)),
             r("reference", Some(mr)),
             mr / 1000.0
+        );
+    }
+    let knot = |id: &str| median("knot20k", id);
+    if let (Some(euc), Some(persp), Some(affine)) =
+        (knot("euc"), knot("mr_f32_persp_band16_slice"), knot("mr_f32_affine_band16_slice"))
+    {
+        println!(
+            "knot20k: euc / microraster {:.2} (f32, perspective-correct, as euc interpolates), {:.2} (f32, affine); \
+             microraster {:.1} µs, euc {:.1} µs",
+            euc / persp,
+            euc / affine,
+            persp / 1000.0,
+            euc / 1000.0
         );
     }
     let large = Scene2d::<4>::new(scenes::large);

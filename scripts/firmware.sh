@@ -10,7 +10,10 @@
 #   bash scripts/firmware.sh size           flash and static RAM of both ELFs
 #   bash scripts/firmware.sh table          the README's table: instructions per frame
 #                                           (QEMU -icount), static RAM, flash, stack,
-#                                           per scene and target (examples/fw_bench)
+#                                           per scene and target (examples/fw_bench);
+#                                           its rows also go to docs/data/fw-bench.tsv
+#                                           for the report, the table into README.md
+#                                           (`check` prints the table only)
 #   bash scripts/firmware.sh sweep          Cortex-M4F and Cortex-M0 instruction counts of the
 #                                           speed/accuracy report's configurations into
 #                                           docs/data/cortex-m.tsv (examples/fw_sweep); then
@@ -306,12 +309,12 @@ size_words() { # size_words ELF: "text data bss"
   "$tool" "$1" | awk 'NR == 2 { print $1, $2, $3 }'
 }
 
-table() {
+table() { # table [TSV_OUT]: also write the rows as data for the report
   setup
   bench_collect
   # The host side (dev profile, as `check` builds it): triangles, covered pixels,
   # frame CRCs, and the table.
-  cargo run --quiet --example fw_bench -- table "$FW_DIR/table-input.txt"
+  cargo run --quiet --example fw_bench -- table "$FW_DIR/table-input.txt" "$@"
 }
 
 # The ST7789 display example is a package of its own (examples/st7789/, see
@@ -404,7 +407,7 @@ case ${1:-} in
   setup) setup ;;
   build) build "${2:?build m4f|m0 [EXAMPLE]}" "${3:-firmware}" ;;
   build-st7789) build_st7789 ;;
-  table) table ;;
+  table) mkdir -p "$ROOT/docs/data" && table "$ROOT/docs/data/fw-bench.tsv" "$ROOT/README.md" ;;
   sweep) sweep ;;
   run) run "${2:?run m4f|m0}" ;;
   check) check ;;

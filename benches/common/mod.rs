@@ -453,9 +453,11 @@ pub fn path_name<T: Scalar>() -> &'static str {
 
 // --- the f64 reference pipeline ---------------------------------------------
 
-type M4 = [[f64; 4]; 4]; // rows
+/// A 4 × 4 matrix, rows.
+pub type M4 = [[f64; 4]; 4];
 
-fn mul(a: &M4, b: &M4) -> M4 {
+/// `a · b`.
+pub fn mul(a: &M4, b: &M4) -> M4 {
     let mut m = [[0.0; 4]; 4];
     for (i, row) in m.iter_mut().enumerate() {
         for (j, v) in row.iter_mut().enumerate() {
@@ -480,7 +482,8 @@ fn rot_x(a: f64) -> M4 {
     [[1.0, 0.0, 0.0, 0.0], [0.0, c, -s, 0.0], [0.0, s, c, 0.0], [0.0, 0.0, 0.0, 1.0]]
 }
 
-fn rot_y(a: f64) -> M4 {
+/// Rotation by `a` radians about y.
+pub fn rot_y(a: f64) -> M4 {
     let (s, c) = a.sin_cos();
     [[c, 0.0, s, 0.0], [0.0, 1.0, 0.0, 0.0], [-s, 0.0, c, 0.0], [0.0, 0.0, 0.0, 1.0]]
 }
@@ -497,7 +500,8 @@ fn translate(t: [f64; 3]) -> M4 {
     m
 }
 
-fn norm(v: [f64; 3]) -> [f64; 3] {
+/// `v` scaled to unit length.
+pub fn norm(v: [f64; 3]) -> [f64; 3] {
     let l = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
     v.map(|c| c / l)
 }
@@ -508,6 +512,46 @@ fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
 
 fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
     [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+}
+
+/// The standard scene's light (`Scene3d::pipeline`): direction in eye
+/// space (not normalised), ambient, diffuse and specular weights, exponent.
+pub const LIGHT: [f64; 3] = [-0.4, 0.7, 0.6];
+/// Ambient weight of the standard scene's light.
+pub const AMBIENT: f64 = 0.25;
+/// Diffuse (Lambert) weight.
+pub const DIFFUSE: f64 = 0.75;
+/// Specular (Blinn–Phong) weight.
+pub const SPECULAR: f64 = 0.4;
+/// Specular exponent.
+pub const SHININESS: i32 = 24;
+/// The near plane's distance.
+const NEAR: f64 = 1.0;
+
+/// The standard scene's view and projection matrices (`Scene3d::pipeline`:
+/// `look_at` from (0, 1.9, 5.6) to the origin, 0.9 rad vertical field of
+/// view, near 1, far 20, `W × H`), in f64, rows.
+pub fn camera() -> (M4, M4) {
+    let eye = [0.0, 1.9, 5.6];
+    let f = norm([-eye[0], -eye[1], -eye[2]]);
+    let s = norm(cross(f, [0.0, 1.0, 0.0]));
+    let u = cross(s, f);
+    let view: M4 = [
+        [s[0], s[1], s[2], -dot(s, eye)],
+        [u[0], u[1], u[2], -dot(u, eye)],
+        [-f[0], -f[1], -f[2], dot(f, eye)],
+        [0.0, 0.0, 0.0, 1.0],
+    ];
+    let (near, far, fov) = (NEAR, 20.0, 0.9f64);
+    let fy = 1.0 / (fov / 2.0).tan();
+    let a = far / (near - far);
+    let proj: M4 = [
+        [fy / (W as f64 / H as f64), 0.0, 0.0, 0.0],
+        [0.0, fy, 0.0, 0.0],
+        [0.0, 0.0, a, near * a],
+        [0.0, 0.0, -1.0, 0.0],
+    ];
+    (view, proj)
 }
 
 /// One front-facing triangle of the f64 pipeline, in screen space (unsnapped).
@@ -552,27 +596,10 @@ impl Ref3d {
     /// The vertex stage at `angle`, with materials quantized for `C` as the
     /// library does.
     pub fn new<C: Interpolate>(angle: f32) -> Self {
-        let eye = [0.0, 1.9, 5.6];
-        let f = norm([-eye[0], -eye[1], -eye[2]]);
-        let s = norm(cross(f, [0.0, 1.0, 0.0]));
-        let u = cross(s, f);
-        let view: M4 = [
-            [s[0], s[1], s[2], -dot(s, eye)],
-            [u[0], u[1], u[2], -dot(u, eye)],
-            [-f[0], -f[1], -f[2], dot(f, eye)],
-            [0.0, 0.0, 0.0, 1.0],
-        ];
-        let (near, far, fov) = (1.0, 20.0, 0.9f64);
-        let fy = 1.0 / (fov / 2.0).tan();
-        let a = far / (near - far);
-        let proj: M4 = [
-            [fy / (W as f64 / H as f64), 0.0, 0.0, 0.0],
-            [0.0, fy, 0.0, 0.0],
-            [0.0, 0.0, a, near * a],
-            [0.0, 0.0, -1.0, 0.0],
-        ];
-        let light = norm([-0.4, 0.7, 0.6]);
-        let (ambient, diffuse, spec, exp) = (0.25, 0.75, 0.4, 24);
+        let (view, proj) = camera();
+        let near = NEAR;
+        let light = norm(LIGHT);
+        let (ambient, diffuse, spec, exp) = (AMBIENT, DIFFUSE, SPECULAR, SHININESS);
         let ang = angle as f64;
         let models = [
             mul(&rot_y(ang), &scale(1.45)),

@@ -20,7 +20,10 @@
 //! * Host: `fw_bench m4f|m0` prints each configuration's triangles, lines,
 //!   covered pixels and frame CRC; `fw_bench table FILE` reads the target
 //!   runs and sizes that `scripts/firmware.sh table` collected into FILE,
-//!   checks every frame CRC against the host's, and prints the table.
+//!   checks every frame CRC against the host's, and prints the table;
+//!   `fw_bench table FILE TSV_OUT [README]` also writes its rows as
+//!   tab-separated data (`docs/data/fw-bench.tsv`, which the report reads)
+//!   and the table into the README (between its `fw-table:begin/end` markers).
 #![cfg_attr(target_os = "none", no_std, no_main)]
 
 // The CRC firmware's workload: its constants, CRC and buffers sizes.
@@ -169,11 +172,18 @@ fn main() {
                 println!("{r}");
             }
         }),
-        ["table", file] => std::fs::read_to_string(file)
+        ["table", file, rest @ ..] if rest.len() <= 2 => std::fs::read_to_string(file)
             .map_err(|e| format!("{file}: {e}"))
             .and_then(|input| table::table(&input))
-            .map(|t| print!("{t}")),
-        _ => Err("usage: fw_bench m4f|m0 | fw_bench table FILE".to_string()),
+            .and_then(|(t, tsv)| {
+                print!("{t}");
+                // The same rows for the report (docs/data/fw-bench.tsv).
+                if let Some(out) = rest.first() {
+                    std::fs::write(out, tsv).map_err(|e| format!("{out}: {e}"))?;
+                }
+                rest.get(1).map_or(Ok(()), |readme| table::update_readme(readme, &t))
+            }),
+        _ => Err("usage: fw_bench m4f|m0 | fw_bench table FILE [TSV_OUT [README]]".to_string()),
     };
     if let Err(e) = result {
         eprintln!("fw_bench: {e}");

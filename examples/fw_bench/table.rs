@@ -185,10 +185,34 @@ fn per(n: u64, d: u64) -> String {
     if x < 100.0 { format!("{x:.1}") } else { group(x.round() as u64) }
 }
 
-/// The README table from the collected target runs (`input`).
-pub fn table(input: &str) -> Result<String, String> {
+/// The key of a configuration in `docs/data/fw-bench.tsv`: the scene and
+/// its description, lower case, runs of other characters as one `-`
+/// (`knot20k/meshlets-per-band-f32-affine`).
+pub fn key(b: &Bench) -> String {
+    let mut k = String::new();
+    for c in b.work.describe().chars() {
+        if c.is_ascii_alphanumeric() {
+            k.push(c.to_ascii_lowercase());
+        } else if !k.is_empty() && !k.ends_with('-') {
+            k.push('-');
+        }
+    }
+    format!("{}/{}", b.scene.replace(' ', "-"), k.trim_end_matches('-'))
+}
+
+/// The README table from the collected target runs (`input`), and the same
+/// rows as the tab-separated data the report reads (`docs/data/fw-bench.tsv`).
+pub fn table(input: &str) -> Result<(String, String), String> {
     let runs = parse(input)?;
     let mut out = String::new();
+    let mut tsv = String::from(
+        "# Cortex-M counts of examples/fw_bench (the README's firmware table), one frame each.\n\
+         # Written by `bash scripts/firmware.sh table`; do not edit. QEMU -icount shift=0:\n\
+         # m4f on mps2-an386 (320x240, 16-row bands), m0 on microbit (160x128, 4-row bands).\n\
+         # triangles: mesh triangles for the knot; covered: pixels unlike the background (0: none drawn);\n\
+         # static_ram: bytes of the buffers the configuration uses; stack: high-water mark, bytes.\n\
+         # core\tkey\tinstructions\ttriangles\tcovered\tstatic_ram\tstack\n",
+    );
     let w = &mut out;
     let targets = [("m4f", "Cortex-M4F"), ("m0", "Cortex-M0")];
     writeln!(
@@ -244,6 +268,14 @@ pub fn table(input: &str) -> Result<String, String> {
                 _ => ("–".to_string(), "–".to_string()),
             };
             writeln!(
+                tsv,
+                "{t}\t{}\t{instr}\t{}\t{}\t{ram}\t{stack}",
+                key(&h.bench),
+                h.triangles,
+                h.covered.unwrap_or(0)
+            )
+            .unwrap();
+            writeln!(
                 w,
                 "| {label} | {} {frame} | {} | {} | {triangles} | {} | {covered} | {per_px} | {} | {} |",
                 h.bench.scene,
@@ -277,5 +309,17 @@ pub fn table(input: &str) -> Result<String, String> {
             writeln!(w, "- {label} (QEMU `{machine}`): {n}").unwrap();
         }
     }
-    Ok(out)
+    Ok((out, tsv))
+}
+
+/// Replaces the README's firmware table (between its
+/// `<!-- fw-table:begin -->` and `<!-- fw-table:end -->` markers) with `table`.
+pub fn update_readme(path: &str, table: &str) -> Result<(), String> {
+    let text = std::fs::read_to_string(path).map_err(|e| format!("{path}: {e}"))?;
+    let (begin, end) = ("<!-- fw-table:begin -->", "<!-- fw-table:end -->");
+    let (Some(a), Some(b)) = (text.find(begin), text.find(end)) else {
+        return Err(format!("{path}: no {begin} … {end} markers"));
+    };
+    let text = format!("{}{begin}\n{table}{}", &text[..a], &text[b..]);
+    std::fs::write(path, text).map_err(|e| format!("{path}: {e}"))
 }

@@ -10,14 +10,19 @@
 //! bands into the framebuffer or drawn straight into it (`direct`,
 //! [`TargetBlitter`]); the 3D scene runs its vertex stage into bins, then
 //! [`Renderer::render_3d`] (both timed), or the vertex stage alone
-//! (`mesh3d/vertex/*`). Adding a configuration is one line in [`LIST`].
+//! (`mesh3d/vertex/*`); the 20k-triangle knot (`knot20k/*`,
+//! `examples/common/knot_mesh.rs`) goes through the meshlet stage per band
+//! ([`Renderer::render_3d_direct`] with [`Pipeline::draw_meshlets`], no
+//! bins), as `examples/fw_bench` times it. Adding a configuration is one line
+//! in [`LIST`].
 
 use embedded_graphics_core::pixelcolor::Rgb565;
 use embedded_graphics_core::prelude::*;
 use fixed::types::I16F16;
 use microraster::depth::{Depth8, Depth16, Depth24, Depth32, DepthBand, DepthFormat, DepthState};
 use microraster::edge::Cull;
-use microraster::math::{Fx, Scalar};
+use microraster::math::{Fx, Scalar, transform};
+use microraster::pipeline::{ClusterCache, Pipeline};
 use microraster::raster3d::{Affine, Interpolation, PerspectiveCorrect, ScreenTriangle};
 use microraster::scenes::{self, FineTriangle};
 use microraster::scenes3d::{BINS, Scene3d};
@@ -114,6 +119,11 @@ pub const LIST: &[Config] = &[
     config!("mesh3d/Fx/D16/affine/band16/S4", mesh3d::<Fx, Depth16, Affine, 4, 16>),
     config!("mesh3d/vertex/f32", vertex3d::<f32>),
     config!("mesh3d/vertex/Fx", vertex3d::<Fx>),
+    // The 20k-triangle knot (issue 12): both numeric paths, both interpolations.
+    config!("knot20k/f32/D16/affine/band16/S4", knot::<f32, Affine>),
+    config!("knot20k/f32/D16/persp/band16/S4", knot::<f32, P>),
+    config!("knot20k/Fx/D16/affine/band16/S4", knot::<Fx, Affine>),
+    config!("knot20k/Fx/D16/persp/band16/S4", knot::<Fx, P>),
 ];
 
 /// Every configuration: [`LIST`] and the fragment-stage options
@@ -233,4 +243,28 @@ fn vertex3d<T: Scalar>(m: &mut dyn Meter, fb: &mut FrameBuffer) -> Result<(), Er
     Renderer::new(H as u32, BG)
         .render_3d::<_, Depth16, Affine, 4, W, 16>(&bins, &mut band, &mut depth, DepthState::LESS_WRITE, fb)
         .map_err(input)
+}
+
+/// The knot's colour (`examples/fw_bench`'s `KNOT_COLOR`).
+pub const KNOT_COLOR: Rgb565 = Rgb565::new(27, 46, 12);
+
+/// The 20k-triangle knot in the standard scene's camera and light, turned by
+/// [`ANGLE`] about y (as `examples/fw_bench` and the demo draw it): the
+/// meshlet stage per 16-row band, straight into the band, 16-bit depth.
+fn knot<T: Scalar, M: Interpolation + Default>(m: &mut dyn Meter, fb: &mut FrameBuffer) -> Result<(), Error> {
+    let pipeline: Pipeline<T, 4> = Scene3d::pipeline::<T, 4>(W as u32, H as u32)?;
+    let model = transform::rotation_y(T::from_f32(ANGLE));
+    let mut cache = ClusterCache::<T, 4>::new();
+    let mut band = Band::<Rgb565, W, 16>::new(BG);
+    let mut depth = DepthBand::<Depth16, W, 16>::zeroed();
+    m.start();
+    let r = Renderer::new(H as u32, BG)
+        .render_3d_direct(&mut band, &mut depth, DepthState::LESS_WRITE, M::default(), fb, |band| {
+            pipeline
+                .draw_meshlets(&crate::knot_mesh::VALID_KNOT, &model, KNOT_COLOR, &mut cache, band)
+                .map(|_| ())
+        })
+        .map_err(input);
+    m.stop();
+    r
 }

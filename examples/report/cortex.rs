@@ -1,4 +1,5 @@
-//! The Cortex-M instruction counts (issue 5, part 2).
+//! The Cortex-M instruction counts (issue 5, part 2; the firmware
+//! benchmark's rows, issue 12: [`FwBench`]).
 //!
 //! `bash scripts/firmware.sh sweep` (`examples/fw_sweep`) writes
 //! `docs/data/cortex-m.tsv`, one measurement per line, tab-separated, `#`
@@ -57,5 +58,52 @@ impl Counts {
     /// The table cell for `core` and `key`: instructions per frame, or "pending".
     pub fn cell(&self, core: &str, key: &str) -> String {
         self.get(core, key).map_or("pending".into(), |n| n.to_string())
+    }
+}
+
+/// One configuration of `examples/fw_bench` (the README's firmware table),
+/// as `bash scripts/firmware.sh table` writes it to `docs/data/fw-bench.tsv`:
+/// `core key instructions triangles covered static_ram stack`, tab-separated.
+#[derive(Clone, Copy, Debug)]
+pub struct FwRow {
+    /// Instructions per frame.
+    pub instructions: u64,
+    /// Triangles of the frame (the mesh's, for the knot).
+    pub triangles: u64,
+    /// Pixels unlike the background (0 where nothing is drawn).
+    pub covered: u64,
+    /// Bytes of the static buffers the configuration uses.
+    pub static_ram: u64,
+}
+
+/// The firmware benchmark's rows by `(core, key)`.
+#[derive(Default)]
+pub struct FwBench(HashMap<(String, String), FwRow>);
+
+impl FwBench {
+    /// Reads the file if it exists (an absent file means: all pending).
+    pub fn load(path: &Path) -> Result<Self, String> {
+        let Ok(text) = std::fs::read_to_string(path) else { return Ok(FwBench::default()) };
+        let mut map = HashMap::new();
+        for (i, line) in text.lines().enumerate().filter(|(_, l)| !l.trim().is_empty() && !l.starts_with('#'))
+        {
+            let bad = |e: &dyn std::fmt::Display| format!("{}:{}: {e}", path.display(), i + 1);
+            let f: Vec<&str> = line.split('\t').collect();
+            let [core, key, n @ ..] = &f[..] else { return Err(bad(&"expected 7 fields")) };
+            let n: Vec<u64> = n.iter().map(|x| x.parse().map_err(|e| bad(&e))).collect::<Result<_, _>>()?;
+            let [instructions, triangles, covered, static_ram, _stack] = n[..] else {
+                return Err(bad(&"expected 7 fields"));
+            };
+            map.insert(
+                (core.to_string(), key.to_string()),
+                FwRow { instructions, triangles, covered, static_ram },
+            );
+        }
+        Ok(FwBench(map))
+    }
+
+    /// One configuration, if measured.
+    pub fn get(&self, core: &str, key: &str) -> Option<FwRow> {
+        self.0.get(&(core.to_string(), key.to_string())).copied()
     }
 }

@@ -30,7 +30,9 @@ mod charts;
 mod common;
 mod cortex;
 mod frag_report;
+mod knot;
 mod sweep;
+mod targets;
 // The Cortex-M counts' configurations (examples/fw_sweep), timed on the host.
 #[allow(dead_code)]
 #[path = "../fw_sweep/configs.rs"]
@@ -41,6 +43,13 @@ mod fragment;
 #[allow(dead_code)]
 #[path = "../fw_sweep/frame.rs"]
 mod frame;
+// The 20k-triangle knot (issue 12), used by `configs` and `knot_renderers`.
+#[allow(dead_code)]
+#[path = "../common/knot_mesh.rs"]
+mod knot_mesh;
+// The knot's renderers (microraster's meshlet stage and euc), shared with the benchmarks.
+#[path = "../../benches/common/knot.rs"]
+mod knot_renderers;
 mod timing;
 
 use charts::Point2;
@@ -68,6 +77,7 @@ fn main() -> Res<()> {
     let charts_dir = out.join("charts");
     std::fs::create_dir_all(&charts_dir)?;
     let counts = cortex::Counts::load(&out.join("data/cortex-m.tsv"))?;
+    let fw = cortex::FwBench::load(&out.join("data/fw-bench.tsv"))?;
     let cpu = cpu_name();
     eprintln!("report: {cpu}; writing {}", out.display());
 
@@ -90,6 +100,7 @@ fn main() -> Res<()> {
     peers2d(&mut peers, &mut breakdown, "tiny", scenes::tiny, scenes::tiny, None);
     peers2d(&mut peers, &mut breakdown, "lines", scenes::lines, scenes::lines, None);
     peers3d(&mut peers);
+    knot::peers(&mut peers);
 
     eprintln!("report: sweep (2D)");
     let fine = sweep::fine_scene();
@@ -192,13 +203,13 @@ fn main() -> Res<()> {
 
     eprintln!("report: charts and tables");
     let (mut doc, targets) =
-        document(&cpu, memset_ns, ceiling, &peers, &breakdown, &s2, &s3, &setups, &counts);
+        document(&cpu, memset_ns, ceiling, &peers, &breakdown, &s2, &s3, &setups, &counts, &fw);
     doc.push_str(&fragment_section(&frag, aliased_coverage, &peers, &counts));
     std::fs::write(out.join("tradeoffs.md"), doc)?;
     // The README quotes the targets table; keep it in step when writing docs/.
     let readme = out.join("../README.md");
     if out.ends_with("docs") && readme.exists() {
-        update_readme(&readme, &targets)?;
+        update_readme(&readme, &[("targets", targets), ("knot", knot::readme_table(&peers, &counts, &fw))])?;
     }
     draw_charts(&charts_dir, ceiling, &peers, &s2, &s3, &counts)?;
     eprintln!("report: wrote {} and {}", out.join("tradeoffs.md").display(), charts_dir.display());
@@ -381,6 +392,7 @@ fn document(
     s3: &[Row3d],
     setups: &[(usize, usize)],
     counts: &cortex::Counts,
+    fw: &cortex::FwBench,
 ) -> (String, String) {
     let mut d = String::new();
     let w = &mut d;
@@ -396,100 +408,7 @@ fn document(
     let _ = writeln!(w, "![microraster against its peers](charts/peers.png)\n");
 
     // --- Targets
-    let _ = writeln!(w, "## Targets\n");
-    let verdict = |ok: bool| if ok { "**met**" } else { "**missed**" };
-    let r = |a: &str, b: &str| ratio(peers, a, b).unwrap_or(f64::NAN);
-    let eg_slice = r("scatter/eg/slice", "scatter/band16/S4/flat");
-    let eg_fb = r("scatter/eg/egfb", "scatter/band16/S4/flat/egfb");
-    let eg_direct = r("scatter/eg/slice", "scatter/direct/S4/flat");
-    let sk = r("scatter/skia", "scatter/band16/S4/flat");
-    let sk_direct = r("scatter/skia", "scatter/direct/S4/flat");
-    let fill = |key: &str| find(peers, key).map_or(f64::NAN, |p| p.covered as f64 / p.ns / ceiling);
-    let (fill_band, fill_direct) = (fill("large/band16/S4/flat"), fill("large/direct/S4/flat"));
-    // The same without the band's clear and send (the empty frame's time).
-    let fill_spans = breakdown
-        .iter()
-        .find(|b| b.scene == "large")
-        .zip(find(peers, "large/band16/S4/flat"))
-        .map_or(f64::NAN, |(b, p)| p.covered as f64 / (b.full - b.empty) / ceiling);
-    let mut targets = String::new();
-    let t = &mut targets;
-    let _ = writeln!(t, "| target | measured | verdict |\n|---|---|---|");
-    let _ = writeln!(
-        t,
-        "| scene 1: ≥ 5× faster than embedded-graphics' triangle fill | {eg_slice:.2}× (16-row bands vs e-g, both into a slice framebuffer); {eg_fb:.2}× (both into e-g's `Framebuffer`); {eg_direct:.2}× (direct drawing, slice) | {} |",
-        verdict(eg_slice >= 5.0 && eg_fb >= 5.0)
-    );
-    let _ = writeln!(
-        t,
-        "| scene 1: ≥ 1.5× faster than tiny-skia without anti-aliasing | {sk:.2}× (16-row bands); {sk_direct:.2}× (direct drawing) | {} |",
-        verdict(sk >= 1.5)
-    );
-    let _ = writeln!(
-        t,
-        "| scene 2: flat fill ≥ 50% of the slice-fill ceiling | {:.0}% (16-row bands, whole frame incl. band clear and send); {:.0}% (16-row bands, without the band clear and send); {:.0}% (direct drawing) | {} |",
-        fill_band * 100.0,
-        fill_spans * 100.0,
-        fill_direct * 100.0,
-        verdict(fill_band >= 0.5)
-    );
-    let m4 = counts.get("m4f", "mesh3d/f32/D16/persp/band16/S4");
-    let _ = writeln!(
-        t,
-        "| scene 4 on Cortex-M4F, 16-row bands: ≤ 3 M instructions per frame | {} | {} |",
-        m4.map_or("pending (`bash scripts/firmware.sh sweep`)".into(), |n| {
-            let v = counts.get("m4f", "mesh3d/vertex/f32").map_or("?".into(), |v| v.to_string());
-            format!("{n} (vertex stage alone: {v})")
-        }),
-        m4.map_or("pending", |n| if n <= 3_000_000 { "**met**" } else { "**missed**" })
-    );
-    let (f0, x0) = (counts.get("m0", "mesh3d/vertex/f32"), counts.get("m0", "mesh3d/vertex/Fx"));
-    let _ = writeln!(
-        t,
-        "| Cortex-M0: Fx vertex path ≥ 3× fewer instructions than f32 | {} | {} |",
-        match (f0, x0) {
-            (Some(a), Some(b)) =>
-                format!("{:.2}× (vertex stage of scene 4: f32 {a}, Fx {b})", a as f64 / b as f64),
-            _ => "pending (`bash scripts/firmware.sh sweep`)".into(),
-        },
-        match (f0, x0) {
-            (Some(a), Some(b)) => verdict(a as f64 / b as f64 >= 3.0),
-            _ => "pending",
-        }
-    );
-    w.push_str(&targets);
-    w.push('\n');
-    // Why the missed ones are missed, from this run's numbers.
-    let cm = |core: &str, k: &str| counts.get(core, k).map_or(f64::NAN, |n| n as f64 / 1e6);
-    let (frame4, vertex4) = (cm("m4f", "mesh3d/f32/D16/persp/band16/S4"), cm("m4f", "mesh3d/vertex/f32"));
-    let frags4 = s3.iter().find(|r| r.key == "mesh3d/f32/D16/persp/band16/S4").map_or(0, |r| r.fragments);
-    let _ = writeln!(
-        w,
-        "Where the misses come from. Scene 2: the band renderer clears each band and hands it to the display \
-         (about one slice fill each), so the whole frame reaches {:.0}% of the ceiling while drawing alone reaches \
-         {:.0}%. Scene 4 on the Cortex-M4F: {frame4:.2} M instructions, {vertex4:.2} M of them the vertex stage \
-         (1,116 triangles, every vertex transformed once per corner; `Pipeline::draw_valid_mesh_cached` transforms \
-         each vertex once, see the firmware table in the README) and {:.2} M rasterization, {:.0} instructions \
-         per fragment ({} fragments) including the plane set-up per triangle and band. \
-         Cortex-M0: the Fx vertex path needs {:.2} M instructions against soft float's {:.2} M: its 64-bit \
-         intermediate products and divisions (perspective divide, normalisation, lighting) cost library calls \
-         on a core without a 64-bit multiplier or a divider.\n",
-        fill_band * 100.0,
-        fill_spans * 100.0,
-        frame4 - vertex4,
-        (frame4 - vertex4) * 1e6 / frags4 as f64,
-        frags4,
-        cm("m0", "mesh3d/vertex/Fx"),
-        cm("m0", "mesh3d/vertex/f32"),
-    );
-    let _ = writeln!(
-        w,
-        "Slice-fill ceiling: `fill` of the whole {W} × {H} `Rgb565` buffer takes {} µs, {:.2} pixels per ns. \
-         Fill rate of a configuration = pixels it writes for the scene's primitives (overdraw counted, band \
-         clearing and sending not counted as pixels) ÷ its whole frame time.\n",
-        us(memset_ns),
-        ceiling
-    );
+    let targets = targets::section(w, memset_ns, ceiling, peers, breakdown, s3, counts, fw);
 
     // --- Peers
     let _ = writeln!(w, "## microraster against its peers\n");
@@ -499,7 +418,10 @@ fn document(
          `microraster::scenes3d`): **scatter** = (1) 1,000 triangles of mixed sizes; **large** = (2) 8 large \
          triangles, fill-rate bound; **tiny** = (3) 10,000 tiny triangles, setup bound; **mesh3d** = (4) the \
          standard 3D scene (1,116 triangles, 16-bit depth, Gouraud, vertex stage included); **lines** = (5) \
-         1,000 lines. Every vertex is a pixel centre, so every renderer gets the same geometry (see \
+         1,000 lines; **knot20k** = the 20,480-triangle knot (10,240 vertices, Gouraud with specular, 16-bit \
+         depth, back faces culled; microraster's meshlet stage per band, `benches/common/knot.rs`) against the \
+         `euc` crate 0.5 (whole `f32` depth buffer and framebuffer; it interpolates perspective-correct only, so \
+         \"× mr\" compares with microraster's perspective-correct frame). Every vertex is a pixel centre, so every renderer gets the same geometry (see \
          `scenes::benchmarks`). Targets: *slice* = a `Vec<Rgb565>` with slice-speed `fill_solid` / \
          `fill_contiguous`; *e-g Framebuffer* = `embedded_graphics::framebuffer::Framebuffer<Rgb565, …>`, whose \
          only drawing primitive is a per-pixel `draw_iter`; tiny-skia only draws RGBA8888. \"× mr\" = this \
@@ -513,7 +435,9 @@ fn document(
     );
     let _ = writeln!(w, "|---|---|---|---|---|---|---|---|---|");
     for p in peers {
-        let base = if p.scene == "mesh3d" {
+        let base = if p.scene == knot::SCENE {
+            knot::BASE
+        } else if p.scene == "mesh3d" {
             if p.target == "e-g Framebuffer" {
                 "mesh3d/f32/D16/persp/band16/S4/egfb"
             } else {
@@ -543,7 +467,7 @@ fn document(
         w,
         "\n\"ns / pixel written\" divides by microraster's pixel count for the scene (including overdraw), for \
          every renderer, so it compares like with like. Pixels written per scene: {}.\n",
-        ["scatter", "large", "tiny", "lines", "mesh3d"]
+        ["scatter", "large", "tiny", "lines", "mesh3d", knot::SCENE]
             .iter()
             .filter_map(|s| peers.iter().find(|p| p.scene == *s).map(|p| format!("{s} {}", p.covered)))
             .collect::<Vec<_>>()
@@ -558,6 +482,16 @@ fn document(
          every vertex is a pixel centre at any S ≥ 1.\n"
     );
 
+    let _ = writeln!(w, "### The real-mesh benchmark: the 20k-triangle knot\n");
+    let _ = writeln!(
+        w,
+        "The knot (20,480 triangles, 10,240 vertices, 320 × 240, Gouraud with specular, 16-bit depth, back faces \
+         culled, 16-row bands) on the host against euc, and the same configurations counted on the Cortex-M4F \
+         (`examples/fw_bench`, the README's firmware table; static RAM = the buffers it uses) and on the Cortex-M0 \
+         (`examples/fw_sweep`, 320 × 240 on QEMU's mps2-an386).\n"
+    );
+    w.push_str(&knot::readme_table(peers, counts, fw));
+    w.push('\n');
     let _ = writeln!(w, "### Where microraster's time goes (16-row bands, slice target)\n");
     let _ = writeln!(
         w,
@@ -872,18 +806,22 @@ fn fragment_section(
     d
 }
 
-/// Replaces the README's targets table (between its `<!-- targets:begin -->`
-/// and `<!-- targets:end -->` markers) with this run's.
-fn update_readme(path: &Path, targets: &str) -> Res<()> {
-    let text = std::fs::read_to_string(path)?;
-    let (begin, end) = ("<!-- targets:begin -->", "<!-- targets:end -->");
-    let (Some(a), Some(b)) = (text.find(begin), text.find(end)) else {
-        return Err(format!("{}: no {begin} … {end} markers", path.display()).into());
-    };
-    let table = format!(
-        "{begin}\nFrom `docs/tradeoffs.md` (written with this table by `cargo run --release --example report`):\n\n{targets}"
-    );
-    std::fs::write(path, format!("{}{table}{}", &text[..a], &text[b..]))?;
+/// Replaces the README's generated tables (between its
+/// `<!-- NAME:begin -->` and `<!-- NAME:end -->` markers) with this run's:
+/// the targets table and the knot's summary.
+fn update_readme(path: &Path, tables: &[(&str, String)]) -> Res<()> {
+    let mut text = std::fs::read_to_string(path)?;
+    for (name, body) in tables {
+        let (begin, end) = (format!("<!-- {name}:begin -->"), format!("<!-- {name}:end -->"));
+        let (Some(a), Some(b)) = (text.find(&begin), text.find(&end)) else {
+            return Err(format!("{}: no {begin} … {end} markers", path.display()).into());
+        };
+        let table = format!(
+            "{begin}\nFrom `docs/tradeoffs.md` (written with this table by `cargo run --release --example report`):\n\n{body}"
+        );
+        text = format!("{}{table}{}", &text[..a], &text[b..]);
+    }
+    std::fs::write(path, text)?;
     Ok(())
 }
 
@@ -902,6 +840,7 @@ fn cost_rows(peers: &[Peer], s3: &[Row3d]) -> Vec<CostRow> {
             "scatter" => scenes::SCATTER_LEN,
             "large" => scenes::LARGE_LEN,
             "tiny" => scenes::TINY_LEN,
+            knot::SCENE => knot_renderers::triangles(),
             _ => scenes::LINES_LEN,
         };
         let label =
@@ -937,6 +876,7 @@ fn draw_charts(
     for p in peers {
         let base = match (p.scene, p.target) {
             ("mesh3d", _) => "mesh3d/f32/D16/persp/band16/S4".to_string(),
+            (knot::SCENE, _) => knot::BASE.to_string(),
             (s, "e-g Framebuffer") => format!("{s}/band16/S4/flat/egfb"),
             (s, _) => format!("{s}/band16/S4/flat"),
         };

@@ -1,0 +1,94 @@
+//! The real-mesh benchmark in the report (issue 12): the 20k-triangle knot
+//! on the host, microraster's meshlet stage against `euc`, same frame
+//! (renderers in `benches/common/knot.rs`, `crate::knot_renderers`). Its targets are in
+//! [`super::targets`].
+
+use super::Peer;
+use crate::common::*;
+use crate::cortex::{Counts, FwBench};
+use crate::knot_renderers::{self as knot, EucKnot, mr_knot};
+use crate::timing::median_ns;
+use embedded_graphics_core::pixelcolor::{Rgb565, RgbColor};
+use microraster::Band;
+use microraster::depth::{Depth16, DepthBand};
+use microraster::math::Fx;
+use microraster::pipeline::ClusterCache;
+use microraster::raster3d::{Affine, PerspectiveCorrect};
+use std::fmt::Write as _;
+
+/// The knot's scene name in the tables.
+pub const SCENE: &str = "knot20k";
+/// The microraster configuration peers are compared with: perspective-correct
+/// colour, as euc interpolates.
+pub const BASE: &str = "knot20k/f32/D16/persp/band16/S4";
+pub const AFFINE: &str = "knot20k/f32/D16/affine/band16/S4";
+pub const EUC: &str = "knot20k/euc";
+
+/// Times the knot through microraster (both paths, both interpolations) and
+/// through euc, same frame, and adds them to `peers`. "covered" is the
+/// frame's fragments (pixels of every front-facing screen triangle, before
+/// the depth test), as for the standard 3D scene.
+pub fn peers(peers: &mut Vec<Peer>) {
+    let (p32, pfx) = (pipeline3d::<f32, 4>(), pipeline3d::<Fx, 4>());
+    let (mut c32, mut cfx) = (Box::new(ClusterCache::new()), Box::new(ClusterCache::new()));
+    let mut band = Box::new(Band::<Rgb565, W, 16>::new(BG3));
+    let mut depth = Box::new(DepthBand::<Depth16, W, 16>::new());
+    let mut slice = SliceFb::default();
+    let covered = knot::fragments();
+    let mut add = |renderer, key: &str, ns, differs| {
+        let key = key.to_string();
+        peers.push(Peer { scene: SCENE, renderer, target: "slice", key, ns, differs, covered });
+    };
+    let t =
+        median_ns(|| mr_knot::<f32, PerspectiveCorrect>(&p32, &mut c32, &mut band, &mut depth, &mut slice));
+    add("microraster, f32, perspective-correct", BASE, t, Some(0));
+    let mine = slice.px.clone();
+    // Colour rounding differs between renderers: count channels more than one step off.
+    let far = |a: &Rgb565, b: &Rgb565| {
+        let d = |x: u8, y: u8| x.abs_diff(y) > 1;
+        d(a.r(), b.r()) || d(a.g(), b.g()) || d(a.b(), b.b())
+    };
+    let diff = |px: &[Rgb565]| Some(px.iter().zip(&mine).filter(|(a, b)| far(a, b)).count());
+    let t = median_ns(|| mr_knot::<f32, Affine>(&p32, &mut c32, &mut band, &mut depth, &mut slice));
+    add("microraster, f32, affine", AFFINE, t, diff(&slice.px));
+    let t = median_ns(|| mr_knot::<Fx, Affine>(&pfx, &mut cfx, &mut band, &mut depth, &mut slice));
+    add("microraster, Fx, affine", "knot20k/Fx/D16/affine/band16/S4", t, diff(&slice.px));
+    let mut euc = EucKnot::new();
+    let t = median_ns(|| euc.frame());
+    add("euc 0.5 (f32 depth, framebuffer)", EUC, t, diff(euc.pixels()));
+}
+
+/// The README's summary of the knot (between its `knot:begin/end`
+/// markers): each configuration's host time against euc, and its Cortex-M
+/// counts (Cortex-M4F: `examples/fw_bench`, the README's firmware table;
+/// Cortex-M0: `examples/fw_sweep`, 320 × 240 on the mps2-an386).
+pub fn readme_table(peers: &[Peer], counts: &Counts, fw: &FwBench) -> String {
+    let mut t = String::from(
+        "| renderer | host µs / frame | euc's time ÷ this | Cortex-M4F instr. / frame | instr. / mesh triangle | static RAM (B) | Cortex-M0 instr. / frame |\n\
+         |---|--:|--:|--:|--:|--:|--:|\n",
+    );
+    let euc = super::find(peers, EUC).map_or(f64::NAN, |p| p.ns);
+    let rows = [
+        (BASE, Some("knot20k/meshlets-per-band-f32-persp-correct")),
+        (AFFINE, Some("knot20k/meshlets-per-band-f32-affine")),
+        ("knot20k/Fx/D16/affine/band16/S4", Some("knot20k/meshlets-per-band-fx-affine")),
+        (EUC, None),
+    ];
+    for (key, fw_key) in rows {
+        let Some(p) = super::find(peers, key) else { continue };
+        let m4 = fw_key.and_then(|k| fw.get("m4f", k));
+        let n = |v: Option<u64>| v.map_or("–".into(), |v| v.to_string());
+        let _ = writeln!(
+            t,
+            "| {} | {} | {:.2} | {} | {} | {} | {} |",
+            p.renderer,
+            super::us(p.ns),
+            euc / p.ns,
+            n(m4.map(|r| r.instructions)),
+            m4.map_or("–".into(), |r| format!("{:.0}", r.instructions as f64 / r.triangles as f64)),
+            n(m4.map(|r| r.static_ram)),
+            n(fw_key.and(counts.get("m0", key))),
+        );
+    }
+    t
+}
