@@ -49,7 +49,7 @@ impl<C: Interpolate, const W: usize> Canvas<C> for BandView<'_, C, W> {
 ///
 /// ```
 /// use embedded_graphics::mock_display::MockDisplay;
-/// use embedded_graphics_core::pixelcolor::Gray8;
+/// use embedded_graphics_core::pixelcolor::{Gray8, GrayColor};
 /// use microraster::shape::{Circle, Shape, ShapeStyle, TargetCanvas};
 /// let disc = Circle::new((4.0, 4.0), 3.0)?.styled(ShapeStyle::fill(Gray8::WHITE).antialiased())?;
 /// let mut display = MockDisplay::<Gray8>::new();

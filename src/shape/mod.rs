@@ -130,7 +130,7 @@ pub struct Aliased;
 /// Exact area coverage as alpha.
 ///
 /// ```
-/// use embedded_graphics_core::pixelcolor::Gray8;
+/// use embedded_graphics_core::pixelcolor::{Gray8, GrayColor};
 /// use microraster::shape::{AntiAliased, ShapeStyle};
 /// let s: ShapeStyle<Gray8, AntiAliased> = ShapeStyle::fill(Gray8::WHITE).antialiased();
 /// # let _ = s;

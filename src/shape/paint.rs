@@ -14,7 +14,7 @@ use crate::edge::Span;
 /// What a shape is filled or stroked with.
 ///
 /// ```
-/// use embedded_graphics_core::pixelcolor::Rgb565;
+/// use embedded_graphics_core::pixelcolor::{Rgb565, RgbColor};
 /// use microraster::shape::{LinearGradient, Paint};
 /// let solid: Paint<Rgb565> = Rgb565::new(31, 0, 0).into();
 /// let ramp = Paint::from(LinearGradient::new((0.0, 0.0), (10.0, 0.0), [Rgb565::BLACK, Rgb565::WHITE])?);
@@ -62,7 +62,7 @@ impl<C> LinearGradient<C> {
     /// ([`Error::InvalidParameter`]).
     ///
     /// ```
-    /// use embedded_graphics_core::pixelcolor::Gray8;
+    /// use embedded_graphics_core::pixelcolor::{Gray8, GrayColor};
     /// use microraster::shape::LinearGradient;
     /// let g = LinearGradient::new((0.0, 0.0), (0.0, 0.0), [Gray8::BLACK, Gray8::WHITE]);
     /// assert_eq!(g, Err(microraster::Error::InvalidParameter));
@@ -93,7 +93,7 @@ impl<C> RadialGradient<C> {
     /// positive ([`Error::InvalidParameter`]).
     ///
     /// ```
-    /// use embedded_graphics_core::pixelcolor::Gray8;
+    /// use embedded_graphics_core::pixelcolor::{Gray8, GrayColor};
     /// use microraster::shape::RadialGradient;
     /// assert!(RadialGradient::new((5.0, 5.0), 4.0, [Gray8::WHITE, Gray8::BLACK]).is_ok());
     /// ```
@@ -118,7 +118,7 @@ impl<C: Interpolate> Paint<C> {
     /// The colour at pixel `(x, y)` (its centre).
     ///
     /// ```
-    /// use embedded_graphics_core::pixelcolor::Gray8;
+    /// use embedded_graphics_core::pixelcolor::{Gray8, GrayColor};
     /// use microraster::shape::{LinearGradient, Paint};
     /// let p = Paint::from(LinearGradient::new((0.0, 0.0), (10.0, 0.0), [Gray8::BLACK, Gray8::WHITE])?);
     /// assert_eq!(p.color_at(4, 0), Gray8::new(115)); // t = 0.45: round(114.75)

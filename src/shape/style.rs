@@ -39,7 +39,7 @@ pub enum Cap {
 /// the coverage code at compile time.
 ///
 /// ```
-/// use embedded_graphics_core::pixelcolor::Rgb565;
+/// use embedded_graphics_core::pixelcolor::{Rgb565, RgbColor};
 /// use microraster::shape::{Cap, Join, ShapeStyle};
 /// let style = ShapeStyle::stroke(Rgb565::new(31, 0, 0), 3.0).with_join(Join::Round).with_cap(Cap::Round).antialiased();
 /// assert_eq!(style.stroke_width, 3.0);
@@ -144,7 +144,7 @@ impl<C, A: Coverage> ShapeStyle<C, A> {
 /// A shape with its style: checked once, then drawn with one call.
 ///
 /// ```
-/// use embedded_graphics_core::pixelcolor::Gray8;
+/// use embedded_graphics_core::pixelcolor::{Gray8, GrayColor};
 /// use microraster::shape::{Rect, Shape, ShapeStyle};
 /// use microraster::{Band, Renderer};
 /// use embedded_graphics::mock_display::MockDisplay;

@@ -47,6 +47,7 @@ mod props3d;
 mod ref3d;
 mod reference;
 mod regressions;
+mod shapes;
 mod texture;
 mod triangles_exact;
 mod triangles_float;
