@@ -48,6 +48,7 @@ mod ref3d;
 mod reference;
 mod regressions;
 mod shapes;
+mod shapes_ref;
 mod texture;
 mod triangles_exact;
 mod triangles_float;
