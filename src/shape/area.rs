@@ -24,7 +24,7 @@
 //! tests compare against an `f64` evaluation of the same formula and against
 //! polygon clipping in `f64` (`tests/integration/shapes_aa.rs`).
 
-use super::edges::{BITS, EdgeList};
+use super::edges::{Active, BITS, EdgeList};
 use super::{FillRule, Runs};
 use crate::ClipRect;
 use crate::edge::Span;
@@ -89,7 +89,8 @@ fn alpha(v: f32, rule: FillRule) -> u8 {
     (cov * 255.0 + 0.5) as u8
 }
 
-/// Emits `(span, alpha)` runs of the exact coverage of `edges` inside `clip`.
+/// Emits `(span, alpha)` runs of the exact coverage of `edges` (sorted by
+/// top) inside `clip`.
 pub(crate) fn scan<F: FnMut(Span, u8), const N: usize>(
     edges: &EdgeList<N>,
     rule: FillRule,
@@ -103,10 +104,12 @@ pub(crate) fn scan<F: FnMut(Span, u8), const N: usize>(
     let lo = (i64::from(y_min).div_euclid(ONE)).max(i64::from(clip.y0())) as i32;
     let hi = super::scan::div_ceil(i64::from(y_max), ONE).min(i64::from(clip.y1())) as i32;
     let mut pieces = [Piece::default(); N];
+    let mut active = Active::<N>::new();
     for y in lo..hi {
         let (s0, s1) = (i64::from(y) * ONE, i64::from(y + 1) * ONE);
         let (mut n, mut min_x, mut max_x) = (0, f32::INFINITY, f32::NEG_INFINITY);
-        for e in edges.edges() {
+        active.advance(edges.edges(), s1, s0);
+        for e in active.edges(edges.edges()) {
             let (t0, t1) = (i64::from(e.y0).max(s0), i64::from(e.y1).min(s1));
             if t0 >= t1 {
                 continue;

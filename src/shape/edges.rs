@@ -140,6 +140,19 @@ impl<const N: usize> EdgeList<N> {
         if flip { self.push(b, a) } else { self.push(a, b) }
     }
 
+    /// Sorts the edges by their top (insertion sort: contours arrive mostly
+    /// in order), which the scan's active-edge list needs.
+    pub(crate) fn sort_by_top(&mut self) {
+        let e = &mut self.edges[..self.len];
+        for i in 1..e.len() {
+            let mut j = i;
+            while j > 0 && e[j - 1].y0 > e[j].y0 {
+                e.swap(j - 1, j);
+                j -= 1;
+            }
+        }
+    }
+
     fn push(&mut self, a: (i32, i32), b: (i32, i32)) -> Result<(), Error> {
         if a.1 == b.1 {
             return Ok(());
@@ -155,5 +168,42 @@ impl<const N: usize> EdgeList<N> {
         self.y_min = self.y_min.min(e.y0);
         self.y_max = self.y_max.max(e.y1);
         Ok(())
+    }
+}
+
+/// The edges a row (or row strip) can cross, over edges sorted by top:
+/// entered once their top is reached, dropped once their bottom is passed,
+/// so each row looks at its own edges only.
+pub(crate) struct Active<const N: usize> {
+    idx: [u32; N],
+    n: usize,
+    next: usize,
+}
+
+impl<const N: usize> Active<N> {
+    pub(crate) fn new() -> Self {
+        Active { idx: [0; N], n: 0, next: 0 }
+    }
+
+    /// Enters edges with `y0 < top_below` and drops those with `y1 <= bottom_above`.
+    pub(crate) fn advance(&mut self, edges: &[Edge], top_below: i64, bottom_above: i64) {
+        while self.next < edges.len() && i64::from(edges[self.next].y0) < top_below {
+            // n < N: at most N edges exist.
+            self.idx[self.n] = self.next as u32;
+            self.n += 1;
+            self.next += 1;
+        }
+        let mut k = 0;
+        for i in 0..self.n {
+            if i64::from(edges[self.idx[i] as usize].y1) > bottom_above {
+                self.idx[k] = self.idx[i];
+                k += 1;
+            }
+        }
+        self.n = k;
+    }
+
+    pub(crate) fn edges<'e>(&self, edges: &'e [Edge]) -> impl Iterator<Item = &'e Edge> + use<'_, 'e, N> {
+        self.idx[..self.n].iter().map(move |&i| &edges[i as usize])
     }
 }

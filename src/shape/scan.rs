@@ -21,7 +21,7 @@
 //! the edges' directions. Overflow: coordinates are at most `2^28` subpixel
 //! units, so every product is below `2^58` and every sum below `2^60`.
 
-use super::edges::{BITS, EdgeList};
+use super::edges::{Active, BITS, EdgeList};
 use super::{FillRule, Runs};
 use crate::ClipRect;
 
@@ -42,7 +42,7 @@ fn center_rows(y_min: i32, y_max: i32, clip: ClipRect) -> (i32, i32) {
     (lo as i32, hi.max(lo) as i32)
 }
 
-/// Emits the covered spans of `edges` inside `clip` (alpha 255).
+/// Emits the covered spans of `edges` (sorted by top) inside `clip` (alpha 255).
 pub(crate) fn scan<F: FnMut(crate::edge::Span, u8), const N: usize>(
     edges: &EdgeList<N>,
     rule: FillRule,
@@ -56,10 +56,12 @@ pub(crate) fn scan<F: FnMut(crate::edge::Span, u8), const N: usize>(
     let (lo, hi) = center_rows(y_min, y_max, clip);
     let (cx0, cx1) = (i64::from(clip.x0()), i64::from(clip.x1()));
     let mut xs = [(0i32, 0i8); N];
+    let mut active = Active::<N>::new();
     for y in lo..hi {
         let yc = i64::from(y) * ONE + HALF;
         let mut n = 0;
-        for e in edges.edges() {
+        active.advance(edges.edges(), yc + 1, yc);
+        for e in active.edges(edges.edges()) {
             let (y0, y1) = (i64::from(e.y0), i64::from(e.y1));
             if y0 > yc || yc >= y1 {
                 continue;

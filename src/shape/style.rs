@@ -2,7 +2,7 @@
 //! `PrimitiveStyle` and `Styled`.
 
 use super::canvas::{Canvas, TargetCanvas};
-use super::edges::EdgeList;
+use super::edges::{BITS, EdgeList};
 use super::shapes::Shape;
 use super::stroke::StrokeParams;
 use super::{Aliased, AntiAliased, Coverage, FillRule, MAX_EDGES, Paint};
@@ -157,10 +157,11 @@ impl<C, A: Coverage> ShapeStyle<C, A> {
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Styled<S, C, A = Aliased> {
-    /// The geometry.
-    pub shape: S,
-    /// The style.
-    pub style: ShapeStyle<C, A>,
+    shape: S,
+    style: ShapeStyle<C, A>,
+    // Pixel rows the fill and stroke can touch (half-open), so a band
+    // that misses them costs two comparisons.
+    rows: (i32, i32),
 }
 
 impl<S: Shape, C: Copy, A: Coverage> Styled<S, C, A> {
@@ -179,10 +180,27 @@ impl<S: Shape, C: Copy, A: Coverage> Styled<S, C, A> {
         if w < 0.0 || m < 1.0 {
             return Err(Error::InvalidParameter);
         }
-        let s = Styled { shape, style };
-        s.fill_edges::<MAX_EDGES>()?;
-        s.stroke_edges::<MAX_EDGES>()?;
+        let mut s = Styled { shape, style, rows: (0, 0) };
+        let (f, t) = (s.fill_edges::<MAX_EDGES>()?.y_range(), s.stroke_edges::<MAX_EDGES>()?.y_range());
+        let (y_min, y_max) = (f.0.min(t.0), f.1.max(t.1));
+        // Subpixels to whole rows, outward; empty shapes get an empty range.
+        s.rows = if y_min <= y_max { (y_min >> BITS, (y_max >> BITS) + 1) } else { (0, 0) };
         Ok(s)
+    }
+
+    /// The shape.
+    pub fn shape(&self) -> &S {
+        &self.shape
+    }
+
+    /// The style.
+    pub fn style(&self) -> &ShapeStyle<C, A> {
+        &self.style
+    }
+
+    /// Pixel rows `.0 .. .1` the shape can touch.
+    pub fn rows(&self) -> (i32, i32) {
+        self.rows
     }
 
     fn fill_edges<const N: usize>(&self) -> Result<EdgeList<N>, Error> {
@@ -190,6 +208,7 @@ impl<S: Shape, C: Copy, A: Coverage> Styled<S, C, A> {
         if self.style.fill.is_some() {
             self.shape.fill_contours(&mut e)?;
             e.close()?;
+            e.sort_by_top();
         }
         Ok(e)
     }
@@ -199,6 +218,7 @@ impl<S: Shape, C: Copy, A: Coverage> Styled<S, C, A> {
         if self.style.stroke.is_some() && self.style.stroke_width > 0.0 {
             self.shape.stroke_contours(&mut e, &self.style.params())?;
             e.close()?;
+            e.sort_by_top();
         }
         Ok(e)
     }
@@ -209,6 +229,9 @@ impl<S: Shape, C: Interpolate, A: Coverage> Styled<S, C, A> {
     /// first, then stroke; partial pixels are blended exactly.
     pub fn draw_on<T: Canvas<C>>(&self, canvas: &mut T) {
         let clip = canvas.clip();
+        if clip.y1() <= self.rows.0 || clip.y0() >= self.rows.1 {
+            return;
+        }
         // Checked in `new`: building the edges cannot fail again.
         if let (Some(paint), Ok(e)) = (&self.style.fill, self.fill_edges::<MAX_EDGES>()) {
             A::cover(&e, self.style.fill_rule, clip, |span, a| paint.paint(canvas, span, a));
