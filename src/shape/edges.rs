@@ -140,17 +140,10 @@ impl<const N: usize> EdgeList<N> {
         if flip { self.push(b, a) } else { self.push(a, b) }
     }
 
-    /// Sorts the edges by their top (insertion sort: contours arrive mostly
-    /// in order), which the scan's active-edge list needs.
+    /// Sorts the edges by their top, which the scan's active-edge list
+    /// needs (`core`'s unstable sort: no allocation).
     pub(crate) fn sort_by_top(&mut self) {
-        let e = &mut self.edges[..self.len];
-        for i in 1..e.len() {
-            let mut j = i;
-            while j > 0 && e[j - 1].y0 > e[j].y0 {
-                e.swap(j - 1, j);
-                j -= 1;
-            }
-        }
+        self.edges[..self.len].sort_unstable_by_key(|e| e.y0);
     }
 
     fn push(&mut self, a: (i32, i32), b: (i32, i32)) -> Result<(), Error> {
