@@ -26,7 +26,6 @@ use std::hint::black_box;
 use std::time::Duration;
 
 #[path = "common/mod.rs"]
-#[allow(dead_code)]
 mod common;
 use common::{BG, Frame, H, SliceFb, W};
 
@@ -229,7 +228,7 @@ fn config() -> Criterion {
 }
 
 fn run(g: &mut BenchmarkGroup<'_, WallTime>, id: &str, mut f: impl FnMut()) {
-    g.bench_function(id, |b| b.iter(|| f()));
+    g.bench_function(id, |b| b.iter(&mut f));
 }
 
 fn bench_shape(c: &mut Criterion, name: &str) {
