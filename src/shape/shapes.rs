@@ -74,7 +74,8 @@ impl Shape for Rect {
 }
 
 /// A rectangle with circular corners of one radius, clamped to half the
-/// shorter side.
+/// shorter side. Its stroke is the exact offset outline (corners of radius
+/// `r ± width/2`, clamped at 0), so the style's join does not apply.
 ///
 /// ```
 /// use microraster::shape::{Rect, RoundedRect};
@@ -299,7 +300,9 @@ impl Shape for Sector {
         self.0.points(e, self.0.r, false)?;
         e.close()
     }
-    /// The outline (two radii and the arc) with the style's joins.
+    /// The outline (two radii and the arc) with the style's joins at every
+    /// chord vertex: several edges a chord, so large sectors can exceed
+    /// [`MAX_EDGES`](super::MAX_EDGES) ([`Error::BufferTooSmall`] when styled).
     fn stroke_contours<const N: usize>(&self, e: &mut EdgeList<N>, p: &StrokeParams) -> Result<(), Error> {
         stroke::sector(e, self.0.c, self.0.r, self.0.start, self.0.sweep, p)
     }
