@@ -18,7 +18,7 @@
 //! exact area of the snapped shape inside the pixel; where contours overlap
 //! inside a pixel it can overestimate it (documented in [`super`]).
 //!
-//! The row is processed in chunks of [`CHUNK`] cells: chunks no edge
+//! The row is processed in chunks of 32 cells: chunks no edge
 //! reaches have one coverage and go out as one run; the others accumulate
 //! per cell. The arithmetic is `f32` on coordinates already snapped; the
 //! tests compare against an `f64` evaluation of the same formula and against
