@@ -38,14 +38,8 @@
 //! use microraster::shape::{Circle, Shape, ShapeStyle};
 //! let mut display = MockDisplay::<BinaryColor>::new();
 //! Circle::new((3.0, 3.0), 2.5)?.styled(ShapeStyle::fill(BinaryColor::On))?.draw(&mut display).unwrap();
-//! display.assert_pattern(&[
-//!     "       ",
-//!     "  ###  ",
-//!     " ##### ",
-//!     " ##### ",
-//!     " ##### ",
-//!     "  ###  ",
-//! ]);
+//! // Centres within 2.5 px of (3, 3): (1.5, 1.5) is 2.12 away, (0.5, 3.5) 2.55.
+//! display.assert_pattern(&["     ", " ####", " ####", " ####", " ####"]);
 //! # Ok::<(), microraster::Error>(())
 //! ```
 //!

@@ -17,7 +17,7 @@ use crate::edge::Span;
 /// use embedded_graphics_core::pixelcolor::{Rgb565, RgbColor};
 /// use microraster::shape::{LinearGradient, Paint};
 /// let solid: Paint<Rgb565> = Rgb565::new(31, 0, 0).into();
-/// let ramp = Paint::from(LinearGradient::new((0.0, 0.0), (10.0, 0.0), [Rgb565::BLACK, Rgb565::WHITE])?);
+/// let ramp = Paint::Linear(LinearGradient::new((0.0, 0.0), (10.0, 0.0), [Rgb565::BLACK, Rgb565::WHITE])?);
 /// # let _ = (solid, ramp);
 /// # Ok::<(), microraster::Error>(())
 /// ```
@@ -120,7 +120,7 @@ impl<C: Interpolate> Paint<C> {
     /// ```
     /// use embedded_graphics_core::pixelcolor::{Gray8, GrayColor};
     /// use microraster::shape::{LinearGradient, Paint};
-    /// let p = Paint::from(LinearGradient::new((0.0, 0.0), (10.0, 0.0), [Gray8::BLACK, Gray8::WHITE])?);
+    /// let p = Paint::Linear(LinearGradient::new((0.0, 0.0), (10.0, 0.0), [Gray8::BLACK, Gray8::WHITE])?);
     /// assert_eq!(p.color_at(4, 0), Gray8::new(115)); // t = 0.45: round(114.75)
     /// # Ok::<(), microraster::Error>(())
     /// ```
