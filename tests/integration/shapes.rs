@@ -353,3 +353,48 @@ fn every_band_height_draws_the_same_image() {
         .unwrap();
     assert_eq!(fb.pixels, banded.pixels);
 }
+
+/// Gradients against `c0 + t·(c1 − c0)` in `f64`, `t` clamped: within ½ of
+/// a channel step plus the 8-bit `t` (½/255 of the range, and f32 slack).
+#[test]
+fn gradients_match_the_f64_ramp() {
+    use microraster::shape::{LinearGradient, RadialGradient};
+    let mut rng = Rng::new(0x96ad);
+    let mut checked = 0;
+    for i in 0..300 {
+        let (c0, c1) = (rng.range(0, 255) as u8, rng.range(0, 255) as u8);
+        let (a, b) = (grid_point(&mut rng, -10.0, 74.0, false), grid_point(&mut rng, -10.0, 74.0, false));
+        let radial = i % 2 == 1;
+        let r = rng.uniform(1.0, 60.0) as f32;
+        let paint: microraster::shape::Paint<Gray8> = if radial {
+            RadialGradient::new(a, r, [Gray8::new(c0), Gray8::new(c1)]).unwrap().into()
+        } else {
+            match LinearGradient::new(a, b, [Gray8::new(c0), Gray8::new(c1)]) {
+                Ok(g) => g.into(),
+                Err(_) => continue,
+            }
+        };
+        let full = Rect::new(0.0, 0.0, W as f32, H as f32).unwrap().styled(ShapeStyle::fill(paint)).unwrap();
+        let mut fb = Framebuffer::new(W as u32, H as u32, Gray8::BLACK);
+        let mut band = Band::<Gray8, 64, 16>::new(Gray8::BLACK);
+        Renderer::new(H as u32, Gray8::BLACK)
+            .render_with(&mut band, &mut fb, |v, _, _| full.draw_on(v))
+            .unwrap();
+        let (ax, ay, bx, by) = (f64::from(a.0), f64::from(a.1), f64::from(b.0), f64::from(b.1));
+        for (x, y) in (0..H).flat_map(|y| (0..W).map(move |x| (x, y))) {
+            let (px, py) = (x as f64 + 0.5, y as f64 + 0.5);
+            let t = if radial {
+                ((px - ax).powi(2) + (py - ay).powi(2)).sqrt() / f64::from(r)
+            } else {
+                ((px - ax) * (bx - ax) + (py - ay) * (by - ay)) / ((bx - ax).powi(2) + (by - ay).powi(2))
+            }
+            .clamp(0.0, 1.0);
+            let exact = f64::from(c0) + t * (f64::from(c1) - f64::from(c0));
+            let range = (f64::from(c1) - f64::from(c0)).abs();
+            let got = f64::from(fb.pixels[(y * W + x) as usize].luma());
+            assert!((got - exact).abs() <= 0.5 + range * 0.51 / 255.0, "{i}: ({x}, {y}) {got} vs {exact}");
+            checked += 1;
+        }
+    }
+    assert!(checked > 800_000, "{checked}");
+}
