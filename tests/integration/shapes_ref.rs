@@ -274,3 +274,57 @@ fn antialiased_shapes_sharing_an_edge_sum_to_the_whole() {
     }
     assert!(shared > 3000, "{shared}");
 }
+
+#[test]
+fn antialiased_gauge_segments_sum_to_one_ring() {
+    use microraster::shape::Arc;
+    let mut rng = Rng::new(0x6a06e);
+    let mut shared = 0;
+    for _ in 0..200 {
+        let c = grid_point(&mut rng, 20.0, 44.0, false);
+        let (r, w) = (rng.uniform(6.0, 20.0) as f32, rng.uniform(1.0, 6.0) as f32);
+        let (start, a) = (rng.uniform(-3.0, 3.0) as f32, rng.uniform(0.3, 2.5) as f32);
+        let b = rng.uniform(0.3, 2.5) as f32;
+        let ring = |s: f32, sweep: f32| {
+            draw(Arc::new(c, r, s, sweep).unwrap(), ShapeStyle::stroke(Gray8::WHITE, w).antialiased())
+        };
+        let (first, second) = (ring(start, a), ring(start + a, b));
+        // The shared cap line is the same snapped segment in both: along it the
+        // two coverages are the areas on either side, summing to one pixel.
+        let (s, co) = ((start + a) as f64).sin_cos();
+        for k in 0..=8 {
+            let rad = f64::from(r) + f64::from(w) * (k as f64 / 8.0 - 0.5) * 0.8;
+            let (px, py) = (f64::from(c.0) + rad * co, f64::from(c.1) + rad * s);
+            let (x, y) = (px.floor() as i32, py.floor() as i32);
+            if !(0..W).contains(&x) || !(0..H).contains(&y) {
+                continue;
+            }
+            let (fa, fb) = (first.alpha_at(x, y) as i32, second.alpha_at(x, y) as i32);
+            if fa > 0 && fb > 0 && fa + fb >= 250 {
+                shared += 1;
+            }
+            assert!(fa + fb <= 256, "({x}, {y}): {fa} + {fb} overlap");
+        }
+    }
+    assert!(shared > 300, "{shared}");
+}
+
+#[test]
+fn a_draw_target_without_background_gets_pixels_at_least_half_covered() {
+    use crate::framebuffer::Framebuffer;
+    use embedded_graphics_core::Drawable;
+    use microraster::shape::{Circle, Shape};
+    let style = ShapeStyle::fill(Gray8::WHITE).antialiased();
+    let disc = Circle::new((31.3, 20.6), 12.7).unwrap();
+    let mut fb = Framebuffer::new(W as u32, H as u32, Gray8::BLACK);
+    disc.styled(style).unwrap().draw(&mut fb).unwrap();
+    let exact = draw(disc, style);
+    let mut partial = 0;
+    for i in 0..(W * H) as usize {
+        let drawn = fb.pixels[i] == Gray8::WHITE;
+        assert_eq!(drawn, exact.alpha[i] >= 128, "pixel {i}: alpha {}", exact.alpha[i]);
+        assert!(fb.writes[i] <= 1);
+        partial += (exact.alpha[i] > 0 && exact.alpha[i] < 255) as usize;
+    }
+    assert!(partial > 50);
+}
