@@ -35,6 +35,7 @@ pub mod raster3d;
 pub mod render;
 pub mod scenes;
 pub mod scenes3d;
+pub mod shape;
 pub mod subpixel;
 #[cfg(not(microraster_without_fragment_stage))]
 pub mod texture;

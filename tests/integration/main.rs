@@ -53,6 +53,8 @@ mod props3d;
 mod ref3d;
 mod reference;
 mod regressions;
+mod shapes;
+mod shapes_ref;
 mod sprite;
 mod texture;
 mod triangles_exact;

@@ -1,0 +1,123 @@
+//! Where styled shapes draw: any [`Canvas`].
+
+use crate::ClipRect;
+use crate::band::BandView;
+use crate::blend::{Blend, BlendTarget, Mix, OPAQUE};
+use crate::blit::{Blitter, TargetBlitter};
+use crate::color::Interpolate;
+use crate::edge::Span;
+use embedded_graphics_core::prelude::DrawTarget;
+
+/// A surface for shapes: spans of one colour or of per-pixel colours, each
+/// with a coverage alpha (255 = whole pixels).
+///
+/// A [`BandView`] is a canvas and blends partial pixels exactly ([`Mix`]);
+/// [`TargetCanvas`] adapts any `DrawTarget`. For your own readable
+/// framebuffer, implement the three methods (as `BandView` does, through
+/// [`Blitter`] and [`BlendTarget`]).
+pub trait Canvas<C: Interpolate> {
+    /// The pixels the canvas holds; shapes emit nothing outside.
+    fn clip(&self) -> ClipRect;
+    /// `color` over `span` with coverage `alpha`.
+    fn fill(&mut self, span: Span, color: C, alpha: u8);
+    /// One colour per pixel of `span` with coverage `alpha`.
+    fn shade<I: Iterator<Item = C>>(&mut self, span: Span, colors: I, alpha: u8);
+}
+
+impl<C: Interpolate, const W: usize> Canvas<C> for BandView<'_, C, W> {
+    fn clip(&self) -> ClipRect {
+        Blitter::clip(self)
+    }
+    #[inline]
+    fn fill(&mut self, span: Span, color: C, alpha: u8) {
+        if alpha == OPAQUE { self.fill_span(span, color) } else { self.blend_fill(Mix, span, color, alpha) }
+    }
+    #[inline]
+    fn shade<I: Iterator<Item = C>>(&mut self, span: Span, colors: I, alpha: u8) {
+        if alpha == OPAQUE {
+            self.shade_span(span, colors)
+        } else {
+            self.blend_shade(Mix, span, colors, alpha)
+        }
+    }
+}
+
+/// Any `DrawTarget` as a [`Canvas`]. A `DrawTarget` cannot be read back, so
+/// a partially covered pixel is mixed over [`TargetCanvas::over`]'s
+/// background colour if one is given, and otherwise drawn opaque where its
+/// coverage is at least ½ (alpha ≥ 128) and skipped below.
+///
+/// ```
+/// use embedded_graphics::mock_display::MockDisplay;
+/// use embedded_graphics_core::pixelcolor::{Gray8, GrayColor};
+/// use microraster::shape::{Circle, Shape, ShapeStyle, TargetCanvas};
+/// let disc = Circle::new((4.0, 4.0), 3.0)?.styled(ShapeStyle::fill(Gray8::WHITE).antialiased())?;
+/// let mut display = MockDisplay::<Gray8>::new();
+/// let mut canvas = TargetCanvas::new(&mut display).over(Gray8::BLACK);
+/// disc.draw_on(&mut canvas);
+/// canvas.finish().unwrap();
+/// let edge = display.get_pixel(embedded_graphics_core::prelude::Point::new(1, 4)).unwrap();
+/// assert!(edge.luma() > 0 && edge.luma() < 255);
+/// # Ok::<(), microraster::Error>(())
+/// ```
+pub struct TargetCanvas<'a, D: DrawTarget> {
+    blitter: TargetBlitter<'a, D>,
+    background: Option<D::Color>,
+}
+
+impl<'a, D: DrawTarget> TargetCanvas<'a, D>
+where
+    D::Color: Interpolate,
+{
+    /// Draws into `target` (clipped as [`TargetBlitter::new`]).
+    pub fn new(target: &'a mut D) -> Self {
+        TargetCanvas { blitter: TargetBlitter::new(target), background: None }
+    }
+
+    /// Mixes partial pixels over `background`.
+    pub fn over(self, background: D::Color) -> Self {
+        TargetCanvas { background: Some(background), ..self }
+    }
+
+    /// The first error the target reported, if any.
+    pub fn finish(self) -> Result<(), D::Error> {
+        self.blitter.error.map_or(Ok(()), Err)
+    }
+
+    /// The colour a pixel of coverage `alpha` gets, `None` if skipped.
+    fn partial(&self, c: D::Color, alpha: u8) -> Option<D::Color> {
+        match self.background {
+            Some(bg) => Some(Mix.blend(c, bg, alpha)),
+            None => (alpha >= 128).then_some(c),
+        }
+    }
+}
+
+impl<D: DrawTarget> Canvas<D::Color> for TargetCanvas<'_, D>
+where
+    D::Color: Interpolate,
+{
+    fn clip(&self) -> ClipRect {
+        self.blitter.clip()
+    }
+
+    fn fill(&mut self, span: Span, color: D::Color, alpha: u8) {
+        if alpha == OPAQUE {
+            self.blitter.fill_span(span, color);
+        } else if let Some(c) = self.partial(color, alpha) {
+            self.blitter.fill_span(span, c);
+        }
+    }
+
+    fn shade<I: Iterator<Item = D::Color>>(&mut self, span: Span, colors: I, alpha: u8) {
+        if alpha == OPAQUE {
+            self.blitter.shade_span(span, colors);
+        } else if alpha >= 128 || self.background.is_some() {
+            for (i, c) in colors.enumerate().take(span.len as usize) {
+                if let Some(c) = self.partial(c, alpha) {
+                    self.blitter.set_pixel(span.x + i as i32, span.y, c);
+                }
+            }
+        }
+    }
+}

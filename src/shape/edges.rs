@@ -1,0 +1,202 @@
+//! The edge list every shape is turned into: closed contours of snapped
+//! straight edges in a fixed-capacity array (no allocation).
+//!
+//! Points are snapped to [`BITS`] subpixel bits, the same grid as
+//! [`SubPoint<4>`](crate::SubPoint), so a shape vertex and a triangle vertex
+//! at the same `f32` position are the same point and their shared edges are
+//! covered by exactly one of them.
+
+use crate::{Error, SubPoint};
+
+/// Subpixel bits of every shape vertex (1/16 px, as `SubPoint<4>`).
+pub const BITS: u32 = 4;
+
+/// One non-horizontal edge, stored top to bottom (`y0 < y1`) in subpixel
+/// units; `dir` is `+1` if the contour ran downwards, `-1` if upwards.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub(crate) struct Edge {
+    pub x0: i32,
+    pub y0: i32,
+    pub x1: i32,
+    pub y1: i32,
+    pub dir: i8,
+}
+
+/// Closed contours as at most `N` edges.
+///
+/// Horizontal edges are dropped (they never cross a pixel row and enclose no
+/// area in a row strip), so a rectangle costs two edges.
+///
+/// ```
+/// use microraster::shape::EdgeList;
+/// let mut e = EdgeList::<8>::new();
+/// e.polygon(&[(0.0, 0.0), (4.0, 0.0), (4.0, 3.0), (0.0, 3.0)])?;
+/// assert_eq!(e.len(), 2); // the two vertical sides
+/// # Ok::<(), microraster::Error>(())
+/// ```
+#[derive(Debug, Clone)]
+pub struct EdgeList<const N: usize> {
+    edges: [Edge; N],
+    len: usize,
+    // The contour being built: its first and last point.
+    start: Option<(i32, i32)>,
+    last: (i32, i32),
+    // Bounding rows in subpixel units of the stored edges.
+    y_min: i32,
+    y_max: i32,
+}
+
+impl<const N: usize> Default for EdgeList<N> {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+/// Snaps `(x, y)` pixels to the shape grid.
+pub(crate) fn snap(x: f32, y: f32) -> Result<(i32, i32), Error> {
+    let p = SubPoint::<BITS>::from_f32(x, y)?;
+    Ok((p.x(), p.y()))
+}
+
+impl<const N: usize> EdgeList<N> {
+    /// An empty list.
+    pub const fn new() -> Self {
+        EdgeList {
+            edges: [Edge { x0: 0, y0: 0, x1: 0, y1: 0, dir: 0 }; N],
+            len: 0,
+            start: None,
+            last: (0, 0),
+            y_min: i32::MAX,
+            y_max: i32::MIN,
+        }
+    }
+
+    /// Number of stored edges.
+    pub const fn len(&self) -> usize {
+        self.len
+    }
+
+    /// True if no edge is stored.
+    pub const fn is_empty(&self) -> bool {
+        self.len == 0
+    }
+
+    pub(crate) fn edges(&self) -> &[Edge] {
+        &self.edges[..self.len]
+    }
+
+    /// Rows (subpixel units) spanned by the edges: `y_min > y_max` if empty.
+    pub(crate) fn y_range(&self) -> (i32, i32) {
+        (self.y_min, self.y_max)
+    }
+
+    /// Starts a new contour at `(x, y)` pixels, closing the previous one.
+    pub fn move_to(&mut self, x: f32, y: f32) -> Result<(), Error> {
+        let p = snap(x, y)?;
+        self.close()?;
+        self.start = Some(p);
+        self.last = p;
+        Ok(())
+    }
+
+    /// Adds an edge from the current point to `(x, y)`; without a current
+    /// contour this starts one.
+    pub fn line_to(&mut self, x: f32, y: f32) -> Result<(), Error> {
+        let p = snap(x, y)?;
+        self.line_to_snapped(p)
+    }
+
+    pub(crate) fn line_to_snapped(&mut self, p: (i32, i32)) -> Result<(), Error> {
+        if self.start.is_none() {
+            self.start = Some(p);
+        } else {
+            self.push(self.last, p)?;
+        }
+        self.last = p;
+        Ok(())
+    }
+
+    /// Closes the current contour back to its first point.
+    pub fn close(&mut self) -> Result<(), Error> {
+        if let Some(s) = self.start.take() {
+            self.push(self.last, s)?;
+        }
+        Ok(())
+    }
+
+    /// Adds a closed polygon through `points` (pixels).
+    pub fn polygon(&mut self, points: &[(f32, f32)]) -> Result<(), Error> {
+        self.close()?;
+        for &(x, y) in points {
+            self.line_to(x, y)?;
+        }
+        self.close()
+    }
+
+    /// One edge from `a` to `b` (pixels), outside the contour being built:
+    /// callers keep their edges closed cycles. `flip` reverses it.
+    pub(crate) fn edge(&mut self, a: (f32, f32), b: (f32, f32), flip: bool) -> Result<(), Error> {
+        let (a, b) = (snap(a.0, a.1)?, snap(b.0, b.1)?);
+        if flip { self.push(b, a) } else { self.push(a, b) }
+    }
+
+    /// Sorts the edges by their top, which the scan's active-edge list
+    /// needs (`core`'s unstable sort: no allocation).
+    pub(crate) fn sort_by_top(&mut self) {
+        self.edges[..self.len].sort_unstable_by_key(|e| e.y0);
+    }
+
+    fn push(&mut self, a: (i32, i32), b: (i32, i32)) -> Result<(), Error> {
+        if a.1 == b.1 {
+            return Ok(());
+        }
+        let e = if a.1 < b.1 {
+            Edge { x0: a.0, y0: a.1, x1: b.0, y1: b.1, dir: 1 }
+        } else {
+            Edge { x0: b.0, y0: b.1, x1: a.0, y1: a.1, dir: -1 }
+        };
+        let slot = self.edges.get_mut(self.len).ok_or(Error::BufferTooSmall)?;
+        *slot = e;
+        self.len += 1;
+        self.y_min = self.y_min.min(e.y0);
+        self.y_max = self.y_max.max(e.y1);
+        Ok(())
+    }
+}
+
+/// The edges a row (or row strip) can cross, over edges sorted by top:
+/// entered once their top is reached, dropped once their bottom is passed,
+/// so each row looks at its own edges only.
+pub(crate) struct Active<const N: usize> {
+    idx: [u32; N],
+    n: usize,
+    next: usize,
+}
+
+impl<const N: usize> Active<N> {
+    pub(crate) fn new() -> Self {
+        Active { idx: [0; N], n: 0, next: 0 }
+    }
+
+    /// Enters edges with `y0 < top_below` and drops those with `y1 <= bottom_above`.
+    pub(crate) fn advance(&mut self, edges: &[Edge], top_below: i64, bottom_above: i64) {
+        while self.next < edges.len() && i64::from(edges[self.next].y0) < top_below {
+            // n < N: at most N edges exist.
+            self.idx[self.n] = self.next as u32;
+            self.n += 1;
+            self.next += 1;
+        }
+        let mut k = 0;
+        for i in 0..self.n {
+            if i64::from(edges[self.idx[i] as usize].y1) > bottom_above {
+                self.idx[k] = self.idx[i];
+                k += 1;
+            }
+        }
+        self.n = k;
+    }
+
+    pub(crate) fn edges<'e>(&self, edges: &'e [Edge]) -> impl Iterator<Item = &'e Edge> + use<'_, 'e, N> {
+        self.idx[..self.n].iter().map(move |&i| &edges[i as usize])
+    }
+}

@@ -1,0 +1,188 @@
+//! Exact, seamless 2D shapes: rectangles, rounded rectangles, circles,
+//! ellipses, arcs, sectors, polygons and thick polylines, filled and
+//! stroked, aliased or anti-aliased, with solid or gradient paint.
+//!
+//! # Model
+//! Every shape becomes closed contours of straight edges ([`EdgeList`]),
+//! snapped to the 1/16 px grid of [`SubPoint<4>`](crate::SubPoint); curves
+//! are flattened first ([`mod@flatten`]: at most [`TOLERANCE`] px from the true
+//! curve, chords inside it). The contours are then covered
+//!
+//! * **aliased** ([`Aliased`]): a pixel is in when the winding number around
+//!   its centre nudged by `(ε, ε²)` passes the [`FillRule`] — the top-left
+//!   rule of the triangle core, generalised ([`mod@scan`]). Two shapes (or a
+//!   shape and a triangle) sharing an edge never both cover, and never both
+//!   miss, a pixel on it;
+//! * **anti-aliased** ([`AntiAliased`]): each pixel gets the exact area of
+//!   the snapped contours inside it as its alpha ([`mod@area`]). Two shapes
+//!   sharing an edge sum to full coverage along it (no dark seam). Where a
+//!   shape overlaps itself inside one pixel (self-intersecting polygons, the
+//!   joins of thick polylines), that pixel's alpha is the integral of the
+//!   clamped winding number, which can exceed the area by the overlap.
+//!
+//! Strokes are contours too (the outline offset by half the width, or one
+//! contour per segment, join and cap, united by the nonzero rule), so a
+//! stroke is one fill: translucent strokes blend each pixel once.
+//!
+//! # Drawing
+//! [`Styled`] pairs a shape with a [`ShapeStyle`] and is checked once when
+//! built (NaN, negative sizes, capacity: a typed [`Error`](crate::Error)).
+//! It implements `embedded-graphics`' [`Drawable`](embedded_graphics_core::Drawable)
+//! for any `DrawTarget`, and [`Styled::draw_on`] draws on any [`Canvas`] — a
+//! band ([`BandView`](crate::band::BandView)) or your own readable
+//! framebuffer — with exact blending of partial pixels.
+//!
+//! ```
+//! use embedded_graphics::mock_display::MockDisplay;
+//! use embedded_graphics_core::{Drawable, pixelcolor::BinaryColor};
+//! use microraster::shape::{Circle, Shape, ShapeStyle};
+//! let mut display = MockDisplay::<BinaryColor>::new();
+//! Circle::new((3.0, 3.0), 2.5)?.styled(ShapeStyle::fill(BinaryColor::On))?.draw(&mut display).unwrap();
+//! // Centres within 2.5 px of (3, 3): (1.5, 1.5) is 2.12 away, (0.5, 3.5) 2.55.
+//! display.assert_pattern(&["     ", " ####", " ####", " ####", " ####"]);
+//! # Ok::<(), microraster::Error>(())
+//! ```
+//!
+//! # Memory
+//! Drawing keeps the edges on the stack: [`MAX_EDGES`] edges of 20 bytes,
+//! plus one row's crossings (8 bytes each, aliased) or edge pieces (12 bytes
+//! each, anti-aliased). More edges than that is [`Error::BufferTooSmall`](crate::Error::BufferTooSmall)
+//! when the [`Styled`] is built.
+
+pub mod area;
+mod canvas;
+pub mod edges;
+pub mod flatten;
+mod paint;
+pub mod scan;
+mod shapes;
+mod stroke;
+mod style;
+
+pub use canvas::{Canvas, TargetCanvas};
+pub use edges::EdgeList;
+pub use flatten::{MAX_SEGMENTS, TOLERANCE};
+pub use paint::{LinearGradient, Paint, RadialGradient};
+pub use shapes::{Arc, Circle, Ellipse, Polygon, Polyline, Rect, RoundedRect, Sector, Shape};
+pub use style::{Cap, Join, ShapeStyle, Styled};
+
+use crate::ClipRect;
+use crate::edge::Span;
+
+/// The most edges one styled shape may have.
+pub const MAX_EDGES: usize = 256;
+
+/// Which winding numbers are inside.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum FillRule {
+    /// Nonzero winding (overlapping contours of one direction unite).
+    #[default]
+    NonZero,
+    /// Odd winding (overlaps cut holes).
+    EvenOdd,
+}
+
+impl FillRule {
+    /// True if winding number `w` is inside.
+    ///
+    /// ```
+    /// use microraster::shape::FillRule;
+    /// assert!(FillRule::NonZero.inside(2) && !FillRule::EvenOdd.inside(2));
+    /// ```
+    pub const fn inside(self, w: i32) -> bool {
+        match self {
+            FillRule::NonZero => w != 0,
+            FillRule::EvenOdd => w & 1 != 0,
+        }
+    }
+}
+
+mod sealed {
+    pub trait Sealed {}
+    impl Sealed for super::Aliased {}
+    impl Sealed for super::AntiAliased {}
+}
+
+/// How pixel coverage is computed: [`Aliased`] or [`AntiAliased`], chosen by
+/// the type of [`ShapeStyle::antialias`].
+pub trait Coverage: sealed::Sealed + Copy + Default + core::fmt::Debug {
+    /// Emits `(span, alpha)` runs of the covered pixels of `edges` in `clip`.
+    #[doc(hidden)]
+    fn cover<F: FnMut(Span, u8), const N: usize>(edges: &EdgeList<N>, rule: FillRule, clip: ClipRect, out: F);
+}
+
+/// Whole pixels: in or out, by the top-left rule.
+///
+/// ```
+/// use microraster::shape::{Aliased, ShapeStyle};
+/// let s: ShapeStyle<u8, Aliased> = ShapeStyle::fill(1u8);
+/// # let _ = s;
+/// ```
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct Aliased;
+
+/// Exact area coverage as alpha.
+///
+/// ```
+/// use embedded_graphics_core::pixelcolor::{Gray8, GrayColor};
+/// use microraster::shape::{AntiAliased, ShapeStyle};
+/// let s: ShapeStyle<Gray8, AntiAliased> = ShapeStyle::fill(Gray8::WHITE).antialiased();
+/// # let _ = s;
+/// ```
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct AntiAliased;
+
+impl Coverage for Aliased {
+    fn cover<F: FnMut(Span, u8), const N: usize>(
+        edges: &EdgeList<N>,
+        rule: FillRule,
+        clip: ClipRect,
+        out: F,
+    ) {
+        scan::scan(edges, rule, clip, &mut Runs::new(out));
+    }
+}
+
+impl Coverage for AntiAliased {
+    fn cover<F: FnMut(Span, u8), const N: usize>(
+        edges: &EdgeList<N>,
+        rule: FillRule,
+        clip: ClipRect,
+        out: F,
+    ) {
+        area::scan(edges, rule, clip, &mut Runs::new(out));
+    }
+}
+
+/// Merges adjacent pixels of one row and alpha into one span; alpha 0 is
+/// dropped.
+pub(crate) struct Runs<F> {
+    out: F,
+    pending: Option<(Span, u8)>,
+}
+
+impl<F: FnMut(Span, u8)> Runs<F> {
+    fn new(out: F) -> Self {
+        Runs { out, pending: None }
+    }
+
+    #[inline]
+    pub(crate) fn push(&mut self, y: i32, x: i32, len: u32, alpha: u8) {
+        if let Some((s, a)) = &mut self.pending {
+            if *a == alpha && s.y == y && s.x + s.len as i32 == x {
+                s.len += len;
+                return;
+            }
+        }
+        self.flush();
+        if alpha > 0 && len > 0 {
+            self.pending = Some((Span { y, x, len }, alpha));
+        }
+    }
+
+    pub(crate) fn flush(&mut self) {
+        if let Some((s, a)) = self.pending.take() {
+            (self.out)(s, a);
+        }
+    }
+}

@@ -1,0 +1,150 @@
+//! Paint: solid colour and linear or radial gradients between two colours.
+//!
+//! A gradient's parameter `t` is evaluated at each pixel centre, clamped to
+//! `[0, 1]` (pad), and the colour is [`Mix`] of the two end colours with
+//! alpha `round(255·t)`: per channel within ½ of the colour's own step of
+//! the exact `c0 + t·(c1 − c0)`, plus 1/510 of the range from the 8-bit `t`.
+
+use super::canvas::Canvas;
+use crate::Error;
+use crate::blend::{Blend, Mix};
+use crate::color::Interpolate;
+use crate::edge::Span;
+
+/// What a shape is filled or stroked with.
+///
+/// ```
+/// use embedded_graphics_core::pixelcolor::{Rgb565, RgbColor};
+/// use microraster::shape::{LinearGradient, Paint};
+/// let solid: Paint<Rgb565> = Rgb565::new(31, 0, 0).into();
+/// let ramp = Paint::Linear(LinearGradient::new((0.0, 0.0), (10.0, 0.0), [Rgb565::BLACK, Rgb565::WHITE])?);
+/// # let _ = (solid, ramp);
+/// # Ok::<(), microraster::Error>(())
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Paint<C> {
+    /// One colour.
+    Solid(C),
+    /// A linear gradient.
+    Linear(LinearGradient<C>),
+    /// A radial gradient.
+    Radial(RadialGradient<C>),
+}
+
+impl<C> From<C> for Paint<C> {
+    fn from(c: C) -> Self {
+        Paint::Solid(c)
+    }
+}
+impl<C> From<LinearGradient<C>> for Paint<C> {
+    fn from(g: LinearGradient<C>) -> Self {
+        Paint::Linear(g)
+    }
+}
+impl<C> From<RadialGradient<C>> for Paint<C> {
+    fn from(g: RadialGradient<C>) -> Self {
+        Paint::Radial(g)
+    }
+}
+
+/// `colors[0]` at `start`, `colors[1]` at `end`, constant along lines
+/// perpendicular to `start → end` and padded beyond.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LinearGradient<C> {
+    start: (f32, f32),
+    // (end − start) / |end − start|²: t = (p − start) · k.
+    k: (f32, f32),
+    colors: [C; 2],
+}
+
+impl<C> LinearGradient<C> {
+    /// Errors: NaN ([`Error::NonFiniteCoordinate`]); `start == end`
+    /// ([`Error::InvalidParameter`]).
+    ///
+    /// ```
+    /// use embedded_graphics_core::pixelcolor::{Gray8, GrayColor};
+    /// use microraster::shape::LinearGradient;
+    /// let g = LinearGradient::new((0.0, 0.0), (0.0, 0.0), [Gray8::BLACK, Gray8::WHITE]);
+    /// assert_eq!(g, Err(microraster::Error::InvalidParameter));
+    /// ```
+    pub fn new(start: (f32, f32), end: (f32, f32), colors: [C; 2]) -> Result<Self, Error> {
+        let d = (end.0 - start.0, end.1 - start.1);
+        let l2 = d.0 * d.0 + d.1 * d.1;
+        if ![start.0, start.1, end.0, end.1, l2].iter().all(|v| v.is_finite()) {
+            return Err(Error::NonFiniteCoordinate);
+        }
+        if l2 <= 0.0 {
+            return Err(Error::InvalidParameter);
+        }
+        Ok(LinearGradient { start, k: (d.0 / l2, d.1 / l2), colors })
+    }
+}
+
+/// `colors[0]` at `center`, `colors[1]` at distance `radius` and beyond.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RadialGradient<C> {
+    center: (f32, f32),
+    inv_r: f32,
+    colors: [C; 2],
+}
+
+impl<C> RadialGradient<C> {
+    /// Errors: NaN ([`Error::NonFiniteCoordinate`]); a radius that is not
+    /// positive ([`Error::InvalidParameter`]).
+    ///
+    /// ```
+    /// use embedded_graphics_core::pixelcolor::{Gray8, GrayColor};
+    /// use microraster::shape::RadialGradient;
+    /// assert!(RadialGradient::new((5.0, 5.0), 4.0, [Gray8::WHITE, Gray8::BLACK]).is_ok());
+    /// ```
+    pub fn new(center: (f32, f32), radius: f32, colors: [C; 2]) -> Result<Self, Error> {
+        if ![center.0, center.1, radius].iter().all(|v| v.is_finite()) {
+            return Err(Error::NonFiniteCoordinate);
+        }
+        if radius <= 0.0 {
+            return Err(Error::InvalidParameter);
+        }
+        Ok(RadialGradient { center, inv_r: 1.0 / radius, colors })
+    }
+}
+
+/// Alpha `round(255·clamp(t, 0, 1))`.
+#[inline]
+fn weight(t: f32) -> u8 {
+    (t.clamp(0.0, 1.0) * 255.0 + 0.5) as u8
+}
+
+impl<C: Interpolate> Paint<C> {
+    /// The colour at pixel `(x, y)` (its centre).
+    ///
+    /// ```
+    /// use embedded_graphics_core::pixelcolor::{Gray8, GrayColor};
+    /// use microraster::shape::{LinearGradient, Paint};
+    /// let p = Paint::Linear(LinearGradient::new((0.0, 0.0), (10.0, 0.0), [Gray8::BLACK, Gray8::WHITE])?);
+    /// assert_eq!(p.color_at(4, 0), Gray8::new(115)); // t = 0.45: round(114.75)
+    /// # Ok::<(), microraster::Error>(())
+    /// ```
+    pub fn color_at(&self, x: i32, y: i32) -> C {
+        let (px, py) = (x as f32 + 0.5, y as f32 + 0.5);
+        match self {
+            Paint::Solid(c) => *c,
+            Paint::Linear(g) => {
+                let t = (px - g.start.0) * g.k.0 + (py - g.start.1) * g.k.1;
+                Mix.blend(g.colors[1], g.colors[0], weight(t))
+            }
+            Paint::Radial(g) => {
+                let (dx, dy) = (px - g.center.0, py - g.center.1);
+                let t = crate::math::Scalar::sqrt(dx * dx + dy * dy) * g.inv_r;
+                Mix.blend(g.colors[1], g.colors[0], weight(t))
+            }
+        }
+    }
+
+    /// Paints `span` on `canvas` with coverage `alpha`.
+    pub(crate) fn paint<T: Canvas<C>>(&self, canvas: &mut T, span: Span, alpha: u8) {
+        match self {
+            Paint::Solid(c) => canvas.fill(span, *c, alpha),
+            _ => canvas.shade(span, (0..span.len as i32).map(|i| self.color_at(span.x + i, span.y)), alpha),
+        }
+    }
+}

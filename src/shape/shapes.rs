@@ -1,0 +1,364 @@
+//! The shapes: plain geometry in `f32` pixels, checked when built.
+
+use super::Coverage;
+use super::edges::EdgeList;
+use super::flatten::arc_points;
+use super::stroke::{self, StrokeParams};
+use super::style::{ShapeStyle, Styled};
+use crate::Error;
+use core::f32::consts::{FRAC_PI_2, PI, TAU};
+
+/// A geometric shape: its filled region and its stroke as closed contours.
+pub trait Shape: Sized {
+    /// Adds the contours of the filled region to `e`.
+    #[doc(hidden)]
+    fn fill_contours<const N: usize>(&self, e: &mut EdgeList<N>) -> Result<(), Error>;
+
+    /// Adds the contours of the stroke to `e`.
+    #[doc(hidden)]
+    fn stroke_contours<const N: usize>(&self, e: &mut EdgeList<N>, p: &StrokeParams) -> Result<(), Error>;
+
+    /// Pairs the shape with a style (checked: see [`Styled::new`]).
+    fn styled<C: Copy, A: Coverage>(self, style: ShapeStyle<C, A>) -> Result<Styled<Self, C, A>, Error> {
+        Styled::new(self, style)
+    }
+}
+
+fn finite(v: &[f32]) -> Result<(), Error> {
+    if v.iter().all(|x| x.is_finite()) { Ok(()) } else { Err(Error::NonFiniteCoordinate) }
+}
+
+/// Finite and non-negative, else the typed error.
+fn size(v: &[f32]) -> Result<(), Error> {
+    finite(v)?;
+    if v.iter().all(|&x| x >= 0.0) { Ok(()) } else { Err(Error::InvalidParameter) }
+}
+
+/// An axis-aligned rectangle: top-left corner and size (px).
+///
+/// ```
+/// use microraster::shape::Rect;
+/// assert!(Rect::new(0.0, 0.0, 4.0, 2.0).is_ok());
+/// assert_eq!(Rect::new(0.0, 0.0, -1.0, 2.0), Err(microraster::Error::InvalidParameter));
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Rect {
+    x: f32,
+    y: f32,
+    w: f32,
+    h: f32,
+}
+
+impl Rect {
+    /// Errors: NaN or infinity ([`Error::NonFiniteCoordinate`]), a negative
+    /// size ([`Error::InvalidParameter`]).
+    pub fn new(x: f32, y: f32, w: f32, h: f32) -> Result<Self, Error> {
+        finite(&[x, y])?;
+        size(&[w, h])?;
+        Ok(Rect { x, y, w, h })
+    }
+
+    fn corners(&self) -> [(f32, f32); 4] {
+        let (x1, y1) = (self.x + self.w, self.y + self.h);
+        [(self.x, self.y), (x1, self.y), (x1, y1), (self.x, y1)]
+    }
+}
+
+impl Shape for Rect {
+    fn fill_contours<const N: usize>(&self, e: &mut EdgeList<N>) -> Result<(), Error> {
+        e.polygon(&self.corners())
+    }
+    fn stroke_contours<const N: usize>(&self, e: &mut EdgeList<N>, p: &StrokeParams) -> Result<(), Error> {
+        stroke::polyline(e, &self.corners(), true, p)
+    }
+}
+
+/// A rectangle with circular corners of one radius, clamped to half the
+/// shorter side. Its stroke is the exact offset outline (corners of radius
+/// `r ± width/2`, clamped at 0), so the style's join does not apply.
+///
+/// ```
+/// use microraster::shape::{Rect, RoundedRect};
+/// let r = RoundedRect::new(Rect::new(0.0, 0.0, 10.0, 4.0)?, 3.0)?;
+/// assert_eq!(r.radius(), 2.0); // clamped to 4 / 2
+/// # Ok::<(), microraster::Error>(())
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RoundedRect {
+    rect: Rect,
+    r: f32,
+}
+
+impl RoundedRect {
+    /// Errors: a NaN or negative radius, as for [`Rect::new`].
+    pub fn new(rect: Rect, radius: f32) -> Result<Self, Error> {
+        size(&[radius])?;
+        Ok(RoundedRect { rect, r: radius.min(0.5 * rect.w.min(rect.h)) })
+    }
+
+    /// The corner radius after clamping.
+    pub fn radius(&self) -> f32 {
+        self.r
+    }
+
+    /// The outline grown by `d` (shrunk for `d < 0`), radius `r + d`.
+    fn contour<const N: usize>(&self, e: &mut EdgeList<N>, d: f32, reverse: bool) -> Result<(), Error> {
+        let Rect { x, y, w, h } = self.rect;
+        let r = (self.r + d).max(0.0);
+        let (x0, y0, x1, y1) = (x - d, y - d, x + w + d, y + h + d);
+        if x1 <= x0 || y1 <= y0 {
+            return Ok(());
+        }
+        // Corner centres clockwise from top-right; each quarter starts where the previous side ends.
+        let centres = [
+            (x1 - r, y0 + r, -FRAC_PI_2),
+            (x1 - r, y1 - r, 0.0),
+            (x0 + r, y1 - r, FRAC_PI_2),
+            (x0 + r, y0 + r, PI),
+        ];
+        e.close()?;
+        for k in 0..4 {
+            let (cx, cy, a) = centres[if reverse { 3 - k } else { k }];
+            let (start, sweep) = if reverse { (a + FRAC_PI_2, -FRAC_PI_2) } else { (a, FRAC_PI_2) };
+            arc_points((cx, cy), (r, r), start, sweep, |px, py| e.line_to(px, py))?;
+        }
+        e.close()
+    }
+}
+
+impl Shape for RoundedRect {
+    fn fill_contours<const N: usize>(&self, e: &mut EdgeList<N>) -> Result<(), Error> {
+        self.contour(e, 0.0, false)
+    }
+    fn stroke_contours<const N: usize>(&self, e: &mut EdgeList<N>, p: &StrokeParams) -> Result<(), Error> {
+        self.contour(e, p.half, false)?;
+        self.contour(e, -p.half, true)
+    }
+}
+
+/// An ellipse: centre and the two radii (px).
+///
+/// ```
+/// use microraster::shape::Ellipse;
+/// assert!(Ellipse::new((5.0, 5.0), 4.0, 2.0).is_ok());
+/// assert_eq!(Ellipse::new((5.0, f32::NAN), 4.0, 2.0), Err(microraster::Error::NonFiniteCoordinate));
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Ellipse {
+    c: (f32, f32),
+    rx: f32,
+    ry: f32,
+}
+
+impl Ellipse {
+    /// Errors as for [`Rect::new`].
+    pub fn new(center: (f32, f32), rx: f32, ry: f32) -> Result<Self, Error> {
+        finite(&[center.0, center.1])?;
+        size(&[rx, ry])?;
+        Ok(Ellipse { c: center, rx, ry })
+    }
+
+    fn contour<const N: usize>(&self, e: &mut EdgeList<N>, d: f32, reverse: bool) -> Result<(), Error> {
+        let (rx, ry) = (self.rx + d, self.ry + d);
+        if rx <= 0.0 || ry <= 0.0 {
+            return Ok(());
+        }
+        e.close()?;
+        let sweep = if reverse { -TAU } else { TAU };
+        arc_points(self.c, (rx, ry), 0.0, sweep, |x, y| e.line_to(x, y))?;
+        e.close()
+    }
+}
+
+impl Shape for Ellipse {
+    fn fill_contours<const N: usize>(&self, e: &mut EdgeList<N>) -> Result<(), Error> {
+        self.contour(e, 0.0, false)
+    }
+    /// The region between the ellipses of radii `± width/2` (for a circle
+    /// exactly the offset curve).
+    fn stroke_contours<const N: usize>(&self, e: &mut EdgeList<N>, p: &StrokeParams) -> Result<(), Error> {
+        self.contour(e, p.half, false)?;
+        self.contour(e, -p.half, true)
+    }
+}
+
+/// A circle: an [`Ellipse`] with equal radii.
+///
+/// ```
+/// use microraster::shape::Circle;
+/// assert_eq!(Circle::new((0.0, 0.0), -1.0), Err(microraster::Error::InvalidParameter));
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Circle(Ellipse);
+
+impl Circle {
+    /// Errors as for [`Rect::new`].
+    pub fn new(center: (f32, f32), radius: f32) -> Result<Self, Error> {
+        Ellipse::new(center, radius, radius).map(Circle)
+    }
+}
+
+impl Shape for Circle {
+    fn fill_contours<const N: usize>(&self, e: &mut EdgeList<N>) -> Result<(), Error> {
+        self.0.fill_contours(e)
+    }
+    fn stroke_contours<const N: usize>(&self, e: &mut EdgeList<N>, p: &StrokeParams) -> Result<(), Error> {
+        self.0.stroke_contours(e, p)
+    }
+}
+
+/// Centre, radius, start angle and sweep (radians: 0 along +x, positive
+/// clockwise on screen; sweeps beyond a full turn are clamped to one).
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct ArcGeom {
+    c: (f32, f32),
+    r: f32,
+    start: f32,
+    sweep: f32,
+}
+
+impl ArcGeom {
+    fn new(c: (f32, f32), r: f32, start: f32, sweep: f32) -> Result<Self, Error> {
+        finite(&[c.0, c.1, start, sweep])?;
+        size(&[r])?;
+        Ok(ArcGeom { c, r, start, sweep: sweep.clamp(-TAU, TAU) })
+    }
+
+    /// The arc at radius `r`, forwards or backwards, as points on the current contour.
+    fn points<const N: usize>(&self, e: &mut EdgeList<N>, r: f32, reverse: bool) -> Result<(), Error> {
+        let (start, sweep) =
+            if reverse { (self.start + self.sweep, -self.sweep) } else { (self.start, self.sweep) };
+        arc_points(self.c, (r, r), start, sweep, |x, y| e.line_to(x, y))
+    }
+}
+
+/// A circular arc: stroke only (its fill is empty, as in `embedded-graphics`).
+///
+/// ```
+/// use microraster::shape::Arc;
+/// assert!(Arc::new((8.0, 8.0), 6.0, 0.0, 3.0).is_ok());
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Arc(ArcGeom);
+
+impl Arc {
+    /// Errors as for [`Rect::new`]; `start` and `sweep` must be finite.
+    pub fn new(center: (f32, f32), radius: f32, start: f32, sweep: f32) -> Result<Self, Error> {
+        ArcGeom::new(center, radius, start, sweep).map(Arc)
+    }
+}
+
+impl Shape for Arc {
+    fn fill_contours<const N: usize>(&self, _: &mut EdgeList<N>) -> Result<(), Error> {
+        Ok(())
+    }
+    /// The annular sector between radii `r ± width/2`, with the caps.
+    fn stroke_contours<const N: usize>(&self, e: &mut EdgeList<N>, p: &StrokeParams) -> Result<(), Error> {
+        // Positive sweep only, so the caps' orientation is known.
+        let g = &if self.0.sweep < 0.0 {
+            ArcGeom { start: self.0.start + self.0.sweep, sweep: -self.0.sweep, ..self.0 }
+        } else {
+            self.0
+        };
+        e.close()?;
+        g.points(e, g.r + p.half, false)?;
+        g.points(e, (g.r - p.half).max(0.0), true)?;
+        e.close()?;
+        for (angle, dir) in [(g.start, -1.0), (g.start + g.sweep, 1.0)] {
+            let (s, c) = crate::math::Scalar::sin_cos(angle);
+            // The tangent pointing away from the arc at this end; the
+            // clockwise annulus runs from outer to inner at the end and from
+            // inner to outer at the start: the opposite of an open stroke's
+            // outline, so the caps are flipped.
+            let t = (-s * dir, c * dir);
+            stroke::cap(e, (g.c.0 + g.r * c, g.c.1 + g.r * s), t, true, p)?;
+        }
+        Ok(())
+    }
+}
+
+/// A pie slice: the centre plus an arc.
+///
+/// ```
+/// use microraster::shape::Sector;
+/// assert!(Sector::new((8.0, 8.0), 6.0, 0.0, 1.5).is_ok());
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Sector(ArcGeom);
+
+impl Sector {
+    /// Errors as for [`Arc::new`].
+    pub fn new(center: (f32, f32), radius: f32, start: f32, sweep: f32) -> Result<Self, Error> {
+        ArcGeom::new(center, radius, start, sweep).map(Sector)
+    }
+}
+
+impl Shape for Sector {
+    fn fill_contours<const N: usize>(&self, e: &mut EdgeList<N>) -> Result<(), Error> {
+        e.close()?;
+        e.line_to(self.0.c.0, self.0.c.1)?;
+        self.0.points(e, self.0.r, false)?;
+        e.close()
+    }
+    /// The outline (two radii and the arc) with the style's joins at every
+    /// chord vertex: several edges a chord, so large sectors can exceed
+    /// [`MAX_EDGES`](super::MAX_EDGES) ([`Error::BufferTooSmall`] when styled).
+    fn stroke_contours<const N: usize>(&self, e: &mut EdgeList<N>, p: &StrokeParams) -> Result<(), Error> {
+        stroke::sector(e, self.0.c, self.0.r, self.0.start, self.0.sweep, p)
+    }
+}
+
+/// A closed polygon through borrowed points (px), convex or not,
+/// self-intersecting or not (see [`FillRule`](super::FillRule)).
+///
+/// ```
+/// use microraster::shape::Polygon;
+/// let star = [(5.0, 0.0), (8.0, 9.0), (0.0, 3.5), (10.0, 3.5), (2.0, 9.0)];
+/// assert!(Polygon::new(&star).is_ok());
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Polygon<'a>(&'a [(f32, f32)]);
+
+impl<'a> Polygon<'a> {
+    /// Errors: a NaN or infinite coordinate.
+    pub fn new(points: &'a [(f32, f32)]) -> Result<Self, Error> {
+        points.iter().try_for_each(|p| finite(&[p.0, p.1]))?;
+        Ok(Polygon(points))
+    }
+}
+
+impl Shape for Polygon<'_> {
+    fn fill_contours<const N: usize>(&self, e: &mut EdgeList<N>) -> Result<(), Error> {
+        e.polygon(self.0)
+    }
+    fn stroke_contours<const N: usize>(&self, e: &mut EdgeList<N>, p: &StrokeParams) -> Result<(), Error> {
+        stroke::polyline(e, self.0, true, p)
+    }
+}
+
+/// An open polyline through borrowed points: stroke only (its fill is
+/// empty). A single segment is a thick line.
+///
+/// ```
+/// use microraster::shape::Polyline;
+/// assert!(Polyline::new(&[(0.0, 0.0), (10.0, 4.0), (20.0, 0.0)]).is_ok());
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Polyline<'a>(&'a [(f32, f32)]);
+
+impl<'a> Polyline<'a> {
+    /// Errors: a NaN or infinite coordinate.
+    pub fn new(points: &'a [(f32, f32)]) -> Result<Self, Error> {
+        points.iter().try_for_each(|p| finite(&[p.0, p.1]))?;
+        Ok(Polyline(points))
+    }
+}
+
+impl Shape for Polyline<'_> {
+    fn fill_contours<const N: usize>(&self, _: &mut EdgeList<N>) -> Result<(), Error> {
+        Ok(())
+    }
+    fn stroke_contours<const N: usize>(&self, e: &mut EdgeList<N>, p: &StrokeParams) -> Result<(), Error> {
+        stroke::polyline(e, self.0, false, p)
+    }
+}

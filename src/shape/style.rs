@@ -1,0 +1,256 @@
+//! Styles and styled shapes, in the spirit of `embedded-graphics`'
+//! `PrimitiveStyle` and `Styled`.
+
+use super::canvas::{Canvas, TargetCanvas};
+use super::edges::{BITS, EdgeList};
+use super::shapes::Shape;
+use super::stroke::StrokeParams;
+use super::{Aliased, AntiAliased, Coverage, FillRule, MAX_EDGES, Paint};
+use crate::{Error, Interpolate};
+use embedded_graphics_core::Drawable;
+use embedded_graphics_core::prelude::DrawTarget;
+
+/// How thick lines meet at a vertex.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Join {
+    /// The outer edges extended to their meeting point, or [`Join::Bevel`]
+    /// where that is farther than `miter_limit · width / 2` from the vertex.
+    #[default]
+    Miter,
+    /// A circular arc around the vertex.
+    Round,
+    /// The outer corners joined by a straight edge.
+    Bevel,
+}
+
+/// How open ends of thick lines finish.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Cap {
+    /// Square, at the end point.
+    #[default]
+    Butt,
+    /// A half disc around the end point.
+    Round,
+    /// Square, extended by half the width.
+    Square,
+}
+
+/// Fill and stroke of a shape. `A` ([`Aliased`] or [`AntiAliased`]) selects
+/// the coverage code at compile time.
+///
+/// ```
+/// use embedded_graphics_core::pixelcolor::{Rgb565, RgbColor};
+/// use microraster::shape::{Cap, Join, ShapeStyle};
+/// let style = ShapeStyle::stroke(Rgb565::new(31, 0, 0), 3.0).with_join(Join::Round).with_cap(Cap::Round).antialiased();
+/// assert_eq!(style.stroke_width, 3.0);
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ShapeStyle<C, A = Aliased> {
+    /// Paint of the interior, if any.
+    pub fill: Option<Paint<C>>,
+    /// Paint of the outline, if any.
+    pub stroke: Option<Paint<C>>,
+    /// Width of the outline (px), centred on it; 0 draws no outline.
+    pub stroke_width: f32,
+    /// Joins of the outline.
+    pub join: Join,
+    /// Caps of open outlines (polylines, arcs).
+    pub cap: Cap,
+    /// Longest miter, in half widths (4, as tiny-skia's default).
+    pub miter_limit: f32,
+    /// Fill rule of the interior (strokes always use nonzero).
+    pub fill_rule: FillRule,
+    /// Coverage: [`Aliased`] or [`AntiAliased`].
+    pub antialias: A,
+}
+
+impl<C> ShapeStyle<C, Aliased> {
+    /// Nothing drawn (add a fill or a stroke).
+    pub const fn new() -> Self {
+        ShapeStyle {
+            fill: None,
+            stroke: None,
+            stroke_width: 0.0,
+            join: Join::Miter,
+            cap: Cap::Butt,
+            miter_limit: 4.0,
+            fill_rule: FillRule::NonZero,
+            antialias: Aliased,
+        }
+    }
+
+    /// A solid or gradient fill.
+    pub fn fill(paint: impl Into<Paint<C>>) -> Self {
+        Self::new().with_fill(paint)
+    }
+
+    /// A solid or gradient outline `width` px wide.
+    pub fn stroke(paint: impl Into<Paint<C>>, width: f32) -> Self {
+        Self::new().with_stroke(paint, width)
+    }
+}
+
+impl<C> Default for ShapeStyle<C, Aliased> {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl<C, A: Coverage> ShapeStyle<C, A> {
+    /// With this fill.
+    pub fn with_fill(self, paint: impl Into<Paint<C>>) -> Self {
+        ShapeStyle { fill: Some(paint.into()), ..self }
+    }
+    /// With this outline.
+    pub fn with_stroke(self, paint: impl Into<Paint<C>>, width: f32) -> Self {
+        ShapeStyle { stroke: Some(paint.into()), stroke_width: width, ..self }
+    }
+    /// With this join.
+    pub fn with_join(self, join: Join) -> Self {
+        ShapeStyle { join, ..self }
+    }
+    /// With this cap.
+    pub fn with_cap(self, cap: Cap) -> Self {
+        ShapeStyle { cap, ..self }
+    }
+    /// With this fill rule.
+    pub fn with_fill_rule(self, fill_rule: FillRule) -> Self {
+        ShapeStyle { fill_rule, ..self }
+    }
+    /// The same style, anti-aliased.
+    pub fn antialiased(self) -> ShapeStyle<C, AntiAliased> {
+        self.with_coverage(AntiAliased)
+    }
+    /// The same style, aliased.
+    pub fn aliased(self) -> ShapeStyle<C, Aliased> {
+        self.with_coverage(Aliased)
+    }
+
+    fn with_coverage<B: Coverage>(self, antialias: B) -> ShapeStyle<C, B> {
+        let ShapeStyle { fill, stroke, stroke_width, join, cap, miter_limit, fill_rule, .. } = self;
+        ShapeStyle { fill, stroke, stroke_width, join, cap, miter_limit, fill_rule, antialias }
+    }
+
+    fn params(&self) -> StrokeParams {
+        StrokeParams {
+            half: 0.5 * self.stroke_width,
+            join: self.join,
+            cap: self.cap,
+            miter_limit: self.miter_limit,
+        }
+    }
+}
+
+/// A shape with its style: checked once, then drawn with one call.
+///
+/// ```
+/// use embedded_graphics_core::pixelcolor::{Gray8, GrayColor};
+/// use microraster::shape::{Rect, Shape, ShapeStyle};
+/// use microraster::{Band, Renderer};
+/// use embedded_graphics::mock_display::MockDisplay;
+/// let bar = Rect::new(1.0, 0.0, 2.0, 2.0)?.styled(ShapeStyle::fill(Gray8::WHITE))?;
+/// let mut band = Band::<Gray8, 4, 1>::new(Gray8::BLACK);
+/// let mut display = MockDisplay::new();
+/// Renderer::new(2, Gray8::BLACK).render_with(&mut band, &mut display, |view, _, _| bar.draw_on(view)).unwrap();
+/// assert_eq!(display.get_pixel(embedded_graphics_core::prelude::Point::new(2, 1)), Some(Gray8::WHITE));
+/// # Ok::<(), microraster::Error>(())
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Styled<S, C, A = Aliased> {
+    shape: S,
+    style: ShapeStyle<C, A>,
+    // Pixel rows the fill and stroke can touch (half-open), so a band
+    // that misses them costs two comparisons.
+    rows: (i32, i32),
+}
+
+impl<S: Shape, C: Copy, A: Coverage> Styled<S, C, A> {
+    /// Checks the style and that the contours fit [`MAX_EDGES`].
+    ///
+    /// Errors: NaN anywhere ([`Error::NonFiniteCoordinate`]); a negative
+    /// stroke width or a miter limit below 1 ([`Error::InvalidParameter`]);
+    /// coordinates beyond the snapping range
+    /// ([`Error::CoordinateOutOfRange`]); more than [`MAX_EDGES`] edges
+    /// ([`Error::BufferTooSmall`]).
+    pub fn new(shape: S, style: ShapeStyle<C, A>) -> Result<Self, Error> {
+        let (w, m) = (style.stroke_width, style.miter_limit);
+        if !w.is_finite() || !m.is_finite() {
+            return Err(Error::NonFiniteCoordinate);
+        }
+        if w < 0.0 || m < 1.0 {
+            return Err(Error::InvalidParameter);
+        }
+        let mut s = Styled { shape, style, rows: (0, 0) };
+        let (f, t) = (s.fill_edges::<MAX_EDGES>()?.y_range(), s.stroke_edges::<MAX_EDGES>()?.y_range());
+        let (y_min, y_max) = (f.0.min(t.0), f.1.max(t.1));
+        // Subpixels to whole rows, outward; empty shapes get an empty range.
+        s.rows = if y_min <= y_max { (y_min >> BITS, (y_max >> BITS) + 1) } else { (0, 0) };
+        Ok(s)
+    }
+
+    /// The shape.
+    pub fn shape(&self) -> &S {
+        &self.shape
+    }
+
+    /// The style.
+    pub fn style(&self) -> &ShapeStyle<C, A> {
+        &self.style
+    }
+
+    /// Pixel rows `.0 .. .1` the shape can touch.
+    pub fn rows(&self) -> (i32, i32) {
+        self.rows
+    }
+
+    fn fill_edges<const N: usize>(&self) -> Result<EdgeList<N>, Error> {
+        let mut e = EdgeList::new();
+        if self.style.fill.is_some() {
+            self.shape.fill_contours(&mut e)?;
+            e.close()?;
+            e.sort_by_top();
+        }
+        Ok(e)
+    }
+
+    fn stroke_edges<const N: usize>(&self) -> Result<EdgeList<N>, Error> {
+        let mut e = EdgeList::new();
+        if self.style.stroke.is_some() && self.style.stroke_width > 0.0 {
+            self.shape.stroke_contours(&mut e, &self.style.params())?;
+            e.close()?;
+            e.sort_by_top();
+        }
+        Ok(e)
+    }
+}
+
+impl<S: Shape, C: Interpolate, A: Coverage> Styled<S, C, A> {
+    /// Draws on `canvas` (a band view, or a readable framebuffer): fill
+    /// first, then stroke; partial pixels are blended exactly.
+    pub fn draw_on<T: Canvas<C>>(&self, canvas: &mut T) {
+        let clip = canvas.clip();
+        if clip.y1() <= self.rows.0 || clip.y0() >= self.rows.1 {
+            return;
+        }
+        // Checked in `new`: building the edges cannot fail again.
+        if let (Some(paint), Ok(e)) = (&self.style.fill, self.fill_edges::<MAX_EDGES>()) {
+            A::cover(&e, self.style.fill_rule, clip, |span, a| paint.paint(canvas, span, a));
+        }
+        if let (Some(paint), Ok(e)) = (&self.style.stroke, self.stroke_edges::<MAX_EDGES>()) {
+            A::cover(&e, FillRule::NonZero, clip, |span, a| paint.paint(canvas, span, a));
+        }
+    }
+}
+
+/// Draws into any `DrawTarget` (see [`TargetCanvas`] for partial pixels,
+/// which a `DrawTarget` cannot read back).
+impl<S: Shape, C: Interpolate, A: Coverage> Drawable for Styled<S, C, A> {
+    type Color = C;
+    type Output = ();
+
+    fn draw<D: DrawTarget<Color = C>>(&self, target: &mut D) -> Result<(), D::Error> {
+        let mut canvas = TargetCanvas::new(target);
+        self.draw_on(&mut canvas);
+        canvas.finish()
+    }
+}

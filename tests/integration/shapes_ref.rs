@@ -1,0 +1,330 @@
+//! Shapes against references: tiny-skia 0.12's aliased fills and strokes
+//! (away from edges, where tie rules and flattening differ), and the
+//! anti-aliased coverage against the exact area in `f64`.
+//!
+//! tiny-skia sees the same vertices (1/16 px is exact in its 26.6 fixed
+//! point); its edge walk is off by < 1/64 + 1/1024 px (see
+//! `triangles_skia.rs`), so polygon pixels whose centre lies within
+//! `MASK_PX` of an edge are not compared. For strokes the true outline is
+//! not a polygon; pixels tiny-skia's own anti-aliased stroke covers only
+//! partly, and their neighbours, are not compared (our flattening is within
+//! 0.17 px of the true outline, far less than the half pixel a fully covered
+//! or empty pixel keeps from it).
+
+use crate::reference::{Rng, dist_to_segment};
+use crate::shapes::{H, W, draw, fill, grid_point};
+use embedded_graphics_core::pixelcolor::{Gray8, GrayColor};
+use microraster::shape::{Cap, FillRule, Join, Polygon, Polyline, ShapeStyle};
+use tiny_skia::{Paint, PathBuilder, Pixmap, Stroke, Transform};
+
+const MASK_PX: f64 = 1.0 / 32.0 + 1.0 / 1024.0;
+
+fn path(pts: &[(f32, f32)], close: bool) -> Option<tiny_skia::Path> {
+    let mut pb = PathBuilder::new();
+    pb.move_to(pts[0].0, pts[0].1);
+    for p in &pts[1..] {
+        pb.line_to(p.0, p.1);
+    }
+    if close {
+        pb.close();
+    }
+    pb.finish()
+}
+
+fn paint(aa: bool) -> Paint<'static> {
+    let mut p = Paint::default();
+    p.set_color_rgba8(255, 255, 255, 255);
+    p.anti_alias = aa;
+    p
+}
+
+fn alphas(pm: &Pixmap) -> Vec<u8> {
+    pm.pixels().iter().map(|p| p.alpha()).collect()
+}
+
+/// Random polygons: star-shaped (concave, simple) or free (self-intersecting).
+fn random_polygon(rng: &mut Rng) -> Vec<(f32, f32)> {
+    let n = rng.range(3, 12) as usize;
+    let c = grid_point(rng, 8.0, 56.0, false);
+    let free = rng.chance(0.4);
+    let mut angles: Vec<f64> = (0..n).map(|_| rng.uniform(0.0, std::f64::consts::TAU)).collect();
+    angles.sort_by(f64::total_cmp);
+    angles
+        .iter()
+        .map(|&a| {
+            if free {
+                let ties = rng.chance(0.3);
+                grid_point(rng, -6.0, 70.0, ties)
+            } else {
+                let r = rng.uniform(1.0, 40.0);
+                let q = (f64::from(c.0) + r * a.cos(), f64::from(c.1) + r * a.sin());
+                (((q.0 * 16.0).round() / 16.0) as f32, ((q.1 * 16.0).round() / 16.0) as f32)
+            }
+        })
+        .collect()
+}
+
+fn near_edge(pts: &[(f32, f32)], p: (f64, f64)) -> bool {
+    let f = |q: (f32, f32)| (f64::from(q.0), f64::from(q.1));
+    (0..pts.len()).any(|i| dist_to_segment(p, f(pts[i]), f(pts[(i + 1) % pts.len()])) <= MASK_PX)
+}
+
+#[test]
+fn polygons_match_tiny_skia_away_from_edges() {
+    let mut rng = Rng::new(0xfa11);
+    let mut pm = Pixmap::new(W as u32, H as u32).unwrap();
+    let (mut compared, mut covered) = (0, 0);
+    for i in 0..2000 {
+        let pts = random_polygon(&mut rng);
+        let (ours_rule, skia_rule) = if i % 2 == 0 {
+            (FillRule::NonZero, tiny_skia::FillRule::Winding)
+        } else {
+            (FillRule::EvenOdd, tiny_skia::FillRule::EvenOdd)
+        };
+        let ours = draw(Polygon::new(&pts).unwrap(), fill().with_fill_rule(ours_rule));
+        pm.fill(tiny_skia::Color::TRANSPARENT);
+        if let Some(p) = path(&pts, true) {
+            pm.fill_path(&p, &paint(false), skia_rule, Transform::identity(), None);
+        }
+        let skia = alphas(&pm);
+        for (x, y) in (0..H).flat_map(|y| (0..W).map(move |x| (x, y))) {
+            if near_edge(&pts, (x as f64 + 0.5, y as f64 + 0.5)) {
+                continue;
+            }
+            let (a, b) = (ours.at(x, y), u32::from(skia[(y * W + x) as usize] != 0));
+            assert_eq!(a, b, "{pts:?} {ours_rule:?} pixel ({x}, {y})");
+            compared += 1;
+            covered += a as usize;
+        }
+    }
+    println!("polygons vs tiny-skia: {compared} pixels compared, {covered} covered");
+    assert!(compared > 5_000_000 && covered > 1_000_000);
+}
+
+#[test]
+fn thick_polylines_match_tiny_skia_away_from_the_outline() {
+    let mut rng = Rng::new(0x57e0);
+    let mut pm = Pixmap::new(W as u32, H as u32).unwrap();
+    let (mut compared, mut covered, mut hit_twice) = (0, 0, 0);
+    for i in 0..1500 {
+        let n = rng.range(2, 6) as usize;
+        let pts: Vec<(f32, f32)> = (0..n).map(|_| grid_point(&mut rng, 4.0, 60.0, false)).collect();
+        let width = rng.log_uniform(1.0, 12.0) as f32;
+        let join = [Join::Miter, Join::Round, Join::Bevel][i % 3];
+        let cap = [Cap::Butt, Cap::Round, Cap::Square][(i / 3) % 3];
+        let closed = i % 7 == 0;
+        let style = ShapeStyle::stroke(Gray8::WHITE, width).with_join(join).with_cap(cap);
+        let ours = if closed {
+            draw(Polygon::new(&pts).unwrap(), style)
+        } else {
+            draw(Polyline::new(&pts).unwrap(), style)
+        };
+        hit_twice += ours.hits.iter().filter(|&&h| h > 1).count();
+        let stroke = Stroke {
+            width,
+            miter_limit: 4.0,
+            line_cap: [tiny_skia::LineCap::Butt, tiny_skia::LineCap::Round, tiny_skia::LineCap::Square]
+                [(i / 3) % 3],
+            line_join: [tiny_skia::LineJoin::Miter, tiny_skia::LineJoin::Round, tiny_skia::LineJoin::Bevel]
+                [i % 3],
+            dash: None,
+        };
+        let Some(p) = path(&pts, closed) else { continue };
+        pm.fill(tiny_skia::Color::TRANSPARENT);
+        pm.stroke_path(&p, &paint(true), &stroke, Transform::identity(), None);
+        let soft = alphas(&pm);
+        pm.fill(tiny_skia::Color::TRANSPARENT);
+        pm.stroke_path(&p, &paint(false), &stroke, Transform::identity(), None);
+        let hard = alphas(&pm);
+        let partial = |x: i32, y: i32| {
+            (x - 1..=x + 1).any(|u| {
+                (y - 1..=y + 1).any(|v| {
+                    (0..W).contains(&u)
+                        && (0..H).contains(&v)
+                        && !matches!(soft[(v * W + u) as usize], 0 | 255)
+                })
+            })
+        };
+        for (x, y) in (0..H).flat_map(|y| (0..W).map(move |x| (x, y))) {
+            if partial(x, y) {
+                continue;
+            }
+            let (a, b) = (ours.at(x, y).min(1), u32::from(hard[(y * W + x) as usize] != 0));
+            assert_eq!(a, b, "{pts:?} w {width} {join:?} {cap:?} closed {closed} pixel ({x}, {y})");
+            compared += 1;
+            covered += a as usize;
+        }
+    }
+    println!("strokes vs tiny-skia: {compared} pixels compared, {covered} covered");
+    assert_eq!(hit_twice, 0, "a stroke is one fill: no pixel twice");
+    assert!(compared > 2_000_000 && covered > 100_000);
+}
+
+/// Area of the simple polygon `pts` inside the unit square at `(x, y)`
+/// (Sutherland–Hodgman against the four sides, then the shoelace formula).
+fn pixel_area(pts: &[(f64, f64)], x: f64, y: f64) -> f64 {
+    let mut poly = pts.to_vec();
+    let sides: [(usize, f64, bool); 4] =
+        [(0, x, true), (0, x + 1.0, false), (1, y, true), (1, y + 1.0, false)];
+    for (axis, v, keep_above) in sides {
+        let inside = |p: &(f64, f64)| {
+            let c = if axis == 0 { p.0 } else { p.1 };
+            if keep_above { c >= v } else { c <= v }
+        };
+        let mut out = Vec::new();
+        for i in 0..poly.len() {
+            let (a, b) = (poly[i], poly[(i + 1) % poly.len()]);
+            if inside(&a) {
+                out.push(a);
+            }
+            if inside(&a) != inside(&b) {
+                let (ca, cb) = if axis == 0 { (a.0, b.0) } else { (a.1, b.1) };
+                let t = (v - ca) / (cb - ca);
+                out.push((a.0 + t * (b.0 - a.0), a.1 + t * (b.1 - a.1)));
+            }
+        }
+        poly = out;
+        if poly.is_empty() {
+            return 0.0;
+        }
+    }
+    let s: f64 = (0..poly.len())
+        .map(|i| poly[i].0 * poly[(i + 1) % poly.len()].1 - poly[(i + 1) % poly.len()].0 * poly[i].1)
+        .sum();
+    (s / 2.0).abs()
+}
+
+#[test]
+fn antialiased_coverage_is_the_exact_area() {
+    let mut rng = Rng::new(0xa4ea);
+    let (mut pixels, mut partial, mut worst) = (0, 0, 0.0f64);
+    for _ in 0..1500 {
+        let pts = random_polygon(&mut rng);
+        // Simple polygons only: winding 0 or ±1, the exact-area domain.
+        if !is_simple(&pts) {
+            continue;
+        }
+        let ours = draw(Polygon::new(&pts).unwrap(), fill().antialiased());
+        let f: Vec<(f64, f64)> = pts.iter().map(|p| (f64::from(p.0), f64::from(p.1))).collect();
+        for (x, y) in (0..H).flat_map(|y| (0..W).map(move |x| (x, y))) {
+            let area = pixel_area(&f, x as f64, y as f64);
+            let a = f64::from(ours.alpha_at(x, y));
+            let err = (a - 255.0 * area).abs();
+            assert!(err <= 0.5 + 0.05, "{pts:?} ({x}, {y}): alpha {a} vs area {area}");
+            assert!(ours.at(x, y) <= 1, "pixel written twice");
+            worst = worst.max(err - (255.0 * area - (255.0 * area).round()).abs());
+            pixels += 1;
+            partial += (area > 0.0 && area < 1.0) as usize;
+        }
+    }
+    println!(
+        "AA vs exact area: {pixels} pixels, {partial} partial; worst error beyond 8-bit rounding {worst:.4} levels"
+    );
+    assert!(partial > 100_000, "{partial}");
+}
+
+/// True if no two non-adjacent edges of the closed polygon intersect.
+fn is_simple(p: &[(f32, f32)]) -> bool {
+    let n = p.len();
+    let f = |q: (f32, f32)| (f64::from(q.0), f64::from(q.1));
+    let cross =
+        |o: (f64, f64), a: (f64, f64), b: (f64, f64)| (a.0 - o.0) * (b.1 - o.1) - (a.1 - o.1) * (b.0 - o.0);
+    for i in 0..n {
+        for j in i + 1..n {
+            if j == i + 1 || (i == 0 && j == n - 1) {
+                continue;
+            }
+            let (a, b, c, d) = (f(p[i]), f(p[(i + 1) % n]), f(p[j]), f(p[(j + 1) % n]));
+            let (d1, d2, d3, d4) = (cross(a, b, c), cross(a, b, d), cross(c, d, a), cross(c, d, b));
+            if d1 * d2 <= 0.0 && d3 * d4 <= 0.0 {
+                return false;
+            }
+        }
+    }
+    true
+}
+
+#[test]
+fn antialiased_shapes_sharing_an_edge_sum_to_the_whole() {
+    let mut rng = Rng::new(0x5ea5);
+    let mut shared = 0;
+    for _ in 0..500 {
+        let q = [0, 1, 2, 3].map(|_| grid_point(&mut rng, 0.0, 64.0, false));
+        // Quad split along its diagonal q0–q2 (both halves, and the whole if convex).
+        let (a, b) = (
+            draw(Polygon::new(&[q[0], q[1], q[2]]).unwrap(), fill().antialiased()),
+            draw(Polygon::new(&[q[0], q[2], q[3]]).unwrap(), fill().antialiased()),
+        );
+        let whole = draw(Polygon::new(&q).unwrap(), fill().antialiased());
+        if !is_simple(&q) {
+            continue;
+        }
+        let cross = |o: (f32, f32), p: (f32, f32), r: (f32, f32)| {
+            (p.0 - o.0) * (r.1 - o.1) - (p.1 - o.1) * (r.0 - o.0)
+        };
+        if cross(q[0], q[2], q[1]) * cross(q[0], q[2], q[3]) >= 0.0 {
+            continue; // q1 and q3 on the same side: the halves overlap
+        }
+        for i in 0..(W * H) as usize {
+            let (sa, sb, sw) = (a.alpha[i] as i32, b.alpha[i] as i32, whole.alpha[i] as i32);
+            // Each is the area rounded to 8 bits (± 0.55): the sum within 1 level (plus slack).
+            assert!((sa + sb - sw).abs() <= 1, "{q:?} pixel {i}: {sa} + {sb} vs {sw}");
+            shared += (sa > 0 && sb > 0) as usize;
+        }
+    }
+    assert!(shared > 3000, "{shared}");
+}
+
+#[test]
+fn antialiased_gauge_segments_sum_to_one_ring() {
+    use microraster::shape::Arc;
+    let mut rng = Rng::new(0x6a06e);
+    let mut shared = 0;
+    for _ in 0..200 {
+        let c = grid_point(&mut rng, 20.0, 44.0, false);
+        let (r, w) = (rng.uniform(6.0, 20.0) as f32, rng.uniform(1.0, 6.0) as f32);
+        let (start, a) = (rng.uniform(-3.0, 3.0) as f32, rng.uniform(0.3, 2.5) as f32);
+        let b = rng.uniform(0.3, 2.5) as f32;
+        let ring = |s: f32, sweep: f32| {
+            draw(Arc::new(c, r, s, sweep).unwrap(), ShapeStyle::stroke(Gray8::WHITE, w).antialiased())
+        };
+        let (first, second) = (ring(start, a), ring(start + a, b));
+        // The shared cap line is the same snapped segment in both: along it the
+        // two coverages are the areas on either side, summing to one pixel.
+        let (s, co) = ((start + a) as f64).sin_cos();
+        for k in 0..=8 {
+            let rad = f64::from(r) + f64::from(w) * (k as f64 / 8.0 - 0.5) * 0.8;
+            let (px, py) = (f64::from(c.0) + rad * co, f64::from(c.1) + rad * s);
+            let (x, y) = (px.floor() as i32, py.floor() as i32);
+            if !(0..W).contains(&x) || !(0..H).contains(&y) {
+                continue;
+            }
+            let (fa, fb) = (first.alpha_at(x, y) as i32, second.alpha_at(x, y) as i32);
+            if fa > 0 && fb > 0 && fa + fb >= 250 {
+                shared += 1;
+            }
+            assert!(fa + fb <= 256, "({x}, {y}): {fa} + {fb} overlap");
+        }
+    }
+    assert!(shared > 300, "{shared}");
+}
+
+#[test]
+fn a_draw_target_without_background_gets_pixels_at_least_half_covered() {
+    use crate::framebuffer::Framebuffer;
+    use embedded_graphics_core::Drawable;
+    use microraster::shape::{Circle, Shape};
+    let style = ShapeStyle::fill(Gray8::WHITE).antialiased();
+    let disc = Circle::new((31.3, 20.6), 12.7).unwrap();
+    let mut fb = Framebuffer::new(W as u32, H as u32, Gray8::BLACK);
+    disc.styled(style).unwrap().draw(&mut fb).unwrap();
+    let exact = draw(disc, style);
+    let mut partial = 0;
+    for i in 0..(W * H) as usize {
+        let drawn = fb.pixels[i] == Gray8::WHITE;
+        assert_eq!(drawn, exact.alpha[i] >= 128, "pixel {i}: alpha {}", exact.alpha[i]);
+        assert!(fb.writes[i] <= 1);
+        partial += (exact.alpha[i] > 0 && exact.alpha[i] < 255) as usize;
+    }
+    assert!(partial > 50);
+}
