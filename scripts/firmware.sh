@@ -11,6 +11,11 @@
 #   bash scripts/firmware.sh table          the README's table: instructions per frame
 #                                           (QEMU -icount), static RAM, flash, stack,
 #                                           per scene and target (examples/fw_bench)
+#   bash scripts/firmware.sh table TARGET [ROWS]
+#                                           the same for one target (m4f or m0) and,
+#                                           with ROWS, only those configurations
+#                                           (comma-separated indices or scene names,
+#                                           e.g. `table m4f knot20k`: about two minutes)
 #   bash scripts/firmware.sh sweep          Cortex-M4F and Cortex-M0 instruction counts of the
 #                                           speed/accuracy report's configurations into
 #                                           docs/data/cortex-m.tsv (examples/fw_sweep); then
@@ -306,7 +311,13 @@ size_words() { # size_words ELF: "text data bss"
   "$tool" "$1" | awk 'NR == 2 { print $1, $2, $3 }'
 }
 
-table() {
+table() { # table [TARGET [ROWS]]
+  if [ $# -ge 1 ]; then
+    triple "$1" >/dev/null
+    TARGETS=("$1")
+  fi
+  # Read by examples/fw_bench: by the firmware when it is built, by the host when it runs.
+  export MICRORASTER_FW_BENCH=${2:-}
   setup
   bench_collect
   # The host side (dev profile, as `check` builds it): triangles, covered pixels,
@@ -404,7 +415,7 @@ case ${1:-} in
   setup) setup ;;
   build) build "${2:?build m4f|m0 [EXAMPLE]}" "${3:-firmware}" ;;
   build-st7789) build_st7789 ;;
-  table) table ;;
+  table) shift && table "$@" ;;
   sweep) sweep ;;
   run) run "${2:?run m4f|m0}" ;;
   check) check ;;
