@@ -379,12 +379,6 @@ impl TriangleSpans {
         TriangleSpans { path }
     }
 
-    /// True if there are certainly no spans (zero area, culled, or no pixel
-    /// centre of the bounding box inside the clip).
-    pub(crate) fn is_empty(&self) -> bool {
-        matches!(self.path, Path::Empty)
-    }
-
     /// True if this triangle took the `i32` fast path.
     pub fn is_fast_path(&self) -> bool {
         matches!(self.path, Path::Narrow(_) | Path::Small(_))

@@ -39,7 +39,7 @@
 use crate::attr::{COLOR_FRAC, Plane, PlaneFrame, PlaneSetup, channel};
 use crate::band::BandView;
 use crate::depth::{DepthFormat, DepthState, DepthTest};
-use crate::edge::{Cull, TriangleSpans};
+use crate::edge::{Cull, Span, TriangleSpans};
 use crate::primitive::{center_rows, reference_pixel};
 use crate::{Interpolate, SubPoint};
 
@@ -138,10 +138,12 @@ pub fn draw_triangle<C, F, M, const S: u32, const W: usize>(
     M: Interpolation,
 {
     use crate::blit::Blitter;
-    let spans = TriangleSpans::new(tri.v.map(|v| v.pos), color.clip(), Cull::None);
-    if spans.is_empty() {
-        return;
-    }
+    let mut spans = TriangleSpans::new(tri.v.map(|v| v.pos), color.clip(), Cull::None);
+    // A triangle that covers no pixel centre of the band (most of a dense
+    // mesh's 1-pixel triangles, and every triangle in the rows of the band
+    // it only grazes) costs no plane set-up: its first span is found first.
+    let Some(first) = spans.next() else { return };
+    let spans = core::iter::once(first).chain(spans);
     // Zero area (on the same snapped coordinates as coverage): no spans either.
     let Some(setup) = tri.plane_setup() else { return };
     let zplane = if F::ENABLED { setup.plane(tri.depth_values::<F>()) } else { Plane::default() };
@@ -157,7 +159,7 @@ pub fn draw_triangle<C, F, M, const S: u32, const W: usize>(
 /// ([`DepthState::LESS_WRITE`]) gets a loop without the per-pixel dispatch.
 #[inline(always)]
 fn draw_with_test<C, F, Sh, const W: usize>(
-    spans: TriangleSpans,
+    spans: impl Iterator<Item = Span>,
     color: &mut BandView<'_, C, W>,
     depth: &mut [[F::Storage; W]],
     state: DepthState,
@@ -210,7 +212,7 @@ impl DepthRule for LessWrite {
 /// The fragment loop of [`draw_triangle`], for one way of shading.
 #[inline(always)]
 fn draw_spans<C, F, Sh, R, const W: usize>(
-    spans: TriangleSpans,
+    spans: impl Iterator<Item = Span>,
     color: &mut BandView<'_, C, W>,
     depth: &mut [[F::Storage; W]],
     state: R,

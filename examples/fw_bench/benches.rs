@@ -382,7 +382,7 @@ fn knot_stage<T: Scalar, const W: usize, const H: usize>(
                     n += if coverage {
                         TriangleSpans::new(t.v.map(|v| v.pos), clip, Cull::None).map(|s| s.len).sum::<u32>()
                     } else {
-                        black_box(t).v[0].depth
+                        black_box(t).v[0].depth >> 16
                     };
                 },
             );
