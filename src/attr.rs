@@ -94,7 +94,9 @@ pub(crate) struct PlaneSetup {
 }
 
 impl PlaneSetup {
-    /// `None` for a zero-area triangle.
+    /// `None` for a zero-area triangle. Inlined: built in place (returning
+    /// its 100-odd bytes is a `memcpy` call on Cortex-M).
+    #[inline(always)]
     pub fn new(frame: &PlaneFrame, rx: i32, ry: i32) -> Option<PlaneSetup> {
         let [(x0, y0), (x1, y1), (x2, y2)] = frame.v;
         let det = (x1 - x0) * (y2 - y0) - (x2 - x0) * (y1 - y0);

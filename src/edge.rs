@@ -379,6 +379,18 @@ impl TriangleSpans {
         TriangleSpans { path }
     }
 
+    /// `f` on every remaining span, in one loop over local state (the
+    /// internal iteration of `fold`, on a borrowed iterator).
+    #[inline(always)]
+    pub(crate) fn for_each_ref(&self, mut f: impl FnMut(Span)) {
+        match &self.path {
+            Path::Empty => {}
+            Path::Small(s) => s.fold((), |(), span| f(span)),
+            Path::Narrow(w) => w.fold((), |(), span| f(span)),
+            Path::Wide(w) => w.fold((), |(), span| f(span)),
+        }
+    }
+
     /// True if this triangle took the `i32` fast path.
     pub fn is_fast_path(&self) -> bool {
         matches!(self.path, Path::Narrow(_) | Path::Small(_))
