@@ -135,17 +135,27 @@ impl PlaneSetup {
             let gy = self.div.div_round(ny << self.shift, neg);
             (gx, gy, self.div.div_round(nx * px + ny * py, neg))
         } else {
-            let w = |a: i64, b: i64| a as i128 * b as i128;
-            let nx = w(d1, ex.0) - w(d2, ex.1);
-            let ny = w(d2, ey.0) - w(d1, ey.1);
-            let det = self.det as i128;
-            let one = 1i128 << self.shift;
-            // Truncation to i64 wraps; evaluation is modular (module docs).
-            let gx = div_round_i128(nx * one, det) as i64;
-            let gy = div_round_i128(ny * one, det) as i64;
-            (gx, gy, div_round_i128(nx * px as i128 + ny * py as i128, det) as i64)
+            self.plane_wide(d1, d2)
         };
         Plane { base: values[0].wrapping_add(off), gx, gy, rx: self.rx, ry: self.ry }
+    }
+
+    /// `(gx, gy, offset)` of [`PlaneSetup::plane`] in `i128`, for values
+    /// whose products do not fit `i64`. Out of line: its 128-bit divisions
+    /// would otherwise make the common path spill its registers.
+    #[cold]
+    #[inline(never)]
+    fn plane_wide(&self, d1: i64, d2: i64) -> (i64, i64, i64) {
+        let (ex, ey, (px, py)) = (self.ex, self.ey, self.p);
+        let w = |a: i64, b: i64| a as i128 * b as i128;
+        let nx = w(d1, ex.0) - w(d2, ex.1);
+        let ny = w(d2, ey.0) - w(d1, ey.1);
+        let det = self.det as i128;
+        let one = 1i128 << self.shift;
+        // Truncation to i64 wraps; evaluation is modular (module docs).
+        let gx = div_round_i128(nx * one, det) as i64;
+        let gy = div_round_i128(ny * one, det) as i64;
+        (gx, gy, div_round_i128(nx * px as i128 + ny * py as i128, det) as i64)
     }
 }
 

@@ -133,14 +133,22 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
             if class == Class::Outside {
                 continue;
             }
-            let raw = [a, b, c].map(|j| src.position(j));
-            let [Some(ra), Some(rb), Some(rc)] = raw else { return Err(Error::InvalidMesh) };
-            let pos = [ra, rb, rc].map(Vec3::from_f32);
-            // Flat shading, or no normals: the face normal, as `Mesh::face_normal`.
-            let face_n = if flat { crate::mesh::face_normal_of([ra, rb, rc]) } else { None };
-            let light = |k: usize| {
+            // Positions and normals for lighting are read only for a triangle
+            // that needs colours: most rejected ones (back faces, half of a
+            // closed mesh) never get here.
+            let face_normal = || -> Result<Option<[f32; 3]>, Error> {
+                if !flat {
+                    return Ok(None);
+                }
+                let [Some(ra), Some(rb), Some(rc)] = idx.map(|j| src.position(j)) else {
+                    return Err(Error::InvalidMesh);
+                };
+                // Flat shading, or no normals: the face normal, as `Mesh::face_normal`.
+                Ok(crate::mesh::face_normal_of([ra, rb, rc]))
+            };
+            let light = |k: usize, face_n: Option<[f32; 3]>| -> Result<[T; 3], Error> {
                 let n = if flat { face_n } else { src.normal(idx[k]) };
-                ctx.color(pos[k], n)
+                Ok(ctx.color(position(idx[k])?, n))
             };
             if class == Class::Inside {
                 let mut at = [ScreenVertex::default(); 3];
@@ -165,15 +173,16 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
                 }
                 if flat {
                     // Lit with the face normal: per triangle, not per vertex.
-                    let c0 = channels(light(0), max);
+                    let face_n = face_normal()?;
+                    let c0 = channels(light(0, face_n)?, max);
                     for (k, v) in at.iter_mut().enumerate() {
-                        v.color = if flat_shade { c0 } else { channels(light(k), max) };
+                        v.color = if flat_shade { c0 } else { channels(light(k, face_n)?, max) };
                     }
                 } else {
                     for (k, &j) in idx.iter().enumerate() {
                         let e = &mut cache[j];
                         if e.state & Cached::<T, S>::LIT == 0 {
-                            let c = channels(light(k), max);
+                            let c = channels(light(k, None)?, max);
                             if let Some(s) = e.screen.as_mut() {
                                 s.color = c;
                             }
@@ -186,7 +195,12 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
                 stats.emitted += 1;
                 continue;
             }
-            let cs = if flat_shade { [light(0); 3] } else { [0, 1, 2].map(light) };
+            let face_n = face_normal()?;
+            let cs = if flat_shade {
+                [light(0, face_n)?; 3]
+            } else {
+                [light(0, face_n)?, light(1, face_n)?, light(2, face_n)?]
+            };
             let clip = idx.map(|j| cache[j].clip);
             let vs = [0, 1, 2].map(|k| ClipVertex { pos: clip[k], attr: cs[k] });
             self.clip_and_emit(vs, planes, stats, |mut at, attr, stats| {
