@@ -14,6 +14,12 @@
 #                                           its rows also go to docs/data/fw-bench.tsv
 #                                           for the report, the table into README.md
 #                                           (`check` prints the table only)
+#   bash scripts/firmware.sh table TARGET [ROWS]
+#                                           the same for one target (m4f or m0) and,
+#                                           with ROWS, only those configurations
+#                                           (comma-separated indices or scene names,
+#                                           e.g. `table m4f knot20k`: about two minutes);
+#                                           printed only, README and data untouched
 #   bash scripts/firmware.sh sweep          Cortex-M4F and Cortex-M0 instruction counts of the
 #                                           speed/accuracy report's configurations into
 #                                           docs/data/cortex-m.tsv (examples/fw_sweep); then
@@ -309,12 +315,22 @@ size_words() { # size_words ELF: "text data bss"
   "$tool" "$1" | awk 'NR == 2 { print $1, $2, $3 }'
 }
 
-table() { # table [TSV_OUT]: also write the rows as data for the report
+table() { # table [TARGET [ROWS]]; with write=1 and no arguments also the data and README
+  local out=()
+  if [ $# -ge 1 ]; then
+    triple "$1" >/dev/null
+    TARGETS=("$1")
+  elif [ -n "${write:-}" ]; then
+    mkdir -p "$ROOT/docs/data"
+    out=("$ROOT/docs/data/fw-bench.tsv" "$ROOT/README.md")
+  fi
+  # Read by examples/fw_bench: by the firmware when it is built, by the host when it runs.
+  export MICRORASTER_FW_BENCH=${2:-}
   setup
   bench_collect
   # The host side (dev profile, as `check` builds it): triangles, covered pixels,
   # frame CRCs, and the table.
-  cargo run --quiet --example fw_bench -- table "$FW_DIR/table-input.txt" "$@"
+  cargo run --quiet --example fw_bench -- table "$FW_DIR/table-input.txt" "${out[@]}"
 }
 
 # The ST7789 display example is a package of its own (examples/st7789/, see
@@ -407,7 +423,7 @@ case ${1:-} in
   setup) setup ;;
   build) build "${2:?build m4f|m0 [EXAMPLE]}" "${3:-firmware}" ;;
   build-st7789) build_st7789 ;;
-  table) mkdir -p "$ROOT/docs/data" && table "$ROOT/docs/data/fw-bench.tsv" "$ROOT/README.md" ;;
+  table) shift && write=1 table "$@" ;;
   sweep) sweep ;;
   run) run "${2:?run m4f|m0}" ;;
   check) check ;;

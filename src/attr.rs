@@ -31,6 +31,8 @@
 //! determinant, and in `i128` otherwise; both give the same correctly rounded
 //! values.
 
+use core::num::NonZeroU32;
+
 /// Vertex positions in internal units (`1/2^(S+1)` px).
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct PlaneFrame {
@@ -92,7 +94,9 @@ pub(crate) struct PlaneSetup {
 }
 
 impl PlaneSetup {
-    /// `None` for a zero-area triangle.
+    /// `None` for a zero-area triangle. Inlined: built in place (returning
+    /// its 100-odd bytes is a `memcpy` call on Cortex-M).
+    #[inline(always)]
     pub fn new(frame: &PlaneFrame, rx: i32, ry: i32) -> Option<PlaneSetup> {
         let [(x0, y0), (x1, y1), (x2, y2)] = frame.v;
         let det = (x1 - x0) * (y2 - y0) - (x2 - x0) * (y1 - y0);
@@ -131,17 +135,27 @@ impl PlaneSetup {
             let gy = self.div.div_round(ny << self.shift, neg);
             (gx, gy, self.div.div_round(nx * px + ny * py, neg))
         } else {
-            let w = |a: i64, b: i64| a as i128 * b as i128;
-            let nx = w(d1, ex.0) - w(d2, ex.1);
-            let ny = w(d2, ey.0) - w(d1, ey.1);
-            let det = self.det as i128;
-            let one = 1i128 << self.shift;
-            // Truncation to i64 wraps; evaluation is modular (module docs).
-            let gx = div_round_i128(nx * one, det) as i64;
-            let gy = div_round_i128(ny * one, det) as i64;
-            (gx, gy, div_round_i128(nx * px as i128 + ny * py as i128, det) as i64)
+            self.plane_wide(d1, d2)
         };
         Plane { base: values[0].wrapping_add(off), gx, gy, rx: self.rx, ry: self.ry }
+    }
+
+    /// `(gx, gy, offset)` of [`PlaneSetup::plane`] in `i128`, for values
+    /// whose products do not fit `i64`. Out of line: its 128-bit divisions
+    /// would otherwise make the common path spill its registers.
+    #[cold]
+    #[inline(never)]
+    fn plane_wide(&self, d1: i64, d2: i64) -> (i64, i64, i64) {
+        let (ex, ey, (px, py)) = (self.ex, self.ey, self.p);
+        let w = |a: i64, b: i64| a as i128 * b as i128;
+        let nx = w(d1, ex.0) - w(d2, ex.1);
+        let ny = w(d2, ey.0) - w(d1, ey.1);
+        let det = self.det as i128;
+        let one = 1i128 << self.shift;
+        // Truncation to i64 wraps; evaluation is modular (module docs).
+        let gx = div_round_i128(nx * one, det) as i64;
+        let gy = div_round_i128(ny * one, det) as i64;
+        (gx, gy, div_round_i128(nx * px as i128 + ny * py as i128, det) as i64)
     }
 }
 
@@ -149,20 +163,47 @@ impl PlaneSetup {
 /// one library division at set-up, then multiplications. For `n < 2^64`,
 /// `q̂ = ⌊n·r/2^64⌋` satisfies `n/d − 3 < q̂ ≤ n/d` (as
 /// `r > (2^64 − 1)/d − 1`), so at most two corrections give `⌊n/d⌋` exactly.
+///
+/// On ARMv7-M a divisor below [`SHORT_LIMIT`] (every triangle of a few
+/// pixels) takes no reciprocal: there the 64-bit division that makes it is
+/// a bit-by-bit library loop of about 300 instructions, while the 32-bit
+/// hardware divider gives `⌊n/d⌋` in three steps ([`div_short`]).
 #[derive(Debug, Clone, Copy)]
 struct Divisor {
     d: u64,
     r: u64,
+    /// `d` when it is divided by [`div_short`].
+    short: Option<NonZeroU32>,
 }
 
+/// Divisors below this divide by 16-bit digits ([`div_short`]).
+const SHORT_LIMIT: u64 = 1 << 16;
+
+/// Whether [`Divisor`] divides short divisors by [`div_short`]: where a
+/// 32-bit division is one instruction and a 64-bit one a library loop
+/// (ARMv7-M; the host divides 64 bits in hardware, the Cortex-M0 has no
+/// divider at all).
+const SHORT_DIV: bool = cfg!(all(target_arch = "arm", target_feature = "thumb2"));
+
 impl Divisor {
+    #[inline]
     fn new(d: u64) -> Divisor {
-        Divisor { d, r: u64::MAX / d }
+        Self::with_short(d, SHORT_DIV)
+    }
+
+    /// [`Divisor::new`], with [`div_short`] for short divisors if `allow`.
+    #[inline]
+    fn with_short(d: u64, allow: bool) -> Divisor {
+        let short = NonZeroU32::new(d as u32).filter(|_| allow && d < SHORT_LIMIT);
+        Divisor { d, r: if short.is_some() { 0 } else { u64::MAX / d }, short }
     }
 
     /// `⌊n/d⌋`.
     #[inline]
     fn div_floor(&self, n: u64) -> u64 {
+        if let Some(d) = self.short {
+            return div_short(n, d);
+        }
         let mut q = mul_hi(n, self.r);
         // q ≤ n/d, so q·d ≤ n: no overflow, and the remainder is below 3d.
         let mut rem = n - q * self.d;
@@ -181,6 +222,22 @@ impl Divisor {
         let q = self.div_floor(n.unsigned_abs() + self.d / 2) as i64;
         if (n < 0) != neg { -q } else { q }
     }
+}
+
+/// `⌊n/d⌋` for `d < 2^16` by schoolbook division in 32-bit words: the high
+/// word, then two 16-bit digits, each remainder below `d` so that
+/// `remainder·2^16 + digit` fits a `u32` and each digit's quotient is below
+/// 2^16. Three 32-bit divisions (one instruction each on ARMv7-M).
+#[inline]
+fn div_short(n: u64, d: NonZeroU32) -> u64 {
+    let (hi, lo) = ((n >> 32) as u32, n as u32);
+    let dv = d.get();
+    let q2 = hi / d;
+    let t = (hi - q2 * dv) << 16 | lo >> 16;
+    let q1 = t / d;
+    let t = (t - q1 * dv) << 16 | (lo & 0xFFFF);
+    let q0 = t / d;
+    (q2 as u64) << 32 | (q1 << 16 | q0) as u64
 }
 
 /// Bit length of `v`.
@@ -284,6 +341,37 @@ mod tests {
             let off = div_round_i128(nx * px + ny * py, det) as i64;
             assert_eq!(p.base, vals[0].wrapping_add(off), "{frame:?} {vals:?}");
         }
+    }
+
+    /// The short-divisor path (ARMv7-M) gives the reciprocal path's
+    /// quotients, checked here on every target.
+    #[test]
+    fn short_division_is_exact() {
+        let mut seed = 0x9E37_79B9_7F4A_7C15u64;
+        let mut next = || {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            seed
+        };
+        let mut short = 0;
+        for i in 0..400_000u32 {
+            let d = (next() >> (47 + i % 17)).max(1);
+            let n = (next() >> (1 + i % 63)) as i64 * if i % 3 == 0 { -1 } else { 1 };
+            let (a, b) = (Divisor::with_short(d, true), Divisor::with_short(d, false));
+            short += a.short.is_some() as u32;
+            assert!(b.short.is_none());
+            assert_eq!(a.div_floor(n.unsigned_abs()), n.unsigned_abs() / d, "{n} / {d}");
+            for neg in [false, true] {
+                let want = div_round_i128(n as i128, if neg { -(d as i128) } else { d as i128 }) as i64;
+                assert_eq!(a.div_round(n, neg), want, "{n} / {d}");
+                assert_eq!(b.div_round(n, neg), want, "{n} / {d}");
+            }
+        }
+        for (n, d) in [(u64::MAX >> 1, 1), (u64::MAX >> 1, 0xFFFF), (0xFFFF_FFFF, 0xFFFF), (0, 1)] {
+            assert_eq!(div_short(n, NonZeroU32::new(d).unwrap()), n / d as u64);
+        }
+        assert!(short > 100_000, "{short}");
     }
 
     #[test]

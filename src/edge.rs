@@ -379,10 +379,16 @@ impl TriangleSpans {
         TriangleSpans { path }
     }
 
-    /// True if there are certainly no spans (zero area, culled, or no pixel
-    /// centre of the bounding box inside the clip).
-    pub(crate) fn is_empty(&self) -> bool {
-        matches!(self.path, Path::Empty)
+    /// `f` on every remaining span, in one loop over local state (the
+    /// internal iteration of `fold`, on a borrowed iterator).
+    #[inline(always)]
+    pub(crate) fn for_each_ref(&self, mut f: impl FnMut(Span)) {
+        match &self.path {
+            Path::Empty => {}
+            Path::Small(s) => s.fold((), |(), span| f(span)),
+            Path::Narrow(w) => w.fold((), |(), span| f(span)),
+            Path::Wide(w) => w.fold((), |(), span| f(span)),
+        }
     }
 
     /// True if this triangle took the `i32` fast path.
@@ -394,7 +400,9 @@ impl TriangleSpans {
 impl Iterator for TriangleSpans {
     type Item = Span;
 
-    #[inline]
+    // Always inlined: the 3D fragment loop takes each triangle's first span
+    // with it, and a call per triangle showed in its cost.
+    #[inline(always)]
     fn next(&mut self) -> Option<Span> {
         match &mut self.path {
             Path::Empty => None,

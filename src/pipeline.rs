@@ -408,18 +408,30 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     /// One vertex of [`Pipeline::snap_positions`].
     /// `w` is prepared once for the four quotients ([`Scalar::divisor`]:
     /// for [`Fx`](crate::math::Fx) one reciprocal, each quotient still exact).
-    fn snap_vertex(&self, [x, y, z, w]: [T; 4]) -> Option<ScreenVertex<S>> {
-        let w = w.divisor()?;
+    fn snap_vertex(&self, c: [T; 4]) -> Option<ScreenVertex<S>> {
+        let w = c[3].divisor()?;
+        let (depth, inv_w) = self.snap_depth(c, w)?;
+        Some(ScreenVertex { pos: self.snap_xy(c, w)?, depth, inv_w, color: [0; 3] })
+    }
+
+    /// The snapped position of [`Pipeline::snap_vertex`] (all that culling
+    /// needs).
+    #[inline]
+    fn snap_xy(&self, [x, y, _, _]: [T; 4], w: T::Divisor) -> Option<SubPoint<S>> {
         let px = self.ndc_to_sub(x, w, self.size.0, self.origin.0, false)?;
         let py = self.ndc_to_sub(y, w, self.size.1, self.origin.1, true)?;
-        Some(ScreenVertex {
-            pos: SubPoint::new(i32::try_from(px).ok()?, i32::try_from(py).ok()?).ok()?,
-            depth: z.div_scaled_by(w, u32::MAX as i64)?.clamp(0, u32::MAX as i64) as u32,
+        SubPoint::new(i32::try_from(px).ok()?, i32::try_from(py).ok()?).ok()
+    }
+
+    /// The depth and `1/w` of [`Pipeline::snap_vertex`].
+    #[inline]
+    fn snap_depth(&self, [_, _, z, _]: [T; 4], w: T::Divisor) -> Option<(u32, u32)> {
+        Some((
+            z.div_scaled_by(w, u32::MAX as i64)?.clamp(0, u32::MAX as i64) as u32,
             // Only ratios of 1/w matter; a vertex nearer than w_ref/4 (which
             // the w_ref contract excludes) saturates rather than vanishing.
-            inv_w: self.w_ref.div_scaled_by(w, 1 << 30).unwrap_or(i64::MAX).clamp(1, u32::MAX as i64) as u32,
-            color: [0; 3],
-        })
+            self.w_ref.div_scaled_by(w, 1 << 30).unwrap_or(i64::MAX).clamp(1, u32::MAX as i64) as u32,
+        ))
     }
 
     /// The snapped-area tests: zero area and back faces are dropped (and

@@ -39,7 +39,7 @@
 use crate::attr::{COLOR_FRAC, Plane, PlaneFrame, PlaneSetup, channel};
 use crate::band::BandView;
 use crate::depth::{DepthFormat, DepthState, DepthTest};
-use crate::edge::{Cull, TriangleSpans};
+use crate::edge::{Cull, Span, TriangleSpans};
 use crate::primitive::{center_rows, reference_pixel};
 use crate::{Interpolate, SubPoint};
 
@@ -78,6 +78,7 @@ pub struct ScreenTriangle<const S: u32> {
 impl<const S: u32> ScreenTriangle<S> {
     /// The plane set-up shared by all attributes of the triangle, referenced
     /// at a band-independent pixel (see `attr`); `None` for zero area.
+    #[inline(always)]
     pub(crate) fn plane_setup(&self) -> Option<PlaneSetup> {
         let frame =
             PlaneFrame { v: self.v.map(|v| (2 * v.pos.x() as i64, 2 * v.pos.y() as i64)), shift: S + 1 };
@@ -138,10 +139,12 @@ pub fn draw_triangle<C, F, M, const S: u32, const W: usize>(
     M: Interpolation,
 {
     use crate::blit::Blitter;
-    let spans = TriangleSpans::new(tri.v.map(|v| v.pos), color.clip(), Cull::None);
-    if spans.is_empty() {
-        return;
-    }
+    let mut spans = TriangleSpans::new(tri.v.map(|v| v.pos), color.clip(), Cull::None);
+    // A triangle that covers no pixel centre of the band (most of a dense
+    // mesh's 1-pixel triangles, and every triangle in the rows of the band
+    // it only grazes) costs no plane set-up: its first span is found first.
+    let Some(first) = spans.next() else { return };
+    let spans = (first, &spans);
     // Zero area (on the same snapped coordinates as coverage): no spans either.
     let Some(setup) = tri.plane_setup() else { return };
     let zplane = if F::ENABLED { setup.plane(tri.depth_values::<F>()) } else { Plane::default() };
@@ -157,7 +160,7 @@ pub fn draw_triangle<C, F, M, const S: u32, const W: usize>(
 /// ([`DepthState::LESS_WRITE`]) gets a loop without the per-pixel dispatch.
 #[inline(always)]
 fn draw_with_test<C, F, Sh, const W: usize>(
-    spans: TriangleSpans,
+    spans: (Span, &TriangleSpans),
     color: &mut BandView<'_, C, W>,
     depth: &mut [[F::Storage; W]],
     state: DepthState,
@@ -210,7 +213,7 @@ impl DepthRule for LessWrite {
 /// The fragment loop of [`draw_triangle`], for one way of shading.
 #[inline(always)]
 fn draw_spans<C, F, Sh, R, const W: usize>(
-    spans: TriangleSpans,
+    spans: (Span, &TriangleSpans),
     color: &mut BandView<'_, C, W>,
     depth: &mut [[F::Storage; W]],
     state: R,
@@ -223,9 +226,10 @@ fn draw_spans<C, F, Sh, R, const W: usize>(
     R: DepthRule,
 {
     let y0 = color.y0();
-    // Internal iteration: one loop per coverage path (`TriangleSpans::fold`),
-    // each with the fragment loop inlined, instead of a dispatch per span.
-    spans.for_each(|span| {
+    // Internal iteration: one loop per coverage path (`for_each_ref`), each
+    // with the fragment loop inlined, instead of a dispatch per span; the
+    // first span (found before the set-up) on its own.
+    let mut each = |span: Span| {
         let (x0, len) = (span.x as usize, span.len as usize);
         let Some(cspan) = color.row_mut(span.y).and_then(|r| r.get_mut(x0..x0 + len)) else { return };
         let mut sh = shade.start(span.x, span.y);
@@ -250,7 +254,10 @@ fn draw_spans<C, F, Sh, R, const W: usize>(
                 sh.step();
             }
         }
-    });
+    };
+    let (first, rest) = spans;
+    each(first);
+    rest.for_each_ref(each);
 }
 
 /// The depth plane along a span. Formats of at most 16 bits step in `u32`:
@@ -376,6 +383,8 @@ struct GouraudSpan<C, M> {
 }
 
 impl<C: Interpolate, M: Interpolation> Gouraud<C, M> {
+    // Inlined: built in place (returning its 160 bytes is a copy).
+    #[inline(always)]
     fn new<const S: u32>(tri: &ScreenTriangle<S>, setup: &PlaneSetup) -> Self {
         let max = C::CHANNEL_MAX;
         let mut planes = [Plane::default(); 4];

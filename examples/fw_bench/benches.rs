@@ -92,6 +92,24 @@ pub enum Work {
     /// band, no bins. Its triangle count is the mesh's (instructions per
     /// mesh triangle).
     Meshlets(Vertex, Interp),
+    /// One stage of [`Work::Meshlets`] (affine) alone, for the cost
+    /// breakdown of docs/setup_cost.md; not in the default table (select
+    /// it by its scene, `knot20k-stages`).
+    KnotStage(Vertex, Stage),
+}
+
+/// How far [`Work::KnotStage`] goes into each band's triangles.
+#[derive(Clone, Copy, Debug)]
+pub enum Stage {
+    /// The band loop and the meshlet vertex stage
+    /// ([`Pipeline::meshlet_triangles`]); triangles are only counted.
+    Vertex,
+    /// [`Stage::Vertex`] and each triangle's coverage in the band
+    /// ([`TriangleSpans`]), covered pixels counted.
+    Coverage,
+    /// The whole frame with a depth test that never passes: coverage,
+    /// plane set-up and the fragment loop, no pixel written.
+    NoWrites,
 }
 
 /// One timed configuration.
@@ -101,10 +119,30 @@ pub struct Bench {
     pub scene: &'static str,
     /// What runs.
     pub work: Work,
+    /// Run only when selected ([`SELECT_VAR`]), not in the default table.
+    pub on_request: bool,
 }
 
 const fn bench(scene: &'static str, work: Work) -> Bench {
-    Bench { scene, work }
+    Bench { scene, work, on_request: false }
+}
+
+/// A configuration run only when selected (the stage breakdown).
+const fn probe(scene: &'static str, work: Work) -> Bench {
+    Bench { scene, work, on_request: true }
+}
+
+/// The environment variable that selects configurations: a comma-separated
+/// list of indices and scene names (`8,knot20k`); unset or empty: all. The
+/// firmware reads it when it is built, the host when it runs
+/// (`bash scripts/firmware.sh table m4f knot20k` sets it for both).
+pub const SELECT_VAR: &str = "MICRORASTER_FW_BENCH";
+
+/// Whether configuration `index` of a list is selected by `select` (see
+/// [`SELECT_VAR`]).
+pub fn selected(select: Option<&str>, index: usize, bench: &Bench) -> bool {
+    let Some(select) = select.filter(|s| !s.trim().is_empty()) else { return !bench.on_request };
+    select.split(',').map(str::trim).any(|w| w == bench.scene || w.parse() == Ok(index))
 }
 
 use Interp::{Affine as Aff, Perspective as Persp};
@@ -123,6 +161,13 @@ pub const M4F: &[Bench] = &[
     bench("knot20k", Work::Meshlets(F32, Aff)),
     bench("knot20k", Work::Meshlets(F32, Persp)),
     bench("knot20k", Work::Meshlets(Fix, Aff)),
+    // The stage breakdown (docs/setup_cost.md): `table m4f knot20k,knot20k-stages`.
+    probe("knot20k-stages", Work::KnotStage(F32, Stage::Vertex)),
+    probe("knot20k-stages", Work::KnotStage(F32, Stage::Coverage)),
+    probe("knot20k-stages", Work::KnotStage(F32, Stage::NoWrites)),
+    probe("knot20k-stages", Work::KnotStage(Fix, Stage::Vertex)),
+    probe("knot20k-stages", Work::KnotStage(Fix, Stage::Coverage)),
+    probe("knot20k-stages", Work::KnotStage(Fix, Stage::NoWrites)),
 ];
 
 /// Cortex-M0 (160 × 128, 4-row bands, one band's bins): one line per configuration.
@@ -162,6 +207,12 @@ impl Work {
             Work::Meshlets(F32, Persp) => "meshlets per band, f32, persp.-correct",
             Work::Meshlets(Fix, Aff) => "meshlets per band, Fx, affine",
             Work::Meshlets(Fix, Persp) => "meshlets per band, Fx, persp.-correct",
+            Work::KnotStage(F32, Stage::Vertex) => "f32 affine: band loop + vertex stage only",
+            Work::KnotStage(F32, Stage::Coverage) => "f32 affine: + coverage, no planes",
+            Work::KnotStage(F32, Stage::NoWrites) => "f32 affine: all but pixel writes",
+            Work::KnotStage(Fix, Stage::Vertex) => "Fx affine: band loop + vertex stage only",
+            Work::KnotStage(Fix, Stage::Coverage) => "Fx affine: + coverage, no planes",
+            Work::KnotStage(Fix, Stage::NoWrites) => "Fx affine: all but pixel writes",
         }
     }
 
@@ -173,14 +224,17 @@ impl Work {
             Work::Vertex3d(_) | Work::VertexPerBand3d(_) => "BINS",
             Work::Vertex3dCached => "BINS,CACHE",
             Work::Frame3d(..) | Work::PerBand3d(..) => "BAND,DEPTH,BINS",
-            Work::Meshlets(F32, _) => "BAND,DEPTH,CLUSTER",
-            Work::Meshlets(Fix, _) => "BAND,DEPTH,CLUSTER_FX",
+            Work::Meshlets(F32, _) | Work::KnotStage(F32, _) => "BAND,DEPTH,CLUSTER",
+            Work::Meshlets(Fix, _) | Work::KnotStage(Fix, _) => "BAND,DEPTH,CLUSTER_FX",
         }
     }
 
     /// Whether it sends pixels (a frame CRC and covered pixels mean something).
     pub fn draws(&self) -> bool {
-        !matches!(self, Work::Vertex3d(_) | Work::Vertex3dCached | Work::VertexPerBand3d(_))
+        !matches!(
+            self,
+            Work::Vertex3d(_) | Work::Vertex3dCached | Work::VertexPerBand3d(_) | Work::KnotStage(..)
+        )
     }
 }
 
@@ -287,9 +341,62 @@ pub fn frame<const W: usize, const H: usize, const N: usize, const P: usize>(
             (Fix, Aff, c) => meshlets::<Fx, _, W, H>(r, b.band, b.depth, c.1, Affine, sink),
             (Fix, Persp, c) => meshlets::<Fx, _, W, H>(r, b.band, b.depth, c.1, PerspectiveCorrect, sink),
         },
+        #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+        Work::KnotStage(t, stage) => match (t, b.cluster.as_mut().ok_or(Error::BufferTooSmall)?) {
+            (F32, c) => knot_stage::<f32, W, H>(r, b.band, b.depth, c.0, stage, sink),
+            (Fix, c) => knot_stage::<Fx, W, H>(r, b.band, b.depth, c.1, stage, sink),
+        },
         #[cfg(not(any(not(target_os = "none"), target_abi = "eabihf")))]
-        Work::Meshlets(..) => Err(Error::InvalidParameter),
+        Work::Meshlets(..) | Work::KnotStage(..) => Err(Error::InvalidParameter),
     }
+}
+
+/// [`Work::KnotStage`]: the knot's frame up to `stage`.
+#[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+fn knot_stage<T: Scalar, const W: usize, const H: usize>(
+    r: Renderer<Rgb565>,
+    band: &mut Band<Rgb565, W, H>,
+    depth: &mut DepthBand<Depth16, W, H>,
+    cache: &mut ClusterCache<T, S>,
+    stage: Stage,
+    sink: &mut Sink,
+) -> Result<(), Error> {
+    use microraster::depth::{DepthState, DepthTest};
+    use microraster::{ClipRect, edge::TriangleSpans};
+    let pipeline = Scene3d::pipeline::<T, S>(W as u32, r.height())?;
+    let model = knot_model::<T>();
+    let never = DepthState::new(DepthTest::Never, false);
+    let coverage = matches!(stage, Stage::Coverage);
+    let mut result = Ok(());
+    match stage {
+        Stage::Vertex | Stage::Coverage => r.render_with(band, sink, |_, y0, y1| {
+            let clip = ClipRect::new(0, y0, W as i32, y1);
+            let mut n = 0u32;
+            let s = pipeline.meshlet_triangles(
+                &knot_mesh::VALID_KNOT,
+                &model,
+                KNOT_COLOR,
+                cache,
+                (y0, y1 - 1),
+                |t| {
+                    n += if coverage {
+                        TriangleSpans::new(t.v.map(|v| v.pos), clip, Cull::None).map(|s| s.len).sum::<u32>()
+                    } else {
+                        black_box(t).v[0].depth >> 16
+                    };
+                },
+            );
+            black_box(n);
+            if result.is_ok() {
+                result = s.map(|_| ());
+            }
+        }),
+        Stage::NoWrites => r.render_3d_direct(band, depth, never, Affine, sink, |band| {
+            pipeline.draw_meshlets(&knot_mesh::VALID_KNOT, &model, KNOT_COLOR, cache, band).map(|_| ())
+        }),
+    }
+    .map_err(input)?;
+    result
 }
 
 /// The knot through the meshlet stage, drawn straight into each band.
@@ -404,9 +511,9 @@ pub fn primitives<const W: usize, const H: usize, const N: usize, const P: usize
     match work {
         Work::Clear => Ok((0, 0)),
         #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
-        Work::Meshlets(..) => Ok((knot_mesh::KNOT.triangles.len() as u32, 0)),
+        Work::Meshlets(..) | Work::KnotStage(..) => Ok((knot_mesh::KNOT.triangles.len() as u32, 0)),
         #[cfg(not(any(not(target_os = "none"), target_abi = "eabihf")))]
-        Work::Meshlets(..) => Err(Error::InvalidParameter),
+        Work::Meshlets(..) | Work::KnotStage(..) => Err(Error::InvalidParameter),
         Work::Frame2d(scene) | Work::Streamed2d(scene) => count_2d(scene),
         Work::Vertex3dCached => count_3d(F32),
         Work::Vertex3d(t) | Work::VertexPerBand3d(t) | Work::Frame3d(t, _) | Work::PerBand3d(t, _) => {

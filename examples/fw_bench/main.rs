@@ -102,7 +102,8 @@ mod firmware {
         mut b: Buffers<'_, W, H, N, P>,
     ) -> Result<(), Fail> {
         clock::calibrate()?;
-        for (i, bench) in list.iter().enumerate() {
+        let select = option_env!("MICRORASTER_FW_BENCH");
+        for (i, bench) in list.iter().enumerate().filter(|(i, b)| benches::selected(select, *i, b)) {
             benches::prepare(bench.work, height, &mut b)?;
             let mut sink = Sink::new(W as u32, height, Mode::Consume);
             stack::paint();

@@ -72,7 +72,10 @@ fn records<const W: usize, const H: usize, const N: usize, const P: usize>(
         cluster: Some((&mut cluster, &mut cluster_fx)),
     };
     let mut out = Vec::new();
-    for (index, &bench) in list.iter().enumerate() {
+    let select = std::env::var(benches::SELECT_VAR).ok();
+    for (index, &bench) in
+        list.iter().enumerate().filter(|(i, b)| benches::selected(select.as_deref(), *i, b))
+    {
         let fail =
             |e: Error| format!("configuration {index} ({}, {}): {e}", bench.scene, bench.work.describe());
         benches::prepare(bench.work, height, &mut b).map_err(fail)?;
@@ -222,8 +225,13 @@ pub fn table(input: &str) -> Result<(String, String), String> {
     )
     .unwrap();
     writeln!(w, "|---|---|---|--:|--:|--:|--:|--:|--:|--:|").unwrap();
-    for (t, label) in targets {
-        let run = runs.get(t).ok_or_else(|| format!("no run for {t}"))?;
+    // Only the targets that ran (`scripts/firmware.sh table m4f` runs one).
+    let targets: Vec<_> = targets.into_iter().filter(|(t, _)| runs.contains_key(*t)).collect();
+    if targets.is_empty() {
+        return Err("no target run in the input".to_string());
+    }
+    for &(t, label) in &targets {
+        let run = &runs[t];
         let host = host(t)?;
         if run.benches.len() != host.len() {
             return Err(format!(
@@ -292,7 +300,7 @@ pub fn table(input: &str) -> Result<(String, String), String> {
     writeln!(w, "| target | ELF | flash: text + data (B) | static RAM: data + bss (B) | buffers (B) |")
         .unwrap();
     writeln!(w, "|---|---|--:|--:|---|").unwrap();
-    for (t, label) in targets {
+    for &(t, label) in &targets {
         let run = &runs[t];
         let buffers =
             run.symbols.iter().map(|(k, v)| format!("{k} {}", group(*v))).collect::<Vec<_>>().join(", ");
@@ -302,7 +310,7 @@ pub fn table(input: &str) -> Result<(String, String), String> {
         }
     }
     writeln!(w).unwrap();
-    for (t, label) in targets {
+    for &(t, label) in &targets {
         let run = &runs[t];
         let machine = run.facts.get("machine").map_or("?", String::as_str);
         for n in &run.notes {

@@ -91,12 +91,51 @@ fn div_2by1(u: u64, d: u32, v: u32) -> u32 {
     q1
 }
 
+/// True on ARMv7-M (Cortex-M3/M4/M7): a 32-bit division is one
+/// instruction, a 64-bit one a bit-by-bit library loop (about 300).
+const ARMV7M: bool = cfg!(all(target_arch = "arm", target_feature = "thumb2"));
+
 /// `⌊(2^64 − 1)/d⌋ − 2^32` for `d ≥ 2^31` (in `[0, 2^32)`): the quotient
-/// of `(2^32 − 1 − d, 2^32 − 1)` by `d`. One 64-bit division where there is
-/// a 32×32→64 multiply (its library call is short there), 32 restoring
-/// steps on the Cortex-M0.
+/// of `(2^32 − 1 − d, 2^32 − 1)` by `d`. On ARMv7-M by 16-bit halves with
+/// the hardware divider, 32 restoring steps on the Cortex-M0, one 64-bit
+/// division elsewhere.
 fn reciprocal(d: u32) -> u32 {
-    if ARMV6M { reciprocal_by_steps(d) } else { (u64::MAX / d as u64 - (1 << 32)) as u32 }
+    if ARMV6M {
+        reciprocal_by_steps(d)
+    } else if ARMV7M {
+        reciprocal_by_halves(d)
+    } else {
+        (u64::MAX / d as u64 - (1 << 32)) as u32
+    }
+}
+
+/// [`reciprocal`] as two 16-bit quotient digits, each estimated with a
+/// 32-bit division by the divisor's high half and corrected at most twice
+/// (Knuth's algorithm D for two digits, as `divlu` in Warren's *Hacker's
+/// Delight*, §9-4). Tested on every target.
+fn reciprocal_by_halves(d: u32) -> u32 {
+    const B: u32 = 1 << 16;
+    let (dh, dl) = (d >> 16, d & 0xFFFF); // dh ≥ 2^15: d is normalised
+    // The dividend (u1, u0) = (2^32 − 1 − d, 2^32 − 1), u1 < d; digits of u0.
+    let (u1, un1, un0) = (!d, 0xFFFF, 0xFFFF);
+    // One digit of (r, digit) / d for r < d: the estimate r / dh is at most
+    // two too large; while it is (checked on the next divisor digit), lower it.
+    let digit = |r: u32, un: u32| {
+        let (mut q, mut rhat) = (r / dh, r % dh);
+        // rhat < B whenever the product test runs, so nothing overflows.
+        while q >= B || q * dl > (rhat << 16 | un) {
+            q -= 1;
+            rhat += dh;
+            if rhat >= B {
+                break;
+            }
+        }
+        q
+    };
+    let q1 = digit(u1, un1);
+    // (u1, un1) − q1·d lies in [0, d): exact modulo 2^32.
+    let r = (u1 << 16 | un1).wrapping_sub(q1.wrapping_mul(d));
+    q1 << 16 | digit(r, un0)
 }
 
 /// [`reciprocal`] by restoring division (tested on every target).
@@ -181,10 +220,17 @@ mod tests {
             assert_eq!(mul_wide_u32(a, b), u64::from(a) * u64::from(b));
             assert_eq!(mul_wide_u32_16(a, b), u64::from(a) * u64::from(b));
             let d = a | 1 << 31;
-            assert_eq!(u64::from(reciprocal_by_steps(d)), u64::MAX / u64::from(d) - (1 << 32), "{d}");
+            let want = u64::MAX / u64::from(d) - (1 << 32);
+            assert_eq!(u64::from(reciprocal_by_steps(d)), want, "{d}");
+            assert_eq!(u64::from(reciprocal_by_halves(d)), want, "{d}");
+            // Divisors with a low half of all ones or zeros (the corrections).
+            for d in [d | 0xFFFF, d & !0xFFFF, d | 0x7FFF_FFFF] {
+                assert_eq!(u64::from(reciprocal_by_halves(d)), u64::MAX / u64::from(d) - (1 << 32), "{d}");
+            }
         }
         for d in [1u32 << 31, u32::MAX, (1 << 31) + 1] {
             assert_eq!(u64::from(reciprocal_by_steps(d)), u64::MAX / u64::from(d) - (1 << 32), "{d}");
+            assert_eq!(u64::from(reciprocal_by_halves(d)), u64::MAX / u64::from(d) - (1 << 32), "{d}");
         }
         assert_eq!(mul_wide_u32(u32::MAX, u32::MAX), u64::from(u32::MAX) * u64::from(u32::MAX));
     }

@@ -67,6 +67,8 @@ impl<T: Scalar, const S: u32> Cached<T, S> {
     const CLIP: u8 = 1;
     const SNAP: u8 = 2;
     const LIT: u8 = 4;
+    /// The snapped vertex's depth and `1/w` are set (with `SNAP`).
+    const DEPTH: u8 = 8;
     const EMPTY: Self = Cached { clip: [T::ZERO; 4], state: 0, code: 0, screen: None };
 }
 
@@ -133,14 +135,22 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
             if class == Class::Outside {
                 continue;
             }
-            let raw = [a, b, c].map(|j| src.position(j));
-            let [Some(ra), Some(rb), Some(rc)] = raw else { return Err(Error::InvalidMesh) };
-            let pos = [ra, rb, rc].map(Vec3::from_f32);
-            // Flat shading, or no normals: the face normal, as `Mesh::face_normal`.
-            let face_n = if flat { crate::mesh::face_normal_of([ra, rb, rc]) } else { None };
-            let light = |k: usize| {
+            // Positions and normals for lighting are read only for a triangle
+            // that needs colours: most rejected ones (back faces, half of a
+            // closed mesh) never get here.
+            let face_normal = || -> Result<Option<[f32; 3]>, Error> {
+                if !flat {
+                    return Ok(None);
+                }
+                let [Some(ra), Some(rb), Some(rc)] = idx.map(|j| src.position(j)) else {
+                    return Err(Error::InvalidMesh);
+                };
+                // Flat shading, or no normals: the face normal, as `Mesh::face_normal`.
+                Ok(crate::mesh::face_normal_of([ra, rb, rc]))
+            };
+            let light = |k: usize, face_n: Option<[f32; 3]>| -> Result<[T; 3], Error> {
                 let n = if flat { face_n } else { src.normal(idx[k]) };
-                ctx.color(pos[k], n)
+                Ok(ctx.color(position(idx[k])?, n))
             };
             if class == Class::Inside {
                 let mut at = [ScreenVertex::default(); 3];
@@ -148,8 +158,9 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
                 for (k, &j) in idx.iter().enumerate() {
                     let e = &mut cache[j];
                     if e.state & Cached::<T, S>::SNAP == 0 {
-                        e.screen = self.snap_vertex(e.clip);
-                        e.state |= Cached::<T, S>::SNAP;
+                        e.screen = self.snap_deferred(e.clip);
+                        let depth = e.screen.is_some_and(|s| s.inv_w != 0);
+                        e.state |= Cached::<T, S>::SNAP | if depth { Cached::<T, S>::DEPTH } else { 0 };
                     }
                     match e.screen {
                         Some(s) => at[k] = s,
@@ -163,17 +174,31 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
                 if !self.keep(&at, stats) {
                     continue;
                 }
+                // Depth and 1/w, deferred past culling (`snap_deferred`).
+                for (k, &j) in idx.iter().enumerate() {
+                    let e = &mut cache[j];
+                    if e.state & Cached::<T, S>::DEPTH == 0 {
+                        let d = e.clip[3].divisor().and_then(|w| self.snap_depth(e.clip, w));
+                        if let (Some(s), Some((depth, inv_w))) = (e.screen.as_mut(), d) {
+                            (s.depth, s.inv_w) = (depth, inv_w);
+                        }
+                        e.state |= Cached::<T, S>::DEPTH;
+                    }
+                    let s = e.screen.unwrap_or_default();
+                    (at[k].depth, at[k].inv_w) = (s.depth, s.inv_w);
+                }
                 if flat {
                     // Lit with the face normal: per triangle, not per vertex.
-                    let c0 = channels(light(0), max);
+                    let face_n = face_normal()?;
+                    let c0 = channels(light(0, face_n)?, max);
                     for (k, v) in at.iter_mut().enumerate() {
-                        v.color = if flat_shade { c0 } else { channels(light(k), max) };
+                        v.color = if flat_shade { c0 } else { channels(light(k, face_n)?, max) };
                     }
                 } else {
                     for (k, &j) in idx.iter().enumerate() {
                         let e = &mut cache[j];
                         if e.state & Cached::<T, S>::LIT == 0 {
-                            let c = channels(light(k), max);
+                            let c = channels(light(k, None)?, max);
                             if let Some(s) = e.screen.as_mut() {
                                 s.color = c;
                             }
@@ -186,7 +211,12 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
                 stats.emitted += 1;
                 continue;
             }
-            let cs = if flat_shade { [light(0); 3] } else { [0, 1, 2].map(light) };
+            let face_n = face_normal()?;
+            let cs = if flat_shade {
+                [light(0, face_n)?; 3]
+            } else {
+                [light(0, face_n)?, light(1, face_n)?, light(2, face_n)?]
+            };
             let clip = idx.map(|j| cache[j].clip);
             let vs = [0, 1, 2].map(|k| ClipVertex { pos: clip[k], attr: cs[k] });
             self.clip_and_emit(vs, planes, stats, |mut at, attr, stats| {
@@ -199,6 +229,28 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
             })?;
         }
         Ok(())
+    }
+}
+
+impl<T: Scalar, const S: u32> Pipeline<T, S> {
+    /// For `f32`, [`Pipeline::snap_vertex`] with the depth and `1/w` left
+    /// for later (`inv_w` 0, which a snapped vertex never has) where they
+    /// cannot fail: a back face needs neither, and they are two of its four
+    /// divisions and conversions. They fail only for a non-finite `z` or
+    /// `|z/w|·2^32` beyond 2^40 (`1/w` never), so with `z` finite and
+    /// `|z| ≤ 128·w` (`128·w` exact, or infinite only for `w > 2^121`,
+    /// where `|z/w| < 2^7` anyway) they are deferred; otherwise computed
+    /// now, so a vertex fails here exactly when [`Pipeline::snap_vertex`]
+    /// fails. `Fx` snaps at once: its divisor would be prepared twice, which
+    /// costs more than its (exact, cheap) depth division.
+    fn snap_deferred(&self, c: [T; 4]) -> Option<ScreenVertex<S>> {
+        let (z, w) = (c[2], c[3]);
+        let safe = crate::math::vec::is_float::<T>() && z.is_finite() && z.abs() <= w * T::from_f32(128.0);
+        if !safe {
+            return self.snap_vertex(c);
+        }
+        let pos = self.snap_xy(c, w.divisor()?)?;
+        Some(ScreenVertex { pos, depth: 0, inv_w: 0, color: [0; 3] })
     }
 }
 

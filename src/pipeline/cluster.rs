@@ -25,7 +25,7 @@ use crate::depth::DepthFormat;
 use crate::edge::Cull;
 use crate::math::{Mat4, Scalar, Vec3, Vec4};
 use crate::mesh::{MAX_MESHLET_VERTICES, Mesh, Meshlet, ValidMeshletMesh};
-use crate::raster3d::Interpolation;
+use crate::raster3d::{Interpolation, ScreenTriangle};
 use crate::render::Band3d;
 use crate::{Error, Interpolate};
 
@@ -187,9 +187,47 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         F: DepthFormat,
         M: Interpolation,
     {
+        let rows = band.rows();
+        self.meshlet_triangles(mesh, model, color, cache, rows, |tri| band.draw(tri))
+    }
+
+    /// The triangles [`Pipeline::draw_meshlets`] would draw into the band of
+    /// frame rows `rows` (first and last, inclusive), handed to `sink` in
+    /// the same order instead: for a rasterizer of one's own, or to time the
+    /// vertex stage alone. Same errors as [`Pipeline::draw_meshlets`].
+    ///
+    /// ```
+    /// use embedded_graphics_core::pixelcolor::Rgb565;
+    /// use microraster::math::{Vec3, transform};
+    /// use microraster::mesh::*;
+    /// use microraster::pipeline::{ClusterCache, Pipeline};
+    /// let (mut p, mut n, mut i) = ([[0.0; 3]; 42], [[0.0; 3]; 42], [[0; 3]; 80]);
+    /// let mesh = icosphere(1, &mut p, &mut n, &mut i)?;
+    /// let (mut meshlets, mut vertices) = ([Meshlet::default(); meshlet_bound(80)], [0; meshlet_vertex_bound(80)]);
+    /// let (mut triangles, mut scratch) = ([[0; 3]; 80], [0; meshlet_scratch_len(42, 80)]);
+    /// let m = build_meshlets(mesh, &mut meshlets, &mut vertices, &mut triangles, &mut scratch)?;
+    /// let m = ValidMeshletMesh::new(m)?;
+    /// let eye = transform::look_at(Vec3::new(0.0, 0.0, 4.0), Vec3::new(0.0, 0.0, 0.0), Vec3::new(0.0, 1.0, 0.0))?;
+    /// let pipeline = Pipeline::<f32, 4>::perspective(eye, 0.8, 1.0, 10.0, 64, 64)?;
+    /// let (mut cache, mut front) = (ClusterCache::new(), 0);
+    /// let model = transform::rotation_y(0.0);
+    /// let stats = pipeline.meshlet_triangles(&m, &model, Rgb565::new(31, 0, 0), &mut cache, (0, 63), |_| front += 1)?;
+    /// // The sphere's front half, all rows: about half of its 80 triangles.
+    /// assert!(front > 20 && front < 60 && stats.emitted == front);
+    /// # Ok::<(), microraster::Error>(())
+    /// ```
+    pub fn meshlet_triangles<C: Interpolate>(
+        &self,
+        mesh: &ValidMeshletMesh<'_>,
+        model: &Mat4<T>,
+        color: C,
+        cache: &mut ClusterCache<T, S>,
+        rows: (i32, i32),
+        mut sink: impl FnMut(&ScreenTriangle<S>),
+    ) -> Result<MeshStats, Error> {
         // Validated: the culling relies on each cluster's sphere and cone.
         let mesh = mesh.get();
-        let pipe = Pipeline { rows: Some(band.rows()), ..*self };
+        let pipe = Pipeline { rows: Some(rows), ..*self };
         let mut stats = MeshStats::default();
         let Some(setup) = pipe.mesh_setup(&mesh.mesh, model, color, &mut stats)? else {
             return Ok(stats);
@@ -208,7 +246,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
             let src = ClusterSource { mesh: &mesh.mesh, vertices };
             let tris = triangles.iter().map(|t| t.map(usize::from));
             pipe.draw_cached(&setup, &src, slots, tris, &mut stats, |tri, _| {
-                band.draw(&tri);
+                sink(&tri);
                 Ok(())
             })
             .map_err(|e| if e == Error::InvalidMesh { Error::InvalidMeshlet } else { e })?;
