@@ -35,7 +35,7 @@ for m in clip3d depth raster3d pipeline; do
     exit 1
   fi
 done
-for m in texture blend fragment aa line_aa; do
+for m in texture blend fragment aa line_aa shape; do
   for b in size_2d size_3d; do
     if grep -q "^$m " "target/$b.txt"; then
       echo "FAIL: $b links microraster::$m, which it does not use" >&2
@@ -45,7 +45,7 @@ for m in texture blend fragment aa line_aa; do
 done
 echo
 echo "The 2D-only build links no clip3d, depth, raster3d or pipeline code, and neither"
-echo "the 2D nor the 3D build links texture, blend, fragment, aa or line_aa code (checked)."
+echo "the 2D nor the 3D build links texture, blend, fragment, aa, line_aa or shape code (checked)."
 
 # The same two programs built as if the fragment stage did not exist (its
 # modules compiled out): their code must be byte for byte the same size.

@@ -35,6 +35,9 @@ pub mod raster3d;
 pub mod render;
 pub mod scenes;
 pub mod scenes3d;
+// Anti-aliased coverage and gradients blend (`blend`), so shapes go with the
+// fragment stage's modules.
+#[cfg(not(microraster_without_fragment_stage))]
 pub mod shape;
 pub mod subpixel;
 #[cfg(not(microraster_without_fragment_stage))]
