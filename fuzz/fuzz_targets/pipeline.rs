@@ -294,7 +294,9 @@ fn run<T: Scalar, const S: u32>(inp: &mut Input) {
         // draw_mesh validates the mesh first: exactly validate's error.
         Err(e) if valid.is_err() => assert_eq!(valid, Err(e), "draw_mesh error {e:?}, validate's {valid:?}"),
         // Then the lighting: exactly its `validate` error.
-        Err(e) if light_error.is_some() => assert_eq!(light_error, Some(e), "draw_mesh error {e:?} with bad lighting"),
+        Err(e) if light_error.is_some() => {
+            assert_eq!(light_error, Some(e), "draw_mesh error {e:?} with bad lighting")
+        }
         // Fx: a coordinate 16.16 cannot hold (issue 13); never f32.
         Err(Error::CoordinateOutOfRange) => assert!(!is_f32::<T>(), "f32 draw_mesh: CoordinateOutOfRange"),
         Err(e @ (Error::InvalidMesh | Error::NonFiniteCoordinate)) => {

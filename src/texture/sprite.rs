@@ -154,6 +154,11 @@ impl<'t, F: TexelFormat, C, Fi: Filter> Sprite<'t, F, C, Fi> {
         };
         let (x0, x1) = clip(cx - ex, cx + ex);
         let (y0, y1) = clip(cy - ey, cy + ey);
+        // A box wholly outside the frame range covers nothing; its centre
+        // may be ~2^31 px away, beyond what the fixed-point map below holds.
+        if x0 >= x1 || y0 >= y1 {
+            return Ok(Map { x0, x1: x0, y0, y1: y0, u: [0; 3], v: [0; 3] });
+        }
         // Texture coordinate (of 1.0 = the whole texture) of a frame point
         // p: R(−a)(p − c)/(s·size) + ½; in units of 2^-32, at the centre of
         // pixel (x0, y0), and its steps per pixel.
@@ -161,7 +166,8 @@ impl<'t, F: TexelFormat, C, Fi: Filter> Sprite<'t, F, C, Fi> {
         let (dx, dy) = (f64::from(x0) + 0.5 - cx, f64::from(y0) + 0.5 - cy);
         let u = [(cos * dx + sin * dy) / (s * w) + 0.5, cos / (s * w), sin / (s * w)];
         let v = [(cos * dy - sin * dx) / (s * h) + 0.5, -sin / (s * h), cos / (s * h)];
-        // |u0| ≤ 2^13·256 + 1 and |steps| ≤ 256: all below 2^63 at 2^32.
+        // The box meets the frame range, so |u0| ≤ 2^13·256 + 1 and |steps| ≤ 256:
+        // all below 2^63 at 2^32.
         let fix = |t: f64| floor_i64(t * one + 0.5);
         Ok(Map { x0, x1, y0, y1, u: u.map(fix), v: v.map(fix) })
     }

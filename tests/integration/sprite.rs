@@ -364,3 +364,21 @@ fn discarding_shader_skips_and_blends_by_texel_alpha() {
         assert!(kept > 0 && kept < 32 * 32, "some pixels discarded, some drawn");
     }
 }
+
+/// Found by the `sprite` fuzz target: a small sprite far off-frame (its
+/// centre ~2^31 px away at scale 1/256) put texture coordinates beyond the
+/// 2^-32 fixed-point map and overflowed in `floor_i64` (a panic in debug).
+/// It covers no pixel: `Ok` and nothing drawn, by either path.
+#[test]
+fn far_off_frame_tiny_sprite_draws_nothing() {
+    let tex = Texture::<A8>::new(&[255; 2], 1, 2).unwrap();
+    for at in [Point::new(i32::MIN, 0), Point::new(0, i32::MAX), Point::new(i32::MAX, i32::MIN)] {
+        let s = Sprite::new(&tex).at(at).scale(1.0 / 256.0).rotate(0.3);
+        let mut r = Recorder { clip: ClipRect::new(0, 0, 50, 50), seen: HashMap::new() };
+        s.blend_into(&mut r).unwrap();
+        assert!(r.seen.is_empty());
+        let mut fb = crate::framebuffer::Framebuffer::new(50, 50, Rgb888::BLACK);
+        assert_eq!(s.draw(&mut fb), Ok(Ok(())));
+        assert!(fb.writes.iter().all(|&n| n == 0));
+    }
+}
