@@ -18,7 +18,6 @@
 use embedded_graphics_core::Drawable;
 use embedded_graphics_core::pixelcolor::{Gray8, GrayColor};
 use embedded_graphics_core::prelude::*;
-use embedded_graphics_core::primitives::Rectangle;
 use libfuzzer_sys::fuzz_target;
 use microraster::band::BandView;
 use microraster::edge::Span;
@@ -27,7 +26,7 @@ use microraster::shape::{
     RadialGradient, Rect, RoundedRect, Sector, Shape, ShapeStyle, Styled,
 };
 use microraster::{Band, ClipRect, Error, Renderer};
-use microraster_fuzz::Input;
+use microraster_fuzz::{Input, OnceFrame};
 
 const W: i32 = 64;
 const BG: Gray8 = Gray8::new(7);
@@ -204,7 +203,7 @@ fn check<Sh: Shape, A: Coverage>(shape: Sh, style: ShapeStyle<Gray8, A>, h: i32,
 
 fn banded<Sh: Shape, A: Coverage, const BH: usize>(styled: &Styled<Sh, Gray8, A>, h: i32) -> Vec<Gray8> {
     let mut band = Band::<Gray8, 64, BH>::new(Gray8::BLACK);
-    let mut fb = Once { h, px: vec![None; (W * h) as usize] };
+    let mut fb = OnceFrame::new(W, h);
     Renderer::new(h as u32, BG)
         .render_with(&mut band, &mut fb, |v: &mut BandView<'_, Gray8, 64>, _, _| styled.draw_on(v))
         .unwrap();
@@ -244,39 +243,6 @@ impl Canvas<Gray8> for Grid {
     fn shade<I: Iterator<Item = Gray8>>(&mut self, span: Span, colors: I, alpha: u8) {
         assert_eq!(colors.take(span.len as usize).count(), span.len as usize, "too few colours");
         self.put(span, alpha);
-    }
-}
-
-/// A 64-wide frame that must receive each pixel exactly once.
-struct Once {
-    h: i32,
-    px: Vec<Option<Gray8>>,
-}
-
-impl OriginDimensions for Once {
-    fn size(&self) -> Size {
-        Size::new(W as u32, self.h as u32)
-    }
-}
-
-impl DrawTarget for Once {
-    type Color = Gray8;
-    type Error = core::convert::Infallible;
-    fn draw_iter<I: IntoIterator<Item = Pixel<Gray8>>>(&mut self, pixels: I) -> Result<(), Self::Error> {
-        for Pixel(p, c) in pixels {
-            assert!(p.x >= 0 && p.y >= 0 && p.x < W && p.y < self.h, "pixel {p:?} outside the frame");
-            let i = (p.y * W + p.x) as usize;
-            assert!(self.px[i].is_none(), "pixel {p:?} sent twice");
-            self.px[i] = Some(c);
-        }
-        Ok(())
-    }
-    fn fill_contiguous<I: IntoIterator<Item = Gray8>>(
-        &mut self,
-        area: &Rectangle,
-        colors: I,
-    ) -> Result<(), Self::Error> {
-        self.draw_iter(area.points().zip(colors).map(|(p, c)| Pixel(p, c)))
     }
 }
 

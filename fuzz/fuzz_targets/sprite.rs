@@ -21,14 +21,13 @@
 use embedded_graphics_core::Drawable;
 use embedded_graphics_core::pixelcolor::{Gray8, Rgb565, Rgb888, RgbColor};
 use embedded_graphics_core::prelude::*;
-use embedded_graphics_core::primitives::Rectangle;
 use libfuzzer_sys::fuzz_target;
 use microraster::blend::{Blend, BlendTarget};
 use microraster::texture::{
     A8, Argb4444, Bilinear, Filter, Nearest, SPRITE_SCALE_RANGE, Sprite, TexelFormat, Texture,
 };
 use microraster::{Band, ClipRect, Error, Renderer};
-use microraster_fuzz::Input;
+use microraster_fuzz::{Input, OnceFrame};
 use std::collections::HashMap;
 
 const W: i32 = 64;
@@ -154,7 +153,7 @@ fn check<F: TexelFormat, Fi: Filter>(s: &Sprite<'_, F, Rgb888, Fi>, h: i32, want
     assert!(one == sixteen, "bands of 1 and 16 rows differ");
 
     // Drawable: the cut-out of what blend_into blends.
-    let mut fb = Plain { h, px: vec![None; (W * h) as usize] };
+    let mut fb = OnceFrame::new(W, h);
     assert_eq!(s.draw(&mut fb).unwrap(), want, "Drawable");
     for y in 0..h {
         for x in 0..W {
@@ -170,7 +169,7 @@ fn banded<F: TexelFormat, Fi: Filter, const BH: usize>(
     want: Result<(), Error>,
 ) -> Vec<Rgb888> {
     let mut band = Band::<Rgb888, 64, BH>::new(Rgb888::BLACK);
-    let mut fb = Once { h, px: vec![None; (W * h) as usize] };
+    let mut fb = OnceFrame::new(W, h);
     Renderer::new(h as u32, BG)
         .render_with(&mut band, &mut fb, |v, _, _| assert_eq!(s.blend_into(v), want, "blend_into a band"))
         .unwrap();
@@ -191,65 +190,5 @@ impl BlendTarget<Rgb888> for Recorder {
         assert!(self.clip.contains(x, y), "({x}, {y}) outside {:?}", self.clip);
         assert!(a > 0, "({x}, {y}) blended with alpha 0");
         assert!(self.seen.insert((x, y), [c.r(), c.g(), c.b(), a]).is_none(), "({x}, {y}) blended twice");
-    }
-}
-
-/// A 64-wide frame that must receive each pixel exactly once.
-struct Once {
-    h: i32,
-    px: Vec<Option<Rgb888>>,
-}
-
-impl OriginDimensions for Once {
-    fn size(&self) -> Size {
-        Size::new(W as u32, self.h as u32)
-    }
-}
-
-impl DrawTarget for Once {
-    type Color = Rgb888;
-    type Error = core::convert::Infallible;
-    fn draw_iter<I: IntoIterator<Item = Pixel<Rgb888>>>(&mut self, pixels: I) -> Result<(), Self::Error> {
-        for Pixel(p, c) in pixels {
-            assert!(p.x >= 0 && p.y >= 0 && p.x < W && p.y < self.h, "pixel {p:?} outside the frame");
-            let i = (p.y * W + p.x) as usize;
-            assert!(self.px[i].is_none(), "pixel {p:?} sent twice");
-            self.px[i] = Some(c);
-        }
-        Ok(())
-    }
-    fn fill_contiguous<I: IntoIterator<Item = Rgb888>>(
-        &mut self,
-        area: &Rectangle,
-        colors: I,
-    ) -> Result<(), Self::Error> {
-        self.draw_iter(area.points().zip(colors).map(|(p, c)| Pixel(p, c)))
-    }
-}
-
-/// A plain 64-wide framebuffer recording what `Drawable` draws (each pixel
-/// at most once, nothing outside it).
-struct Plain {
-    h: i32,
-    px: Vec<Option<Rgb888>>,
-}
-
-impl OriginDimensions for Plain {
-    fn size(&self) -> Size {
-        Size::new(W as u32, self.h as u32)
-    }
-}
-
-impl DrawTarget for Plain {
-    type Color = Rgb888;
-    type Error = core::convert::Infallible;
-    fn draw_iter<I: IntoIterator<Item = Pixel<Rgb888>>>(&mut self, pixels: I) -> Result<(), Self::Error> {
-        for Pixel(p, c) in pixels {
-            assert!(p.x >= 0 && p.y >= 0 && p.x < W && p.y < self.h, "pixel {p:?} outside the frame");
-            let i = (p.y * W + p.x) as usize;
-            assert!(self.px[i].is_none(), "Drawable drew {p:?} twice");
-            self.px[i] = Some(c);
-        }
-        Ok(())
     }
 }

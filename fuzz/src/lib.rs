@@ -228,3 +228,47 @@ pub fn snap_reference(v: f32, s: u32) -> Option<Result<i64, ()>> {
     let r = scaled.round_ties_even();
     Some(if r.abs() > f64::from(1u32 << 28) { Err(()) } else { Ok(r as i64) })
 }
+
+/// A `w × h` frame that accepts each pixel at most once and nothing outside
+/// it (the fuzz targets' "sent exactly once" and "`Drawable` draws each pixel
+/// once" checks): a pixel drawn twice or off the frame panics.
+pub struct OnceFrame<C> {
+    /// Width in pixels.
+    pub w: i32,
+    /// Height in pixels.
+    pub h: i32,
+    /// Row-major pixels, `None` where nothing was drawn.
+    pub px: Vec<Option<C>>,
+}
+
+impl<C: embedded_graphics_core::pixelcolor::PixelColor> OnceFrame<C> {
+    /// An empty frame.
+    pub fn new(w: i32, h: i32) -> Self {
+        OnceFrame { w, h, px: vec![None; (w * h) as usize] }
+    }
+}
+
+impl<C> embedded_graphics_core::geometry::OriginDimensions for OnceFrame<C> {
+    fn size(&self) -> embedded_graphics_core::geometry::Size {
+        embedded_graphics_core::geometry::Size::new(self.w as u32, self.h as u32)
+    }
+}
+
+impl<C: embedded_graphics_core::pixelcolor::PixelColor> embedded_graphics_core::draw_target::DrawTarget
+    for OnceFrame<C>
+{
+    type Color = C;
+    type Error = core::convert::Infallible;
+    fn draw_iter<I: IntoIterator<Item = embedded_graphics_core::Pixel<C>>>(
+        &mut self,
+        pixels: I,
+    ) -> Result<(), Self::Error> {
+        for embedded_graphics_core::Pixel(p, c) in pixels {
+            assert!(p.x >= 0 && p.y >= 0 && p.x < self.w && p.y < self.h, "pixel {p:?} outside the frame");
+            let i = (p.y * self.w + p.x) as usize;
+            assert!(self.px[i].is_none(), "pixel {p:?} drawn twice");
+            self.px[i] = Some(c);
+        }
+        Ok(())
+    }
+}
