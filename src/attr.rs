@@ -31,7 +31,9 @@
 //! determinant, and in `i128` otherwise; both give the same correctly rounded
 //! values.
 
-use core::num::NonZeroU32;
+mod divide;
+
+use divide::Divisor;
 
 /// Vertex positions in internal units (`1/2^(S+1)` px).
 #[derive(Debug, Clone, Copy)]
@@ -91,6 +93,8 @@ pub(crate) struct PlaneSetup {
     pbits: u32,
     rx: i32,
     ry: i32,
+    /// Whether planes need `gx` and `gy` ([`PlaneSetup::sampled_only_on`]).
+    need: (bool, bool),
 }
 
 impl PlaneSetup {
@@ -107,12 +111,27 @@ impl PlaneSetup {
         let half = one >> 1;
         // Reference pixel centre relative to vertex 0, internal units (< 2^31).
         let p = (rx as i64 * one + half - x0, ry as i64 * one + half - y0);
+        // Every quotient is by `det`: with the edge vectors negated along
+        // with a negative `det` (the same ratios), the divisor is positive.
         let (ex, ey) = ((y2 - y0, y1 - y0), (x1 - x0, x2 - x0));
+        let (ex, ey, det) = if det < 0 { ((-ex.0, -ex.1), (-ey.0, -ey.1), -det) } else { (ex, ey, det) };
         let emax = ex.0.unsigned_abs() | ex.1.unsigned_abs() | ey.0.unsigned_abs() | ey.1.unsigned_abs();
         // |nx·px + ny·py| < 2^(nbits + pbits).
         let pbits = bits(p.0.unsigned_abs() | p.1.unsigned_abs()) + 1;
-        let div = Divisor::new(det.unsigned_abs());
-        Some(PlaneSetup { ex, ey, p, det, div, shift: frame.shift, ebits: bits(emax), pbits, rx, ry })
+        let div = Divisor::new(det as u64);
+        let need = (true, true);
+        Some(PlaneSetup { ex, ey, p, det, div, shift: frame.shift, ebits: bits(emax), pbits, rx, ry, need })
+    }
+
+    /// Planes made from now on will be sampled only along the span of `len`
+    /// pixels from `(x, y)` (a triangle with one covered span in the band):
+    /// a gradient the samples never use (`gy` off the reference row, `gx`
+    /// for one pixel in the reference column) is left 0 and costs no
+    /// division. The other values are those of [`PlaneSetup::plane`], so the
+    /// samples are too.
+    #[inline]
+    pub fn sampled_only_on(&mut self, x: i32, y: i32, len: u32) {
+        self.need = (len > 1 || x != self.rx, y != self.ry);
     }
 
     /// The plane through `values` (|v| ≤ 2^56) at the vertices.
@@ -130,10 +149,9 @@ impl PlaneSetup {
             bits(nx.unsigned_abs() | ny.unsigned_abs()) + self.shift.max(self.pbits) <= 63
         });
         let (gx, gy, off) = if let Some((nx, ny)) = fast {
-            let neg = self.det < 0;
-            let gx = self.div.div_round(nx << self.shift, neg);
-            let gy = self.div.div_round(ny << self.shift, neg);
-            (gx, gy, self.div.div_round(nx * px + ny * py, neg))
+            let gx = if self.need.0 { self.div.div_round(nx << self.shift) } else { 0 };
+            let gy = if self.need.1 { self.div.div_round(ny << self.shift) } else { 0 };
+            (gx, gy, self.div.div_round(nx * px + ny * py))
         } else {
             self.plane_wide(d1, d2)
         };
@@ -159,102 +177,10 @@ impl PlaneSetup {
     }
 }
 
-/// Division by a fixed `d > 0` through the reciprocal `r = ⌊(2^64 − 1)/d⌋`:
-/// one library division at set-up, then multiplications. For `n < 2^64`,
-/// `q̂ = ⌊n·r/2^64⌋` satisfies `n/d − 3 < q̂ ≤ n/d` (as
-/// `r > (2^64 − 1)/d − 1`), so at most two corrections give `⌊n/d⌋` exactly.
-///
-/// On ARMv7-M a divisor below [`SHORT_LIMIT`] (every triangle of a few
-/// pixels) takes no reciprocal: there the 64-bit division that makes it is
-/// a bit-by-bit library loop of about 300 instructions, while the 32-bit
-/// hardware divider gives `⌊n/d⌋` in three steps ([`div_short`]).
-#[derive(Debug, Clone, Copy)]
-struct Divisor {
-    d: u64,
-    r: u64,
-    /// `d` when it is divided by [`div_short`].
-    short: Option<NonZeroU32>,
-}
-
-/// Divisors below this divide by 16-bit digits ([`div_short`]).
-const SHORT_LIMIT: u64 = 1 << 16;
-
-/// Whether [`Divisor`] divides short divisors by [`div_short`]: where a
-/// 32-bit division is one instruction and a 64-bit one a library loop
-/// (ARMv7-M; the host divides 64 bits in hardware, the Cortex-M0 has no
-/// divider at all).
-const SHORT_DIV: bool = cfg!(all(target_arch = "arm", target_feature = "thumb2"));
-
-impl Divisor {
-    #[inline]
-    fn new(d: u64) -> Divisor {
-        Self::with_short(d, SHORT_DIV)
-    }
-
-    /// [`Divisor::new`], with [`div_short`] for short divisors if `allow`.
-    #[inline]
-    fn with_short(d: u64, allow: bool) -> Divisor {
-        let short = NonZeroU32::new(d as u32).filter(|_| allow && d < SHORT_LIMIT);
-        Divisor { d, r: if short.is_some() { 0 } else { u64::MAX / d }, short }
-    }
-
-    /// `⌊n/d⌋`.
-    #[inline]
-    fn div_floor(&self, n: u64) -> u64 {
-        if let Some(d) = self.short {
-            return div_short(n, d);
-        }
-        let mut q = mul_hi(n, self.r);
-        // q ≤ n/d, so q·d ≤ n: no overflow, and the remainder is below 3d.
-        let mut rem = n - q * self.d;
-        while rem >= self.d {
-            q += 1;
-            rem -= self.d;
-        }
-        q
-    }
-
-    /// `n / (±d)` rounded to nearest, ties away from zero (as
-    /// `div_round_i128`), the divisor negative if `neg`; `|n| < 2^63`.
-    #[inline]
-    fn div_round(&self, n: i64, neg: bool) -> i64 {
-        // |n| + ⌊d/2⌋ < 2^63 + 2^62: no overflow; the quotient is below 2^63.
-        let q = self.div_floor(n.unsigned_abs() + self.d / 2) as i64;
-        if (n < 0) != neg { -q } else { q }
-    }
-}
-
-/// `⌊n/d⌋` for `d < 2^16` by schoolbook division in 32-bit words: the high
-/// word, then two 16-bit digits, each remainder below `d` so that
-/// `remainder·2^16 + digit` fits a `u32` and each digit's quotient is below
-/// 2^16. Three 32-bit divisions (one instruction each on ARMv7-M).
-#[inline]
-fn div_short(n: u64, d: NonZeroU32) -> u64 {
-    let (hi, lo) = ((n >> 32) as u32, n as u32);
-    let dv = d.get();
-    let q2 = hi / d;
-    let t = (hi - q2 * dv) << 16 | lo >> 16;
-    let q1 = t / d;
-    let t = (t - q1 * dv) << 16 | (lo & 0xFFFF);
-    let q0 = t / d;
-    (q2 as u64) << 32 | (q1 << 16 | q0) as u64
-}
-
 /// Bit length of `v`.
 #[inline]
 fn bits(v: u64) -> u32 {
     64 - v.leading_zeros()
-}
-
-/// The high 64 bits of `a·b`, from 32-bit halves (a `u128` product would be
-/// a library call on Cortex-M).
-#[inline]
-fn mul_hi(a: u64, b: u64) -> u64 {
-    let (a0, a1, b0, b1) = (a & 0xFFFF_FFFF, a >> 32, b & 0xFFFF_FFFF, b >> 32);
-    let (p00, p01, p10, p11) = (a0 * b0, a0 * b1, a1 * b0, a1 * b1);
-    // Each term below 2^32: the sum fits.
-    let mid = (p00 >> 32) + (p01 & 0xFFFF_FFFF) + (p10 & 0xFFFF_FFFF);
-    p11 + (p01 >> 32) + (p10 >> 32) + (mid >> 32)
 }
 
 /// Fixed-point units per Gouraud channel step.
@@ -343,35 +269,39 @@ mod tests {
         }
     }
 
-    /// The short-divisor path (ARMv7-M) gives the reciprocal path's
-    /// quotients, checked here on every target.
+    /// Planes set up for one span sample it exactly as full planes do:
+    /// at its start, and stepped along it.
     #[test]
-    fn short_division_is_exact() {
-        let mut seed = 0x9E37_79B9_7F4A_7C15u64;
-        let mut next = || {
+    fn span_only_planes_sample_the_span_exactly() {
+        let mut seed = 0x1234_5678_9ABC_DEF1u64;
+        let mut next = |bits: u32| {
             seed ^= seed << 13;
             seed ^= seed >> 7;
             seed ^= seed << 17;
-            seed
+            (seed >> (64 - bits)) as i64 - (1 << (bits - 1))
         };
-        let mut short = 0;
-        for i in 0..400_000u32 {
-            let d = (next() >> (47 + i % 17)).max(1);
-            let n = (next() >> (1 + i % 63)) as i64 * if i % 3 == 0 { -1 } else { 1 };
-            let (a, b) = (Divisor::with_short(d, true), Divisor::with_short(d, false));
-            short += a.short.is_some() as u32;
-            assert!(b.short.is_none());
-            assert_eq!(a.div_floor(n.unsigned_abs()), n.unsigned_abs() / d, "{n} / {d}");
-            for neg in [false, true] {
-                let want = div_round_i128(n as i128, if neg { -(d as i128) } else { d as i128 }) as i64;
-                assert_eq!(a.div_round(n, neg), want, "{n} / {d}");
-                assert_eq!(b.div_round(n, neg), want, "{n} / {d}");
+        let mut skipped = [0; 2];
+        for i in 0..100_000 {
+            let v = [0; 3].map(|_| (next(8) + 64, next(8) + 64));
+            let frame = PlaneFrame { v, shift: 4 };
+            let vals = [0; 3].map(|_| next(2 + (i % 33) as u32));
+            let (rx, ry) = ((v[0].0 >> 4) as i32, (v[0].1 >> 4) as i32);
+            let Some(full) = PlaneSetup::new(&frame, rx, ry) else { continue };
+            // Spans at and around the reference pixel, one pixel or longer.
+            let (x, y) = (rx + (next(3) as i32 / 2), ry + (next(3) as i32 / 2));
+            let len = 1 + (next(3) & 3) as u32 * (i % 2);
+            let mut only = full;
+            only.sampled_only_on(x, y, len);
+            skipped[0] += !only.need.0 as u32;
+            skipped[1] += !only.need.1 as u32;
+            let (a, b) = (full.plane(vals), only.plane(vals));
+            let (mut va, mut vb) = (a.at(x, y), b.at(x, y));
+            for _ in 0..len {
+                assert_eq!(va, vb, "{frame:?} {vals:?} {x} {y} {len}");
+                (va, vb) = (va.wrapping_add(a.step_x()), vb.wrapping_add(b.step_x()));
             }
         }
-        for (n, d) in [(u64::MAX >> 1, 1), (u64::MAX >> 1, 0xFFFF), (0xFFFF_FFFF, 0xFFFF), (0, 1)] {
-            assert_eq!(div_short(n, NonZeroU32::new(d).unwrap()), n / d as u64);
-        }
-        assert!(short > 100_000, "{short}");
+        assert!(skipped[0] > 5_000 && skipped[1] > 5_000, "{skipped:?}");
     }
 
     #[test]

@@ -144,9 +144,15 @@ pub fn draw_triangle<C, F, M, const S: u32, const W: usize>(
     // mesh's 1-pixel triangles, and every triangle in the rows of the band
     // it only grazes) costs no plane set-up: its first span is found first.
     let Some(first) = spans.next() else { return };
-    let spans = (first, &spans);
+    // With one span in the band (most triangles of a dense mesh), the planes
+    // need only the gradients that span samples.
+    let second = spans.next();
     // Zero area (on the same snapped coordinates as coverage): no spans either.
-    let Some(setup) = tri.plane_setup() else { return };
+    let Some(mut setup) = tri.plane_setup() else { return };
+    if second.is_none() {
+        setup.sampled_only_on(first.x, first.y, first.len);
+    }
+    let spans = (first, second, &spans);
     let zplane = if F::ENABLED { setup.plane(tri.depth_values::<F>()) } else { Plane::default() };
     if tri.flat {
         draw_with_test::<C, F, _, W>(spans, color, depth, state, &zplane, &C::from_channels(tri.v[0].color));
@@ -160,7 +166,7 @@ pub fn draw_triangle<C, F, M, const S: u32, const W: usize>(
 /// ([`DepthState::LESS_WRITE`]) gets a loop without the per-pixel dispatch.
 #[inline(always)]
 fn draw_with_test<C, F, Sh, const W: usize>(
-    spans: (Span, &TriangleSpans),
+    spans: (Span, Option<Span>, &TriangleSpans),
     color: &mut BandView<'_, C, W>,
     depth: &mut [[F::Storage; W]],
     state: DepthState,
@@ -213,7 +219,7 @@ impl DepthRule for LessWrite {
 /// The fragment loop of [`draw_triangle`], for one way of shading.
 #[inline(always)]
 fn draw_spans<C, F, Sh, R, const W: usize>(
-    spans: (Span, &TriangleSpans),
+    spans: (Span, Option<Span>, &TriangleSpans),
     color: &mut BandView<'_, C, W>,
     depth: &mut [[F::Storage; W]],
     state: R,
@@ -228,7 +234,7 @@ fn draw_spans<C, F, Sh, R, const W: usize>(
     let y0 = color.y0();
     // Internal iteration: one loop per coverage path (`for_each_ref`), each
     // with the fragment loop inlined, instead of a dispatch per span; the
-    // first span (found before the set-up) on its own.
+    // first two spans (found before the set-up) on their own.
     let mut each = |span: Span| {
         let (x0, len) = (span.x as usize, span.len as usize);
         let Some(cspan) = color.row_mut(span.y).and_then(|r| r.get_mut(x0..x0 + len)) else { return };
@@ -255,9 +261,12 @@ fn draw_spans<C, F, Sh, R, const W: usize>(
             }
         }
     };
-    let (first, rest) = spans;
+    let (first, second, rest) = spans;
     each(first);
-    rest.for_each_ref(each);
+    if let Some(second) = second {
+        each(second);
+        rest.for_each_ref(each);
+    }
 }
 
 /// The depth plane along a span. Formats of at most 16 bits step in `u32`:
@@ -341,7 +350,20 @@ pub(crate) fn depth_value<F: DepthFormat>(z: i64) -> u32 {
 /// of a format with largest value `max`, so 0 → 0 and `u32::MAX` → `max`
 /// exactly. Division by `2^32 − 1` as the series `y·2^-32·(1 + 2^-32 + 2^-64)`
 /// (shifts and adds only; the truncated terms are below one unit).
+#[inline]
 pub(crate) fn depth_steps(depth: u32, max: u32) -> i64 {
+    if max <= 0xFFFF {
+        // y < 2^64 − 2^48 and y >> 32 < 2^32: the sum fits a u64 and
+        // y >> 64 is 0, so this is the u128 series below without its
+        // (library-called) 128-bit arithmetic.
+        let y = (depth as u64 * max as u64) << DEPTH_FRAC;
+        return (((y + (y >> 32)) >> 32) + 1).min((max as u64) << DEPTH_FRAC) as i64;
+    }
+    depth_steps_wide(depth, max)
+}
+
+/// [`depth_steps`] in `u128`, for any `max`.
+fn depth_steps_wide(depth: u32, max: u32) -> i64 {
     let y = (depth as u128 * max as u128) << DEPTH_FRAC;
     // Rounding up by one unit makes u32::MAX land on max·2^16 exactly.
     (((y + (y >> 32) + (y >> 64)) >> 32) + 1).min((max as u128) << DEPTH_FRAC) as i64
@@ -481,6 +503,20 @@ impl<C: Interpolate, M: Interpolation> ShadeSpan<C> for GouraudSpan<C, M> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The `u64` form of 16-bit formats equals the `u128` series.
+    #[test]
+    fn narrow_depth_steps_equal_the_wide_series() {
+        let mut seed = 0x5DEE_CE66_Du64;
+        for i in 0..300_000u32 {
+            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            let (d, m) = ((seed >> 32) as u32, (seed >> 16) as u32 & 0xFFFF);
+            let d = [d, 0, u32::MAX, u32::MAX - 1, 1][(i % 5) as usize];
+            for max in [m, 0xFFFF, 0xFF, 1, 0] {
+                assert_eq!(depth_steps(d, max), depth_steps_wide(d, max), "{d} {max}");
+            }
+        }
+    }
 
     #[test]
     fn depth_steps_maps_ends_exactly_and_is_monotonic() {
