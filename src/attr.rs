@@ -68,6 +68,15 @@ impl Plane {
         self.base.wrapping_add(self.gx.wrapping_mul(dx)).wrapping_add(self.gy.wrapping_mul(dy))
     }
 
+    /// [`Plane::at`] modulo 2^32 (its low 32 bits), for accumulators whose
+    /// samples are known to fit 32 bits: 32-bit products instead of 64-bit.
+    #[inline]
+    pub fn at_low32(&self, x: i32, y: i32) -> u32 {
+        let (dx, dy) = ((x - self.rx) as u32, (y - self.ry) as u32);
+        let g = |g: i64, d: u32| (g as u32).wrapping_mul(d);
+        (self.base as u32).wrapping_add(g(self.gx, dx)).wrapping_add(g(self.gy, dy))
+    }
+
     /// Increment per pixel to the right.
     #[inline]
     pub fn step_x(&self) -> i64 {
@@ -137,6 +146,12 @@ impl PlaneSetup {
     /// The plane through `values` (|v| ≤ 2^56) at the vertices.
     pub fn plane(&self, values: [i64; 3]) -> Plane {
         let (d1, d2) = (values[1] - values[0], values[2] - values[0]);
+        if d1 | d2 == 0 {
+            // Constant (a colour channel equal at the three vertices, common
+            // on small triangles): every numerator is 0, and so is every
+            // quotient.
+            return Plane { base: values[0], gx: 0, gy: 0, rx: self.rx, ry: self.ry };
+        }
         let (ex, ey, (px, py)) = (self.ex, self.ey, self.p);
         // Exact in i64 when the magnitudes allow (checked on bit lengths, as
         // `checked_mul` costs much more on Cortex-M); divisions then go by
@@ -298,6 +313,7 @@ mod tests {
             let (mut va, mut vb) = (a.at(x, y), b.at(x, y));
             for _ in 0..len {
                 assert_eq!(va, vb, "{frame:?} {vals:?} {x} {y} {len}");
+                assert_eq!(a.at_low32(x + 9, y - 7), a.at(x + 9, y - 7) as u32);
                 (va, vb) = (va.wrapping_add(a.step_x()), vb.wrapping_add(b.step_x()));
             }
         }

@@ -285,11 +285,11 @@ impl<F: DepthFormat> DepthSpan<F> {
 
     #[inline(always)]
     fn new(p: &Plane, x: i32, y: i32) -> Self {
-        let (z, dz) = (p.at(x, y), p.step_x());
         let (narrow, wide) = if Self::NARROW {
-            ((z.wrapping_add(1 << (DEPTH_FRAC - 1)) as u32, dz as u32), (0, 0))
+            // Only the low 32 bits are used: `at_low32` gives them.
+            ((p.at_low32(x, y).wrapping_add(1 << (DEPTH_FRAC - 1)), p.step_x() as u32), (0, 0))
         } else {
-            ((0, 0), (z, dz))
+            ((0, 0), (p.at(x, y), p.step_x()))
         };
         DepthSpan { narrow, wide, _f: core::marker::PhantomData }
     }
@@ -448,11 +448,12 @@ impl<C: Interpolate, M: Interpolation> Shader<C> for Gouraud<C, M> {
             if k == 3 && !M::PERSPECTIVE || k < 3 && max[k] == 0 {
                 continue;
             }
-            let (v, d) = (p.at(x, y), p.step_x());
+            let d = p.step_x();
             if M::PERSPECTIVE {
-                (s.persp[k], s.persp_step[k]) = (v << (32 - DEPTH_FRAC), d << (32 - DEPTH_FRAC));
+                (s.persp[k], s.persp_step[k]) = (p.at(x, y) << (32 - DEPTH_FRAC), d << (32 - DEPTH_FRAC));
             } else {
-                (s.affine[k], s.affine_step[k]) = (v as i32, d as i32);
+                // The `i32` accumulator keeps the low 32 bits only.
+                (s.affine[k], s.affine_step[k]) = (p.at_low32(x, y) as i32, d as i32);
             }
         }
         s

@@ -9,9 +9,8 @@
 //! * `2^16 ≤ d < 2^31` on ARMv7-M (triangles of up to a quarter of a
 //!   320×240 frame): a normalised 32-bit reciprocal made with the hardware
 //!   divider and Möller–Granlund's 2-by-1 division
-//!   ([`FxDivisor`], shared with the `Fx` vertex divisor), whenever the
-//!   quotient fits 32 bits; a larger quotient (a steep sliver's gradient)
-//!   takes one 64-bit division;
+//!   ([`FxDivisor`], shared with the `Fx` vertex divisor), after a 32-bit
+//!   division for the quotient's high word;
 //! * otherwise the reciprocal `r = ⌊(2^64 − 1)/d⌋` of one 64-bit division.
 //!
 //! On ARMv7-M a 64-bit division is a bit-by-bit library loop of about 300
@@ -89,10 +88,7 @@ impl Divisor {
         // m + ⌊d/2⌋ < 2^63 + 2^62: no overflow.
         match self.how {
             How::Short(d) => div_short(m + self.d / 2, d),
-            How::Mid(f) => match f.div_round(m) {
-                Some(q) => q as u64,
-                None => (m + self.d / 2) / self.d,
-            },
+            How::Mid(f) => f.div_round_u64(m),
             How::Reciprocal(r) => self.div_floor_reciprocal(m + self.d / 2, r),
         }
     }

@@ -71,6 +71,24 @@ impl FxDivisor {
     }
 }
 
+impl FxDivisor {
+    /// `⌊(m + ⌊d/2⌋) / d⌋` for `m < 2^63`, exactly, whatever its size: the
+    /// high word by one 32-bit division (one instruction on ARMv7-M), then
+    /// the remainder with the low word by the 2-by-1 division (its high
+    /// word, the remainder, is below `d`, so it meets its precondition and
+    /// `(r·2^32 + lo)·2^sh < 2^64`).
+    #[inline]
+    pub(crate) fn div_round_u64(&self, m: u64) -> u64 {
+        // m < 2^63 and d/2 < 2^30: no overflow.
+        let m = m + (self.d / 2) as u64;
+        let (hi, lo) = ((m >> 32) as u32, m as u32);
+        let q1 = hi / self.d;
+        let r = hi - q1 * self.d;
+        let q0 = div_2by1(((r as u64) << 32 | lo as u64) << self.sh, self.d << self.sh, self.v);
+        (q1 as u64) << 32 | q0 as u64
+    }
+}
+
 /// `⌊u / d⌋` for `d ≥ 2^31` and `⌊u / 2^32⌋ < d`, with `v` from
 /// [`reciprocal`] (Möller–Granlund algorithm 4: the estimate is at most one
 /// too large or two too small, fixed by the remainder tests).
@@ -206,6 +224,16 @@ mod tests {
                 assert_eq!(p.div_round(m).map(u128::from), Some(want), "{m} / {d}");
             }
             assert_eq!(p.div_round(((d as u64) << 32) - d as u64 / 2), None);
+        }
+        // Quotients of any size.
+        for i in 0..300_000u32 {
+            let r = rng.next();
+            let d = ((r as u32) >> (1 + i % 31)).max(1);
+            let p = FxDivisor::new(d as i32).unwrap();
+            let m = [rng.next() >> (1 + (r >> 40) % 63), (1 << 63) - 1, 0, (d as u64) << 32]
+                [(i % 7).min(3) as usize];
+            let want = (u128::from(m) + u128::from(d / 2)) / u128::from(d);
+            assert_eq!(u128::from(p.div_round_u64(m)), want, "{m} / {d}");
         }
         assert_eq!(FxDivisor::new(0), None);
         assert_eq!(FxDivisor::new(-5), None);
