@@ -90,10 +90,10 @@ impl Plane {
 /// of [`Plane::new`].
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct PlaneSetup {
-    ex: (i64, i64),
-    ey: (i64, i64),
+    ex: (i32, i32),
+    ey: (i32, i32),
     /// Reference pixel centre relative to vertex 0, internal units.
-    p: (i64, i64),
+    p: (i32, i32),
     det: i64,
     div: Divisor,
     shift: u32,
@@ -112,24 +112,42 @@ impl PlaneSetup {
     #[inline(always)]
     pub fn new(frame: &PlaneFrame, rx: i32, ry: i32) -> Option<PlaneSetup> {
         let [(x0, y0), (x1, y1), (x2, y2)] = frame.v;
-        let det = (x1 - x0) * (y2 - y0) - (x2 - x0) * (y1 - y0);
+        // Frames are made of snapped vertices, |2·v| ≤ 2^29: the edge
+        // vectors (below 2^30) and the reference offset (below 2^30 plus
+        // 4096 pixels of at most 2^9 units) fit i32, and 32-bit arithmetic
+        // is what Cortex-M does in one instruction.
+        let d = |a: i64, b: i64| (a - b) as i32;
+        let (ex, ey) = ((d(y2, y0), d(y1, y0)), (d(x1, x0), d(x2, x0)));
+        let w = |a: i32, b: i32| a as i64 * b as i64;
+        let det = w(ey.0, ex.0) - w(ey.1, ex.1);
         if det == 0 {
             return None;
         }
         let one = 1i64 << frame.shift;
         let half = one >> 1;
-        // Reference pixel centre relative to vertex 0, internal units (< 2^31).
-        let p = (rx as i64 * one + half - x0, ry as i64 * one + half - y0);
+        // Reference pixel centre relative to vertex 0, internal units.
+        let p = ((rx as i64 * one + half - x0) as i32, (ry as i64 * one + half - y0) as i32);
         // Every quotient is by `det`: with the edge vectors negated along
         // with a negative `det` (the same ratios), the divisor is positive.
-        let (ex, ey) = ((y2 - y0, y1 - y0), (x1 - x0, x2 - x0));
         let (ex, ey, det) = if det < 0 { ((-ex.0, -ex.1), (-ey.0, -ey.1), -det) } else { (ex, ey, det) };
         let emax = ex.0.unsigned_abs() | ex.1.unsigned_abs() | ey.0.unsigned_abs() | ey.1.unsigned_abs();
         // |nx·px + ny·py| < 2^(nbits + pbits).
-        let pbits = bits(p.0.unsigned_abs() | p.1.unsigned_abs()) + 1;
+        let pbits = bits((p.0.unsigned_abs() | p.1.unsigned_abs()) as u64) + 1;
         let div = Divisor::new(det as u64);
         let need = (true, true);
-        Some(PlaneSetup { ex, ey, p, det, div, shift: frame.shift, ebits: bits(emax), pbits, rx, ry, need })
+        Some(PlaneSetup {
+            ex,
+            ey,
+            p,
+            det,
+            div,
+            shift: frame.shift,
+            ebits: bits(emax as u64),
+            pbits,
+            rx,
+            ry,
+            need,
+        })
     }
 
     /// Planes made from now on will be sampled only along the span of `len`
@@ -159,14 +177,15 @@ impl PlaneSetup {
         // division. |d·e| < 2^(dbits + ebits); with that ≤ 2^62, |nx|, |ny|
         // < 2^nbits ≤ 2^63, and the numerators below are < 2^63.
         let dbits = bits(d1.unsigned_abs() | d2.unsigned_abs());
-        let fast = (dbits + self.ebits <= 62).then(|| (d1 * ex.0 - d2 * ex.1, d2 * ey.0 - d1 * ey.1));
+        let m = |d: i64, e: i32| d * e as i64;
+        let fast = (dbits + self.ebits <= 62).then(|| (m(d1, ex.0) - m(d2, ex.1), m(d2, ey.0) - m(d1, ey.1)));
         let fast = fast.filter(|&(nx, ny)| {
             bits(nx.unsigned_abs() | ny.unsigned_abs()) + self.shift.max(self.pbits) <= 63
         });
         let (gx, gy, off) = if let Some((nx, ny)) = fast {
             let gx = if self.need.0 { self.div.div_round(nx << self.shift) } else { 0 };
             let gy = if self.need.1 { self.div.div_round(ny << self.shift) } else { 0 };
-            (gx, gy, self.div.div_round(nx * px + ny * py))
+            (gx, gy, self.div.div_round(m(nx, px) + m(ny, py)))
         } else {
             self.plane_wide(d1, d2)
         };
@@ -180,7 +199,7 @@ impl PlaneSetup {
     #[inline(never)]
     fn plane_wide(&self, d1: i64, d2: i64) -> (i64, i64, i64) {
         let (ex, ey, (px, py)) = (self.ex, self.ey, self.p);
-        let w = |a: i64, b: i64| a as i128 * b as i128;
+        let w = |a: i64, b: i32| a as i128 * b as i128;
         let nx = w(d1, ex.0) - w(d2, ex.1);
         let ny = w(d2, ey.0) - w(d1, ey.1);
         let det = self.det as i128;

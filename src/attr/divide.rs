@@ -82,20 +82,31 @@ impl Divisor {
         q
     }
 
-    /// `⌊(m + ⌊d/2⌋)/d⌋` for `m < 2^63`.
-    #[inline]
+    /// `⌊(m + ⌊d/2⌋)/d⌋` for `m < 2^63`. The short way inline (a few
+    /// instructions, the common case of a dense mesh), the others out of
+    /// line, which keeps the plane set-up small.
+    #[inline(always)]
     fn div_half_up(&self, m: u64) -> u64 {
         // m + ⌊d/2⌋ < 2^63 + 2^62: no overflow.
         match self.how {
             How::Short(d) => div_short(m + self.d / 2, d),
+            _ => self.div_half_up_long(m),
+        }
+    }
+
+    /// [`Divisor::div_half_up`] for a divisor of 2^16 or more.
+    #[inline(never)]
+    fn div_half_up_long(&self, m: u64) -> u64 {
+        match self.how {
             How::Mid(f) => f.div_round_u64(m),
             How::Reciprocal(r) => self.div_floor_reciprocal(m + self.d / 2, r),
+            How::Short(d) => div_short(m + self.d / 2, d),
         }
     }
 
     /// `n / d` rounded to nearest, ties away from zero (as
     /// `div_round_i128`); `|n| < 2^63`.
-    #[inline]
+    #[inline(always)]
     pub(super) fn div_round(&self, n: i64) -> i64 {
         // The quotient is below 2^63.
         let q = self.div_half_up(n.unsigned_abs()) as i64;
