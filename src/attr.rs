@@ -100,6 +100,9 @@ pub(crate) struct PlaneSetup {
     /// Bits of the largest `|e|`, and of the larger of `|px|`, `|py|` plus one.
     ebits: u32,
     pbits: u32,
+    /// Values whose differences have at most this many bits take the `i64`
+    /// path with no check on their numerators ([`PlaneSetup::plane`]).
+    dlimit: u32,
     rx: i32,
     ry: i32,
     /// Whether planes need `gx` and `gy` ([`PlaneSetup::sampled_only_on`]).
@@ -135,19 +138,10 @@ impl PlaneSetup {
         let pbits = bits((p.0.unsigned_abs() | p.1.unsigned_abs()) as u64) + 1;
         let div = Divisor::new(det as u64);
         let need = (true, true);
-        Some(PlaneSetup {
-            ex,
-            ey,
-            p,
-            det,
-            div,
-            shift: frame.shift,
-            ebits: bits(emax as u64),
-            pbits,
-            rx,
-            ry,
-            need,
-        })
+        let ebits = bits(emax as u64);
+        // dbits + ebits + 1 + max(shift, pbits) ≤ 63 (see `plane`).
+        let dlimit = 62u32.saturating_sub(ebits + frame.shift.max(pbits));
+        Some(PlaneSetup { ex, ey, p, det, div, shift: frame.shift, ebits, pbits, dlimit, rx, ry, need })
     }
 
     /// Planes made from now on will be sampled only along the span of `len`
@@ -162,7 +156,21 @@ impl PlaneSetup {
     }
 
     /// The plane through `values` (|v| ≤ 2^56) at the vertices.
+    #[inline]
     pub fn plane(&self, values: [i64; 3]) -> Plane {
+        let mut p = Plane::default();
+        self.plane_into(values, &mut p);
+        p
+    }
+
+    /// [`PlaneSetup::plane`] written to `out`: in place where the caller
+    /// keeps its planes (returning one is a copy through the stack).
+    pub fn plane_into(&self, values: [i64; 3], out: &mut Plane) {
+        *out = self.plane_value(values);
+    }
+
+    #[inline(always)]
+    fn plane_value(&self, values: [i64; 3]) -> Plane {
         let (d1, d2) = (values[1] - values[0], values[2] - values[0]);
         if d1 | d2 == 0 {
             // Constant (a colour channel equal at the three vertices, common
@@ -178,10 +186,16 @@ impl PlaneSetup {
         // < 2^nbits ≤ 2^63, and the numerators below are < 2^63.
         let dbits = bits(d1.unsigned_abs() | d2.unsigned_abs());
         let m = |d: i64, e: i32| d * e as i64;
-        let fast = (dbits + self.ebits <= 62).then(|| (m(d1, ex.0) - m(d2, ex.1), m(d2, ey.0) - m(d1, ey.1)));
-        let fast = fast.filter(|&(nx, ny)| {
-            bits(nx.unsigned_abs() | ny.unsigned_abs()) + self.shift.max(self.pbits) <= 63
-        });
+        let n = || (m(d1, ex.0) - m(d2, ex.1), m(d2, ey.0) - m(d1, ey.1));
+        let fast = if dbits <= self.dlimit {
+            // |nx|, |ny| < 2^(dbits + ebits + 1): the check below holds a
+            // priori (`dlimit`), as it does for every plane of a small triangle.
+            Some(n())
+        } else {
+            (dbits + self.ebits <= 62).then(n).filter(|&(nx, ny)| {
+                bits(nx.unsigned_abs() | ny.unsigned_abs()) + self.shift.max(self.pbits) <= 63
+            })
+        };
         let (gx, gy, off) = if let Some((nx, ny)) = fast {
             let gx = if self.need.0 { self.div.div_round(nx << self.shift) } else { 0 };
             let gy = if self.need.1 { self.div.div_round(ny << self.shift) } else { 0 };

@@ -153,11 +153,16 @@ pub fn draw_triangle<C, F, M, const S: u32, const W: usize>(
         setup.sampled_only_on(first.x, first.y, first.len);
     }
     let spans = (first, second, &spans);
-    let zplane = if F::ENABLED { setup.plane(tri.depth_values::<F>()) } else { Plane::default() };
+    let mut zplane = Plane::default();
+    if F::ENABLED {
+        setup.plane_into(tri.depth_values::<F>(), &mut zplane);
+    }
     if tri.flat {
         draw_with_test::<C, F, _, W>(spans, color, depth, state, &zplane, &C::from_channels(tri.v[0].color));
     } else {
-        let shade = Gouraud::<C, M>::new(tri, &setup);
+        // Made in place: built and returned, its planes were copied twice.
+        let mut shade = Gouraud::<C, M> { planes: [Plane::default(); 4], _m: core::marker::PhantomData };
+        shade.set_up(tri, &setup);
         draw_with_test::<C, F, _, W>(spans, color, depth, state, &zplane, &shade);
     }
 }
@@ -405,29 +410,29 @@ struct GouraudSpan<C, M> {
 }
 
 impl<C: Interpolate, M: Interpolation> Gouraud<C, M> {
-    // Inlined: built in place (returning its 160 bytes is a copy).
+    /// The planes of `tri`, written in place (channels the colour type
+    /// lacks keep theirs).
     #[inline(always)]
-    fn new<const S: u32>(tri: &ScreenTriangle<S>, setup: &PlaneSetup) -> Self {
+    fn set_up<const S: u32>(&mut self, tri: &ScreenTriangle<S>, setup: &PlaneSetup) {
         let max = C::CHANNEL_MAX;
-        let mut planes = [Plane::default(); 4];
+        let planes = &mut self.planes;
         if M::PERSPECTIVE {
             // 23 bits keep c·q within u32 for a channel c ≤ 255.
             let q = normalised_q(tri, Q_BITS);
-            planes[3] = setup.plane(q.map(|q| q << DEPTH_FRAC));
+            setup.plane_into(q.map(|q| q << DEPTH_FRAC), &mut planes[3]);
             for (k, p) in planes.iter_mut().take(3).enumerate() {
                 if max[k] > 0 {
                     let cq = |i: usize| (tri.v[i].color[k] as i64 * q[i]) << DEPTH_FRAC;
-                    *p = setup.plane([cq(0), cq(1), cq(2)]);
+                    setup.plane_into([cq(0), cq(1), cq(2)], p);
                 }
             }
         } else {
             for (k, p) in planes.iter_mut().take(3).enumerate() {
                 if max[k] > 0 {
-                    *p = setup.plane(tri.v.map(|v| (v.color[k] as i64) << COLOR_FRAC));
+                    setup.plane_into(tri.v.map(|v| (v.color[k] as i64) << COLOR_FRAC), p);
                 }
             }
         }
-        Gouraud { planes, _m: core::marker::PhantomData }
     }
 }
 
