@@ -7,7 +7,7 @@
 //! firmware bench: `no_std`, no allocation.
 //!
 //! The code between each `dashboard:*:begin` / `end` marker pair is what the
-//! README shows and what `cargo run --example dashboard_lines` counts; what
+//! README shows and what `cargo run --example readme_2d` counts; what
 //! lies outside (colours, the icon, the gauge's geometry) both use.
 
 use core::f32::consts::PI;
@@ -109,7 +109,7 @@ pub static FUEL: Texture<'static, A8> = Texture::from_rows(&FUEL_MASK);
 
 // dashboard:mr:begin
 /// The dashboard with microraster's shapes, into one band (any height).
-pub fn dashboard(view: &mut BandView<'_, Rgb565, W>) -> Result<(), Error> {
+pub fn dashboard<const N: usize>(view: &mut BandView<'_, Rgb565, N>) -> Result<(), Error> {
     let sky = LinearGradient::new((0.0, 0.0), (0.0, 240.0), [NIGHT, DEEP])?;
     Rect::new(0.0, 0.0, 320.0, 240.0)?.styled(ShapeStyle::fill(sky))?.draw_on(view);
     let zones = LinearGradient::new((40.0, 0.0), (210.0, 0.0), [GREEN, RED])?;

@@ -8,6 +8,7 @@ use embedded_graphics_core::pixelcolor::Rgb565;
 use microraster::{Band, Renderer};
 use std::path::Path;
 
+#[allow(dead_code)] // each user takes what it needs
 #[path = "../common/dashboard.rs"]
 pub mod scene;
 

@@ -12,6 +12,7 @@
 //! - `blend`: every blend mode × colour format vs an `f64` reference; translucent drawing; depth sort.
 //! - `gouraud`: Gouraud colour vs an `f64` barycentric reference.
 //! - `bands`: identical images for every band height; one `fill_contiguous` per band.
+//! - `dashboard`: the dashboard example: band invariance, text identical to plain e-g.
 //! - `drawables`: embedded-graphics text, images and styled primitives drawn into bands
 //!   match e-g into a framebuffer, for every band height; HUD over 3D.
 //! - `mock_display`: embedded-graphics `MockDisplay` pattern tests (overdraw panics).
@@ -32,6 +33,7 @@ mod bands;
 mod blend;
 mod clip3d_raster;
 mod clip3d_ref;
+mod dashboard;
 mod depth3d;
 mod drawables;
 mod fragment;
