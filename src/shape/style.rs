@@ -204,7 +204,8 @@ impl<S: Shape, C: Copy, A: Coverage> Styled<S, C, A> {
             return Err(Error::InvalidParameter);
         }
         let mut s = Styled { shape, style, rows: (0, 0) };
-        let (f, t) = (s.fill_edges::<MAX_EDGES>()?.y_range(), s.stroke_edges::<MAX_EDGES>()?.y_range());
+        let (f, t) =
+            (s.fill_edges::<MAX_EDGES>(false)?.y_range(), s.stroke_edges::<MAX_EDGES>(false)?.y_range());
         let (y_min, y_max) = (f.0.min(t.0), f.1.max(t.1));
         // Subpixels to whole rows, outward; empty shapes get an empty range.
         s.rows = if y_min <= y_max { (y_min >> BITS, (y_max >> BITS) + 1) } else { (0, 0) };
@@ -226,22 +227,29 @@ impl<S: Shape, C: Copy, A: Coverage> Styled<S, C, A> {
         self.rows
     }
 
-    fn fill_edges<const N: usize>(&self) -> Result<EdgeList<N>, Error> {
+    /// The fill's edges, sorted by top for covering (`sort`) or not (for
+    /// their extent only).
+    fn fill_edges<const N: usize>(&self, sort: bool) -> Result<EdgeList<N>, Error> {
         let mut e = EdgeList::new();
         if self.style.fill.is_some() {
             self.shape.fill_contours(&mut e)?;
             e.close()?;
-            e.sort_by_top();
+            if sort {
+                e.sort_by_top();
+            }
         }
         Ok(e)
     }
 
-    fn stroke_edges<const N: usize>(&self) -> Result<EdgeList<N>, Error> {
+    /// The stroke's edges, as [`Styled::fill_edges`].
+    fn stroke_edges<const N: usize>(&self, sort: bool) -> Result<EdgeList<N>, Error> {
         let mut e = EdgeList::new();
         if self.style.stroke.is_some() && self.style.stroke_width > 0.0 {
             self.shape.stroke_contours(&mut e, &self.style.params())?;
             e.close()?;
-            e.sort_by_top();
+            if sort {
+                e.sort_by_top();
+            }
         }
         Ok(e)
     }
@@ -259,10 +267,10 @@ impl<S: Shape, C: Interpolate, A: Coverage> Styled<S, C, A> {
         // Coverage times opacity, rounded; exact (and free) when opaque.
         let alpha = |a: u8| if op == 255 { a } else { div255_round(u32::from(a) * op) as u8 };
         // Checked in `new`: building the edges cannot fail again.
-        if let (Some(paint), Ok(e)) = (&self.style.fill, self.fill_edges::<MAX_EDGES>()) {
+        if let (Some(paint), Ok(e)) = (&self.style.fill, self.fill_edges::<MAX_EDGES>(true)) {
             A::cover(&e, self.style.fill_rule, clip, |span, a| paint.paint(canvas, span, alpha(a)));
         }
-        if let (Some(paint), Ok(e)) = (&self.style.stroke, self.stroke_edges::<MAX_EDGES>()) {
+        if let (Some(paint), Ok(e)) = (&self.style.stroke, self.stroke_edges::<MAX_EDGES>(true)) {
             A::cover(&e, FillRule::NonZero, clip, |span, a| paint.paint(canvas, span, alpha(a)));
         }
     }
