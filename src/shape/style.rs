@@ -204,12 +204,19 @@ impl<S: Shape, C: Copy, A: Coverage> Styled<S, C, A> {
             return Err(Error::InvalidParameter);
         }
         let mut s = Styled { shape, style, rows: (0, 0) };
-        let (f, t) =
-            (s.fill_edges::<MAX_EDGES>(false)?.y_range(), s.stroke_edges::<MAX_EDGES>(false)?.y_range());
+        s.rows = s.extent()?;
+        Ok(s)
+    }
+
+    /// The rows `rows()` reports. Not inlined, and one edge list at a time:
+    /// a caller that builds many shapes holds no edge list on its stack.
+    #[inline(never)]
+    fn extent(&self) -> Result<(i32, i32), Error> {
+        let f = self.fill_edges::<MAX_EDGES>(false)?.y_range();
+        let t = self.stroke_edges::<MAX_EDGES>(false)?.y_range();
         let (y_min, y_max) = (f.0.min(t.0), f.1.max(t.1));
         // Subpixels to whole rows, outward; empty shapes get an empty range.
-        s.rows = if y_min <= y_max { (y_min >> BITS, (y_max >> BITS) + 1) } else { (0, 0) };
-        Ok(s)
+        Ok(if y_min <= y_max { (y_min >> BITS, (y_max >> BITS) + 1) } else { (0, 0) })
     }
 
     /// The shape.
@@ -258,6 +265,8 @@ impl<S: Shape, C: Copy, A: Coverage> Styled<S, C, A> {
 impl<S: Shape, C: Interpolate, A: Coverage> Styled<S, C, A> {
     /// Draws on `canvas` (a band view, or a readable framebuffer): fill
     /// first, then stroke; partial pixels are blended exactly.
+    // Not inlined, for the stack (see `extent`).
+    #[inline(never)]
     pub fn draw_on<T: Canvas<C>>(&self, canvas: &mut T) {
         let clip = canvas.clip();
         if clip.y1() <= self.rows.0 || clip.y0() >= self.rows.1 {

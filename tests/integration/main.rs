@@ -18,6 +18,7 @@
 //! - `mock_display`: embedded-graphics `MockDisplay` pattern tests (overdraw panics).
 //! - `per_band`: the per-band vertex stage draws what the per-frame one draws.
 //! - `varyings`: per-vertex value vectors vs f64; the fragment hook's coverage.
+//! - `discard`: a discarded fragment writes no depth.
 //! - `fragment`: the fragment stage: Phong vs f64 and Gouraud, translucency, varyings through the clipper.
 //! - `sprite`: sprites (alpha textures, scaled, rotated, nearest/bilinear) vs an f64 sampler;
 //!   band invariance; bad input.
@@ -35,6 +36,7 @@ mod clip3d_raster;
 mod clip3d_ref;
 mod dashboard;
 mod depth3d;
+mod discard;
 mod drawables;
 mod fragment;
 mod framebuffer;
