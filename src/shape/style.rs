@@ -208,57 +208,38 @@ impl<S: Shape, C: Copy, A: Coverage> Styled<S, C, A> {
         Ok(s)
     }
 
-    /// The rows `rows()` reports. Not inlined, and one edge list at a time:
-    /// a caller that builds many shapes holds no edge list on its stack.
+    /// The rows `rows()` reports. Not inlined: a caller that builds many
+    /// shapes holds no edge list on its stack.
     #[inline(never)]
     fn extent(&self) -> Result<(i32, i32), Error> {
-        let f = self.fill_edges::<MAX_EDGES>(false)?.y_range();
-        let t = self.stroke_edges::<MAX_EDGES>(false)?.y_range();
+        let mut e = EdgeList::<MAX_EDGES>::new();
+        self.fill_edges(&mut e)?;
+        let f = e.y_range();
+        self.stroke_edges(&mut e)?;
+        let t = e.y_range();
         let (y_min, y_max) = (f.0.min(t.0), f.1.max(t.1));
         // Subpixels to whole rows, outward; empty shapes get an empty range.
         Ok(if y_min <= y_max { (y_min >> BITS, (y_max >> BITS) + 1) } else { (0, 0) })
     }
 
-    /// The shape.
-    pub fn shape(&self) -> &S {
-        &self.shape
-    }
-
-    /// The style.
-    pub fn style(&self) -> &ShapeStyle<C, A> {
-        &self.style
-    }
-
-    /// Pixel rows `.0 .. .1` the shape can touch.
-    pub fn rows(&self) -> (i32, i32) {
-        self.rows
-    }
-
-    /// The fill's edges, sorted by top for covering (`sort`) or not (for
-    /// their extent only).
-    fn fill_edges<const N: usize>(&self, sort: bool) -> Result<EdgeList<N>, Error> {
-        let mut e = EdgeList::new();
+    /// The fill's edges into `e` (emptied first), unsorted.
+    fn fill_edges<const N: usize>(&self, e: &mut EdgeList<N>) -> Result<(), Error> {
+        *e = EdgeList::new();
         if self.style.fill.is_some() {
-            self.shape.fill_contours(&mut e)?;
+            self.shape.fill_contours(e)?;
             e.close()?;
-            if sort {
-                e.sort_by_top();
-            }
         }
-        Ok(e)
+        Ok(())
     }
 
-    /// The stroke's edges, as [`Styled::fill_edges`].
-    fn stroke_edges<const N: usize>(&self, sort: bool) -> Result<EdgeList<N>, Error> {
-        let mut e = EdgeList::new();
+    /// The stroke's edges into `e` (emptied first), unsorted.
+    fn stroke_edges<const N: usize>(&self, e: &mut EdgeList<N>) -> Result<(), Error> {
+        *e = EdgeList::new();
         if self.style.stroke.is_some() && self.style.stroke_width > 0.0 {
-            self.shape.stroke_contours(&mut e, &self.style.params())?;
+            self.shape.stroke_contours(e, &self.style.params())?;
             e.close()?;
-            if sort {
-                e.sort_by_top();
-            }
         }
-        Ok(e)
+        Ok(())
     }
 }
 
@@ -275,11 +256,15 @@ impl<S: Shape, C: Interpolate, A: Coverage> Styled<S, C, A> {
         let op = u32::from(self.style.opacity);
         // Coverage times opacity, rounded; exact (and free) when opaque.
         let alpha = |a: u8| if op == 255 { a } else { div255_round(u32::from(a) * op) as u8 };
-        // Checked in `new`: building the edges cannot fail again.
-        if let (Some(paint), Ok(e)) = (&self.style.fill, self.fill_edges::<MAX_EDGES>(true)) {
+        // One edge list for both. Checked in `new`: building the edges
+        // cannot fail again.
+        let mut e = EdgeList::<MAX_EDGES>::new();
+        if let (Some(paint), Ok(())) = (&self.style.fill, self.fill_edges(&mut e)) {
+            e.sort_by_top();
             A::cover(&e, self.style.fill_rule, clip, |span, a| paint.paint(canvas, span, alpha(a)));
         }
-        if let (Some(paint), Ok(e)) = (&self.style.stroke, self.stroke_edges::<MAX_EDGES>(true)) {
+        if let (Some(paint), Ok(())) = (&self.style.stroke, self.stroke_edges(&mut e)) {
+            e.sort_by_top();
             A::cover(&e, FillRule::NonZero, clip, |span, a| paint.paint(canvas, span, alpha(a)));
         }
     }
