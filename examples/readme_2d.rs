@@ -90,7 +90,7 @@ fn replace(readme: &mut String, name: &str, text: &str) -> Result<()> {
     Ok(())
 }
 
-/// Peer / microraster (> 1: microraster faster), two decimals.
+/// Peer / microraster (> 1: microraster faster).
 fn ratio(peer: Option<f64>, ours: Option<f64>) -> Option<f64> {
     peer.zip(ours).map(|(p, o)| p / o)
 }
