@@ -24,6 +24,8 @@ use core::hint::black_box;
 use embedded_graphics_core::pixelcolor::Rgb565;
 use microraster::depth::{Depth16, DepthBand};
 
+// The shape kit does not fit the micro:bit's flash beside the rest: Cortex-M4F only.
+#[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
 #[allow(dead_code)] // the bench uses the microraster version only
 #[path = "../common/dashboard.rs"]
 pub mod dashboard;
@@ -305,7 +307,10 @@ pub fn frame<const W: usize, const H: usize, const N: usize, const P: usize>(
     match work {
         Work::Clear => r.render_with(b.band, sink, |_, _, _| {}).map_err(input),
         Work::Frame2d(_) => r.render(b.prims, b.band, sink).map_err(input),
+        #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
         Work::Dashboard => r.render_drawables(b.band, sink, dashboard::dashboard).map_err(input),
+        #[cfg(not(any(not(target_os = "none"), target_abi = "eabihf")))]
+        Work::Dashboard => Err(Error::InvalidParameter),
         Work::Streamed2d(scene) => {
             let mut result = Ok(());
             r.render_with(b.band, sink, |view, y0, y1| {
