@@ -13,7 +13,9 @@
 //! anti-aliased into its RGBA pixmap (`skia`, `skia_aa`). e-g has no polygon
 //! (its `Triangle` only) and no anti-aliasing. After criterion's output a
 //! table of ratios from this run's medians is printed (> 1: microraster is
-//! faster), with the verdict computed from it.
+//! faster), with the verdict computed from it. The `dashboard` group times
+//! the dashboard frame (`examples/common/dashboard.rs`) against its plain
+//! e-g version.
 
 use criterion::{BenchmarkGroup, Criterion, measurement::WallTime};
 use embedded_graphics::prelude::*;
@@ -28,6 +30,12 @@ use std::time::Duration;
 #[path = "common/mod.rs"]
 mod common;
 use common::{BG, Frame, H, SliceFb, W};
+#[path = "common/criterion_median.rs"]
+mod criterion_median;
+use criterion_median::median;
+#[allow(dead_code)] // each user takes what it needs
+#[path = "../examples/common/dashboard.rs"]
+mod dashboard;
 
 const FG: Rgb565 = Rgb565::new(31, 40, 8);
 const STROKE: f32 = 5.0;
@@ -281,24 +289,32 @@ fn bench_shape(c: &mut Criterion, name: &str) {
     g.finish();
 }
 
+/// The dashboard frame (`examples/common/dashboard.rs`): microraster in
+/// 16-row bands against the plain e-g version into the same framebuffer.
+fn bench_dashboard(c: &mut Criterion) {
+    let mut fb = SliceFb::default();
+    let mut band = Box::new(Band::<Rgb565, W, 16>::new(dashboard::NIGHT));
+    let renderer = Renderer::new(H as u32, dashboard::NIGHT);
+    let mut g = c.benchmark_group("dashboard");
+    run(&mut g, "mr_band16", || {
+        renderer.render_drawables(&mut band, &mut fb, dashboard::dashboard).unwrap();
+        black_box(&fb.px);
+    });
+    run(&mut g, "eg", || {
+        dashboard::dashboard_eg(&mut fb).unwrap();
+        black_box(&fb.px);
+    });
+    g.finish();
+}
+
 fn main() {
     let mut c = config();
     for name in SHAPES {
         bench_shape(&mut c, name);
     }
+    bench_dashboard(&mut c);
     c.final_summary();
     ratios();
-}
-
-/// Criterion's median estimate (ns) of `group/id` from this run, if any.
-fn median(group: &str, id: &str) -> Option<f64> {
-    let target =
-        std::env::var_os("CARGO_TARGET_DIR").map_or_else(|| std::path::PathBuf::from("target"), Into::into);
-    let text =
-        std::fs::read_to_string(target.join("criterion").join(group).join(id).join("new/estimates.json"))
-            .ok()?;
-    let rest = &text[text.find("\"median\"")?..];
-    rest[rest.find("\"point_estimate\":")? + 17..].split([',', '}']).next()?.trim().parse().ok()
 }
 
 /// Peer / microraster ratios (> 1: microraster faster) and the verdicts.
@@ -337,4 +353,12 @@ fn ratios() {
         );
     }
     println!("verdict: microraster faster in {faster} of {total} comparisons");
+    if let Some((e, m)) = median("dashboard", "eg").zip(median("dashboard", "mr_band16")) {
+        println!(
+            "dashboard frame: e-g {:.0} µs, microraster (16-row bands) {:.0} µs, e-g / microraster {:.2}",
+            e / 1e3,
+            m / 1e3,
+            e / m
+        );
+    }
 }

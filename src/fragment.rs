@@ -12,11 +12,12 @@
 //! # Order of operations, per covered pixel
 //! 1. depth test against the band's z-buffer (`state.test`); a failing
 //!    fragment stops here;
-//! 2. depth write (if `state.write`: off for translucent geometry, see
-//!    [`DepthState::READ_ONLY`]);
-//! 3. the shader computes the source colour from the pixel's varyings;
-//! 4. the blend mode combines it with the band's colour at `alpha`
-//!    ([`Replace`](crate::blend::Replace) writes it).
+//! 2. the shader computes the source colour from the pixel's varyings, or
+//!    discards the fragment, which stops here;
+//! 3. the blend mode combines it with the band's colour at `alpha`
+//!    ([`Replace`](crate::blend::Replace) writes it);
+//! 4. depth write (if `state.write`: off for translucent geometry, see
+//!    [`DepthState::READ_ONLY`]).
 //!
 //! Translucent meshes go after opaque ones, farthest first
 //! ([`back_to_front`](crate::blend::back_to_front)); where translucent
@@ -77,11 +78,8 @@ pub trait FragmentShader<C, const A: usize> {
     /// pixel keeps its colour). The draw calls this, not
     /// [`FragmentShader::shade`]; the alpha multiplies the draw's
     /// [`Output::alpha`] (exactly `round(a·b/255)`; 255 leaves it as it is).
-    /// The default is `shade` at alpha 255. The depth test and write come
-    /// first (see the [module docs](self)): a discarded fragment that passed
-    /// a writing depth test has still written its depth, so draw discarding
-    /// geometry with [`DepthState::READ_ONLY`] or depth off, after the
-    /// opaque geometry.
+    /// The default is `shade` at alpha 255. A discarded fragment writes no
+    /// depth (see the [module docs](self)): it does not occlude.
     #[inline]
     fn shade_or_discard(&self, frag: &Fragment<A>) -> Option<(C, u8)> {
         Some((self.shade(frag), 255))
@@ -145,12 +143,12 @@ where
     let base = t.tri.v[0].color;
     crate::varyings::for_each_fragment::<C, F, S, W>(&t.tri, color, depth, out.depth, |x, y, dst| {
         let frag = Fragment { x, y, varyings: vary.at(x, y), color: base };
-        if let Some((src, a)) = shader.shade_or_discard(&frag) {
-            // The default's 255 folds away: the same code as without discard.
-            let alpha =
-                if a == 255 { out.alpha } else { div255_round(u32::from(out.alpha) * u32::from(a)) as u8 };
-            *dst = out.blend.blend(src, *dst, alpha);
-        }
+        let Some((src, a)) = shader.shade_or_discard(&frag) else { return false };
+        // The default's 255 folds away: the same code as without discard.
+        let alpha =
+            if a == 255 { out.alpha } else { div255_round(u32::from(out.alpha) * u32::from(a)) as u8 };
+        *dst = out.blend.blend(src, *dst, alpha);
+        true
     });
     Ok(())
 }

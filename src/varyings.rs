@@ -122,9 +122,8 @@ fn round_shift(v: i64, s: u32) -> i64 {
 
 /// Rasterizes `tri` with the depth test of `state`, calling
 /// `shade(x, y)` for every fragment that passes; the returned colour (if any)
-/// is written. The depth is written (if `state.write`) before `shade` runs, so
-/// a fragment that returns `None` still occludes (use the colour band's
-/// existing value to emulate discard, or `DepthState::READ_ONLY`).
+/// is written, and then its depth (if `state.write`). `None` discards the
+/// fragment: neither colour nor depth is written, so it does not occlude.
 pub fn draw_fragments<C, F, const S: u32, const W: usize>(
     tri: &ScreenTriangle<S>,
     color: &mut BandView<'_, C, W>,
@@ -136,9 +135,7 @@ pub fn draw_fragments<C, F, const S: u32, const W: usize>(
     F: DepthFormat,
 {
     for_each_fragment::<C, F, S, W>(tri, color, depth, state, |x, y, p| {
-        if let Some(c) = shade(x, y) {
-            *p = c;
-        }
+        shade(x, y).map(|c| *p = c).is_some()
     });
 }
 
@@ -150,7 +147,7 @@ pub(crate) fn for_each_fragment<C, F, const S: u32, const W: usize>(
     color: &mut BandView<'_, C, W>,
     depth: &mut [[F::Storage; W]],
     state: DepthState,
-    mut visit: impl FnMut(i32, i32, &mut C),
+    mut visit: impl FnMut(i32, i32, &mut C) -> bool,
 ) where
     C: Interpolate,
     F: DepthFormat,
@@ -172,21 +169,23 @@ pub(crate) fn for_each_fragment<C, F, const S: u32, const W: usize>(
         let mut drow = depth.get_mut((span.y - y0) as usize).and_then(|r| r.get_mut(x0..x0 + len));
         let (mut z, dz) = zplane.map_or((0, 0), |p| (p.at(span.x, span.y), p.step_x()));
         for (i, p) in cspan.iter_mut().enumerate() {
-            let pass = match (&mut drow, F::ENABLED) {
+            match (&mut drow, F::ENABLED) {
                 (Some(d), true) => {
                     let zq = depth_value::<F>(z);
                     let slot = &mut d[i];
-                    let ok = state.test.passes(zq, F::to_u32(*slot));
-                    if ok && state.write {
+                    // Depth after the visit: a discarded fragment (false)
+                    // leaves it, and does not occlude.
+                    if state.test.passes(zq, F::to_u32(*slot))
+                        && visit(span.x + i as i32, span.y, p)
+                        && state.write
+                    {
                         *slot = F::from_u32(zq);
                     }
-                    ok
                 }
-                (None, true) => false,
-                (_, false) => true,
-            };
-            if pass {
-                visit(span.x + i as i32, span.y, p);
+                (None, true) => {}
+                (_, false) => {
+                    visit(span.x + i as i32, span.y, p);
+                }
             }
             z = z.wrapping_add(dz);
         }

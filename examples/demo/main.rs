@@ -16,6 +16,7 @@ use std::convert::Infallible;
 use std::error::Error;
 use std::path::{Path, PathBuf};
 
+mod dashboard;
 mod fragment;
 mod knot;
 mod scene3d;
@@ -84,6 +85,7 @@ fn main() -> Result<()> {
 
     scene3d::run(&out)?;
     knot::run(&out)?;
+    dashboard::run(&out)?;
     fragment::run(&out)
 }
 

@@ -24,6 +24,11 @@ use core::hint::black_box;
 use embedded_graphics_core::pixelcolor::Rgb565;
 use microraster::depth::{Depth16, DepthBand};
 
+// The shape kit does not fit the micro:bit's flash beside the rest: Cortex-M4F only.
+#[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+#[allow(dead_code)] // the bench uses the microraster version only
+#[path = "../common/dashboard.rs"]
+pub mod dashboard;
 #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
 #[path = "../common/knot_mesh.rs"]
 pub mod knot_mesh;
@@ -96,6 +101,10 @@ pub enum Work {
     /// breakdown of docs/setup_cost.md; not in the default table (select
     /// it by its scene, `knot20k-stages`).
     KnotStage(Vertex, Stage),
+    /// The 2D kit's dashboard ([`dashboard::dashboard`]: shapes with
+    /// gradients, anti-aliasing and translucency, an alpha sprite, text),
+    /// built and drawn in every band by [`Renderer::render_drawables`].
+    Dashboard,
 }
 
 /// How far [`Work::KnotStage`] goes into each band's triangles.
@@ -161,6 +170,7 @@ pub const M4F: &[Bench] = &[
     bench("knot20k", Work::Meshlets(F32, Aff)),
     bench("knot20k", Work::Meshlets(F32, Persp)),
     bench("knot20k", Work::Meshlets(Fix, Aff)),
+    bench("dashboard", Work::Dashboard),
     // The stage breakdown (docs/setup_cost.md): `table m4f knot20k,knot20k-stages`.
     probe("knot20k-stages", Work::KnotStage(F32, Stage::Vertex)),
     probe("knot20k-stages", Work::KnotStage(F32, Stage::Coverage)),
@@ -213,13 +223,14 @@ impl Work {
             Work::KnotStage(Fix, Stage::Vertex) => "Fx affine: band loop + vertex stage only",
             Work::KnotStage(Fix, Stage::Coverage) => "Fx affine: + coverage, no planes",
             Work::KnotStage(Fix, Stage::NoWrites) => "Fx affine: all but pixel writes",
+            Work::Dashboard => "2D kit, drawn per band",
         }
     }
 
     /// The buffers it uses (names of the firmware's statics).
     pub fn buffers(&self) -> &'static str {
         match self {
-            Work::Clear | Work::Streamed2d(_) => "BAND",
+            Work::Clear | Work::Streamed2d(_) | Work::Dashboard => "BAND",
             Work::Frame2d(_) => "BAND,PRIMS",
             Work::Vertex3d(_) | Work::VertexPerBand3d(_) => "BINS",
             Work::Vertex3dCached => "BINS,CACHE",
@@ -296,6 +307,10 @@ pub fn frame<const W: usize, const H: usize, const N: usize, const P: usize>(
     match work {
         Work::Clear => r.render_with(b.band, sink, |_, _, _| {}).map_err(input),
         Work::Frame2d(_) => r.render(b.prims, b.band, sink).map_err(input),
+        #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+        Work::Dashboard => r.render_drawables(b.band, sink, dashboard::dashboard).map_err(input),
+        #[cfg(not(any(not(target_os = "none"), target_abi = "eabihf")))]
+        Work::Dashboard => Err(Error::InvalidParameter),
         Work::Streamed2d(scene) => {
             let mut result = Ok(());
             r.render_with(b.band, sink, |view, y0, y1| {
@@ -509,7 +524,7 @@ pub fn primitives<const W: usize, const H: usize, const N: usize, const P: usize
         .map(|()| (tris, 0))
     };
     match work {
-        Work::Clear => Ok((0, 0)),
+        Work::Clear | Work::Dashboard => Ok((0, 0)),
         #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
         Work::Meshlets(..) | Work::KnotStage(..) => Ok((knot_mesh::KNOT.triangles.len() as u32, 0)),
         #[cfg(not(any(not(target_os = "none"), target_abi = "eabihf")))]

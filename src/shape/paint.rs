@@ -125,17 +125,24 @@ impl<C: Interpolate> Paint<C> {
     /// # Ok::<(), microraster::Error>(())
     /// ```
     pub fn color_at(&self, x: i32, y: i32) -> C {
-        let (px, py) = (x as f32 + 0.5, y as f32 + 0.5);
         match self {
             Paint::Solid(c) => *c,
-            Paint::Linear(g) => {
-                let t = (px - g.start.0) * g.k.0 + (py - g.start.1) * g.k.1;
-                Mix.blend(g.colors[1], g.colors[0], weight(t))
+            Paint::Linear(LinearGradient { colors, .. }) | Paint::Radial(RadialGradient { colors, .. }) => {
+                Mix.blend(colors[1], colors[0], self.weight_at(x, y))
             }
+        }
+    }
+
+    /// A gradient's `round(255·t)` at pixel `(x, y)` (0 for a solid paint).
+    #[inline]
+    fn weight_at(&self, x: i32, y: i32) -> u8 {
+        let (px, py) = (x as f32 + 0.5, y as f32 + 0.5);
+        match self {
+            Paint::Solid(_) => 0,
+            Paint::Linear(g) => weight((px - g.start.0) * g.k.0 + (py - g.start.1) * g.k.1),
             Paint::Radial(g) => {
                 let (dx, dy) = (px - g.center.0, py - g.center.1);
-                let t = crate::math::Scalar::sqrt(dx * dx + dy * dy) * g.inv_r;
-                Mix.blend(g.colors[1], g.colors[0], weight(t))
+                weight(crate::math::Scalar::sqrt(dx * dx + dy * dy) * g.inv_r)
             }
         }
     }
@@ -144,7 +151,22 @@ impl<C: Interpolate> Paint<C> {
     pub(crate) fn paint<T: Canvas<C>>(&self, canvas: &mut T, span: Span, alpha: u8) {
         match self {
             Paint::Solid(c) => canvas.fill(span, *c, alpha),
-            _ => canvas.shade(span, (0..span.len as i32).map(|i| self.color_at(span.x + i, span.y)), alpha),
+            // Constant along a row (`(px − x0)·0` is 0 for every px): one colour.
+            Paint::Linear(g) if g.k.0 == 0.0 => canvas.fill(span, self.color_at(span.x, span.y), alpha),
+            Paint::Linear(LinearGradient { colors, .. }) | Paint::Radial(RadialGradient { colors, .. }) => {
+                // The colour depends on the 8-bit weight alone, which changes
+                // every pixel or more: mix again only when it changes.
+                let mut last = (self.weight_at(span.x, span.y), colors[0]);
+                last.1 = Mix.blend(colors[1], colors[0], last.0);
+                let each = (0..span.len as i32).map(move |i| {
+                    let w = self.weight_at(span.x + i, span.y);
+                    if w != last.0 {
+                        last = (w, Mix.blend(colors[1], colors[0], w));
+                    }
+                    last.1
+                });
+                canvas.shade(span, each, alpha)
+            }
         }
     }
 }

@@ -6,6 +6,7 @@ use super::edges::{BITS, EdgeList};
 use super::shapes::Shape;
 use super::stroke::StrokeParams;
 use super::{Aliased, AntiAliased, Coverage, FillRule, MAX_EDGES, Paint};
+use crate::blend::{OPAQUE, div255_round};
 use crate::{Error, Interpolate};
 use embedded_graphics_core::Drawable;
 use embedded_graphics_core::prelude::DrawTarget;
@@ -62,6 +63,9 @@ pub struct ShapeStyle<C, A = Aliased> {
     pub fill_rule: FillRule,
     /// Coverage: [`Aliased`] or [`AntiAliased`].
     pub antialias: A,
+    /// Opacity of fill and stroke (255: opaque), multiplied into each
+    /// pixel's coverage: a translucent shape blends each pixel once.
+    pub opacity: u8,
 }
 
 impl<C> ShapeStyle<C, Aliased> {
@@ -76,6 +80,7 @@ impl<C> ShapeStyle<C, Aliased> {
             miter_limit: 4.0,
             fill_rule: FillRule::NonZero,
             antialias: Aliased,
+            opacity: OPAQUE,
         }
     }
 
@@ -117,6 +122,24 @@ impl<C, A: Coverage> ShapeStyle<C, A> {
     pub fn with_fill_rule(self, fill_rule: FillRule) -> Self {
         ShapeStyle { fill_rule, ..self }
     }
+    /// With this opacity (0 transparent, 255 opaque). On a plain
+    /// `DrawTarget` a partial pixel follows [`TargetCanvas`]'s rule.
+    ///
+    /// ```
+    /// use embedded_graphics_core::pixelcolor::{Gray8, GrayColor};
+    /// use microraster::shape::{Rect, Shape, ShapeStyle};
+    /// use microraster::{Band, Renderer};
+    /// use embedded_graphics::mock_display::MockDisplay;
+    /// let veil = Rect::new(0.0, 0.0, 2.0, 1.0)?.styled(ShapeStyle::fill(Gray8::WHITE).with_opacity(128))?;
+    /// let mut band = Band::<Gray8, 2, 1>::new(Gray8::BLACK);
+    /// let mut display = MockDisplay::new();
+    /// Renderer::new(1, Gray8::BLACK).render_with(&mut band, &mut display, |view, _, _| veil.draw_on(view)).unwrap();
+    /// assert_eq!(display.get_pixel(embedded_graphics_core::prelude::Point::new(0, 0)), Some(Gray8::new(128)));
+    /// # Ok::<(), microraster::Error>(())
+    /// ```
+    pub fn with_opacity(self, opacity: u8) -> Self {
+        ShapeStyle { opacity, ..self }
+    }
     /// The same style, anti-aliased.
     pub fn antialiased(self) -> ShapeStyle<C, AntiAliased> {
         self.with_coverage(AntiAliased)
@@ -127,8 +150,8 @@ impl<C, A: Coverage> ShapeStyle<C, A> {
     }
 
     fn with_coverage<B: Coverage>(self, antialias: B) -> ShapeStyle<C, B> {
-        let ShapeStyle { fill, stroke, stroke_width, join, cap, miter_limit, fill_rule, .. } = self;
-        ShapeStyle { fill, stroke, stroke_width, join, cap, miter_limit, fill_rule, antialias }
+        let ShapeStyle { fill, stroke, stroke_width, join, cap, miter_limit, fill_rule, opacity, .. } = self;
+        ShapeStyle { fill, stroke, stroke_width, join, cap, miter_limit, fill_rule, antialias, opacity }
     }
 
     fn params(&self) -> StrokeParams {
@@ -181,63 +204,68 @@ impl<S: Shape, C: Copy, A: Coverage> Styled<S, C, A> {
             return Err(Error::InvalidParameter);
         }
         let mut s = Styled { shape, style, rows: (0, 0) };
-        let (f, t) = (s.fill_edges::<MAX_EDGES>()?.y_range(), s.stroke_edges::<MAX_EDGES>()?.y_range());
-        let (y_min, y_max) = (f.0.min(t.0), f.1.max(t.1));
-        // Subpixels to whole rows, outward; empty shapes get an empty range.
-        s.rows = if y_min <= y_max { (y_min >> BITS, (y_max >> BITS) + 1) } else { (0, 0) };
+        s.rows = s.extent()?;
         Ok(s)
     }
 
-    /// The shape.
-    pub fn shape(&self) -> &S {
-        &self.shape
+    /// The rows `rows()` reports. Not inlined: a caller that builds many
+    /// shapes holds no edge list on its stack.
+    #[inline(never)]
+    fn extent(&self) -> Result<(i32, i32), Error> {
+        let mut e = EdgeList::<MAX_EDGES>::new();
+        self.fill_edges(&mut e)?;
+        let f = e.y_range();
+        self.stroke_edges(&mut e)?;
+        let t = e.y_range();
+        let (y_min, y_max) = (f.0.min(t.0), f.1.max(t.1));
+        // Subpixels to whole rows, outward; empty shapes get an empty range.
+        Ok(if y_min <= y_max { (y_min >> BITS, (y_max >> BITS) + 1) } else { (0, 0) })
     }
 
-    /// The style.
-    pub fn style(&self) -> &ShapeStyle<C, A> {
-        &self.style
-    }
-
-    /// Pixel rows `.0 .. .1` the shape can touch.
-    pub fn rows(&self) -> (i32, i32) {
-        self.rows
-    }
-
-    fn fill_edges<const N: usize>(&self) -> Result<EdgeList<N>, Error> {
-        let mut e = EdgeList::new();
+    /// The fill's edges into `e` (emptied first), unsorted.
+    fn fill_edges<const N: usize>(&self, e: &mut EdgeList<N>) -> Result<(), Error> {
+        *e = EdgeList::new();
         if self.style.fill.is_some() {
-            self.shape.fill_contours(&mut e)?;
+            self.shape.fill_contours(e)?;
             e.close()?;
-            e.sort_by_top();
         }
-        Ok(e)
+        Ok(())
     }
 
-    fn stroke_edges<const N: usize>(&self) -> Result<EdgeList<N>, Error> {
-        let mut e = EdgeList::new();
+    /// The stroke's edges into `e` (emptied first), unsorted.
+    fn stroke_edges<const N: usize>(&self, e: &mut EdgeList<N>) -> Result<(), Error> {
+        *e = EdgeList::new();
         if self.style.stroke.is_some() && self.style.stroke_width > 0.0 {
-            self.shape.stroke_contours(&mut e, &self.style.params())?;
+            self.shape.stroke_contours(e, &self.style.params())?;
             e.close()?;
-            e.sort_by_top();
         }
-        Ok(e)
+        Ok(())
     }
 }
 
 impl<S: Shape, C: Interpolate, A: Coverage> Styled<S, C, A> {
     /// Draws on `canvas` (a band view, or a readable framebuffer): fill
     /// first, then stroke; partial pixels are blended exactly.
+    // Not inlined, for the stack (see `extent`).
+    #[inline(never)]
     pub fn draw_on<T: Canvas<C>>(&self, canvas: &mut T) {
         let clip = canvas.clip();
         if clip.y1() <= self.rows.0 || clip.y0() >= self.rows.1 {
             return;
         }
-        // Checked in `new`: building the edges cannot fail again.
-        if let (Some(paint), Ok(e)) = (&self.style.fill, self.fill_edges::<MAX_EDGES>()) {
-            A::cover(&e, self.style.fill_rule, clip, |span, a| paint.paint(canvas, span, a));
+        let op = u32::from(self.style.opacity);
+        // Coverage times opacity, rounded; exact (and free) when opaque.
+        let alpha = |a: u8| if op == 255 { a } else { div255_round(u32::from(a) * op) as u8 };
+        // One edge list for both. Checked in `new`: building the edges
+        // cannot fail again.
+        let mut e = EdgeList::<MAX_EDGES>::new();
+        if let (Some(paint), Ok(())) = (&self.style.fill, self.fill_edges(&mut e)) {
+            e.sort_by_top();
+            A::cover(&e, self.style.fill_rule, clip, |span, a| paint.paint(canvas, span, alpha(a)));
         }
-        if let (Some(paint), Ok(e)) = (&self.style.stroke, self.stroke_edges::<MAX_EDGES>()) {
-            A::cover(&e, FillRule::NonZero, clip, |span, a| paint.paint(canvas, span, a));
+        if let (Some(paint), Ok(())) = (&self.style.stroke, self.stroke_edges(&mut e)) {
+            e.sort_by_top();
+            A::cover(&e, FillRule::NonZero, clip, |span, a| paint.paint(canvas, span, alpha(a)));
         }
     }
 }

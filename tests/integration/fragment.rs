@@ -130,7 +130,8 @@ fn phong_matches_an_f64_evaluation_and_keeps_highlights_gouraud_loses() {
     assert!(phong_peak >= gouraud_peak + 20, "Phong {phong_peak}, Gouraud {gouraud_peak}");
 }
 
-fn rect(x0: i32, x1: i32, depth: u32, color: [u8; 3]) -> [FragTriangle<4, 0>; 2] {
+/// Two triangles covering columns `x0..x1`, rows 10..50, flat at `depth`.
+pub(crate) fn rect(x0: i32, x1: i32, depth: u32, color: [u8; 3]) -> [FragTriangle<4, 0>; 2] {
     let v = |x: i32, y: i32| ScreenVertex {
         pos: SubPoint::<4>::from_pixels(x, y).unwrap(),
         depth,

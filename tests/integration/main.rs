@@ -12,11 +12,13 @@
 //! - `blend`: every blend mode × colour format vs an `f64` reference; translucent drawing; depth sort.
 //! - `gouraud`: Gouraud colour vs an `f64` barycentric reference.
 //! - `bands`: identical images for every band height; one `fill_contiguous` per band.
+//! - `dashboard`: the dashboard example: band invariance, text identical to plain e-g.
 //! - `drawables`: embedded-graphics text, images and styled primitives drawn into bands
 //!   match e-g into a framebuffer, for every band height; HUD over 3D.
 //! - `mock_display`: embedded-graphics `MockDisplay` pattern tests (overdraw panics).
 //! - `per_band`: the per-band vertex stage draws what the per-frame one draws.
 //! - `varyings`: per-vertex value vectors vs f64; the fragment hook's coverage.
+//! - `discard`: a discarded fragment writes no depth.
 //! - `fragment`: the fragment stage: Phong vs f64 and Gouraud, translucency, varyings through the clipper.
 //! - `sprite`: sprites (alpha textures, scaled, rotated, nearest/bilinear) vs an f64 sampler;
 //!   band invariance; bad input.
@@ -32,7 +34,9 @@ mod bands;
 mod blend;
 mod clip3d_raster;
 mod clip3d_ref;
+mod dashboard;
 mod depth3d;
+mod discard;
 mod drawables;
 mod fragment;
 mod framebuffer;

@@ -1,0 +1,133 @@
+//! Writes the README's 2D numbers from their sources, between markers:
+//!
+//! * `dashboard`: the line counts of the two dashboard functions in
+//!   `examples/common/dashboard.rs` (non-blank, non-comment lines between
+//!   the `dashboard:mr:*` and `dashboard:eg:*` markers), the verdict against
+//!   the target (microraster's no longer than plain embedded-graphics'),
+//!   and microraster's code itself;
+//! * `shapes-ratios`: the ratios of `cargo bench --bench shapes` (criterion's
+//!   medians of its last run, in `target/criterion`), each shape and the
+//!   dashboard frame against their peers, with the verdicts.
+//!
+//! ```text
+//! cargo bench --bench shapes        # optional: refreshes the ratios
+//! cargo run --example readme_2d     # rewrites both README sections
+//! ```
+//!
+//! A section whose numbers are missing (no bench run yet) is left as it is.
+
+use std::error::Error;
+
+#[path = "../benches/common/criterion_median.rs"]
+mod criterion_median;
+use criterion_median::median;
+
+type Result<T> = std::result::Result<T, Box<dyn Error>>;
+
+const SCENE: &str = "examples/common/dashboard.rs";
+const SHAPES: [(&str, &str); 8] = [
+    ("rect", "rect"),
+    ("rounded", "rounded rect"),
+    ("circle", "circle"),
+    ("ellipse", "ellipse"),
+    ("arc", "arc (stroke 5 px)"),
+    ("sector", "sector"),
+    ("polygon", "polygon (star)"),
+    ("polyline", "polyline (stroke 5 px)"),
+];
+
+fn main() -> Result<()> {
+    let source = std::fs::read_to_string(SCENE)?;
+    let mut readme = std::fs::read_to_string("README.md")?;
+    let (mr, eg) = (block(&source, "mr")?, block(&source, "eg")?);
+    let (n_mr, n_eg) = (count(&mr), count(&eg));
+    let verdict = if n_mr <= n_eg { "met" } else { "missed" };
+    println!("dashboard: microraster {n_mr} lines, plain embedded-graphics {n_eg} lines: target {verdict}");
+    let text = format!(
+        "![the dashboard with microraster](docs/dashboard.png) \
+         ![the same screen in plain embedded-graphics](docs/dashboard_eg.png)\n\n\
+         Left: microraster, {n_mr} lines; right: plain embedded-graphics, {n_eg} lines \
+         (non-blank, non-comment lines of `dashboard` and `dashboard_eg` in \
+         [`{SCENE}`]({SCENE}); target, no more lines than e-g: **{verdict}**).\n\n\
+         ```rust,ignore\n{}```\n",
+        mr.iter().map(|l| format!("{l}\n")).collect::<String>()
+    );
+    replace(&mut readme, "dashboard", &text)?;
+    match ratios() {
+        Some(table) => replace(&mut readme, "shapes-ratios", &table)?,
+        None => println!(
+            "shapes-ratios: no complete `cargo bench --bench shapes` run found; section left as it is"
+        ),
+    }
+    std::fs::write("README.md", readme)?;
+    println!("README.md rewritten");
+    Ok(())
+}
+
+/// The lines between `// dashboard:<name>:begin` and `…:end`.
+fn block<'a>(source: &'a str, name: &str) -> Result<Vec<&'a str>> {
+    let (begin, end) = (format!("// dashboard:{name}:begin"), format!("// dashboard:{name}:end"));
+    let lines: Vec<&str> = source.lines().collect();
+    let at = |m: &str| lines.iter().position(|l| l.trim() == m).ok_or(format!("no `{m}` in {SCENE}"));
+    let (b, e) = (at(&begin)?, at(&end)?);
+    if b >= e {
+        return Err(format!("`{begin}` after `{end}`").into());
+    }
+    Ok(lines[b + 1..e].to_vec())
+}
+
+/// Non-blank lines that are not comments (`//`, `///`).
+fn count(lines: &[&str]) -> usize {
+    lines.iter().filter(|l| !l.trim().is_empty() && !l.trim_start().starts_with("//")).count()
+}
+
+/// Replaces the text between `<!-- name:begin -->` and `<!-- name:end -->`.
+fn replace(readme: &mut String, name: &str, text: &str) -> Result<()> {
+    let (begin, end) = (format!("<!-- {name}:begin -->\n"), format!("<!-- {name}:end -->"));
+    let b = readme.find(&begin).ok_or(format!("no `{begin}` in README.md"))? + begin.len();
+    let e = readme[b..].find(&end).ok_or(format!("no `{end}` in README.md"))? + b;
+    readme.replace_range(b..e, text);
+    Ok(())
+}
+
+/// Peer / microraster (> 1: microraster faster).
+fn ratio(peer: Option<f64>, ours: Option<f64>) -> Option<f64> {
+    peer.zip(ours).map(|(p, o)| p / o)
+}
+
+/// The ratio table and its verdicts, if every shape was measured.
+fn ratios() -> Option<String> {
+    let cell = |r: Option<f64>| r.map_or("–".into(), |r| format!("{r:.2}"));
+    let mut rows = String::from(
+        "| shape | e-g / direct | tiny-skia / bands | tiny-skia AA / AA bands |\n|---|---|---|---|\n",
+    );
+    let (mut faster, mut total, mut fill_worst) = (0, 0, f64::INFINITY);
+    for (name, label) in SHAPES {
+        let g = format!("shape_{name}");
+        let m = |id: &str| median(&g, id);
+        median(&g, "mr_band16")?;
+        let r = [
+            ratio(m("eg"), m("mr_direct")),
+            ratio(m("skia"), m("mr_band16")),
+            ratio(m("skia_aa"), m("mr_aa_band16")),
+        ];
+        for v in r.iter().flatten() {
+            total += 1;
+            faster += usize::from(*v > 1.0);
+            if !matches!(name, "arc" | "polyline") {
+                fill_worst = fill_worst.min(*v);
+            }
+        }
+        rows += &format!("| {label} | {} | {} | {} |\n", cell(r[0]), cell(r[1]), cell(r[2]));
+    }
+    let dash = ratio(median("dashboard", "eg"), median("dashboard", "mr_band16"))?;
+    rows += &format!(
+        "\nmicroraster is faster in {faster} of {total} comparisons; the slowest filled shape \
+         takes {:.1}× its peer's time. The dashboard frame ([below](#the-dashboard); microraster in 16-row \
+         bands, e-g into a framebuffer): e-g / microraster = {:.2} ({}).\n",
+        1.0 / fill_worst,
+        dash,
+        if dash >= 1.0 { "microraster faster" } else { "e-g faster" }
+    );
+    Some(rows)
+}
