@@ -212,9 +212,16 @@ mod firmware {
         .unwrap();
         let mut sio = Sio::new(pac.SIO);
         let pins = rp2040_hal::gpio::Pins::new(pac.IO_BANK0, pac.PADS_BANK0, sio.gpio_bank0, &mut pac.RESETS);
-        let spi = spi::Spi::<_, _, _, 8>::new(pac.SPI0, (pins.gpio19.into_function(), pins.gpio18.into_function()))
-            .init(&mut pac.RESETS, clocks.peripheral_clock.freq(), 62_500_000u32.Hz(), embedded_hal::spi::MODE_3);
-        let mut panel = Panel { spi, dc: pins.gpio16.into_push_pull_output(), cs: pins.gpio17.into_push_pull_output() };
+        let spi =
+            spi::Spi::<_, _, _, 8>::new(pac.SPI0, (pins.gpio19.into_function(), pins.gpio18.into_function()))
+                .init(
+                    &mut pac.RESETS,
+                    clocks.peripheral_clock.freq(),
+                    62_500_000u32.Hz(),
+                    embedded_hal::spi::MODE_3,
+                );
+        let mut panel =
+            Panel { spi, dc: pins.gpio16.into_push_pull_output(), cs: pins.gpio17.into_push_pull_output() };
         let mut rst = pins.gpio20.into_push_pull_output();
         let _ = pins.gpio21.into_push_pull_output().set_high(); // backlight
         let _ = rst.set_low();
@@ -223,7 +230,9 @@ mod firmware {
         ms(120);
         // Sleep out, 16-bit colour, landscape (MADCTL MV | MX), inverted
         // colours (most modules), display on.
-        for (cmd, args, wait) in [(0x11, &[][..], 120), (0x3A, &[0x55], 0), (0x36, &[0x60], 0), (0x21, &[], 0)] {
+        for (cmd, args, wait) in
+            [(0x11, &[][..], 120), (0x3A, &[0x55], 0), (0x36, &[0x60], 0), (0x21, &[], 0)]
+        {
             panel.command(cmd, args);
             ms(wait);
         }
