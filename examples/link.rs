@@ -9,10 +9,10 @@
 //!
 //! * Bytes: the standard 3D scene spinning (angle 0.05 rad a frame) for 60
 //!   frames at 320 × 240 Rgb565, 16-row bands, 2 bytes a pixel on the wire.
-//! * Frame time: a model. Instructions per frame of the same scene on the
-//!   Cortex-M4F come from `docs/data/cortex-m.tsv` (QEMU, `bash
-//!   scripts/firmware.sh sweep`), split evenly over the 15 bands after the
-//!   vertex stage; one instruction per cycle at 168 MHz (STM32F405).
+//! * Frame time: a model. Instructions of the same scene on the Cortex-M4F,
+//!   the vertex stage and each band apart, come from `docs/data/link-m4f.tsv`
+//!   (QEMU, `bash scripts/firmware.sh link`, examples/fw_link.rs); one
+//!   instruction per cycle at 168 MHz (STM32F405).
 //! * Speed-up: wall time of the 60 frames drawn by `render_3d` on one thread
 //!   and by `render_3d_threads` on two, best of 5 runs each, in the same run.
 
@@ -34,8 +34,7 @@ const BANDS: usize = HEIGHT as usize / BAND;
 const FRAMES: usize = 60;
 const BG: Rgb565 = Rgb565::BLACK;
 const CPU_HZ: f64 = 168e6;
-const KEY_FRAME: &str = "mesh3d/f32/D16/persp/band16/S4";
-const KEY_VERTEX: &str = "mesh3d/vertex/f32";
+const TSV: &str = "docs/data/link-m4f.tsv";
 
 fn bins(angle: f32) -> heapless::Vec<ScreenTriangle<4>, BINS> {
     let pipeline = Scene3d::pipeline::<f32, 4>(W as u32, HEIGHT).expect("scene");
@@ -84,34 +83,75 @@ fn bytes_table(frames: &[heapless::Vec<ScreenTriangle<4>, BINS>]) -> String {
     s
 }
 
-/// Instructions per frame of `key` on the M4F from docs/data/cortex-m.tsv.
-fn m4f_count(tsv: &str, key: &str) -> Option<f64> {
-    tsv.lines().find_map(|l| {
-        let mut f = l.split('\t');
-        (f.next() == Some("m4f") && f.next() == Some(key)).then(|| f.next()?.parse().ok())?
-    })
+/// One measured frame on the M4F: vertex-stage instructions and each
+/// band's rendering instructions (docs/data/link-m4f.tsv, `bash
+/// scripts/firmware.sh link`).
+struct Measured {
+    vertex: f64,
+    bands: Vec<f64>,
+}
+
+fn measured(tsv: &str) -> Vec<Measured> {
+    let mut frames: Vec<Measured> = Vec::new();
+    for line in tsv.lines().filter(|l| !l.starts_with('#')) {
+        let f: Vec<&str> = line.split('\t').collect();
+        let num = |i: usize| f.get(i).and_then(|x| x.parse::<f64>().ok()).expect("number in link-m4f.tsv");
+        match f[0] {
+            "vertex" => frames.push(Measured { vertex: num(2), bands: Vec::new() }),
+            "band" => frames.last_mut().expect("vertex record first").bands.push(num(3)),
+            other => panic!("unknown record {other:?} in link-m4f.tsv"),
+        }
+    }
+    frames
+}
+
+/// The double-banded frame time: band k + 1 renders from the moment band
+/// k's transfer starts, which is when band k is rendered and band k − 1
+/// sent (`B_k = max(R_k, S_{k−1})`, `R_{k+1} = B_k + r_{k+1}`, `S_k = B_k + s`).
+fn double_banded(v: f64, r: &[f64], s: f64) -> f64 {
+    let (mut rendered, mut sent) = (v + r[0], v);
+    for k in 0..r.len() {
+        let start = rendered.max(sent);
+        sent = start + s;
+        rendered = start + r.get(k + 1).copied().unwrap_or(0.0);
+    }
+    sent
 }
 
 fn model_table() -> String {
-    let tsv = std::fs::read_to_string("docs/data/cortex-m.tsv").expect("docs/data/cortex-m.tsv");
-    let (frame, vertex) =
-        (m4f_count(&tsv, KEY_FRAME).expect(KEY_FRAME), m4f_count(&tsv, KEY_VERTEX).expect(KEY_VERTEX));
-    let n = BANDS as f64;
-    let v = vertex / CPU_HZ;
-    let r = (frame - vertex) / n / CPU_HZ;
+    let tsv = std::fs::read_to_string(TSV).expect(TSV);
+    let frames = measured(&tsv);
+    let all: Vec<f64> = frames.iter().flat_map(|f| f.bands.iter().copied()).collect();
+    let (lo, hi) = all.iter().fold((f64::INFINITY, 0f64), |(lo, hi), &r| (lo.min(r), hi.max(r)));
+    let mean_v = frames.iter().map(|f| f.vertex).sum::<f64>() / frames.len() as f64;
     let bytes = (W * BAND * 2) as f64;
     let mut s = format!(
-        "Model: v = {vertex:.0} vertex-stage instructions, r = ({frame:.0} − {vertex:.0}) / {BANDS} instructions per band, \
-         at 1 instruction per cycle and 168 MHz: v = {:.2} ms, r = {:.3} ms; a band is {bytes:.0} bytes, \
-         s = 8 · {bytes:.0} / f_SPI. Blocking: T = v + n·(r + s). Double-banded: T = v + r + (n − 1)·max(r, s) + s, n = {BANDS}.\n\n",
-        v * 1e3,
-        r * 1e3
+        "Model, from measured Cortex-M4F instructions per band (`{TSV}`, `bash scripts/firmware.sh link`: \
+         {} frames of the spinning 3D scene, QEMU `-icount`) at 1 instruction per cycle and 168 MHz: \
+         vertex stage v (mean {:.2} ms), band k rendered in r_k ({:.3} – {:.3} ms over all bands), \
+         a band of {bytes:.0} bytes sent in s = 8 · {bytes:.0} / f_SPI. \
+         Blocking: T = v + Σ (r_k + s). Double-banded: R_0 = v + r_0, S_{{−1}} = v; \
+         band k's transfer starts at B_k = max(R_k, S_{{k−1}}), ends at S_k = B_k + s, \
+         and band k + 1 renders meanwhile: R_{{k+1}} = B_k + r_{{k+1}}; T = S_{{n−1}}, n = {BANDS}. \
+         Frame times are means over the measured frames; the SpiPanel sink's conversion into its \
+         wire buffer is not counted.\n\n",
+        frames.len(),
+        mean_v / CPU_HZ * 1e3,
+        lo / CPU_HZ * 1e3,
+        hi / CPU_HZ * 1e3,
     );
     s += "| SPI clock | s per band (ms) | blocking frame (ms) | double-banded frame (ms) | ratio |\n|---|---|---|---|---|\n";
     for mhz in [20.0, 40.0, 62.5] {
         let send = 8.0 * bytes / (mhz * 1e6);
-        let blocking = v + n * (r + send);
-        let double = v + r + (n - 1.0) * r.max(send) + send;
+        let (mut blocking, mut double) = (0.0, 0.0);
+        for f in &frames {
+            let r: Vec<f64> = f.bands.iter().map(|i| i / CPU_HZ).collect();
+            let v = f.vertex / CPU_HZ;
+            blocking += v + r.iter().map(|r| r + send).sum::<f64>();
+            double += double_banded(v, &r, send);
+        }
+        let n = frames.len() as f64;
+        let (blocking, double) = (blocking / n, double / n);
         s += &format!(
             "| {mhz} MHz | {:.3} | {:.2} | {:.2} | {:.2} |\n",
             send * 1e3,

@@ -43,9 +43,18 @@ for m in texture blend fragment aa line_aa shape; do
     fi
   done
 done
+# The display link's async half (feature `async`, on in these builds through
+# the dev-dependency) is generic: a program that does not call it links none.
+for b in size_2d size_3d size_frag; do
+  if nm -C "target/release/examples/$b" | grep -qE 'microraster::render::(link_async|spi_panel)'; then
+    echo "FAIL: $b links the async display link, which it does not use" >&2
+    exit 1
+  fi
+done
 echo
 echo "The 2D-only build links no clip3d, depth, raster3d or pipeline code, and neither"
-echo "the 2D nor the 3D build links texture, blend, fragment, aa, line_aa or shape code (checked)."
+echo "the 2D nor the 3D build links texture, blend, fragment, aa, line_aa or shape code,"
+echo "and none of the three links the async display link (checked)."
 
 # The same two programs built as if the fragment stage did not exist (its
 # modules compiled out): their code must be byte for byte the same size.

@@ -24,14 +24,22 @@
 #                                           speed/accuracy report's configurations into
 #                                           docs/data/cortex-m.tsv (examples/fw_sweep); then
 #                                           `cargo run --release --example report`
+#   bash scripts/firmware.sh link           Cortex-M4F instructions per band of the standard 3D
+#                                           scene (examples/fw_link) into docs/data/link-m4f.tsv;
+#                                           then `cargo run --release --example link -- README.md`
 #   bash scripts/firmware.sh build-st7789   build the ST7789 display example (its own
 #                                           package: examples/st7789, STM32F405), print
 #                                           its path; flash it with probe-rs (see there)
+#   bash scripts/firmware.sh build-st7789-dma
+#                                           its DMA build (examples/st7789_dma: embassy-stm32,
+#                                           microraster's async display link), print its path
+#   bash scripts/firmware.sh build-rp2040   the RP2040 dual-core example (examples/rp2040,
+#                                           thumbv6m; QEMU has no RP2040: built, not run)
 #   bash scripts/firmware.sh qemu ELF       run an ELF under QEMU (cargo's runner)
 #   bash scripts/firmware.sh toolchain      which toolchain builds the firmware
 #
-# `check` also builds the ST7789 example and runs the benchmark (it prints the
-# table), so CI covers all of it.
+# `check` also builds the ST7789 examples (blocking and DMA) and the RP2040
+# example, and runs the benchmark (it prints the table), so CI covers all of it.
 #
 # Instruction counts (`table`). examples/fw_bench renders each configuration
 # of its lists (examples/fw_bench/benches.rs: one line per configuration)
@@ -333,14 +341,15 @@ table() { # table [TARGET [ROWS]]; with write=1 and no arguments also the data a
   cargo run --quiet --example fw_bench -- table "$FW_DIR/table-input.txt" "${out[@]}"
 }
 
-# The ST7789 display example is a package of its own (examples/st7789/, see
-# its Cargo.toml), with its own lock file: built for thumbv7em-none-eabihf in a
-# target folder of its own (sharing one with the other firmware would rebuild
-# the crates both use at every switch), and checked on the host, where it is a
-# trivial program.
-build_st7789() { # prints the ELF's path
-  local t=thumbv7em-none-eabihf elf start=$SECONDS dir=$FW_DIR/st7789
-  local cargo_args=(--quiet --release --target "$t" --manifest-path "$ROOT/examples/st7789/Cargo.toml")
+# The display examples are packages of their own (examples/st7789/,
+# examples/st7789_dma/, examples/rp2040/, see their Cargo.toml), each with its
+# own lock file: built for its triple in a target folder of its own (sharing
+# one with the other firmware would rebuild the crates both use at every
+# switch), and checked on the host, where each is a trivial program.
+build_package() { # build_package DIR TRIPLE NOTE: prints the ELF's path
+  local name=$1 t=$2 note=$3 elf start=$SECONDS dir=$FW_DIR/$1
+  local manifest=$ROOT/examples/$1/Cargo.toml
+  local cargo_args=(--quiet --release --target "$t" --manifest-path "$manifest")
   if has_target "$t"; then
     CARGO_TARGET_DIR="$dir" cargo build "${cargo_args[@]}" >&2
   else
@@ -350,12 +359,16 @@ build_st7789() { # prints the ELF's path
       CARGO_TARGET_DIR="$dir" cargo build "${cargo_args[@]}" -Zbuild-std=core >&2
     )
   fi
-  CARGO_TARGET_DIR="$dir" cargo check --quiet --manifest-path "$ROOT/examples/st7789/Cargo.toml" >&2
-  elf=$dir/$t/release/microraster-st7789
-  echo "st7789 example ($t, STM32F405, mipidsi 0.10 + stm32f4xx-hal 0.23): builds;" \
+  CARGO_TARGET_DIR="$dir" cargo check --quiet --manifest-path "$manifest" >&2
+  elf=$dir/$t/release/microraster-${name//_/-}
+  echo "$name example ($t, $note): builds;" \
     "flash $(size_of "$elf" | awk '{ print $1 " B, static RAM " $2 " B" }'); $((SECONDS - start)) s" >&2
   echo "$elf"
 }
+
+build_st7789() { build_package st7789 thumbv7em-none-eabihf "STM32F405, mipidsi 0.10 + stm32f4xx-hal 0.23"; }
+build_st7789_dma() { build_package st7789_dma thumbv7em-none-eabihf "STM32F405, embassy-stm32 0.6 SPI DMA"; }
+build_rp2040() { build_package rp2040 thumbv6m-none-eabi "RP2040 both cores, rp2040-hal 0.12; no QEMU machine: built, not run"; }
 
 check() {
   setup
@@ -380,6 +393,8 @@ check() {
     fi
   done
   build_st7789 >/dev/null
+  build_st7789_dma >/dev/null
+  build_rp2040 >/dev/null
   start=$SECONDS
   table >"$FW_DIR/table.md" || failed=1
   cat "$FW_DIR/table.md"
@@ -406,6 +421,27 @@ sweep() {
   cargo run --quiet --release --example fw_sweep -- tsv "$ROOT/docs/data/cortex-m.tsv" "${logs[@]}"
 }
 
+# Instructions per band of the standard 3D scene on the Cortex-M4F (QEMU
+# mps2-an386, -icount shift=0; examples/fw_link) into docs/data/link-m4f.tsv,
+# for the frame-time model of `cargo run --release --example link`.
+link() {
+  setup
+  local elf log=$FW_DIR/link-m4f.log out=$ROOT/docs/data/link-m4f.tsv start=$SECONDS
+  elf=$(MICRORASTER_BOARD=mps2-an386 build m4f fw_link)
+  MICRORASTER_BOARD=mps2-an386 MICRORASTER_QEMU_ARGS="-icount shift=0" qemu "$elf" >"$log" || {
+    cat "$log" >&2
+    die "fw_link failed on m4f"
+  }
+  mkdir -p "$ROOT/docs/data"
+  {
+    echo "# Cortex-M4F instructions of the standard 3D scene, 320x240, 16-row bands (examples/fw_link)."
+    echo "# Written by \`bash scripts/firmware.sh link\`; do not edit. QEMU mps2-an386 -icount shift=0."
+    echo "# vertex FRAME INSTR | band FRAME INDEX INSTR"
+    grep -E '^(vertex|band) ' "$log" | tr ' ' '\t'
+  } >"$out"
+  echo "per-band counts ($(grep -c '^band' "$log") bands) in $out; $((SECONDS - start)) s" >&2
+}
+
 toolchain() {
   local t
   for t in "${TARGETS[@]}"; do
@@ -423,8 +459,11 @@ case ${1:-} in
   setup) setup ;;
   build) build "${2:?build m4f|m0 [EXAMPLE]}" "${3:-firmware}" ;;
   build-st7789) build_st7789 ;;
+  build-st7789-dma) build_st7789_dma ;;
+  build-rp2040) build_rp2040 ;;
   table) shift && write=1 table "$@" ;;
   sweep) sweep ;;
+  link) link ;;
   run) run "${2:?run m4f|m0}" ;;
   check) check ;;
   size) sizes ;;

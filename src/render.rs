@@ -8,7 +8,11 @@ use crate::raster3d::{Interpolation, ScreenTriangle};
 mod band3d;
 mod dirty;
 pub mod link;
+#[cfg(feature = "async")]
+mod link_async;
 mod overlay;
+#[cfg(feature = "async")]
+mod spi_panel;
 #[cfg(feature = "std")]
 mod threads;
 use crate::{Error, Interpolate, Primitive, RenderError};
@@ -16,6 +20,10 @@ pub use band3d::Band3d;
 pub use dirty::{DirtyBands, signature};
 use embedded_graphics_core::prelude::{DrawTarget, Point};
 pub use link::{BandSink, Blocking, FrameBands, Lent};
+#[cfg(feature = "async")]
+pub use link_async::{AsyncBandSink, poll_ready};
+#[cfg(feature = "async")]
+pub use spi_panel::{SpiPanel, SpiPanelError};
 
 /// Renders scenes of [`Primitive`]s, band by band, to a display.
 ///

@@ -15,9 +15,9 @@ use microraster::render::{BandSink, Blocking, DirtyBands, Lent};
 use microraster::scenes3d::{BINS, Scene3d};
 use microraster::{Band, Error, Primitive, RenderError, Renderer, scenes};
 
-const W: usize = 96;
-const HEIGHT: u32 = 72;
-const BG: Rgb565 = Rgb565::new(2, 5, 9);
+pub const W: usize = 96;
+pub const HEIGHT: u32 = 72;
+pub const BG: Rgb565 = Rgb565::new(2, 5, 9);
 
 /// A band in flight: what the sink was given, to compare when it lets go.
 struct Held<'a, const W: usize> {
@@ -79,27 +79,27 @@ impl<'a, const W: usize> BandSink<'a, Rgb565, W> for Scripted<'a, W> {
     }
 }
 
-fn mixed_scene() -> heapless::Vec<Primitive<Rgb565, 4>, { scenes::MIXED_LEN }> {
+pub fn mixed_scene() -> heapless::Vec<Primitive<Rgb565, 4>, { scenes::MIXED_LEN }> {
     let mut scene = heapless::Vec::new();
     assert_eq!(scenes::collect(scenes::mixed, W as u32, HEIGHT, &mut scene).unwrap(), 0);
     scene
 }
 
-fn plain_2d<const H: usize>(scene: &[Primitive<Rgb565, 4>]) -> Vec<Rgb565> {
+pub fn plain_2d<const H: usize>(scene: &[Primitive<Rgb565, 4>]) -> Vec<Rgb565> {
     let mut fb = Framebuffer::new(W as u32, HEIGHT, Rgb565::BLACK);
     let mut band = Band::<Rgb565, W, H>::new(BG);
     Renderer::new(HEIGHT, BG).render(scene, &mut band, &mut fb).unwrap();
     fb.pixels
 }
 
-fn bins(angle: f32) -> heapless::Vec<microraster::raster3d::ScreenTriangle<4>, BINS> {
+pub fn bins(angle: f32) -> heapless::Vec<microraster::raster3d::ScreenTriangle<4>, BINS> {
     let pipeline = Scene3d::pipeline::<f32, 4>(W as u32, HEIGHT).unwrap();
     let mut bins = heapless::Vec::new();
     Scene3d.draw::<f32, Rgb565, 4, BINS>(&pipeline, angle, &mut bins).unwrap();
     bins
 }
 
-fn plain_3d<const H: usize>(angle: f32) -> Vec<Rgb565> {
+pub fn plain_3d<const H: usize>(angle: f32) -> Vec<Rgb565> {
     let mut fb = Framebuffer::new(W as u32, HEIGHT, Rgb565::BLACK);
     let (mut band, mut depth) = (Band::<Rgb565, W, H>::new(BG), DepthBand::<Depth16, W, H>::new());
     Renderer::new(HEIGHT, BG)
@@ -135,21 +135,27 @@ fn out_of_step_sink_sees_no_band_change_and_gets_the_plain_frame_2d() {
     }
 }
 
+/// The standard 3D scene at `angle`, double-banded into `sink` (the bands
+/// and the depth band are the caller's: a sink may hold bands across calls).
+fn linked_3d<'a, S, const H: usize, const N: usize>(
+    angle: f32,
+    bands: &'a mut [Band<Rgb565, W, H>; N],
+    depth: &mut DepthBand<Depth16, W, H>,
+    sink: &mut S,
+) where
+    S: BandSink<'a, Rgb565, W>,
+    S::Error: core::fmt::Debug,
+{
+    Renderer::new(HEIGHT, BG)
+        .render_3d_linked(&bins(angle), bands, depth, DepthState::LESS_WRITE, PerspectiveCorrect, sink)
+        .unwrap();
+}
+
 fn scripted_3d<const H: usize, const N: usize>(angle: f32, seed: u64) {
     let mut bands = [const { Band::<Rgb565, W, H>::new(BG) }; N];
     let mut depth = DepthBand::<Depth16, W, H>::new();
     let mut sink = Scripted::<W>::new(N - 1, seed);
-    let tris = bins(angle);
-    Renderer::new(HEIGHT, BG)
-        .render_3d_linked(
-            &tris,
-            &mut bands,
-            &mut depth,
-            DepthState::LESS_WRITE,
-            PerspectiveCorrect,
-            &mut sink,
-        )
-        .unwrap();
+    linked_3d(angle, &mut bands, &mut depth, &mut sink);
     assert!(sink.fb.pixels == plain_3d::<H>(angle), "H = {H}, N = {N}, angle {angle}");
 }
 
@@ -235,17 +241,7 @@ fn dirty_animation<const H: usize, const N: usize>() -> (u64, u64) {
     for frame in 0..60 {
         // A still spell in the middle: frames 20..30 repeat one angle.
         let angle = if (20..30).contains(&frame) { 1.0 } else { frame as f32 * 0.05 };
-        let tris = bins(angle);
-        Renderer::new(HEIGHT, BG)
-            .render_3d_linked(
-                &tris,
-                &mut bands,
-                &mut depth,
-                DepthState::LESS_WRITE,
-                PerspectiveCorrect,
-                &mut sink,
-            )
-            .unwrap();
+        linked_3d(angle, &mut bands, &mut depth, &mut sink);
         if frame == 40 {
             sink.force_full_frame();
         }

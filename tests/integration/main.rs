@@ -47,6 +47,7 @@ mod limits;
 mod line_aa;
 mod lines;
 mod link;
+mod link_async;
 mod meshlets;
 mod mock_display;
 mod per_band;

@@ -1,0 +1,263 @@
+//! The standard 3D scene on both cores of an RP2040 (Raspberry Pi Pico),
+//! sent to an ST7789 320 × 240 SPI panel. Each core runs the library's
+//! linked band loop (`Renderer::render_with_linked`) over its own two band
+//! buffers, its own depth band and its own bins, and draws only its share
+//! of the bands: even bands on core 0, odd bands on core 1 (the other
+//! core's bands are cleared, not drawn). Its [`BandSink`] sends a band of
+//! its own when the shared turn counter says that band is next, so the
+//! panel gets band 0, 1, 2, ... of every frame in order.
+//!
+//! Each core runs the vertex stage itself (the scene is small, and no
+//! triangle list is shared between cores, so no `unsafe`). The panel is
+//! shared through a `critical_section::Mutex` (the RP2040 HAL's critical
+//! section takes a hardware spinlock, so it holds across both cores); the
+//! turn counter is an atomic with load and store only (ARMv6-M has no
+//! compare-and-swap, and none is needed: only the core whose band is next
+//! writes it).
+//!
+//! It cannot run under QEMU (QEMU has no RP2040 machine); CI builds it.
+//!
+//! # Wiring (Pico pin numbers: GPIO)
+//!
+//! ST7789 SCK GP18, MOSI GP19 (SPI0), CS GP17, DC GP16, RST GP20, backlight
+//! GP21. 12 MHz crystal, 125 MHz system clock, SPI0 at 62.5 MHz.
+//!
+//! # Build and flash
+//!
+//! ```text
+//! bash scripts/firmware.sh build-rp2040      # prints the ELF's path
+//! probe-rs run --chip RP2040 "$(bash scripts/firmware.sh build-rp2040)"
+//! ```
+//!
+//! or convert the ELF with `elf2uf2-rs` and copy it to the Pico's USB drive.
+#![cfg_attr(target_os = "none", no_std, no_main)]
+
+#[cfg(target_os = "none")]
+mod firmware {
+    use core::cell::RefCell;
+    use core::convert::Infallible;
+    use core::sync::atomic::{AtomicUsize, Ordering};
+
+    use critical_section::Mutex;
+    use embedded_graphics_core::pixelcolor::{IntoStorage, Rgb565, RgbColor};
+    use embedded_graphics_core::primitives::Rectangle;
+    use embedded_hal::digital::OutputPin;
+    use embedded_hal::spi::SpiBus;
+    use microraster::depth::{Depth16, DepthBand, DepthState};
+    use microraster::raster3d::{PerspectiveCorrect, ScreenTriangle, draw_triangle};
+    use microraster::render::{BandSink, Lent};
+    use microraster::scenes3d::{BINS, Scene3d};
+    use microraster::{Band, Renderer};
+    use rp2040_hal::fugit::RateExtU32;
+    use rp2040_hal::gpio::{FunctionSioOutput, FunctionSpi, Pin, PullDown, bank0};
+    use rp2040_hal::multicore::{Multicore, Stack};
+    use rp2040_hal::{Clock, Sio, Watchdog, clocks, pac, spi};
+
+    #[unsafe(link_section = ".boot2")]
+    #[used]
+    static BOOT2_FIRMWARE: [u8; 256] = rp2040_boot2::BOOT_LOADER_W25Q080;
+
+    /// Frame size (landscape), band rows, bands a frame, subpixel bits.
+    const W: usize = 320;
+    const H: u32 = 240;
+    const BAND: usize = 16;
+    const BANDS: usize = H as usize / BAND;
+    const S: u32 = 4;
+    const BACKGROUND: Rgb565 = Rgb565::BLACK;
+    const CORE_HZ: u32 = 125_000_000;
+
+    type Spi0 = spi::Spi<
+        spi::Enabled,
+        pac::SPI0,
+        (Pin<bank0::Gpio19, FunctionSpi, PullDown>, Pin<bank0::Gpio18, FunctionSpi, PullDown>),
+        8,
+    >;
+    type Out<I> = Pin<I, FunctionSioOutput, PullDown>;
+
+    /// The panel both cores send to, one band at a time.
+    static PANEL: Mutex<RefCell<Option<Panel>>> = Mutex::new(RefCell::new(None));
+    /// The next band the panel takes, counted over all frames.
+    static TURN: AtomicUsize = AtomicUsize::new(0);
+    static CORE1_STACK: Stack<8192> = Stack::new();
+
+    struct Panel {
+        spi: Spi0,
+        dc: Out<bank0::Gpio16>,
+        cs: Out<bank0::Gpio17>,
+    }
+
+    impl Panel {
+        /// One MIPI-DCS command and its argument bytes.
+        fn command(&mut self, cmd: u8, args: &[u8]) {
+            let _ = self.cs.set_low();
+            let _ = self.dc.set_low();
+            let _ = self.spi.write(&[cmd]);
+            let _ = self.spi.flush();
+            let _ = self.dc.set_high();
+            let _ = self.spi.write(args);
+            let _ = self.spi.flush();
+            let _ = self.cs.set_high();
+        }
+
+        /// A band: its window, then its pixels as big-endian Rgb565.
+        fn send(&mut self, area: Rectangle, pixels: &[Rgb565]) {
+            let (x, y) = (area.top_left.x as u16, area.top_left.y as u16);
+            let (x1, y1) = (x + area.size.width as u16 - 1, y + area.size.height as u16 - 1);
+            let [a, b] = x.to_be_bytes();
+            let [c, d] = x1.to_be_bytes();
+            self.command(0x2A, &[a, b, c, d]);
+            let [a, b] = y.to_be_bytes();
+            let [c, d] = y1.to_be_bytes();
+            self.command(0x2B, &[a, b, c, d]);
+            self.command(0x2C, &[]);
+            let _ = self.cs.set_low();
+            let mut chunk = [0u8; 64];
+            for px in pixels.chunks(32) {
+                for (bytes, c) in chunk.chunks_exact_mut(2).zip(px) {
+                    bytes.copy_from_slice(&c.into_storage().to_be_bytes());
+                }
+                let _ = self.spi.write(&chunk[..2 * px.len()]);
+            }
+            let _ = self.spi.flush();
+            let _ = self.cs.set_high();
+        }
+    }
+
+    /// Sends this core's bands in turn; hands the others back untouched.
+    struct Share {
+        core: usize,
+        frame: usize,
+    }
+
+    impl<'a> BandSink<'a, Rgb565, W> for Share {
+        type Error = Infallible;
+
+        fn submit(&mut self, band: Lent<'a, Rgb565, W>) -> Result<Option<Lent<'a, Rgb565, W>>, Infallible> {
+            if band.index() % 2 == self.core {
+                let turn = self.frame.wrapping_mul(BANDS).wrapping_add(band.index());
+                while TURN.load(Ordering::Acquire) != turn {
+                    core::hint::spin_loop();
+                }
+                critical_section::with(|cs| {
+                    if let Some(panel) = PANEL.borrow_ref_mut(cs).as_mut() {
+                        panel.send(band.area(), band.pixels());
+                    }
+                });
+                TURN.store(turn.wrapping_add(1), Ordering::Release);
+            }
+            Ok(Some(band))
+        }
+    }
+
+    /// One core's endless loop: its bins, its bands, its share of each frame.
+    fn render(
+        core: usize,
+        bins: &mut heapless::Vec<ScreenTriangle<S>, BINS>,
+        bands: &mut [Band<Rgb565, W, BAND>; 2],
+        depth: &mut DepthBand<Depth16, W, BAND>,
+    ) -> ! {
+        let pipeline = Scene3d::pipeline::<f32, S>(W as u32, H).unwrap();
+        let renderer = Renderer::new(H, BACKGROUND);
+        let mut sink = Share { core, frame: 0 };
+        loop {
+            bins.clear();
+            Scene3d.draw::<f32, Rgb565, S, BINS>(&pipeline, sink.frame as f32 * 0.05, bins).unwrap();
+            renderer
+                .render_with_linked(bands, &mut sink, |view, y0, y1| {
+                    if (y0 as usize / BAND) % 2 != core {
+                        return;
+                    }
+                    let rows = (y1 - y0) as usize;
+                    depth.clear(rows);
+                    for tri in bins.iter() {
+                        draw_triangle::<_, Depth16, PerspectiveCorrect, S, W>(
+                            tri,
+                            view,
+                            depth.rows_mut(rows),
+                            DepthState::LESS_WRITE,
+                        );
+                    }
+                })
+                .unwrap();
+            sink.frame += 1;
+        }
+    }
+
+    fn ms(n: u32) {
+        cortex_m::asm::delay(n * (CORE_HZ / 1000));
+    }
+
+    #[rp2040_hal::entry]
+    fn main() -> ! {
+        // cortex-m-rt's `&'static mut` statics (.bss): one set per core.
+        static mut BINS0: heapless::Vec<ScreenTriangle<S>, BINS> = heapless::Vec::new();
+        static mut BINS1: heapless::Vec<ScreenTriangle<S>, BINS> = heapless::Vec::new();
+        static mut BANDS0: [Band<Rgb565, W, BAND>; 2] = [const { Band::new(BACKGROUND) }; 2];
+        static mut BANDS1: [Band<Rgb565, W, BAND>; 2] = [const { Band::new(BACKGROUND) }; 2];
+        static mut DEPTH0: DepthBand<Depth16, W, BAND> = DepthBand::zeroed();
+        static mut DEPTH1: DepthBand<Depth16, W, BAND> = DepthBand::zeroed();
+
+        let mut pac = pac::Peripherals::take().unwrap();
+        let mut watchdog = Watchdog::new(pac.WATCHDOG);
+        let clocks = clocks::init_clocks_and_plls(
+            12_000_000,
+            pac.XOSC,
+            pac.CLOCKS,
+            pac.PLL_SYS,
+            pac.PLL_USB,
+            &mut pac.RESETS,
+            &mut watchdog,
+        )
+        .ok()
+        .unwrap();
+        let mut sio = Sio::new(pac.SIO);
+        let pins = rp2040_hal::gpio::Pins::new(pac.IO_BANK0, pac.PADS_BANK0, sio.gpio_bank0, &mut pac.RESETS);
+        let spi =
+            spi::Spi::<_, _, _, 8>::new(pac.SPI0, (pins.gpio19.into_function(), pins.gpio18.into_function()))
+                .init(
+                    &mut pac.RESETS,
+                    clocks.peripheral_clock.freq(),
+                    62_500_000u32.Hz(),
+                    embedded_hal::spi::MODE_3,
+                );
+        let mut panel =
+            Panel { spi, dc: pins.gpio16.into_push_pull_output(), cs: pins.gpio17.into_push_pull_output() };
+        let mut rst = pins.gpio20.into_push_pull_output();
+        let _ = pins.gpio21.into_push_pull_output().set_high(); // backlight
+        let _ = rst.set_low();
+        ms(10);
+        let _ = rst.set_high();
+        ms(120);
+        // Sleep out, 16-bit colour, landscape (MADCTL MV | MX), inverted
+        // colours (most modules), display on.
+        for (cmd, args, wait) in
+            [(0x11, &[][..], 120), (0x3A, &[0x55], 0), (0x36, &[0x60], 0), (0x21, &[], 0)]
+        {
+            panel.command(cmd, args);
+            ms(wait);
+        }
+        panel.command(0x29, &[]);
+        critical_section::with(|cs| PANEL.borrow_ref_mut(cs).replace(panel));
+
+        let (bins1, bands1, depth1) = (BINS1, BANDS1, DEPTH1);
+        let mut mc = Multicore::new(&mut pac.PSM, &mut pac.PPB, &mut sio.fifo);
+        let core1 = &mut mc.cores()[1];
+        core1.spawn(CORE1_STACK.take().unwrap(), move || render(1, bins1, bands1, depth1)).unwrap();
+        render(0, BINS0, BANDS0, DEPTH0)
+    }
+
+    #[panic_handler]
+    fn panic(_: &core::panic::PanicInfo) -> ! {
+        loop {
+            cortex_m::asm::bkpt();
+        }
+    }
+}
+
+#[cfg(not(target_os = "none"))]
+fn main() {
+    println!(
+        "microraster-rp2040: firmware for an RP2040 (both cores) with an ST7789 SPI display; build it with \
+         `bash scripts/firmware.sh build-rp2040` and flash it with probe-rs (see src/main.rs)"
+    );
+}
