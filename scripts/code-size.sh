@@ -47,10 +47,10 @@ echo
 echo "The 2D-only build links no clip3d, depth, raster3d or pipeline code, and neither"
 echo "the 2D nor the 3D build links texture, blend, fragment, aa, line_aa or shape code (checked)."
 
-# The same two programs built as if the fragment stage did not exist (its
-# modules compiled out): their code must be byte for byte the same size.
-RUSTFLAGS="--cfg microraster_without_fragment_stage" CARGO_TARGET_DIR=target/size-without-fragment \
-  cargo build --quiet --release --example size_2d --example size_3d
+# The same two programs built without the `fragment` feature (the fragment
+# stage's modules compiled out): their code must be byte for byte the same size.
+CARGO_TARGET_DIR=target/size-without-fragment \
+  cargo build --quiet --release --no-default-features --example size_2d --example size_3d
 text() { size "$1" | awk 'NR == 2 { print $1 + $2 }'; }
 echo
 echo "| program | text + data (bytes) | the same without the fragment stage's modules (bytes) |"
