@@ -54,7 +54,20 @@ pub mod varyings;
 pub use band::Band;
 pub use clip::{ClipRect, MAX_FRAME_DIM};
 pub use color::Interpolate;
+pub use edge::Cull;
 pub use error::{Error, RenderError};
+/// The `heapless` this crate is built with (its `Vec` holds the bins of
+/// [`Pipeline::draw_mesh`](crate::pipeline::Pipeline::draw_mesh)): name
+/// `microraster::heapless::Vec` so a different `heapless` in your crate
+/// cannot cause a type mismatch.
+///
+/// ```
+/// use microraster::heapless::Vec;
+/// use microraster::raster3d::ScreenTriangle;
+/// let bins: Vec<ScreenTriangle<4>, 64> = Vec::new();
+/// assert!(bins.is_empty());
+/// ```
+pub use heapless;
 pub use primitive::{Line, Primitive, Shading, Triangle};
 pub use render::Renderer;
 pub use subpixel::{MAX_SUBPIXEL_BITS, SubPoint};
