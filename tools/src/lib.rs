@@ -7,7 +7,7 @@
 //! - **Command line**: `cargo install --path tools` (from a checkout of
 //!   microraster) installs `obj2rs` and `png2rs`; run either with `--help`.
 //! - **Build script**: keep the assets as files and convert them in
-//!   `build.rs` with [`obj::convert`] and [`png::convert`], writing into
+//!   `build.rs` with [`obj::convert`] and [`png::convert()`], writing into
 //!   `OUT_DIR` and `include!`-ing the result:
 //!
 //! ```no_run

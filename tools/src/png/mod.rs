@@ -1,5 +1,5 @@
 //! PNG → Rust source for a `static` microraster `Texture` (the `png2rs`
-//! binary, and [`convert`] for build scripts).
+//! binary, and [`convert()`] for build scripts).
 //!
 //! The output defines `NAME_TEXELS` (a `[[u16 or u8; W]; H]` array) and
 //! `NAME: Texture<'static, Rgb565, Gray8, Argb4444 or A8>`. Any PNG the `png`
@@ -80,7 +80,7 @@ pub fn convert(path: impl AsRef<Path>, name: &str, format: Format) -> Result<Str
 ///
 /// # Errors
 ///
-/// As [`convert`], and an invalid [`Options::krate`] or
+/// As [`convert()`], and an invalid [`Options::krate`] or
 /// [`Options::pixelcolor`] path.
 pub fn convert_bytes(bytes: &[u8], name: &str, source: &str, options: &Options) -> Result<Converted, Error> {
     let image = decode::decode(bytes).map_err(Error)?;
