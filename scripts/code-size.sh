@@ -6,7 +6,7 @@
 # Run: bash scripts/code-size.sh
 set -euo pipefail
 cd "$(dirname "$0")/.."
-cargo build --quiet --release --example size_2d --example size_3d --example size_frag
+cargo build --quiet --release -p microraster --example size_2d --example size_3d --example size_frag
 
 sizes() { # bytes of microraster code per module in binary $1
   nm -C --size-sort -S "target/release/examples/$1" | grep ' microraster::' | while read -r _ size _ name; do
@@ -49,8 +49,10 @@ echo "the 2D nor the 3D build links texture, blend, fragment, aa, line_aa or sha
 
 # The same two programs built without the `fragment` feature (the fragment
 # stage's modules compiled out): their code must be byte for byte the same size.
+# `-p microraster`: with the whole workspace selected, the tools crate's
+# dev-dependencies would turn `fragment` back on.
 CARGO_TARGET_DIR=target/size-without-fragment \
-  cargo build --quiet --release --no-default-features --example size_2d --example size_3d
+  cargo build --quiet --release -p microraster --no-default-features --example size_2d --example size_3d
 text() { size "$1" | awk 'NR == 2 { print $1 + $2 }'; }
 echo
 echo "| program | text + data (bytes) | the same without the fragment stage's modules (bytes) |"
