@@ -34,9 +34,6 @@ fn main() {
     println!(
         "cargo:rustc-check-cfg=cfg(microraster_board, values(\"stm32f405\", \"mps2-an386\", \"microbit\"))"
     );
-    // `scripts/code-size.sh` builds once without the fragment stage's modules
-    // to show that programs which do not use them are unchanged.
-    println!("cargo:rustc-check-cfg=cfg(microraster_without_fragment_stage)");
     if env::var("CARGO_CFG_TARGET_OS").as_deref() != Ok("none") {
         return;
     }

@@ -7,10 +7,10 @@
 //! cargo run --example gen_scene_meshes > src/scenes3d/meshes.rs && rustfmt src/scenes3d/meshes.rs
 //! ```
 
-#[path = "obj2rs/emit.rs"]
+#[path = "../tools/src/obj/emit.rs"]
 #[allow(dead_code)]
 mod emit;
-#[path = "obj2rs/parse.rs"]
+#[path = "../tools/src/obj/parse.rs"]
 #[allow(dead_code)]
 mod parse;
 

@@ -6,7 +6,7 @@
 # Run: bash scripts/code-size.sh
 set -euo pipefail
 cd "$(dirname "$0")/.."
-cargo build --quiet --release --example size_2d --example size_3d --example size_frag
+cargo build --quiet --release -p microraster --example size_2d --example size_3d --example size_frag
 
 sizes() { # bytes of microraster code per module in binary $1
   nm -C --size-sort -S "target/release/examples/$1" | grep ' microraster::' | while read -r _ size _ name; do
@@ -56,10 +56,12 @@ echo "The 2D-only build links no clip3d, depth, raster3d or pipeline code, and n
 echo "the 2D nor the 3D build links texture, blend, fragment, aa, line_aa or shape code,"
 echo "and none of the three links the async display link (checked)."
 
-# The same two programs built as if the fragment stage did not exist (its
-# modules compiled out): their code must be byte for byte the same size.
-RUSTFLAGS="--cfg microraster_without_fragment_stage" CARGO_TARGET_DIR=target/size-without-fragment \
-  cargo build --quiet --release --example size_2d --example size_3d
+# The same two programs built without the `fragment` feature (the fragment
+# stage's modules compiled out): their code must be byte for byte the same size.
+# `-p microraster`: with the whole workspace selected, the tools crate's
+# dev-dependencies would turn `fragment` back on.
+CARGO_TARGET_DIR=target/size-without-fragment \
+  cargo build --quiet --release -p microraster --no-default-features --example size_2d --example size_3d
 text() { size "$1" | awk 'NR == 2 { print $1 + $2 }'; }
 echo
 echo "| program | text + data (bytes) | the same without the fragment stage's modules (bytes) |"

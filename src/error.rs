@@ -32,6 +32,11 @@ pub enum Error {
     /// normal from the counter-clockwise winding points against the normals
     /// (the mesh is wound clockwise, or its normals point inward).
     WindingMismatch,
+    /// The frame (the band width `W` by [`Renderer::height`](crate::Renderer::height)
+    /// rows, at [`Renderer::offset`](crate::Renderer::offset)) does not fit in
+    /// the `DrawTarget`'s bounding box: a band wider than the display, or a
+    /// frame taller than it, would be cut off silently.
+    FrameOutsideTarget,
     /// A parameter is outside its documented range (for example near ≥ far,
     /// a zero aspect ratio, or too few mesh segments).
     InvalidParameter,
@@ -47,6 +52,7 @@ impl fmt::Display for Error {
             Error::BufferTooSmall => "buffer too small",
             Error::InvalidMeshlet => "meshlet offsets, counts, indices, sphere or cone are inconsistent",
             Error::WindingMismatch => "triangle winding disagrees with the vertex normals",
+            Error::FrameOutsideTarget => "frame does not fit in the draw target's bounding box",
             Error::InvalidParameter => "parameter outside its documented range",
         };
         f.write_str(text)
@@ -84,6 +90,32 @@ pub enum RenderError<E> {
 impl<E> From<Error> for RenderError<E> {
     fn from(e: Error) -> Self {
         RenderError::Input(e)
+    }
+}
+
+/// The input error is the [`source`](core::error::Error::source); a target
+/// error is shown with `Debug`, since `DrawTarget::Error` need only be
+/// `Debug`. So `?` converts a render result into `Box<dyn Error>`:
+///
+/// ```
+/// # extern crate std;
+/// use embedded_graphics::mock_display::MockDisplay;
+/// use embedded_graphics_core::pixelcolor::BinaryColor;
+/// use microraster::{Band, Renderer};
+/// fn frame() -> Result<(), std::boxed::Box<dyn core::error::Error>> {
+///     let mut band = Band::<BinaryColor, 8, 4>::new(BinaryColor::Off);
+///     let mut display = MockDisplay::<BinaryColor>::new();
+///     Renderer::new(0, BinaryColor::Off).render::<_, 4, 8, 4>(&[], &mut band, &mut display)?;
+///     Ok(())
+/// }
+/// assert_eq!(frame().unwrap_err().to_string(), "invalid input: frame size is zero or too large");
+/// ```
+impl<E: fmt::Debug> core::error::Error for RenderError<E> {
+    fn source(&self) -> Option<&(dyn core::error::Error + 'static)> {
+        match self {
+            RenderError::Input(e) => Some(e),
+            RenderError::Target(_) => None,
+        }
     }
 }
 

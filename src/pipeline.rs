@@ -16,13 +16,14 @@
 
 mod cache;
 mod cluster;
-#[cfg(not(microraster_without_fragment_stage))]
+#[cfg(feature = "fragment")]
 mod varying;
 
 pub use cache::VertexCache;
 pub use cluster::ClusterCache;
 
-#[cfg(not(microraster_without_fragment_stage))]
+#[cfg(feature = "fragment")]
+#[cfg_attr(docsrs, doc(cfg(feature = "fragment")))]
 pub use varying::VertexInput;
 
 use crate::clip3d::{Class, ClipPlanes, ClipVertex, classify, clip_triangle, guard_band_for_range};

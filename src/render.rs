@@ -18,7 +18,8 @@ mod threads;
 use crate::{Error, Interpolate, Primitive, RenderError};
 pub use band3d::Band3d;
 pub use dirty::{DirtyBands, signature};
-use embedded_graphics_core::prelude::{DrawTarget, Point};
+use embedded_graphics_core::prelude::{DrawTarget, Point, Size};
+use embedded_graphics_core::primitives::Rectangle;
 pub use link::{BandSink, Blocking, FrameBands, Lent};
 #[cfg(feature = "async")]
 pub use link_async::{AsyncBandSink, poll_ready};
@@ -94,7 +95,9 @@ impl<C: Interpolate> Renderer<C> {
     ///
     /// Errors: [`Error::InvalidFrameSize`] if the height is 0 or above
     /// [`MAX_FRAME_DIM`](crate::MAX_FRAME_DIM); [`Error::CoordinateOutOfRange`] if the offset puts
-    /// the frame beyond `i32` coordinates; [`RenderError::Target`] if the
+    /// the frame beyond `i32` coordinates; [`Error::FrameOutsideTarget`] if the
+    /// frame (`W` × height at the offset) does not fit in `target`'s
+    /// bounding box; [`RenderError::Target`] if the
     /// target fails (the remaining bands are not sent).
     pub fn render<D, const S: u32, const W: usize, const H: usize>(
         &self,
@@ -261,6 +264,22 @@ impl<C: Interpolate> Renderer<C> {
         self.bands(band, target, true, draw)
     }
 
+    /// [`Error::FrameOutsideTarget`] unless the frame lies within `display`
+    /// (a target's `bounding_box`). Checked before the first band, so a
+    /// 320-wide band on a 240-wide display fails instead of drawing a
+    /// clipped frame. Call after `frame_bands`, which keeps the frame's
+    /// corners within `i32`.
+    fn fits<const W: usize>(&self, display: Rectangle) -> Result<(), Error> {
+        let frame = Rectangle::new(self.offset, Size::new(W as u32, self.height));
+        // The frame is not empty, so both corners inside means contained.
+        let inside = |p: Option<Point>| p.is_some_and(|p| display.contains(p));
+        if inside(Some(frame.top_left)) && inside(frame.bottom_right()) {
+            Ok(())
+        } else {
+            Err(Error::FrameOutsideTarget)
+        }
+    }
+
     /// The band loop; with `clear` false the views are not cleared and `draw`
     /// must write every pixel of them.
     fn bands<D, const W: usize, const H: usize>(
@@ -273,6 +292,9 @@ impl<C: Interpolate> Renderer<C> {
     where
         D: DrawTarget<Color = C>,
     {
+        // Size and offset first (`fits` needs them in range), then the target.
+        self.frame_bands::<W, H>()?;
+        self.fits::<W>(target.bounding_box())?;
         // The linked loop with one band and a sink that sends before it
         // returns: the plain render-then-send loop.
         link::run(self, core::slice::from_mut(band), &mut link::Blocking(target), clear, draw)

@@ -518,5 +518,5 @@ pub static BRICKS_TEXELS: [[u16; 64]; 64] = [
 ];
 
 /// The texture converted from "bricks.png": 64 × 64 texels, Rgb565, 8192 bytes of flash.
-pub static BRICKS: microraster::texture::Texture<'static, embedded_graphics_core::pixelcolor::Rgb565> =
+pub static BRICKS: microraster::texture::Texture<'static, embedded_graphics::pixelcolor::Rgb565> =
     microraster::texture::Texture::from_rows(&BRICKS_TEXELS);

@@ -2,9 +2,10 @@
 //! allocation-free generators of demo shapes.
 //!
 //! A [`Mesh`] borrows its vertex and index arrays, so a model converted ahead
-//! of time (with the `obj2rs` example: `cargo run --example obj2rs --
-//! model.obj NAME > model.rs`) lives in `static` arrays in flash and costs no
-//! RAM. The generators [`cube`], [`icosphere`] and [`torus`] write into
+//! of time (with the `obj2rs` converter of `tools/`: `cargo run -p
+//! microraster-tools --bin obj2rs -- model.obj NAME > model.rs`, or
+//! `microraster_tools::obj::convert` in a build script) lives in `static`
+//! arrays in flash and costs no RAM. The generators [`cube`], [`icosphere`] and [`torus`] write into
 //! caller-provided buffers whose exact sizes are given by `const fn`s
 //! ([`cube_vertex_count`], [`icosphere_triangle_count`], …), so the buffers
 //! can be plain arrays.

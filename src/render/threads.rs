@@ -54,6 +54,7 @@ impl<C: Interpolate + Send + Sync> Renderer<C> {
     {
         let () = Threads::<N>::ONE_OR_MORE;
         let frame = self.frame_bands::<W, H>()?;
+        self.fits::<W>(target.bounding_box())?;
         let height = frame.size().height as i32;
         let target = Mutex::new(target);
         let failed: Mutex<Option<D::Error>> = Mutex::new(None);

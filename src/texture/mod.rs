@@ -5,7 +5,9 @@
 //! bits; [`Gray8`](embedded_graphics_core::pixelcolor::Gray8): `u8`; with
 //! alpha, [`A8`] and [`Argb4444`]; see [`TexelFormat`]) and its size, 1 to [`MAX_TEXTURE_DIM`] texels each way
 //! (any size; powers of two index with shifts instead of multiplies).
-//! `cargo run --example png2rs` converts a PNG to a `static` texture.
+//! `cargo run -p microraster-tools --bin png2rs` (or
+//! `microraster_tools::png::convert` in a build script) converts a PNG to a
+//! `static` texture.
 //! [`Sprite`] draws a texture at a position, scaled and rotated, in one call.
 //!
 //! # Coordinates

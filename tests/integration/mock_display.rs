@@ -53,3 +53,77 @@ fn culling_drops_one_winding() {
         }
     }
 }
+
+/// A frame that does not fit in the display is an error before any band is
+/// sent, not a silently clipped `Ok`: the display here lets out-of-bounds
+/// pixels through (as real drivers clip them), so without the check all
+/// four renders would succeed.
+#[test]
+fn frame_outside_the_display_is_an_error_and_draws_nothing() {
+    use embedded_graphics_core::prelude::Point;
+    use microraster::{Band, Error, RenderError, Renderer};
+    let scene = [microraster::Primitive::from(Triangle::flat([p(0, 0), p(4, 0), p(0, 4)], BinaryColor::On))];
+    let outside = Err(RenderError::Input(Error::FrameOutsideTarget));
+    let clipping = || {
+        let mut d = MockDisplay::<BinaryColor>::new(); // 64 × 64
+        d.set_allow_out_of_bounds_drawing(true);
+        d
+    };
+    // A band one pixel wider than the display.
+    let mut d = clipping();
+    let mut wide = Band::<BinaryColor, 65, 4>::new(BinaryColor::Off);
+    assert_eq!(Renderer::new(8, BinaryColor::Off).render(&scene, &mut wide, &mut d), outside);
+    assert_eq!(d, MockDisplay::new(), "nothing drawn");
+    // A frame one row taller than the display.
+    let mut band = Band::<BinaryColor, 8, 4>::new(BinaryColor::Off);
+    let mut d = clipping();
+    assert_eq!(Renderer::new(65, BinaryColor::Off).render(&scene, &mut band, &mut d), outside);
+    assert_eq!(d, MockDisplay::new(), "nothing drawn");
+    // An offset that moves a fitting frame past either edge.
+    for offset in [Point::new(57, 0), Point::new(0, -1)] {
+        let r = Renderer::new(8, BinaryColor::Off).with_offset(offset);
+        let mut d = clipping();
+        assert_eq!(r.render(&scene, &mut band, &mut d), outside, "{offset:?}");
+    }
+    // Exactly the display's size, and a frame touching its corner, fit.
+    let mut full = Band::<BinaryColor, 64, 16>::new(BinaryColor::Off);
+    assert_eq!(
+        Renderer::new(64, BinaryColor::Off).render(&scene, &mut full, &mut MockDisplay::new()),
+        Ok(())
+    );
+    let r = Renderer::new(8, BinaryColor::Off).with_offset(Point::new(56, 56));
+    assert_eq!(r.render(&scene, &mut band, &mut MockDisplay::new()), Ok(()));
+}
+
+/// The threaded band loop checks the frame against the display the same way.
+#[test]
+fn threaded_frame_outside_the_display_is_an_error() {
+    use microraster::{Band, Error, RenderError, Renderer};
+    let mut bands = [(); 2].map(|()| Band::<BinaryColor, 8, 4>::new(BinaryColor::Off));
+    let mut d = MockDisplay::<BinaryColor>::new();
+    d.set_allow_out_of_bounds_drawing(true);
+    let r = Renderer::new(65, BinaryColor::Off).render_with_threads(
+        &mut bands,
+        &mut [(); 2],
+        &mut d,
+        |_, _, _, _| {},
+    );
+    assert_eq!(r, Err(RenderError::Input(Error::FrameOutsideTarget)));
+    assert_eq!(d, MockDisplay::new(), "nothing drawn");
+}
+
+/// `RenderError` is a `core::error::Error`, so `?` lifts it into a boxed
+/// error; its source is the input error.
+#[test]
+fn render_error_converts_into_a_boxed_std_error() {
+    use microraster::{Band, Renderer};
+    fn frame() -> Result<(), Box<dyn std::error::Error>> {
+        let mut band = Band::<BinaryColor, 65, 4>::new(BinaryColor::Off);
+        Renderer::new(4, BinaryColor::Off).render::<_, 4, 65, 4>(&[], &mut band, &mut MockDisplay::new())?;
+        Ok(())
+    }
+    let e = frame().unwrap_err();
+    assert_eq!(e.to_string(), "invalid input: frame does not fit in the draw target's bounding box");
+    let source = e.source().expect("the input error");
+    assert_eq!(source.to_string(), microraster::Error::FrameOutsideTarget.to_string());
+}

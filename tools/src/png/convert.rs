@@ -17,7 +17,7 @@
 //!   (`--ignore-alpha`), which keeps each pixel's colour and drops its
 //!   alpha. The alpha formats keep it (straight, not premultiplied).
 
-use crate::decode::Image;
+use super::decode::Image;
 
 /// The texel format to emit.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

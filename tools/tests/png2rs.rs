@@ -1,28 +1,21 @@
-//! Tests of the `png2rs` example (PNG → Rust source for a static
-//! `Texture`): PNGs of every colour type are encoded here with the `png`
-//! crate, converted with the example's functions (included from
-//! `examples/png2rs/`), and the texels compared with an independent
+//! Tests of `png2rs` (PNG → Rust source for a static `Texture`): PNGs of
+//! every colour type are encoded here with the `png` crate, converted with
+//! `microraster_tools::png`, and the texels compared with an independent
 //! conversion written from the documented rules; the committed demo texture
 //! is regenerated and compared, so it cannot go stale.
 
-#[path = "../examples/png2rs/convert.rs"]
-mod convert;
-#[path = "../examples/png2rs/decode.rs"]
-mod decode;
-#[path = "../examples/png2rs/emit.rs"]
-mod emit;
-
 /// The demo texture, compiled as part of this test. Regenerate after
 /// changing the emitter or the PNG:
-/// `cargo run --example png2rs -- assets/bricks.png --name BRICKS --format rgb565 --out examples/demo/texture_data.rs`
+/// `cargo run -p microraster-tools --bin png2rs -- assets/bricks.png --name BRICKS --format rgb565 --out examples/demo/texture_data.rs`
 mod demo {
-    include!("../examples/demo/texture_data.rs");
+    include!("../../examples/demo/texture_data.rs");
 }
 
-use convert::{Alpha, Format, Texels, convert};
-use decode::decode;
-use embedded_graphics_core::pixelcolor::{Gray8, Rgb565};
+use embedded_graphics::pixelcolor::{Gray8, Rgb565};
 use microraster::texture::{A8, Argb4444, Sampler, Texture, UV_ONE};
+use microraster_tools::png::convert::{Alpha, Format, Texels, convert};
+use microraster_tools::png::decode::decode;
+use microraster_tools::png::emit;
 use png::{BitDepth, ColorType};
 
 /// An encoded PNG.
@@ -351,7 +344,7 @@ fn emitted_source_layout() {
     assert!(s.contains("pub static RAMP_TEXELS: [[u8; 15]; 2] = [\n    [\n          0,   8,  16,"));
     assert!(s.contains("15 × 2 texels, Gray8, 30 bytes of flash."));
     assert!(s.ends_with(
-        "pub static RAMP: crate::texture::Texture<'static, embedded_graphics_core::pixelcolor::Gray8> =\n    \
+        "pub static RAMP: crate::texture::Texture<'static, embedded_graphics::pixelcolor::Gray8> =\n    \
          crate::texture::Texture::from_rows(&RAMP_TEXELS);\n"
     ));
     // The numbers in the array are the texels, in order.
@@ -366,8 +359,8 @@ fn emitted_source_layout() {
 // ---------------------------------------------------------------------------
 // The demo texture.
 
-const BRICKS_PNG: &[u8] = include_bytes!("../assets/bricks.png");
-const BRICKS_RS: &str = include_str!("../examples/demo/texture_data.rs");
+const BRICKS_PNG: &[u8] = include_bytes!("../../assets/bricks.png");
+const BRICKS_RS: &str = include_str!("../../examples/demo/texture_data.rs");
 
 /// The demo texture, procedurally: 64 × 64 RGB, bricks 16 × 8 px with a
 /// 1 px mortar joint, every other course offset by half a brick, each brick

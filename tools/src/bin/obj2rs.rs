@@ -2,7 +2,7 @@
 //! [`microraster::mesh::Mesh`] (arrays in flash, no RAM).
 //!
 //! ```text
-//! cargo run --example obj2rs -- INPUT.obj NAME [--mesh-type PATH] [--meshlets] > out.rs
+//! obj2rs INPUT.obj NAME [--mesh-type PATH] [--meshlets] > out.rs
 //! ```
 //!
 //! Writes `NAME_POSITIONS`, `NAME_NORMALS`, `NAME_INDICES` and
@@ -11,19 +11,19 @@
 //! (default `microraster::mesh::Mesh`; `crate::mesh::Mesh` inside microraster).
 //! `--meshlets` also writes the mesh's clusters (`NAME_MESHLETS`,
 //! `NAME_MESHLET_VERTICES`, `NAME_MESHLET_TRIANGLES`) and
-//! `NAME_MESHLET_MESH: MeshletMesh<'static>` (see `meshlets.rs`).
-//! See `parse.rs` for the OBJ subset understood. Errors name the line and
+//! `NAME_MESHLET_MESH: MeshletMesh<'static>` (see `obj::meshlets`).
+//! See `obj::parse` for the OBJ subset understood. Installed by
+//! `cargo install --path tools`; `microraster_tools::obj` is the same
+//! conversion for build scripts. Errors name the line and
 //! exit with status 1 (2 for bad arguments). Triangles wound against the
 //! file's normals are reported with a warning on stderr (not an error: the
 //! output is still written).
 
-mod emit;
-mod meshlets;
-mod parse;
-
 use std::io::{Read, Write};
 use std::path::Path;
 use std::process::ExitCode;
+
+use microraster_tools::obj::{Options, convert_bytes, emit};
 
 const USAGE: &str =
     "usage: obj2rs INPUT.obj NAME [--mesh-type PATH] [--meshlets] > out.rs   (INPUT `-` = stdin)";
@@ -90,18 +90,13 @@ fn run(args: &[String]) -> Result<(), Failure> {
     };
     let shown = if input == "-" { "<stdin>" } else { input };
     read.map_err(|e| Failure::Input(format!("{shown}: {e}")))?;
-    // Only comments and names can be non-ASCII; numbers survive a lossy decode.
-    let text = String::from_utf8_lossy(&bytes);
-
-    let mesh = parse::parse_obj(&text).map_err(|e| Failure::Input(format!("{shown}: {e}")))?;
-    let mut out = emit::rust_source(&mesh, name, &source, &mesh_type).map_err(Failure::Input)?;
-    if with_meshlets {
-        let clusters = meshlets::build(&mesh).map_err(Failure::Input)?;
-        out += &meshlets::rust_source(&clusters, name, &mesh_type).map_err(Failure::Input)?;
-    }
-    if let Some(warning) = meshlets::winding_warning(&mesh, with_meshlets) {
+    let options = Options { mesh_type, meshlets: with_meshlets };
+    let converted = convert_bytes(&bytes, name, &source, &options)
+        .map_err(|e| Failure::Input(format!("{shown}: {e}")))?;
+    if let Some(warning) = &converted.winding_warning {
         report(&format!("{shown}: {warning}"));
     }
+    let (mesh, out) = (&converted.mesh, &converted.source);
     let mut stdout = std::io::stdout().lock();
     stdout
         .write_all(out.as_bytes())

@@ -1,7 +1,7 @@
 //! PNG decoding for `png2rs`: any PNG the `png` crate reads, normalised to
 //! grey or RGB samples (8 or 16 bits) with an alpha channel.
 
-use png::{BitDepth, ColorType, Transformations};
+use ::png::{BitDepth, ColorType, Transformations};
 
 /// The largest width or height accepted (microraster's `MAX_TEXTURE_DIM`).
 pub const MAX_DIM: u32 = 4096;
@@ -27,7 +27,7 @@ pub struct Image {
 /// crate's `EXPAND`); 16-bit samples are kept, so the conversion rounds once
 /// from the full precision.
 pub fn decode(bytes: &[u8]) -> Result<Image, String> {
-    let mut decoder = png::Decoder::new(std::io::Cursor::new(bytes));
+    let mut decoder = ::png::Decoder::new(std::io::Cursor::new(bytes));
     decoder.set_transformations(Transformations::EXPAND);
     let mut reader = decoder.read_info().map_err(|e| format!("not a readable PNG: {e}"))?;
     let (width, height) = (reader.info().width, reader.info().height);

@@ -5,31 +5,16 @@
 
 use std::fmt::{self, Write};
 
-use crate::convert::Texels;
+use super::convert::Texels;
+pub use crate::obj::emit::{is_type_path as is_path, static_name};
 
 /// Default path of the microraster crate in the generated code.
 pub const DEFAULT_CRATE: &str = "microraster";
 /// Default path of the module holding `Rgb565` and `Gray8`.
-pub const DEFAULT_PIXELCOLOR: &str = "embedded_graphics_core::pixelcolor";
+pub const DEFAULT_PIXELCOLOR: &str = "embedded_graphics::pixelcolor";
 
 /// Texels per source line.
 const PER_LINE: usize = 12;
-
-/// `name` in upper case if it is a Rust identifier (ASCII letters, digits
-/// and `_`, not starting with a digit, not just `_`).
-pub fn static_name(name: &str) -> Result<String, String> {
-    let ok = !name.is_empty()
-        && name != "_"
-        && !name.starts_with(|c: char| c.is_ascii_digit())
-        && name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_');
-    if ok { Ok(name.to_ascii_uppercase()) } else { Err(format!("`{name}` is not a valid Rust identifier")) }
-}
-
-/// Whether `path` is a Rust path (`a::b::c`; `crate` allowed as any segment's
-/// spelling since it is an identifier).
-pub fn is_path(path: &str) -> bool {
-    path.split("::").all(|s| static_name(s).is_ok())
-}
 
 /// Rust source defining `NAME_TEXELS` and `NAME` (upper-cased), with
 /// `krate` the path of microraster and `pixelcolor` that of the colour

@@ -7,8 +7,8 @@ use microraster::mesh::{
     Mesh, Meshlet, bounding_sphere, build_meshlets, meshlet_bound, meshlet_scratch_len, meshlet_vertex_bound,
 };
 
-use crate::emit::static_name;
-use crate::parse::ObjMesh;
+use super::emit::static_name;
+use super::parse::ObjMesh;
 
 /// The clusters of a mesh, in owned buffers.
 pub struct Clusters {

@@ -1,24 +1,18 @@
-//! Tests of the `obj2rs` example (OBJ → Rust source for a static `Mesh`):
-//! its parser and emitter are included from `examples/obj2rs/`, and the
-//! committed outputs for the test assets are compiled in and compared with a
-//! fresh conversion (round trip).
+//! Tests of `obj2rs` (OBJ → Rust source for a static `Mesh`): its parser
+//! and emitter (`microraster_tools::obj`), and the committed outputs for the
+//! test assets, compiled in and compared with a fresh conversion (round trip).
 
-#[path = "../examples/obj2rs/emit.rs"]
-mod emit;
-#[path = "../examples/obj2rs/meshlets.rs"]
-mod meshlets;
-#[path = "../examples/obj2rs/parse.rs"]
-mod parse;
+use microraster_tools::obj::{emit, meshlets, parse};
 
 /// The converter's output for the assets, compiled as part of this test.
 /// Regenerate after changing the emitter:
-/// `cargo run --example obj2rs -- assets/tetra.obj TETRA > assets/tetra.rs`
-/// `cargo run --example obj2rs -- assets/cube_quads.obj CUBE_QUADS > assets/cube_quads.rs`
-/// `cargo run --example obj2rs -- assets/cube_quads.obj CUBE_M --meshlets > assets/cube_quads_meshlets.rs`
+/// `cargo run -p microraster-tools --bin obj2rs -- assets/tetra.obj TETRA > assets/tetra.rs`
+/// `cargo run -p microraster-tools --bin obj2rs -- assets/cube_quads.obj CUBE_QUADS > assets/cube_quads.rs`
+/// `cargo run -p microraster-tools --bin obj2rs -- assets/cube_quads.obj CUBE_M --meshlets > assets/cube_quads_meshlets.rs`
 mod generated {
-    include!("../assets/tetra.rs");
-    include!("../assets/cube_quads.rs");
-    include!("../assets/cube_quads_meshlets.rs");
+    include!("../../assets/tetra.rs");
+    include!("../../assets/cube_quads.rs");
+    include!("../../assets/cube_quads_meshlets.rs");
 }
 
 use microraster::Error;
@@ -26,8 +20,8 @@ use microraster::mesh::{Mesh, MeshletMesh};
 use parse::{ObjMesh, ParseError, parse_obj};
 use proptest::prelude::*;
 
-const TETRA_OBJ: &str = include_str!("../assets/tetra.obj");
-const CUBE_OBJ: &str = include_str!("../assets/cube_quads.obj");
+const TETRA_OBJ: &str = include_str!("../../assets/tetra.obj");
+const CUBE_OBJ: &str = include_str!("../../assets/cube_quads.obj");
 
 fn signed_volume(m: &Mesh<'_>) -> f64 {
     let p = |i: u16| m.positions[usize::from(i)].map(f64::from);
@@ -91,12 +85,12 @@ fn cube_quads_keeps_file_normals_and_splits_vertices_by_normal() {
 #[test]
 fn generated_sources_are_current_and_compile() {
     for (obj, name, file, golden, mesh) in [
-        (TETRA_OBJ, "tetra", "tetra.obj", include_str!("../assets/tetra.rs"), &generated::TETRA),
+        (TETRA_OBJ, "tetra", "tetra.obj", include_str!("../../assets/tetra.rs"), &generated::TETRA),
         (
             CUBE_OBJ,
             "Cube_Quads",
             "cube_quads.obj",
-            include_str!("../assets/cube_quads.rs"),
+            include_str!("../../assets/cube_quads.rs"),
             &generated::CUBE_QUADS,
         ),
     ] {
@@ -118,7 +112,7 @@ fn meshlet_output_is_current_compiles_and_validates() {
     let mut src = emit::rust_source(&m, "CUBE_M", "cube_quads.obj", emit::DEFAULT_MESH_TYPE).unwrap();
     let c = meshlets::build(&m).unwrap();
     src += &meshlets::rust_source(&c, "CUBE_M", emit::DEFAULT_MESH_TYPE).unwrap();
-    assert_eq!(src, include_str!("../assets/cube_quads_meshlets.rs"), "regenerate (see `mod generated`)");
+    assert_eq!(src, include_str!("../../assets/cube_quads_meshlets.rs"), "regenerate (see `mod generated`)");
     let mm = generated::CUBE_M_MESHLET_MESH;
     assert_eq!(mm.mesh, m.mesh());
     assert_eq!(mm.validate(), Ok(()));
@@ -382,4 +376,26 @@ proptest! {
             prop_assert_eq!(src.lines().filter(|l| l.starts_with("    [")).count(), 2 * m.positions.len() + m.indices.len());
         }
     }
+}
+
+/// The build-script route reads the file, names it in errors, and refuses a
+/// winding against the normals (which the binary only warns about).
+#[test]
+fn convert_for_build_scripts_rejects_a_winding_mismatch() {
+    let dir = std::env::temp_dir().join(format!("obj2rs-test-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let good = dir.join("good.obj");
+    let bad = dir.join("bad.obj");
+    std::fs::write(&good, format!("{TRI}vn 0 0 1\nf 1//1 2//1 3//1\n")).unwrap();
+    std::fs::write(&bad, format!("{TRI}vn 0 0 -1\nf 1//1 2//1 3//1\n")).unwrap();
+    let src = microraster_tools::obj::convert(&good, "good").unwrap();
+    assert!(src.contains("pub static GOOD: microraster::mesh::Mesh<'static>"), "{src}");
+    let e = microraster_tools::obj::convert(&bad, "bad").unwrap_err().to_string();
+    assert!(
+        e.starts_with(&bad.display().to_string()) && e.contains("1 of 1 triangles are wound clockwise"),
+        "{e}"
+    );
+    let missing = microraster_tools::obj::convert(dir.join("missing.obj"), "m").unwrap_err().to_string();
+    assert!(missing.contains("missing.obj"), "{missing}");
+    std::fs::remove_dir_all(&dir).unwrap();
 }

@@ -2,7 +2,7 @@
 
 use std::fmt::{self, Write};
 
-use crate::parse::ObjMesh;
+use super::parse::ObjMesh;
 
 /// The default path of the mesh type in generated code.
 pub const DEFAULT_MESH_TYPE: &str = "microraster::mesh::Mesh";

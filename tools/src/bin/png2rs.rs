@@ -2,7 +2,7 @@
 //! [`microraster::texture::Texture`] (texels in flash, no RAM).
 //!
 //! ```text
-//! cargo run --example png2rs -- INPUT.png --name NAME --format rgb565|gray8|argb4444|a8 [--out FILE]
+//! png2rs INPUT.png --name NAME --format rgb565|gray8|argb4444|a8 [--out FILE]
 //!     [--ignore-alpha] [--crate PATH] [--pixelcolor PATH]
 //! ```
 //!
@@ -12,20 +12,18 @@
 //! to standard output; `INPUT` `-` reads standard input. `--crate` sets the
 //! path of microraster in the output (default `microraster`; `crate` inside
 //! it), `--pixelcolor` that of the module with `Rgb565` and `Gray8` (default
-//! `embedded_graphics_core::pixelcolor`). Any PNG the `png` crate reads is
+//! `embedded_graphics::pixelcolor`). Any PNG the `png` crate reads is
 //! accepted: palette, grey, RGB, with or without alpha, 1 to 16 bits (see
-//! `decode.rs`); rounding and alpha handling are described in `convert.rs`.
+//! `png::decode`); rounding and alpha handling are described in
+//! `png::convert`. Installed by `cargo install --path tools`;
+//! `microraster_tools::png` is the same conversion for build scripts.
 //! Errors exit with status 1 (2 for bad arguments).
-
-mod convert;
-mod decode;
-mod emit;
 
 use std::io::{Read, Write};
 use std::path::Path;
 use std::process::ExitCode;
 
-use convert::{Alpha, Format};
+use microraster_tools::png::{Alpha, Format, Options as Conversion, convert_bytes, emit};
 
 const USAGE: &str = "usage: png2rs INPUT.png --name NAME --format rgb565|gray8|argb4444|a8 [--out FILE] \
                      [--ignore-alpha] [--crate PATH] [--pixelcolor PATH]   (INPUT `-` = stdin)";
@@ -123,12 +121,11 @@ fn run(args: &[String]) -> Result<(), Failure> {
     let shown = if o.input == "-" { "<stdin>" } else { o.input.as_str() };
     read.map_err(|e| Failure::Input(format!("{shown}: {e}")))?;
 
-    let image = decode::decode(&bytes).map_err(|e| Failure::Input(format!("{shown}: {e}")))?;
-    let (texels, translucent) =
-        convert::convert(&image, o.format, o.alpha).map_err(|e| Failure::Input(format!("{shown}: {e}")))?;
-    let src =
-        emit::rust_source(&texels, image.width, image.height, &o.name, &source, &o.krate, &o.pixelcolor)
-            .map_err(Failure::Input)?;
+    let conversion =
+        Conversion { format: o.format, alpha: o.alpha, krate: o.krate, pixelcolor: o.pixelcolor };
+    let converted = convert_bytes(&bytes, &o.name, &source, &conversion)
+        .map_err(|e| Failure::Input(format!("{shown}: {e}")))?;
+    let (src, translucent, (width, height)) = (converted.source, converted.translucent, converted.size);
     match &o.out {
         Some(path) => std::fs::write(path, &src).map_err(|e| Failure::Input(format!("{path}: {e}")))?,
         None => {
@@ -140,9 +137,7 @@ fn run(args: &[String]) -> Result<(), Failure> {
         }
     }
     report(&format!(
-        "{shown}: {}×{} {} texels{}",
-        image.width,
-        image.height,
+        "{shown}: {width}×{height} {} texels{}",
         match o.format {
             Format::Rgb565 => "Rgb565",
             Format::Gray8 => "Gray8",

@@ -1,0 +1,100 @@
+//! Wavefront OBJ → Rust source for a `static` [`Mesh`](microraster::mesh::Mesh)
+//! (the `obj2rs` binary, and [`convert`] for build scripts).
+//!
+//! The output defines `NAME_POSITIONS`, `NAME_NORMALS`, `NAME_INDICES` and
+//! `NAME: Mesh<'static>`; with [`Options::meshlets`] also the mesh's
+//! clusters and `NAME_MESHLET_MESH: MeshletMesh<'static>`. See [`parse`]
+//! for the OBJ subset understood.
+
+pub mod emit;
+pub mod meshlets;
+pub mod parse;
+
+use std::path::Path;
+
+use crate::{Error, in_file};
+
+/// How [`convert_bytes`] writes its output.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Options {
+    /// Path of `Mesh` in the output (default `microraster::mesh::Mesh`;
+    /// `crate::mesh::Mesh` inside microraster).
+    pub mesh_type: String,
+    /// Also write the clusters (`--meshlets`).
+    pub meshlets: bool,
+}
+
+impl Default for Options {
+    fn default() -> Self {
+        Options { mesh_type: emit::DEFAULT_MESH_TYPE.to_string(), meshlets: false }
+    }
+}
+
+/// A conversion: the Rust source, the mesh it describes, and the warning
+/// when triangles are wound against their normals (see
+/// [`meshlets::winding_warning`]).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Converted {
+    /// The generated Rust source.
+    pub source: String,
+    /// The converted mesh (counts and statistics for a report).
+    pub mesh: parse::ObjMesh,
+    /// `Some` when some triangle's winding disagrees with its normals
+    /// (drawn inside out with back faces culled).
+    pub winding_warning: Option<String>,
+}
+
+/// Converts the OBJ file at `path` into Rust source for `static NAME: Mesh`
+/// (NAME is `name` upper-cased), with the default [`Options`].
+///
+/// Meant for `build.rs`, where nobody reads warnings: a winding that
+/// disagrees with the file's normals is an error here (the `obj2rs` binary
+/// only warns); use [`convert_bytes`] to accept it.
+///
+/// # Errors
+///
+/// The file cannot be read or parsed, `name` is not an identifier, or the
+/// winding disagrees with the normals.
+///
+/// ```
+/// let src = microraster_tools::obj::convert(concat!(env!("CARGO_MANIFEST_DIR"), "/../assets/tetra.obj"), "tetra")?;
+/// assert!(src.contains("pub static TETRA: microraster::mesh::Mesh<'static>"));
+/// # Ok::<(), microraster_tools::Error>(())
+/// ```
+pub fn convert(path: impl AsRef<Path>, name: &str) -> Result<String, Error> {
+    let (file, bytes) = crate::read(path.as_ref())?;
+    let c = convert_bytes(&bytes, name, &file, &Options::default()).map_err(|e| in_file(path.as_ref(), e))?;
+    match c.winding_warning {
+        Some(w) => Err(in_file(path.as_ref(), Error(w))),
+        None => Ok(c.source),
+    }
+}
+
+/// Converts OBJ text (`bytes`; only comments and names may be non-ASCII)
+/// named `source` in the header comment.
+///
+/// # Errors
+///
+/// A parse error (with its line), an invalid `name` or
+/// [`Options::mesh_type`], or a mesh the cluster builder rejects.
+///
+/// ```
+/// use microraster_tools::obj::{Options, convert_bytes};
+/// // One triangle whose normal points against its winding.
+/// let obj = b"v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 -1\nf 1//1 2//1 3//1\n";
+/// let c = convert_bytes(obj, "tri", "tri.obj", &Options::default())?;
+/// assert!(c.source.contains("pub static TRI_INDICES"));
+/// assert!(c.winding_warning.is_some());
+/// # Ok::<(), microraster_tools::Error>(())
+/// ```
+pub fn convert_bytes(bytes: &[u8], name: &str, source: &str, options: &Options) -> Result<Converted, Error> {
+    let text = String::from_utf8_lossy(bytes);
+    let mesh = parse::parse_obj(&text).map_err(|e| Error(e.to_string()))?;
+    let mut out = emit::rust_source(&mesh, name, source, &options.mesh_type).map_err(Error)?;
+    if options.meshlets {
+        let clusters = meshlets::build(&mesh).map_err(Error)?;
+        out += &meshlets::rust_source(&clusters, name, &options.mesh_type).map_err(Error)?;
+    }
+    let winding_warning = meshlets::winding_warning(&mesh, options.meshlets);
+    Ok(Converted { source: out, mesh, winding_warning })
+}
