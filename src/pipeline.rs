@@ -16,6 +16,7 @@
 
 mod cache;
 mod cluster;
+mod presnap;
 #[cfg(not(microraster_without_fragment_stage))]
 mod varying;
 
