@@ -191,7 +191,8 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
                     if e.state & Cached::<T, S>::SNAP == 0 {
                         // With usable quotients, snapping is their rounding
                         // (`presnap`), its depth deferred as `snap_deferred` does.
-                        e.screen = if e.state & Cached::<T, S>::QUO != 0 && !e.q[0].is_nan() {
+                        e.screen = if cull_sign != 0 && e.state & Cached::<T, S>::QUO != 0 && !e.q[0].is_nan()
+                        {
                             let pos = presnap.snap(e.q);
                             pos.map(|pos| ScreenVertex { pos, depth: 0, inv_w: 0, color: [0; 3] })
                         } else {
