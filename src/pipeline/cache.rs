@@ -21,13 +21,14 @@ use crate::raster3d::{ScreenTriangle, ScreenVertex};
 
 /// Caller-owned storage for [`Pipeline::draw_valid_mesh_cached`]: the
 /// per-vertex results of one mesh of up to `V` vertices (reused mesh after
-/// mesh). Size: `V ×` about 40 bytes for `f32` and [`Fx`](crate::math::Fx)
-/// (clip position, snapped screen vertex, state), `size_of` tells exactly.
+/// mesh). Size: `V ×` about 50 bytes for `f32` and [`Fx`](crate::math::Fx)
+/// (clip position, snapped screen vertex, pre-snap quotients, state),
+/// `size_of` tells exactly.
 ///
 /// ```
 /// use microraster::pipeline::VertexCache;
 /// let cache = VertexCache::<f32, 4, 392>::new();
-/// assert!(core::mem::size_of_val(&cache) <= 392 * 44);
+/// assert!(core::mem::size_of_val(&cache) <= 392 * 52);
 /// ```
 pub struct VertexCache<T: Scalar, const S: u32, const V: usize> {
     pub(super) v: [Cached<T, S>; V],
