@@ -16,6 +16,7 @@
 
 mod cache;
 mod cluster;
+mod presnap;
 #[cfg(feature = "fragment")]
 mod varying;
 

@@ -11,21 +11,24 @@
 //! over each surviving meshlet straight into a band. Both give the triangles
 //! of [`Pipeline::draw_valid_mesh`], bit for bit, in the same order.
 
+use super::presnap::{PreSnap, orientation};
 use super::{MeshSetup, MeshStats, Pipeline, Shade, channels};
 use crate::Error;
 use crate::clip3d::{Class, ClipVertex, VertexClass};
+use crate::edge::Cull;
 use crate::math::{Scalar, Vec3};
 use crate::raster3d::{ScreenTriangle, ScreenVertex};
 
 /// Caller-owned storage for [`Pipeline::draw_valid_mesh_cached`]: the
 /// per-vertex results of one mesh of up to `V` vertices (reused mesh after
-/// mesh). Size: `V ×` about 40 bytes for `f32` and [`Fx`](crate::math::Fx)
-/// (clip position, snapped screen vertex, state), `size_of` tells exactly.
+/// mesh). Size: `V ×` about 50 bytes for `f32` and [`Fx`](crate::math::Fx)
+/// (clip position, snapped screen vertex, pre-snap quotients, state),
+/// `size_of` tells exactly.
 ///
 /// ```
 /// use microraster::pipeline::VertexCache;
 /// let cache = VertexCache::<f32, 4, 392>::new();
-/// assert!(core::mem::size_of_val(&cache) <= 392 * 44);
+/// assert!(core::mem::size_of_val(&cache) <= 392 * 52);
 /// ```
 pub struct VertexCache<T: Scalar, const S: u32, const V: usize> {
     pub(super) v: [Cached<T, S>; V],
@@ -61,6 +64,9 @@ pub(super) struct Cached<T, const S: u32> {
     code: u8,
     /// Snapped vertex (valid with `SNAP`; its colour with `LIT`).
     screen: Option<ScreenVertex<S>>,
+    /// What snapping rounds, for the pre-snap back-face test (valid with
+    /// `QUO`; NaN where the test cannot use the vertex).
+    q: [f32; 2],
 }
 
 impl<T: Scalar, const S: u32> Cached<T, S> {
@@ -69,7 +75,9 @@ impl<T: Scalar, const S: u32> Cached<T, S> {
     const LIT: u8 = 4;
     /// The snapped vertex's depth and `1/w` are set (with `SNAP`).
     const DEPTH: u8 = 8;
-    const EMPTY: Self = Cached { clip: [T::ZERO; 4], state: 0, code: 0, screen: None };
+    /// `q` is set.
+    const QUO: u8 = 16;
+    const EMPTY: Self = Cached { clip: [T::ZERO; 4], state: 0, code: 0, screen: None, q: [0.0; 2] };
 }
 
 /// Where the cached path reads its vertices: model positions and normals by
@@ -106,6 +114,12 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         let flat = self.shade == Shade::Flat || !src.has_normals();
         let flat_shade = self.shade == Shade::Flat;
         let position = |i: usize| src.position(i).map(Vec3::from_f32).ok_or(Error::InvalidMesh);
+        let presnap = PreSnap::new::<T>(self.size, self.origin, S);
+        let cull_sign = match self.cull {
+            Cull::Clockwise if presnap.active() => 1,
+            Cull::CounterClockwise if presnap.active() => -1,
+            _ => 0,
+        };
 
         // Clip y and w and the band test of every vertex; the rest on demand.
         for (i, c) in cache.iter_mut().enumerate() {
@@ -153,12 +167,38 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
                 Ok(ctx.color(position(idx[k])?, n))
             };
             if class == Class::Inside {
+                // A certain back face (`presnap`) needs no snapping: counted
+                // as the exact test would count it.
+                if cull_sign != 0 {
+                    let mut q = [[0.0; 2]; 3];
+                    for (k, &j) in idx.iter().enumerate() {
+                        let e = &mut cache[j];
+                        if e.state & Cached::<T, S>::QUO == 0 {
+                            let usable = self.depth_deferrable(e.clip);
+                            e.q = presnap.quotients(e.clip).filter(|_| usable).unwrap_or([f32::NAN; 2]);
+                            e.state |= Cached::<T, S>::QUO;
+                        }
+                        q[k] = e.q;
+                    }
+                    if orientation(q) == cull_sign {
+                        stats.back_faces += 1;
+                        continue;
+                    }
+                }
                 let mut at = [ScreenVertex::default(); 3];
                 let mut ok = true;
                 for (k, &j) in idx.iter().enumerate() {
                     let e = &mut cache[j];
                     if e.state & Cached::<T, S>::SNAP == 0 {
-                        e.screen = self.snap_deferred(e.clip);
+                        // With usable quotients, snapping is their rounding
+                        // (`presnap`), its depth deferred as `snap_deferred` does.
+                        e.screen = if cull_sign != 0 && e.state & Cached::<T, S>::QUO != 0 && !e.q[0].is_nan()
+                        {
+                            let pos = presnap.snap(e.q);
+                            pos.map(|pos| ScreenVertex { pos, depth: 0, inv_w: 0, color: [0; 3] })
+                        } else {
+                            self.snap_deferred(e.clip)
+                        };
                         let depth = e.screen.is_some_and(|s| s.inv_w != 0);
                         e.state |= Cached::<T, S>::SNAP | if depth { Cached::<T, S>::DEPTH } else { 0 };
                     }
@@ -244,13 +284,22 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     /// fails. `Fx` snaps at once: its divisor would be prepared twice, which
     /// costs more than its (exact, cheap) depth division.
     fn snap_deferred(&self, c: [T; 4]) -> Option<ScreenVertex<S>> {
-        let (z, w) = (c[2], c[3]);
-        let safe = crate::math::vec::is_float::<T>() && z.is_finite() && z.abs() <= w * T::from_f32(128.0);
-        if !safe {
+        if !self.depth_deferrable(c) {
             return self.snap_vertex(c);
         }
-        let pos = self.snap_xy(c, w.divisor()?)?;
+        let pos = self.snap_xy(c, c[3].divisor()?)?;
         Some(ScreenVertex { pos, depth: 0, inv_w: 0, color: [0; 3] })
+    }
+}
+
+impl<T: Scalar, const S: u32> Pipeline<T, S> {
+    /// Whether [`Pipeline::snap_deferred`] leaves the depth of clip position
+    /// `c` for later (`f32`, its depth cannot fail): then snapping fails
+    /// only where its position does.
+    #[inline]
+    fn depth_deferrable(&self, c: [T; 4]) -> bool {
+        let (z, w) = (c[2], c[3]);
+        crate::math::vec::is_float::<T>() && z.is_finite() && z.abs() <= w * T::from_f32(128.0)
     }
 }
 

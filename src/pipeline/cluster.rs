@@ -30,7 +30,7 @@ use crate::render::Band3d;
 use crate::{Error, Interpolate};
 
 /// The vertex cache [`Pipeline::draw_meshlets`] needs: one cluster's
-/// vertices (about 2.8 KB for `f32`).
+/// vertices (about 3.3 KB for `f32`).
 pub type ClusterCache<T, const S: u32> = VertexCache<T, S, MAX_MESHLET_VERTICES>;
 
 /// A cluster's vertices: local slot → the mesh's arrays.

@@ -1,0 +1,231 @@
+//! Back faces rejected before snapping (`f32` only): the orientation of a
+//! triangle from the values snapping rounds, with a margin that covers the
+//! rounding, so a back face costs neither its vertices' conversion to
+//! subpixels nor the exact area test.
+//!
+//! # Why the margin suffices
+//! With `f32`, snapping a coordinate `c` (`x`, or `−y` since y is flipped)
+//! of a vertex with clip `w` computes `q = fl(fl(c / w) · a)`, `a` half the
+//! viewport in subpixels ([`Scalar::div_scaled_by`](crate::math::Scalar)),
+//! then `origin + round_even(q)`. [`quotients`] computes the same `q`, bit
+//! for bit. So each snapped coordinate is `B + R` with `B` a per-axis integer
+//! and `|R − q| ≤ 1/2`.
+//!
+//! The exact test ([`super::Pipeline::keep`]) takes the sign of
+//! `A = cross(R1 − R0, R2 − R0)` (`B` cancels). With `e1 = q1 − q0`,
+//! `e2 = q2 − q0` (exact) and `d1, d2` the rounding of the differences
+//! (each component within 1): `A = cross(e1, e2) + cross(e1, d2) +
+//! cross(d1, e2) + cross(d1, d2)`, so `|A − cross(e1, e2)| ≤ M =
+//! |e1x| + |e1y| + |e2x| + |e2y| + 2`. In `f32` the differences round by a
+//! relative `u = 2^-24`, the products and their difference by `u` more: the
+//! computed `Â` is within `5u·T`, `T = |e1x·e2y| + |e1y·e2x|`, of
+//! `cross(e1, e2)`. The bound is computed as `(M̂ + 2^-20·T̂)·(1 + 2^-10)`,
+//! where `2^-20 = 16u` covers `5u` and `T̂ ≥ (1 − 4u)·T`, and the factor
+//! covers the relative error (a few `u`) of the computed `M̂`, `T̂` and sum.
+//! So `Â > bound` gives `A > 0`, `Â < −bound` gives `A < 0`: the exact test
+//! decides the same. With `|q| ≤ 2^22` nothing overflows and, with the
+//! offsets within `2^27` ([`PreSnap::new`]), snapping cannot fail for these
+//! vertices, so the triangle is counted as a back face exactly as before.
+
+use crate::math::Scalar;
+use crate::math::divisor::round_even_f32;
+
+/// The largest `|q|` [`orientation`] accepts.
+const Q_MAX: f32 = 4_194_304.0; // 2^22
+
+/// Per mesh: the halves of the viewport that snapping scales by, or `None`
+/// when the pre-snap test does not apply (`Fx`, an odd subpixel extent, or
+/// an origin so far out that snapping might fail).
+#[derive(Clone, Copy)]
+pub(super) struct PreSnap {
+    half: Option<[f32; 2]>,
+    /// `origin·2^S + full/2` per axis: the snapped position is this plus
+    /// `round_even(q)`.
+    base: [i32; 2],
+}
+
+impl PreSnap {
+    /// For a viewport `size` at `origin` with `s` subpixel bits.
+    pub(super) fn new<T: Scalar>(size: (u32, u32), origin: (i64, i64), s: u32) -> Self {
+        let axis = |size: u32, origin: i64| {
+            let full = i64::from(size) << s;
+            let base = origin.checked_mul(1 << s)?.checked_add(full / 2)?;
+            // `full / 2 < 2^24` is exact in f32, as `div_scaled_by` converts it.
+            (full % 2 == 0 && base.abs() <= 1 << 27 && full < 1 << 25)
+                .then_some(((full / 2) as f32, base as i32))
+        };
+        match (crate::math::vec::is_float::<T>(), axis(size.0, origin.0), axis(size.1, origin.1)) {
+            (true, Some((hx, bx)), Some((hy, by))) => PreSnap { half: Some([hx, hy]), base: [bx, by] },
+            _ => PreSnap { half: None, base: [0; 2] },
+        }
+    }
+
+    /// The snapped position from [`PreSnap::quotients`] `q`: bit for bit
+    /// what [`Pipeline::snap_xy`](super::Pipeline) gives (`|q| ≤ 2^22`
+    /// and the base within `2^27`: it never fails).
+    #[inline]
+    pub(super) fn snap<const S: u32>(&self, q: [f32; 2]) -> Option<crate::SubPoint<S>> {
+        let r = q.map(|v| round_even_f32(v) as i32);
+        crate::SubPoint::new(self.base[0] + r[0], self.base[1] + r[1]).ok()
+    }
+
+    /// Whether the test applies at all.
+    pub(super) fn active(&self) -> bool {
+        self.half.is_some()
+    }
+
+    /// The values snapping rounds for clip position `c` (x, then −y), or
+    /// `None` if the test cannot use this vertex (not `f32`, `w` not a
+    /// positive finite divisor, or beyond [`Q_MAX`]).
+    #[inline]
+    pub(super) fn quotients<T: Scalar>(&self, c: [T; 4]) -> Option<[f32; 2]> {
+        let [ax, ay] = self.half?;
+        let (x, y, w) = (c[0].to_f32(), c[1].to_f32(), c[3].to_f32());
+        if !(w > 0.0 && w <= f32::MAX) {
+            return None;
+        }
+        let q = [x / w * ax, -y / w * ay];
+        // False for NaN and infinity too.
+        (q[0].abs() <= Q_MAX && q[1].abs() <= Q_MAX).then_some(q)
+    }
+}
+
+/// The sign of the snapped signed area (`signed_area2`) of a triangle with
+/// [`PreSnap::quotients`] `q`: `1` or `-1` when certain (module docs), `0`
+/// when the margin does not decide.
+#[inline]
+pub(super) fn orientation(q: [[f32; 2]; 3]) -> i8 {
+    let (e1x, e1y) = (q[1][0] - q[0][0], q[1][1] - q[0][1]);
+    let (e2x, e2y) = (q[2][0] - q[0][0], q[2][1] - q[0][1]);
+    let (p, n) = (e1x * e2y, e1y * e2x);
+    let area = p - n;
+    let m = e1x.abs() + e1y.abs() + e2x.abs() + e2y.abs() + 2.0;
+    let bound = (m + (p.abs() + n.abs()) * (1.0 / 1_048_576.0)) * (1.0 + 1.0 / 1024.0);
+    if area > bound {
+        1
+    } else if area < -bound {
+        -1
+    } else {
+        0
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The exact test's area from the rounded quotients.
+    fn snapped_area(q: [[f32; 2]; 3]) -> i64 {
+        let r = q.map(|v| v.map(round_even_f32));
+        (r[1][0] - r[0][0]) * (r[2][1] - r[0][1]) - (r[2][0] - r[0][0]) * (r[1][1] - r[0][1])
+    }
+
+    struct Rng(u64);
+    impl Rng {
+        fn unit(&mut self) -> f64 {
+            self.0 ^= self.0 << 13;
+            self.0 ^= self.0 >> 7;
+            self.0 ^= self.0 << 17;
+            (self.0 >> 11) as f64 / (1u64 << 53) as f64
+        }
+    }
+
+    /// Random small and large triangles, slivers, near-degenerate and
+    /// half-integer (rounding-tie) vertices: whenever the pre-snap test is
+    /// certain, the exact test agrees in sign.
+    #[test]
+    fn never_contradicts_the_snapped_test() {
+        let mut rng = Rng(0x5EED_CAFE);
+        let (mut decided, mut total) = (0u32, 0u32);
+        for i in 0..400_000u32 {
+            let scale = [4.0, 32.0, 512.0, 65536.0, 4_000_000.0][i as usize % 5];
+            let centre = [rng.unit() - 0.5, rng.unit() - 0.5].map(|c| c * 8.0e6);
+            let mut q = [[0.0f32; 2]; 3];
+            for v in &mut q {
+                *v = [0, 1].map(|k| (centre[k] + (rng.unit() - 0.5) * scale) as f32);
+            }
+            match i % 4 {
+                // A sliver: the third vertex near the line of the first two.
+                1 => {
+                    let t = rng.unit() as f32;
+                    q[2] = [0, 1].map(|k| q[0][k] + (q[1][k] - q[0][k]) * t + (rng.unit() as f32 - 0.5));
+                }
+                // Ties: half-integer coordinates.
+                2 => q = q.map(|v| v.map(|c| (c.floor() + 0.5).clamp(-Q_MAX, Q_MAX))),
+                _ => {}
+            }
+            if q.iter().flatten().any(|c| c.abs() > Q_MAX) {
+                continue;
+            }
+            total += 1;
+            let o = orientation(q);
+            if o != 0 {
+                decided += 1;
+                assert_eq!(i64::from(o), snapped_area(q).signum(), "{q:?}");
+            }
+        }
+        // Not vacuous: most random triangles are decided, but not all.
+        assert!(decided > total / 2 && decided < total, "{decided} of {total}");
+    }
+
+    /// Adversarial: triangles whose snapped area is tiny (±1 or 0 after
+    /// rounding, but larger or of the other sign before) are never decided
+    /// against the exact sign.
+    #[test]
+    fn adversarial_rounding_flips() {
+        let mut rng = Rng(0xBADC_0FFE);
+        let mut flips = 0;
+        for _ in 0..200_000 {
+            let base = [0, 1].map(|_| ((rng.unit() - 0.5) * 2.0e6).round() as f32);
+            let off = |r: &mut Rng| (r.unit() as f32 - 0.5) * 0.999;
+            let len = (rng.unit() * 64.0) as f32;
+            let mut q = [base, [base[0] + len, base[1]], [base[0] + len / 2.0, base[1] + 1.0]];
+            for v in &mut q {
+                *v = [v[0] + off(&mut rng), v[1] + off(&mut rng)];
+            }
+            let exact = snapped_area(q);
+            let real = f64::from(q[1][0] - q[0][0]) * f64::from(q[2][1] - q[0][1])
+                - f64::from(q[2][0] - q[0][0]) * f64::from(q[1][1] - q[0][1]);
+            flips += u32::from(real.signum() as i64 != exact.signum());
+            let o = orientation(q);
+            assert!(o == 0 || i64::from(o) == exact.signum(), "{q:?}: {o} vs {exact}");
+        }
+        // The rounding does flip signs here: the margin is what saves the test.
+        assert!(flips > 100, "{flips}");
+    }
+
+    #[test]
+    fn quotients_match_snapping() {
+        let p = PreSnap::new::<f32>((320, 240), (0, 0), 4);
+        let mut rng = Rng(0x0123_4567);
+        for _ in 0..100_000 {
+            let w = (rng.unit() * 10.0 + 0.01) as f32;
+            let c = [(rng.unit() - 0.5) * 4.0, (rng.unit() - 0.5) * 4.0].map(|v| v as f32 * w);
+            let q = p.quotients([c[0], c[1], 0.0, w]).expect("in range");
+            assert_eq!(round_even_f32(q[0]), c[0].div_scaled_by(w, 320 * 16 / 2).unwrap());
+            assert_eq!(round_even_f32(q[1]), (-c[1]).div_scaled_by(w, 240 * 16 / 2).unwrap());
+        }
+        // Through the pipeline's own snapping, with an origin.
+        let pipe = crate::pipeline::Pipeline::<f32, 4>::perspective(
+            crate::math::Mat4::IDENTITY,
+            0.8,
+            1.0,
+            10.0,
+            320,
+            240,
+        )
+        .unwrap()
+        .with_origin(-37, 1000);
+        let p = PreSnap::new::<f32>(pipe.size, pipe.origin, 4);
+        for _ in 0..100_000 {
+            let w = (rng.unit() * 10.0 + 0.01) as f32;
+            let c = [(rng.unit() - 0.5) * 4.0, (rng.unit() - 0.5) * 4.0].map(|v| v as f32 * w);
+            let clip = [c[0], c[1], 0.0, w];
+            let q = p.quotients(clip).expect("in range");
+            assert_eq!(p.snap::<4>(q), pipe.snap_xy(clip, w));
+        }
+        assert!(!PreSnap::new::<crate::math::Fx>((320, 240), (0, 0), 4).active());
+        assert!(!PreSnap::new::<f32>((321, 240), (0, 0), 0).active());
+        assert!(!PreSnap::new::<f32>((320, 240), (1 << 26, 0), 4).active());
+    }
+}
