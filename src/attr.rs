@@ -332,7 +332,7 @@ mod tests {
         for i in 0..100_000 {
             let v = [0; 3].map(|_| (next(8) + 64, next(8) + 64));
             let frame = PlaneFrame { v, shift: 4 };
-            let vals = [0; 3].map(|_| next(2 + (i % 33) as u32));
+            let vals = [0; 3].map(|_| next(2 + (i % 33)));
             let (rx, ry) = ((v[0].0 >> 4) as i32, (v[0].1 >> 4) as i32);
             let Some(full) = PlaneSetup::new(&frame, rx, ry) else { continue };
             // Spans at and around the reference pixel, one pixel or longer.

@@ -513,7 +513,7 @@ mod tests {
     /// The `u64` form of 16-bit formats equals the `u128` series.
     #[test]
     fn narrow_depth_steps_equal_the_wide_series() {
-        let mut seed = 0x5DEE_CE66_Du64;
+        let mut seed = 0x0005_DEEC_E66D_u64;
         for i in 0..300_000u32 {
             seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
             let (d, m) = ((seed >> 32) as u32, (seed >> 16) as u32 & 0xFFFF);
