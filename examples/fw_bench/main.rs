@@ -57,7 +57,9 @@ mod firmware {
     use cortex_m_semihosting::{debug, hprintln};
     use embedded_graphics_core::pixelcolor::Rgb565;
     use microraster::depth::{Depth16, DepthBand};
+    #[cfg(target_abi = "eabihf")]
     use microraster::math::Fx;
+    #[cfg(target_abi = "eabihf")]
     use microraster::pipeline::ClusterCache;
     use microraster::raster3d::ScreenTriangle;
     use microraster::{Band, Error};
