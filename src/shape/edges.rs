@@ -60,6 +60,11 @@ pub(crate) fn snap(x: f32, y: f32) -> Result<(i32, i32), Error> {
 
 impl<const N: usize> EdgeList<N> {
     /// An empty list.
+    ///
+    /// ```
+    /// let e = microraster::shape::EdgeList::<4>::new();
+    /// assert!(e.is_empty());
+    /// ```
     pub const fn new() -> Self {
         EdgeList {
             edges: [Edge { x0: 0, y0: 0, x1: 0, y1: 0, dir: 0 }; N],
@@ -72,11 +77,25 @@ impl<const N: usize> EdgeList<N> {
     }
 
     /// Number of stored edges.
+    ///
+    /// ```
+    /// let mut e = microraster::shape::EdgeList::<4>::new();
+    /// e.polygon(&[(0.0, 0.0), (4.0, 0.0), (0.0, 4.0)])?;
+    /// assert_eq!(e.len(), 2); // the top edge is horizontal: dropped
+    /// # Ok::<(), microraster::Error>(())
+    /// ```
     pub const fn len(&self) -> usize {
         self.len
     }
 
     /// True if no edge is stored.
+    ///
+    /// ```
+    /// let mut e = microraster::shape::EdgeList::<4>::new();
+    /// e.polygon(&[(0.0, 2.0), (9.0, 2.0)])?; // a flat contour: no area, no edge
+    /// assert!(e.is_empty());
+    /// # Ok::<(), microraster::Error>(())
+    /// ```
     pub const fn is_empty(&self) -> bool {
         self.len == 0
     }
@@ -91,6 +110,16 @@ impl<const N: usize> EdgeList<N> {
     }
 
     /// Starts a new contour at `(x, y)` pixels, closing the previous one.
+    ///
+    /// ```
+    /// let mut e = microraster::shape::EdgeList::<8>::new();
+    /// e.move_to(0.0, 0.0)?;
+    /// e.line_to(4.0, 4.0)?;
+    /// e.move_to(10.0, 0.0)?; // closes the first contour (back to (0, 0))
+    /// assert_eq!(e.len(), 2);
+    /// assert!(e.move_to(f32::NAN, 0.0).is_err());
+    /// # Ok::<(), microraster::Error>(())
+    /// ```
     pub fn move_to(&mut self, x: f32, y: f32) -> Result<(), Error> {
         let p = snap(x, y)?;
         self.close()?;
@@ -101,6 +130,15 @@ impl<const N: usize> EdgeList<N> {
 
     /// Adds an edge from the current point to `(x, y)`; without a current
     /// contour this starts one.
+    ///
+    /// ```
+    /// let mut e = microraster::shape::EdgeList::<1>::new();
+    /// e.line_to(0.0, 0.0)?; // starts the contour
+    /// e.line_to(0.0, 5.0)?; // one edge
+    /// assert_eq!(e.len(), 1);
+    /// assert!(e.line_to(3.0, 9.0).is_err()); // a second edge does not fit in 1
+    /// # Ok::<(), microraster::Error>(())
+    /// ```
     pub fn line_to(&mut self, x: f32, y: f32) -> Result<(), Error> {
         let p = snap(x, y)?;
         self.line_to_snapped(p)
@@ -117,6 +155,15 @@ impl<const N: usize> EdgeList<N> {
     }
 
     /// Closes the current contour back to its first point.
+    ///
+    /// ```
+    /// let mut e = microraster::shape::EdgeList::<4>::new();
+    /// e.move_to(0.0, 0.0)?;
+    /// e.line_to(3.0, 6.0)?;
+    /// e.close()?; // the edge back to (0, 0)
+    /// assert_eq!(e.len(), 2);
+    /// # Ok::<(), microraster::Error>(())
+    /// ```
     pub fn close(&mut self) -> Result<(), Error> {
         if let Some(s) = self.start.take() {
             self.push(self.last, s)?;
@@ -125,6 +172,13 @@ impl<const N: usize> EdgeList<N> {
     }
 
     /// Adds a closed polygon through `points` (pixels).
+    ///
+    /// ```
+    /// let mut e = microraster::shape::EdgeList::<8>::new();
+    /// e.polygon(&[(0.0, 0.0), (6.0, 1.0), (3.0, 5.0)])?;
+    /// assert_eq!(e.len(), 3);
+    /// # Ok::<(), microraster::Error>(())
+    /// ```
     pub fn polygon(&mut self, points: &[(f32, f32)]) -> Result<(), Error> {
         self.close()?;
         for &(x, y) in points {
