@@ -26,6 +26,32 @@ use crate::{Error, Interpolate, MAX_FRAME_DIM, Primitive, RenderError};
 /// A finished band lent to a [`BandSink`]: frame rows [`Lent::area`], pixels
 /// row by row in [`Lent::pixels`]. Only the renderer makes one; the sink
 /// gives it back when the band may be drawn into again.
+///
+/// ```
+/// use core::convert::Infallible;
+/// use embedded_graphics_core::{pixelcolor::Gray8, prelude::*, primitives::Rectangle};
+/// use microraster::render::{BandSink, FrameBands, Lent};
+/// /// Records the frame and where each band goes.
+/// struct Log { areas: [Rectangle; 3], frame: Option<FrameBands> }
+/// impl<'a> BandSink<'a, Gray8, 8> for Log {
+///     type Error = Infallible;
+///     fn begin(&mut self, frame: &FrameBands) -> Result<(), microraster::Error> {
+///         self.frame = Some(*frame);
+///         Ok(())
+///     }
+///     fn submit(&mut self, band: Lent<'a, Gray8, 8>) -> Result<Option<Lent<'a, Gray8, 8>>, Infallible> {
+///         assert_eq!(band.pixels().len(), band.area().size.width as usize * band.area().size.height as usize);
+///         self.areas[band.index()] = band.area();
+///         Ok(Some(band)) // sent synchronously: give it back
+///     }
+/// }
+/// let mut bands = [const { microraster::Band::<Gray8, 8, 2>::new(Gray8::new(0)) }; 2];
+/// let mut log = Log { areas: [Rectangle::zero(); 3], frame: None };
+/// microraster::Renderer::new(5, Gray8::new(0)).render_linked::<_, 4, 8, 2, 2>(&[], &mut bands, &mut log).unwrap();
+/// assert_eq!(log.areas[2], Rectangle::new(Point::new(0, 4), Size::new(8, 1))); // the last band: one row
+/// let f = log.frame.unwrap();
+/// assert_eq!((f.offset(), f.size(), f.band_rows(), f.bands()), (Point::zero(), Size::new(8, 5), 2, 3));
+/// ```
 pub struct Lent<'a, C, const W: usize> {
     rows: &'a mut [[C; W]],
     used: usize,
@@ -52,6 +78,8 @@ impl<C: Copy, const W: usize> Lent<'_, C, W> {
 
 /// The bands of one frame, told to the sink before the first band
 /// ([`BandSink::begin`]).
+///
+/// See [`Lent`] for a sink that reads it.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct FrameBands {
     offset: Point,
