@@ -208,7 +208,34 @@ impl<S: Shape, C: Copy, A: Coverage> Styled<S, C, A> {
         Ok(s)
     }
 
-    /// The rows `rows()` reports. Not inlined: a caller that builds many
+    /// The shape.
+    pub fn shape(&self) -> &S {
+        &self.shape
+    }
+
+    /// The style.
+    pub fn style(&self) -> &ShapeStyle<C, A> {
+        &self.style
+    }
+
+    /// Pixel rows `.0 .. .1` (half-open) the fill and stroke can touch;
+    /// `(0, 0)` for a shape that covers nothing. A band outside them is
+    /// skipped at the cost of two comparisons.
+    ///
+    /// ```
+    /// use embedded_graphics_core::pixelcolor::{Gray8, GrayColor};
+    /// use microraster::shape::{Rect, ShapeStyle, Styled};
+    ///
+    /// // Rows 2.0 .. 5.0: pixel centres 2.5, 3.5, 4.5.
+    /// let bar = Styled::new(Rect::new(0.0, 2.0, 8.0, 3.0)?, ShapeStyle::fill(Gray8::WHITE))?;
+    /// assert_eq!(bar.rows(), (2, 5));
+    /// # Ok::<(), microraster::Error>(())
+    /// ```
+    pub fn rows(&self) -> (i32, i32) {
+        self.rows
+    }
+
+    /// The rows [`Self::rows`] reports. Not inlined: a caller that builds many
     /// shapes holds no edge list on its stack.
     #[inline(never)]
     fn extent(&self) -> Result<(i32, i32), Error> {
