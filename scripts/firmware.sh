@@ -83,6 +83,9 @@
 # (seconds per QEMU run, default 300), MICRORASTER_RUSTC_WEB (fallback
 # toolchain folder, default target/rustc-web).
 set -euo pipefail
+# `elf=$(build ...)`: without it a failed build inside the command
+# substitution would still print the previous ELF's path, and the old
+# binary would run (and pass) in its place.
 shopt -s inherit_errexit
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
 cd "$ROOT"
@@ -216,13 +219,14 @@ build() { # build TARGET [EXAMPLE]: prints the ELF's path (EXAMPLE: firmware by 
   local t example=${2:-firmware}
   t=$(triple "$1")
   if has_target "$t"; then
-    CARGO_TARGET_DIR="$FW_DIR" cargo build --quiet --release --target "$t" --example "$example" >&2
+    CARGO_TARGET_DIR="$FW_DIR" cargo build --quiet --release --target "$t" --example "$example" >&2 ||
+      die "building $example for $t failed"
   else
     [ -x "$RW/usr/bin/rustc" ] || die "no $t standard library: run 'bash scripts/firmware.sh setup' (or rustup target add $t)"
     (
       fallback_env
       CARGO_TARGET_DIR="$FW_DIR" cargo build --quiet --release --target "$t" --example "$example" -Zbuild-std=core >&2
-    )
+    ) || die "building $example for $t failed"
   fi
   echo "$FW_DIR/$t/release/examples/$example"
 }
