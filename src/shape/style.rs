@@ -220,15 +220,20 @@ impl<S: Shape, C: Copy, A: Coverage> Styled<S, C, A> {
 
     /// Pixel rows `.0 .. .1` (half-open) the fill and stroke can touch;
     /// `(0, 0)` for a shape that covers nothing. A band outside them is
-    /// skipped at the cost of two comparisons.
+    /// skipped at the cost of two comparisons. The bound rounds the edges'
+    /// extent outward to whole rows, so it may hold one row the shape does not
+    /// cover (an edge exactly on a row boundary); it never misses one.
     ///
     /// ```
     /// use embedded_graphics_core::pixelcolor::{Gray8, GrayColor};
     /// use microraster::shape::{Rect, ShapeStyle, Styled};
     ///
-    /// // Rows 2.0 .. 5.0: pixel centres 2.5, 3.5, 4.5.
-    /// let bar = Styled::new(Rect::new(0.0, 2.0, 8.0, 3.0)?, ShapeStyle::fill(Gray8::WHITE))?;
+    /// // y 2.25 .. 4.75 covers the pixel centres 2.5, 3.5 and 4.5: rows 2, 3, 4.
+    /// let bar = Styled::new(Rect::new(0.0, 2.25, 8.0, 2.5)?, ShapeStyle::fill(Gray8::WHITE))?;
     /// assert_eq!(bar.rows(), (2, 5));
+    /// // y 2.0 .. 5.0 covers the same centres; the bound holds row 5 as well.
+    /// let bar = Styled::new(Rect::new(0.0, 2.0, 8.0, 3.0)?, ShapeStyle::fill(Gray8::WHITE))?;
+    /// assert_eq!(bar.rows(), (2, 6));
     /// # Ok::<(), microraster::Error>(())
     /// ```
     pub fn rows(&self) -> (i32, i32) {
