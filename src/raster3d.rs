@@ -184,6 +184,13 @@ fn shade_spans<C, F, M, const S: u32, const W: usize, R>(
     if F::ENABLED {
         setup.plane_into(tri.depth_values::<F>(), &mut zplane);
     }
+    // A one-span Gouraud triangle hidden at each of its pixels (a knot's
+    // strand behind another) needs no colour planes: its depth is tested
+    // first. Exact: where the test fails nothing is written.
+    if F::ENABLED && !tri.flat && second.is_none() && !span_passes::<F, W>(first, color.y0(), depth, state, &zplane)
+    {
+        return;
+    }
     if tri.flat {
         draw_with_test::<C, F, _, _, W>(spans, color, depth, state, &zplane, &C::from_channels(tri.v[0].color));
     } else {
@@ -192,6 +199,30 @@ fn shade_spans<C, F, M, const S: u32, const W: usize, R>(
         shade.set_up(tri, &setup);
         draw_with_test::<C, F, _, _, W>(spans, color, depth, state, &zplane, &shade);
     }
+}
+
+/// Whether the depth test passes at some pixel of `span` (without writing);
+/// false where the band has no depth row for it (nothing is drawn there).
+#[inline(always)]
+fn span_passes<F: DepthFormat, const W: usize>(
+    span: Span,
+    y0: i32,
+    depth: &[[F::Storage; W]],
+    state: DepthState,
+    zplane: &Plane,
+) -> bool {
+    let (x0, len) = (span.x as usize, span.len as usize);
+    let Some(dspan) = depth.get((span.y - y0) as usize).and_then(|r| r.get(x0..x0 + len)) else {
+        return false;
+    };
+    let mut z = DepthSpan::<F>::new(zplane, span.x, span.y);
+    for slot in dspan {
+        if state.test.passes(z.value(), F::to_u32(*slot)) {
+            return true;
+        }
+        z.step();
+    }
+    false
 }
 
 /// [`draw_spans`] with the depth state as a type: ordinary opaque drawing
