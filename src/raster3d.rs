@@ -187,12 +187,22 @@ fn shade_spans<C, F, M, const S: u32, const W: usize, R>(
     // A one-span Gouraud triangle hidden at each of its pixels (a knot's
     // strand behind another) needs no colour planes: its depth is tested
     // first. Exact: where the test fails nothing is written.
-    if F::ENABLED && !tri.flat && second.is_none() && !span_passes::<F, W>(first, color.y0(), depth, state, &zplane)
+    if F::ENABLED
+        && !tri.flat
+        && second.is_none()
+        && !span_passes::<F, W>(first, color.y0(), depth, state, &zplane)
     {
         return;
     }
     if tri.flat {
-        draw_with_test::<C, F, _, _, W>(spans, color, depth, state, &zplane, &C::from_channels(tri.v[0].color));
+        draw_with_test::<C, F, _, _, W>(
+            spans,
+            color,
+            depth,
+            state,
+            &zplane,
+            &C::from_channels(tri.v[0].color),
+        );
     } else {
         // Made in place: built and returned, its planes were copied twice.
         let mut shade = Gouraud::<C, M> { planes: [Plane::default(); 4], _m: core::marker::PhantomData };

@@ -61,7 +61,11 @@ pub(super) fn setup<const S: u32>(v: [SubPoint<S>; 3], clip: ClipRect, cull: Cul
 /// one to walk, `None` for a larger one. The 3D fragment loop keeps the
 /// state in its own frame instead of storing it into a `Path`.
 #[inline(always)]
-pub(crate) fn setup_state<const S: u32>(v: [SubPoint<S>; 3], clip: ClipRect, cull: Cull) -> Option<Option<Small>> {
+pub(crate) fn setup_state<const S: u32>(
+    v: [SubPoint<S>; 3],
+    clip: ClipRect,
+    cull: Cull,
+) -> Option<Option<Small>> {
     let shift = S + 1;
     let (one, half) = (1i32 << shift, 1i32 << S);
     let limit = SMALL_PX << shift;
