@@ -33,8 +33,10 @@
 //! Per triangle and band: the edge functions (for a small triangle in `i32`
 //! only, see [`crate::edge`]), one determinant with its reciprocal, and per
 //! plane three exact divisions done as multiplications (`attr`); a depth
-//! plane only with a depth buffer, colour planes only for Gouraud triangles.
-//! Nothing is cached between bands (no RAM per triangle).
+//! plane only with a depth buffer, colour planes only for Gouraud triangles
+//! (and, for one with a single span in the band, only once its depth test
+//! passes at one of its pixels). Nothing is cached between bands (no RAM
+//! per triangle).
 
 use crate::attr::{COLOR_FRAC, Plane, PlaneFrame, PlaneSetup, channel};
 use crate::band::BandView;
