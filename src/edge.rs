@@ -36,7 +36,7 @@
 
 use crate::{ClipRect, SubPoint};
 
-mod small;
+pub(crate) mod small;
 pub use small::SMALL_PX;
 
 /// Which triangles to drop by their winding on screen (y pointing down).
@@ -422,6 +422,27 @@ impl Iterator for TriangleSpans {
             Path::Narrow(w) => w.fold(init, g),
             Path::Wide(w) => w.fold(init, g),
         }
+    }
+}
+
+/// The spans left after the first ones, walked by internal iteration: a
+/// [`TriangleSpans`], or a small triangle's own state ([`small::setup_state`]).
+pub(crate) trait SpanRest {
+    /// `f` on every remaining span, top to bottom.
+    fn for_each_ref(&self, f: impl FnMut(Span));
+}
+
+impl SpanRest for TriangleSpans {
+    #[inline(always)]
+    fn for_each_ref(&self, f: impl FnMut(Span)) {
+        TriangleSpans::for_each_ref(self, f)
+    }
+}
+
+impl SpanRest for small::Small {
+    #[inline(always)]
+    fn for_each_ref(&self, mut f: impl FnMut(Span)) {
+        self.fold((), |(), span| f(span))
     }
 }
 

@@ -33,13 +33,15 @@
 //! Per triangle and band: the edge functions (for a small triangle in `i32`
 //! only, see [`crate::edge`]), one determinant with its reciprocal, and per
 //! plane three exact divisions done as multiplications (`attr`); a depth
-//! plane only with a depth buffer, colour planes only for Gouraud triangles.
-//! Nothing is cached between bands (no RAM per triangle).
+//! plane only with a depth buffer, colour planes only for Gouraud triangles
+//! (and, for one with a single span in the band, only once its depth test
+//! passes at one of its pixels). Nothing is cached between bands (no RAM
+//! per triangle).
 
 use crate::attr::{COLOR_FRAC, Plane, PlaneFrame, PlaneSetup, channel};
 use crate::band::BandView;
 use crate::depth::{DepthFormat, DepthState, DepthTest};
-use crate::edge::{Cull, Span, TriangleSpans};
+use crate::edge::{Cull, Span, SpanRest, TriangleSpans};
 use crate::primitive::{center_rows, reference_pixel};
 use crate::{Interpolate, SubPoint};
 
@@ -139,39 +141,107 @@ pub fn draw_triangle<C, F, M, const S: u32, const W: usize>(
     M: Interpolation,
 {
     use crate::blit::Blitter;
-    let mut spans = TriangleSpans::new(tri.v.map(|v| v.pos), color.clip(), Cull::None);
-    // A triangle that covers no pixel centre of the band (most of a dense
-    // mesh's 1-pixel triangles, and every triangle in the rows of the band
-    // it only grazes) costs no plane set-up: its first span is found first.
-    let Some(first) = spans.next() else { return };
-    // With one span in the band (most triangles of a dense mesh), the planes
-    // need only the gradients that span samples.
-    let second = spans.next();
+    let v = tri.v.map(|v| v.pos);
+    // A small triangle (most of a dense mesh's) keeps its coverage state in
+    // this frame: stored into a `TriangleSpans` and read back, it cost a
+    // few dozen loads and stores per triangle.
+    match crate::edge::small::setup_state(v, color.clip(), Cull::None) {
+        Some(Some(mut small)) => {
+            let Some(first) = small.next_span() else { return };
+            let second = small.next_span();
+            shade_spans::<C, F, M, S, W, _>(tri, (first, second, &small), color, depth, state);
+        }
+        Some(None) => {}
+        None => {
+            let mut spans = TriangleSpans::solved(v, color.clip(), Cull::None);
+            let Some(first) = spans.next() else { return };
+            let second = spans.next();
+            shade_spans::<C, F, M, S, W, _>(tri, (first, second, &spans), color, depth, state);
+        }
+    }
+}
+
+/// The rest of [`draw_triangle`] once the first span is known: plane set-up
+/// and the fragment loop.
+#[inline(always)]
+fn shade_spans<C, F, M, const S: u32, const W: usize, R>(
+    tri: &ScreenTriangle<S>,
+    spans: (Span, Option<Span>, &R),
+    color: &mut BandView<'_, C, W>,
+    depth: &mut [[F::Storage; W]],
+    state: DepthState,
+) where
+    C: Interpolate,
+    F: DepthFormat,
+    M: Interpolation,
+    R: SpanRest,
+{
+    let (first, second, _) = spans;
     // Zero area (on the same snapped coordinates as coverage): no spans either.
     let Some(mut setup) = tri.plane_setup() else { return };
     if second.is_none() {
         setup.sampled_only_on(first.x, first.y, first.len);
     }
-    let spans = (first, second, &spans);
     let mut zplane = Plane::default();
     if F::ENABLED {
         setup.plane_into(tri.depth_values::<F>(), &mut zplane);
     }
+    // A one-span Gouraud triangle hidden at each of its pixels (a knot's
+    // strand behind another) needs no colour planes: its depth is tested
+    // first. Exact: where the test fails nothing is written.
+    if F::ENABLED
+        && !tri.flat
+        && second.is_none()
+        && !span_passes::<F, W>(first, color.y0(), depth, state, &zplane)
+    {
+        return;
+    }
     if tri.flat {
-        draw_with_test::<C, F, _, W>(spans, color, depth, state, &zplane, &C::from_channels(tri.v[0].color));
+        draw_with_test::<C, F, _, _, W>(
+            spans,
+            color,
+            depth,
+            state,
+            &zplane,
+            &C::from_channels(tri.v[0].color),
+        );
     } else {
         // Made in place: built and returned, its planes were copied twice.
         let mut shade = Gouraud::<C, M> { planes: [Plane::default(); 4], _m: core::marker::PhantomData };
         shade.set_up(tri, &setup);
-        draw_with_test::<C, F, _, W>(spans, color, depth, state, &zplane, &shade);
+        draw_with_test::<C, F, _, _, W>(spans, color, depth, state, &zplane, &shade);
     }
+}
+
+/// Whether the depth test passes at some pixel of `span` (without writing);
+/// false where the band has no depth row for it (nothing is drawn there).
+#[inline(always)]
+fn span_passes<F: DepthFormat, const W: usize>(
+    span: Span,
+    y0: i32,
+    depth: &[[F::Storage; W]],
+    state: DepthState,
+    zplane: &Plane,
+) -> bool {
+    let (x0, len) = (span.x as usize, span.len as usize);
+    let Some(dspan) = depth.get((span.y - y0) as usize).and_then(|r| r.get(x0..x0 + len)) else {
+        return false;
+    };
+    let mut z = DepthSpan::<F>::new(zplane, span.x, span.y);
+    for slot in dspan {
+        if state.test.passes(z.value(), F::to_u32(*slot)) {
+            return true;
+        }
+        z.step();
+    }
+    false
 }
 
 /// [`draw_spans`] with the depth state as a type: ordinary opaque drawing
 /// ([`DepthState::LESS_WRITE`]) gets a loop without the per-pixel dispatch.
 #[inline(always)]
-fn draw_with_test<C, F, Sh, const W: usize>(
-    spans: (Span, Option<Span>, &TriangleSpans),
+fn draw_with_test<C, F, Sh, R, const W: usize>(
+    spans: (Span, Option<Span>, &R),
     color: &mut BandView<'_, C, W>,
     depth: &mut [[F::Storage; W]],
     state: DepthState,
@@ -181,11 +251,12 @@ fn draw_with_test<C, F, Sh, const W: usize>(
     C: Interpolate,
     F: DepthFormat,
     Sh: Shader<C>,
+    R: SpanRest,
 {
     if F::ENABLED && state == DepthState::LESS_WRITE {
-        draw_spans::<C, F, _, _, W>(spans, color, depth, LessWrite, zplane, shade);
+        draw_spans::<C, F, _, _, _, W>(spans, color, depth, LessWrite, zplane, shade);
     } else {
-        draw_spans::<C, F, _, _, W>(spans, color, depth, state, zplane, shade);
+        draw_spans::<C, F, _, _, _, W>(spans, color, depth, state, zplane, shade);
     }
 }
 
@@ -223,18 +294,19 @@ impl DepthRule for LessWrite {
 
 /// The fragment loop of [`draw_triangle`], for one way of shading.
 #[inline(always)]
-fn draw_spans<C, F, Sh, R, const W: usize>(
-    spans: (Span, Option<Span>, &TriangleSpans),
+fn draw_spans<C, F, Sh, D, Rest, const W: usize>(
+    spans: (Span, Option<Span>, &Rest),
     color: &mut BandView<'_, C, W>,
     depth: &mut [[F::Storage; W]],
-    state: R,
+    state: D,
     zplane: &Plane,
     shade: &Sh,
 ) where
     C: Interpolate,
     F: DepthFormat,
     Sh: Shader<C>,
-    R: DepthRule,
+    D: DepthRule,
+    Rest: SpanRest,
 {
     let y0 = color.y0();
     // Internal iteration: one loop per coverage path (`for_each_ref`), each

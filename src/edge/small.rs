@@ -53,6 +53,19 @@ pub(crate) struct Small {
 /// [`SMALL_PX`] pixels on each side; `None` for a larger one.
 #[inline(always)]
 pub(super) fn setup<const S: u32>(v: [SubPoint<S>; 3], clip: ClipRect, cull: Cull) -> Option<Path> {
+    setup_state(v, clip, cull).map(|s| s.map_or(Path::Empty, Path::Small))
+}
+
+/// [`setup`] without the [`Path`]: `Some(None)` for a small triangle with no
+/// covered centre (or culled, or of zero area), `Some(Some(state))` for
+/// one to walk, `None` for a larger one. The 3D fragment loop keeps the
+/// state in its own frame instead of storing it into a `Path`.
+#[inline(always)]
+pub(crate) fn setup_state<const S: u32>(
+    v: [SubPoint<S>; 3],
+    clip: ClipRect,
+    cull: Cull,
+) -> Option<Option<Small>> {
     let shift = S + 1;
     let (one, half) = (1i32 << shift, 1i32 << S);
     let limit = SMALL_PX << shift;
@@ -73,7 +86,7 @@ pub(super) fn setup<const S: u32>(v: [SubPoint<S>; 3], clip: ClipRect, cull: Cul
         Cull::CounterClockwise => !clockwise,
     };
     if det == 0 || culled || clip.is_empty() {
-        return Some(Path::Empty);
+        return Some(None);
     }
     let q = if clockwise { q } else { [q[0], q[2], q[1]] };
     // Pixels whose centre can lie inside the box (clip in 0..=4096).
@@ -82,7 +95,7 @@ pub(super) fn setup<const S: u32>(v: [SubPoint<S>; 3], clip: ClipRect, cull: Cul
     let row0 = ((min_y - half + one - 1) >> shift).max(clip.y0());
     let row1 = ((max_y - half) >> shift).min(clip.y1() - 1);
     if col0 > col1 || row0 > row1 {
-        return Some(Path::Empty);
+        return Some(None);
     }
     // The first centre, relative to the corner: inside the box, in 0..=limit.
     let (cx, cy) = (col0 * one + half - min_x, row0 * one + half - min_y);
@@ -95,7 +108,7 @@ pub(super) fn setup<const S: u32>(v: [SubPoint<S>; 3], clip: ClipRect, cull: Cul
         s.e[i] = a * (cx - st.0) + b * (cy - st.1) - bias;
         (s.a[i], s.b[i]) = (a << shift, b << shift);
     }
-    Some(Path::Small(s))
+    Some(Some(s))
 }
 
 impl Small {
@@ -138,7 +151,7 @@ impl Small {
     }
 
     #[inline(always)]
-    pub(super) fn next_span(&mut self) -> Option<Span> {
+    pub(crate) fn next_span(&mut self) -> Option<Span> {
         while self.y < self.y_end {
             let (y, row) = (self.y, self.row(self.e));
             self.y += 1;

@@ -98,7 +98,8 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     /// `cache` holds one entry per slot of `src` and is overwritten.
     ///
     /// Errors: [`Error::InvalidMesh`] for a slot beyond `cache` or `src`
-    /// (validated meshes have none), and whatever `sink` returns.
+    /// (validated meshes have none; not looked for when every vertex lies
+    /// on one side of the band), and whatever `sink` returns.
     pub(super) fn draw_cached<Src: VertexSource>(
         &self,
         setup: &MeshSetup<T>,
@@ -122,10 +123,18 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         };
 
         // Clip y and w and the band test of every vertex; the rest on demand.
+        let mut all_sides = super::Band::<T>::ABOVE | super::Band::<T>::BELOW;
         for (i, c) in cache.iter_mut().enumerate() {
             let (y, w) = ctx.yw(position(i)?);
             c.clip = [T::ZERO, y, T::ZERO, w];
             c.state = band.side((y, w));
+            all_sides &= c.state;
+        }
+        // Every vertex on one side of the band: so is every triangle, which
+        // the per-triangle test below would drop one by one (a meshlet whose
+        // bounding sphere reaches the band while its vertices do not).
+        if all_sides != 0 {
+            return Ok(());
         }
         for idx in triangles {
             let [a, b, c] = idx;
