@@ -19,8 +19,27 @@ pub enum Error {
     /// A mesh index is out of range, the normals do not match the positions,
     /// or the bounding sphere does not contain the mesh.
     InvalidMesh,
-    /// A caller-provided buffer is smaller than the operation needs.
+    /// A caller-provided buffer is smaller than the operation needs (a
+    /// texture's data, a shape's edge list, meshlet builder output, a band
+    /// signature list or a panel's wire buffer; frame bins and vertex caches
+    /// report [`CapacityExceeded`](Error::CapacityExceeded) instead).
     BufferTooSmall,
+    /// The frame's bins or a vertex cache hold fewer entries than one call
+    /// needed: `needed` is the length that would have sufficed (for bins,
+    /// the triangles already in them plus all that the mesh emits),
+    /// `capacity` the buffer's. The bins are left as they were before the
+    /// call: no partial mesh is drawn.
+    ///
+    /// ```
+    /// let e = microraster::Error::CapacityExceeded { needed: 300, capacity: 256 };
+    /// assert_eq!(e.to_string(), "buffer holds 256 entries, 300 needed");
+    /// ```
+    CapacityExceeded {
+        /// Entries the call needed (already stored plus its own).
+        needed: usize,
+        /// Entries the buffer holds (its `N` or `V`).
+        capacity: usize,
+    },
     /// Meshlet data are inconsistent: a cluster's offsets or counts run past
     /// its arrays, it has no triangles or more than
     /// [`MAX_MESHLET_VERTICES`](crate::mesh::MAX_MESHLET_VERTICES) vertices or
@@ -50,6 +69,9 @@ impl fmt::Display for Error {
             Error::InvalidFrameSize => "frame size is zero or too large",
             Error::InvalidMesh => "mesh indices, normals or bounding sphere are inconsistent",
             Error::BufferTooSmall => "buffer too small",
+            Error::CapacityExceeded { needed, capacity } => {
+                return write!(f, "buffer holds {capacity} entries, {needed} needed");
+            }
             Error::InvalidMeshlet => "meshlet offsets, counts, indices, sphere or cone are inconsistent",
             Error::WindingMismatch => "triangle winding disagrees with the vertex normals",
             Error::FrameOutsideTarget => "frame does not fit in the draw target's bounding box",
