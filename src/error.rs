@@ -6,6 +6,7 @@ use core::fmt;
 ///
 /// Every public function that can receive bad input returns this error (or a
 /// [`RenderError`] that wraps it) instead of panicking.
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Error {
     /// A coordinate was NaN or infinite.
@@ -137,6 +138,20 @@ impl<E: fmt::Debug> core::error::Error for RenderError<E> {
         match self {
             RenderError::Input(e) => Some(e),
             RenderError::Target(_) => None,
+        }
+    }
+}
+
+/// With the `defmt` feature, as [`Display`](fmt::Display): the input error,
+/// or the target's error through [`defmt::Debug2Format`] (a
+/// `DrawTarget::Error` need only be `Debug`).
+#[cfg(feature = "defmt")]
+#[cfg_attr(docsrs, doc(cfg(feature = "defmt")))]
+impl<E: fmt::Debug> defmt::Format for RenderError<E> {
+    fn format(&self, f: defmt::Formatter<'_>) {
+        match self {
+            RenderError::Input(e) => defmt::write!(f, "invalid input: {}", e),
+            RenderError::Target(e) => defmt::write!(f, "draw target error: {}", defmt::Debug2Format(e)),
         }
     }
 }

@@ -37,6 +37,7 @@ use crate::raster3d::{ScreenTriangle, ScreenVertex};
 use crate::{Error, Interpolate, MAX_FRAME_DIM, SubPoint};
 
 /// Per-face or per-vertex lighting.
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum Shade {
     /// One colour per triangle, lit with the face normal.
@@ -48,6 +49,7 @@ pub enum Shade {
 }
 
 /// What happened to one mesh's triangles.
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub struct MeshStats {
     /// The whole mesh was outside the view volume (no vertex work done).
