@@ -48,7 +48,8 @@ fn main() -> Result<(), Box<dyn Error>> {
     let ring = ValidMesh::new(torus(TORUS.0, TORUS.1, 1.0, 0.35, &mut tp, &mut tn, &mut ti)?)?;
 
     // Camera and light, then the vertex stage into the frame's bins.
-    let eye = transform::look_at(Vec3::new(0.0, 1.2, 4.5), Vec3::new(0.0, 0.0, 0.0), Vec3::new(0.0, 1.0, 0.0))?;
+    let eye =
+        transform::look_at(Vec3::new(0.0, 1.2, 4.5), Vec3::new(0.0, 0.0, 0.0), Vec3::new(0.0, 1.0, 0.0))?;
     let light = Lighting::try_new(0.25, Vec3::new(-0.5, 0.7, 1.0), 0.75)?;
     let pipeline = Pipeline::<f32, 4>::perspective(eye, 0.9, 1.0, 20.0, W as u32, H)?.with_lighting(light);
     let mut bins = heapless::Vec::<ScreenTriangle<4>, 1024>::new();
