@@ -214,6 +214,7 @@ fn f32_to_code(d: f32, max: u32) -> Result<u32, Error> {
 
 /// A depth comparison: does a new fragment at depth `new` pass against the
 /// `stored` value? (Default: [`Less`](DepthTest::Less).)
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Hash)]
 pub enum DepthTest {
     /// `new < stored`: nearer wins (with depth 0 at the near plane).
@@ -260,6 +261,7 @@ impl DepthTest {
 
 /// How a primitive uses the depth buffer: the test, and whether passing
 /// fragments write their depth. (Default: [`DepthState::LESS_WRITE`].)
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub struct DepthState {
     /// The comparison a fragment must pass to be drawn.

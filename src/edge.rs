@@ -40,6 +40,7 @@ pub(crate) mod small;
 pub use small::SMALL_PX;
 
 /// Which triangles to drop by their winding on screen (y pointing down).
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum Cull {
     /// Draw both windings.

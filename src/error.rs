@@ -6,6 +6,7 @@ use core::fmt;
 ///
 /// Every public function that can receive bad input returns this error (or a
 /// [`RenderError`] that wraps it) instead of panicking.
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Error {
     /// A coordinate was NaN or infinite.
@@ -19,8 +20,27 @@ pub enum Error {
     /// A mesh index is out of range, the normals do not match the positions,
     /// or the bounding sphere does not contain the mesh.
     InvalidMesh,
-    /// A caller-provided buffer is smaller than the operation needs.
+    /// A caller-provided buffer is smaller than the operation needs (a
+    /// texture's data, a shape's edge list, meshlet builder output, a band
+    /// signature list or a panel's wire buffer; frame bins and vertex caches
+    /// report [`CapacityExceeded`](Error::CapacityExceeded) instead).
     BufferTooSmall,
+    /// The frame's bins or a vertex cache hold fewer entries than one call
+    /// needed: `needed` is the length that would have sufficed (for bins,
+    /// the triangles already in them plus all that the mesh emits),
+    /// `capacity` the buffer's. The bins are left as they were before the
+    /// call: no partial mesh is drawn.
+    ///
+    /// ```
+    /// let e = microraster::Error::CapacityExceeded { needed: 300, capacity: 256 };
+    /// assert_eq!(e.to_string(), "buffer holds 256 entries, 300 needed");
+    /// ```
+    CapacityExceeded {
+        /// Entries the call needed (already stored plus its own).
+        needed: usize,
+        /// Entries the buffer holds (its `N` or `V`).
+        capacity: usize,
+    },
     /// Meshlet data are inconsistent: a cluster's offsets or counts run past
     /// its arrays, it has no triangles or more than
     /// [`MAX_MESHLET_VERTICES`](crate::mesh::MAX_MESHLET_VERTICES) vertices or
@@ -50,6 +70,9 @@ impl fmt::Display for Error {
             Error::InvalidFrameSize => "frame size is zero or too large",
             Error::InvalidMesh => "mesh indices, normals or bounding sphere are inconsistent",
             Error::BufferTooSmall => "buffer too small",
+            Error::CapacityExceeded { needed, capacity } => {
+                return write!(f, "buffer holds {capacity} entries, {needed} needed");
+            }
             Error::InvalidMeshlet => "meshlet offsets, counts, indices, sphere or cone are inconsistent",
             Error::WindingMismatch => "triangle winding disagrees with the vertex normals",
             Error::FrameOutsideTarget => "frame does not fit in the draw target's bounding box",
@@ -115,6 +138,20 @@ impl<E: fmt::Debug> core::error::Error for RenderError<E> {
         match self {
             RenderError::Input(e) => Some(e),
             RenderError::Target(_) => None,
+        }
+    }
+}
+
+/// With the `defmt` feature, as [`Display`](fmt::Display): the input error,
+/// or the target's error through [`defmt::Debug2Format`] (a
+/// `DrawTarget::Error` need only be `Debug`).
+#[cfg(feature = "defmt")]
+#[cfg_attr(docsrs, doc(cfg(feature = "defmt")))]
+impl<E: fmt::Debug> defmt::Format for RenderError<E> {
+    fn format(&self, f: defmt::Formatter<'_>) {
+        match self {
+            RenderError::Input(e) => defmt::write!(f, "invalid input: {}", e),
+            RenderError::Target(e) => defmt::write!(f, "draw target error: {}", defmt::Debug2Format(e)),
         }
     }
 }

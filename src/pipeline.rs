@@ -14,6 +14,7 @@
 //! `T` is the numeric path: `f32` (FPU parts) or [`Fx`](crate::math::Fx)
 //! (16.16 fixed point, parts without an FPU).
 
+mod bins;
 mod cache;
 mod cluster;
 mod presnap;
@@ -36,6 +37,7 @@ use crate::raster3d::{ScreenTriangle, ScreenVertex};
 use crate::{Error, Interpolate, MAX_FRAME_DIM, SubPoint};
 
 /// Per-face or per-vertex lighting.
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum Shade {
     /// One colour per triangle, lit with the face normal.
@@ -47,6 +49,7 @@ pub enum Shade {
 }
 
 /// What happened to one mesh's triangles.
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub struct MeshStats {
     /// The whole mesh was outside the view volume (no vertex work done).
@@ -211,8 +214,10 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     /// O(vertices) check on every call (every band, when the vertex stage
     /// runs per band).
     ///
-    /// Errors: [`Error::BufferTooSmall`] if `bins` fills up (the triangles
-    /// that fit are kept); [`Error::InvalidParameter`] if `model` is singular;
+    /// Errors: [`Error::CapacityExceeded`] if `bins` fills up, with the
+    /// length it needed (the mesh's triangles are counted to the end, and
+    /// `bins` is left as it was: on any error no triangle of the mesh is
+    /// kept); [`Error::InvalidParameter`] if `model` is singular;
     /// the errors of [`Lighting::validate`] for the pipeline's lighting; and
     /// for [`Fx`](crate::math::Fx) only, [`Error::CoordinateOutOfRange`] if
     /// `view · model` or `projection · view · model` saturates 16.16, or if
@@ -226,7 +231,19 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         color: C,
         bins: &mut heapless::Vec<ScreenTriangle<S>, N>,
     ) -> Result<MeshStats, Error> {
-        let mesh = mesh.mesh();
+        let mut bins = bins::BinWriter::new(bins);
+        let result = self.valid_mesh_into(mesh.mesh(), model, color, &mut bins);
+        bins.finish(result)
+    }
+
+    /// The body of [`Pipeline::draw_valid_mesh`], into a [`bins::BinWriter`].
+    fn valid_mesh_into<C: Interpolate, const N: usize>(
+        &self,
+        mesh: &Mesh<'_>,
+        model: &Mat4<T>,
+        color: C,
+        bins: &mut bins::BinWriter<'_, ScreenTriangle<S>, N>,
+    ) -> Result<MeshStats, Error> {
         let mut stats = MeshStats::default();
         let Some(MeshSetup { ctx, planes, band, max }) = self.mesh_setup(mesh, model, color, &mut stats)?
         else {
@@ -248,14 +265,15 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
             };
             if class == Class::Inside {
                 if let Some(at) = self.snapped_and_kept(clip, &mut stats) {
-                    self.emit(at, colors(), max, bins, &mut stats)?;
+                    self.emit(at, colors(), max, bins, &mut stats);
                 }
                 continue;
             }
             let cs = colors();
             let v = [0, 1, 2].map(|k| ClipVertex { pos: clip[k], attr: cs[k] });
             self.clip_and_emit(v, planes, &mut stats, |at, attr, stats| {
-                self.emit(at, attr, max, bins, stats)
+                self.emit(at, attr, max, bins, stats);
+                Ok(())
             })?;
         }
         Ok(stats)
@@ -265,8 +283,9 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     /// is transformed, classified, snapped and lit at most once instead of
     /// once per triangle corner (about six times). Bit-identical output.
     ///
-    /// Errors: those of [`Pipeline::draw_valid_mesh`], and
-    /// [`Error::BufferTooSmall`] if the mesh has more than `V` vertices.
+    /// Errors: those of [`Pipeline::draw_valid_mesh`], and first
+    /// [`Error::CapacityExceeded`] with `needed` the mesh's vertex count if
+    /// it has more than `V` vertices (nothing done).
     pub fn draw_valid_mesh_cached<C: Interpolate, const V: usize, const N: usize>(
         &self,
         mesh: &ValidMesh<'_>,
@@ -277,18 +296,24 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     ) -> Result<MeshStats, Error> {
         let mesh = mesh.mesh();
         if mesh.vertex_count() > V {
-            return Err(Error::BufferTooSmall);
+            return Err(Error::CapacityExceeded { needed: mesh.vertex_count(), capacity: V });
         }
-        let mut stats = MeshStats::default();
-        let Some(setup) = self.mesh_setup(mesh, model, color, &mut stats)? else {
-            return Ok(stats);
+        let mut bins = bins::BinWriter::new(bins);
+        let mut run = || {
+            let mut stats = MeshStats::default();
+            let Some(setup) = self.mesh_setup(mesh, model, color, &mut stats)? else {
+                return Ok(stats);
+            };
+            let cache = &mut cache.v[..mesh.vertex_count()];
+            let triangles = mesh.indices.iter().map(|t| t.map(usize::from));
+            self.draw_cached(&setup, mesh, cache, triangles, &mut stats, |tri, _| {
+                bins.push(tri);
+                Ok(())
+            })?;
+            Ok(stats)
         };
-        let cache = &mut cache.v[..mesh.vertex_count()];
-        let triangles = mesh.indices.iter().map(|t| t.map(usize::from));
-        self.draw_cached(&setup, mesh, cache, triangles, &mut stats, |tri, _| {
-            bins.push(tri).map_err(|_| Error::BufferTooSmall)
-        })?;
-        Ok(stats)
+        let result = run();
+        bins.finish(result)
     }
 
     /// Snapped positions of a triangle inside the clip volume, if it passes
@@ -457,32 +482,21 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         self.rows.is_none_or(|(y0, y1)| lo <= y1 && hi >= y0)
     }
 
-    /// Colours the vertices and appends the triangle to `bins`.
+    /// Colours the vertices and appends the triangle to `bins` (counted
+    /// in `stats.emitted` whether it fits or not: [`bins::BinWriter`]).
     fn emit<const N: usize>(
         &self,
         mut v: [ScreenVertex<S>; 3],
         colors: [[T; 3]; 3],
         max: [u8; 3],
-        bins: &mut heapless::Vec<ScreenTriangle<S>, N>,
+        bins: &mut bins::BinWriter<'_, ScreenTriangle<S>, N>,
         stats: &mut MeshStats,
-    ) -> Result<(), Error> {
+    ) {
         for (v, c) in v.iter_mut().zip(colors) {
             v.color = channels(c, max);
         }
-        self.push(v, bins, stats)
-    }
-
-    /// Appends a coloured triangle to `bins`.
-    fn push<const N: usize>(
-        &self,
-        v: [ScreenVertex<S>; 3],
-        bins: &mut heapless::Vec<ScreenTriangle<S>, N>,
-        stats: &mut MeshStats,
-    ) -> Result<(), Error> {
-        bins.push(ScreenTriangle { v, flat: self.shade == Shade::Flat })
-            .map_err(|_| Error::BufferTooSmall)?;
+        bins.push(ScreenTriangle { v, flat: self.shade == Shade::Flat });
         stats.emitted += 1;
-        Ok(())
     }
 
     /// `origin + (1 ± ndc)·size/2` in subpixels, `ndc = c/w` (y flipped).

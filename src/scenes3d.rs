@@ -274,7 +274,7 @@ mod tests {
         assert!(sa.emitted > 100);
         let mut small = VertexCache::<T, 4, 100>::new();
         let r = p.draw_valid_mesh_cached(&bare, &model, Rgb565::new(31, 20, 5), &mut small, &mut b);
-        assert_eq!(r, Err(Error::BufferTooSmall));
+        assert_eq!(r, Err(Error::CapacityExceeded { needed: sphere.positions.len(), capacity: 100 }));
     }
 
     #[test]

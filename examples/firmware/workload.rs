@@ -300,7 +300,7 @@ pub fn scene3d<T: Scalar, M: Interpolation, const W: usize, const H: usize, cons
 
 /// Triangles one band of the Cortex-M0 configuration may hold (the most any
 /// band of its frame needs, with room to spare; a band that needs more fails
-/// with [`Error::BufferTooSmall`], on the host as on the target).
+/// with [`Error::CapacityExceeded`], on the host as on the target).
 pub const BAND_BINS: usize = 128;
 
 /// The standard 3D scene with the vertex stage run once per band

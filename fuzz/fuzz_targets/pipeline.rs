@@ -302,7 +302,11 @@ fn run<T: Scalar, const S: u32>(inp: &mut Input) {
         Err(e @ (Error::InvalidMesh | Error::NonFiniteCoordinate)) => {
             panic!("draw_mesh error {e:?} without validate's")
         }
-        Err(Error::BufferTooSmall) => assert_eq!(bins.len(), BINS),
+        // Full bins: the count needed, and no partial mesh left.
+        Err(Error::CapacityExceeded { needed, capacity }) => {
+            assert!(capacity == BINS && needed > BINS, "needed {needed} of {capacity}");
+            assert!(bins.is_empty(), "{} triangles left after CapacityExceeded", bins.len());
+        }
         Err(Error::InvalidParameter) => {}
         Err(e) => panic!("draw_mesh: undocumented error {e:?}"),
     }

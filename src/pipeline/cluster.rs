@@ -30,7 +30,10 @@ use crate::render::Band3d;
 use crate::{Error, Interpolate};
 
 /// The vertex cache [`Pipeline::draw_meshlets`] needs: one cluster's
-/// vertices (about 3.3 KB for `f32`).
+/// vertices (about 3.3 KB for `f32`). It holds
+/// [`MAX_MESHLET_VERTICES`], the most a valid cluster has, so unlike a
+/// [`VertexCache`] of one's own size it is never too small
+/// ([`Error::CapacityExceeded`] cannot come from it).
 pub type ClusterCache<T, const S: u32> = VertexCache<T, S, MAX_MESHLET_VERTICES>;
 
 /// A cluster's vertices: local slot → the mesh's arrays.

@@ -9,6 +9,7 @@
 //! caller computes is interpolated at exactly the clipped position (weights
 //! to 2^-16, then rounded to the nearest integer).
 
+use super::bins::BinWriter;
 use super::{MeshSetup, Pipeline, channels, triangle_in_view};
 use crate::clip3d::{Class, ClipVertex};
 use crate::fragment::FragTriangle;
@@ -46,8 +47,9 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     /// values are clamped), interpolated across the triangle by the
     /// fragment stage ([`crate::fragment`]).
     ///
-    /// Errors: [`Error::BufferTooSmall`] if `bins` fills up (the triangles
-    /// that fit are kept); [`Error::InvalidParameter`] if `model` is singular.
+    /// Errors: [`Error::CapacityExceeded`] if `bins` fills up, with the
+    /// length it needed (`bins` is left as it was, as on any error);
+    /// [`Error::InvalidParameter`] if `model` is singular.
     pub fn draw_mesh_varying<C: Interpolate, const A: usize, const N: usize>(
         &self,
         mesh: &ValidMesh<'_>,
@@ -56,7 +58,20 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         varying: impl Fn(&VertexInput<T>) -> [i32; A],
         bins: &mut heapless::Vec<FragTriangle<S, A>, N>,
     ) -> Result<MeshStats, Error> {
-        let mesh = mesh.mesh();
+        let mut bins = BinWriter::new(bins);
+        let result = self.varying_into(mesh.mesh(), model, color, varying, &mut bins);
+        bins.finish(result)
+    }
+
+    /// The body of [`Pipeline::draw_mesh_varying`], into a [`BinWriter`].
+    fn varying_into<C: Interpolate, const A: usize, const N: usize>(
+        &self,
+        mesh: &crate::mesh::Mesh<'_>,
+        model: &Mat4<T>,
+        color: C,
+        varying: impl Fn(&VertexInput<T>) -> [i32; A],
+        bins: &mut BinWriter<'_, FragTriangle<S, A>, N>,
+    ) -> Result<MeshStats, Error> {
         let mut stats = MeshStats::default();
         let Some(MeshSetup { ctx, planes, band, max }) = self.mesh_setup(mesh, model, color, &mut stats)?
         else {
@@ -91,7 +106,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
             let values = corners.map(|c| c.1);
             if class == Class::Inside {
                 if let Some(at) = self.snapped_and_kept(clip, &mut stats) {
-                    self.push_fragment(at, corners.map(|c| c.0), values, max, bins, &mut stats)?;
+                    self.push_fragment(at, corners.map(|c| c.0), values, max, bins, &mut stats);
                 }
                 continue;
             }
@@ -104,7 +119,8 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
             self.clip_and_emit(v, planes, &mut stats, |at, attr, stats| {
                 let colors = attr.map(|a| [a[0], a[1], a[2]]);
                 let vals = attr.map(|a| weighted(&a, &values));
-                self.push_fragment(at, colors, vals, max, bins, stats)
+                self.push_fragment(at, colors, vals, max, bins, stats);
+                Ok(())
             })?;
         }
         Ok(stats)
@@ -117,16 +133,15 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         colors: [[T; 3]; 3],
         varyings: [[i32; A]; 3],
         max: [u8; 3],
-        bins: &mut heapless::Vec<FragTriangle<S, A>, N>,
+        bins: &mut BinWriter<'_, FragTriangle<S, A>, N>,
         stats: &mut MeshStats,
-    ) -> Result<(), Error> {
+    ) {
         for (v, c) in v.iter_mut().zip(colors) {
             v.color = channels(c, max);
         }
         let tri = ScreenTriangle { v, flat: self.shade == Shade::Flat };
-        bins.push(FragTriangle { tri, varyings }).map_err(|_| Error::BufferTooSmall)?;
+        bins.push(FragTriangle { tri, varyings });
         stats.emitted += 1;
-        Ok(())
     }
 }
 

@@ -17,6 +17,7 @@
 //!   match e-g into a framebuffer, for every band height; HUD over 3D.
 //! - `mock_display`: embedded-graphics `MockDisplay` pattern tests (overdraw panics).
 //! - `per_band`: the per-band vertex stage draws what the per-frame one draws.
+//! - `capacity`: bins and vertex caches too small: the needed count, no partial mesh.
 //! - `varyings`: per-vertex value vectors vs f64; the fragment hook's coverage.
 //! - `discard`: a discarded fragment writes no depth.
 //! - `fragment`: the fragment stage: Phong vs f64 and Gouraud, translucency, varyings through the clipper.
@@ -32,6 +33,7 @@ mod antialias;
 mod antialias_images;
 mod bands;
 mod blend;
+mod capacity;
 mod clip3d_raster;
 mod clip3d_ref;
 mod dashboard;

@@ -84,5 +84,12 @@ fn per_band_reports_full_bins_as_an_error() {
         DepthState::LESS_WRITE,
         &mut fb,
     );
-    assert_eq!(r, Err(microraster::RenderError::Input(microraster::Error::BufferTooSmall)));
+    let Err(microraster::RenderError::Input(microraster::Error::CapacityExceeded { needed, capacity: 4 })) =
+        r
+    else {
+        panic!("{r:?}")
+    };
+    assert!(needed > 4, "{needed}");
+    // No partial mesh left in the bins.
+    assert!(bins.is_empty(), "{} triangles left", bins.len());
 }

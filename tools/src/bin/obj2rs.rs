@@ -2,7 +2,7 @@
 //! [`microraster::mesh::Mesh`] (arrays in flash, no RAM).
 //!
 //! ```text
-//! obj2rs INPUT.obj NAME [--mesh-type PATH] [--meshlets] > out.rs
+//! obj2rs INPUT.obj NAME [--mesh-type PATH] [--meshlets] [--flip-winding] > out.rs
 //! ```
 //!
 //! Writes `NAME_POSITIONS`, `NAME_NORMALS`, `NAME_INDICES` and
@@ -17,7 +17,8 @@
 //! conversion for build scripts. Errors name the line and
 //! exit with status 1 (2 for bad arguments). Triangles wound against the
 //! file's normals are reported with a warning on stderr (not an error: the
-//! output is still written).
+//! output is still written), with their count; `--flip-winding` reverses
+//! them (reported on stderr too).
 
 use std::io::{Read, Write};
 use std::path::Path;
@@ -25,8 +26,7 @@ use std::process::ExitCode;
 
 use microraster_tools::obj::{Options, convert_bytes, emit};
 
-const USAGE: &str =
-    "usage: obj2rs INPUT.obj NAME [--mesh-type PATH] [--meshlets] > out.rs   (INPUT `-` = stdin)";
+const USAGE: &str = "usage: obj2rs INPUT.obj NAME [--mesh-type PATH] [--meshlets] [--flip-winding] > out.rs   (INPUT `-` = stdin)";
 
 fn main() -> ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();
@@ -57,6 +57,7 @@ fn run(args: &[String]) -> Result<(), Failure> {
     let mut positional = Vec::new();
     let mut mesh_type = emit::DEFAULT_MESH_TYPE.to_string();
     let mut with_meshlets = false;
+    let mut flip_winding = false;
     let mut it = args.iter();
     while let Some(a) = it.next() {
         match a.as_str() {
@@ -69,6 +70,7 @@ fn run(args: &[String]) -> Result<(), Failure> {
                     it.next().ok_or_else(|| Failure::Usage("--mesh-type needs a value".into()))?.clone();
             }
             "--meshlets" => with_meshlets = true,
+            "--flip-winding" => flip_winding = true,
             s if s.starts_with("--") => return Err(Failure::Usage(format!("unknown option `{s}`"))),
             _ => positional.push(a.as_str()),
         }
@@ -90,11 +92,14 @@ fn run(args: &[String]) -> Result<(), Failure> {
     };
     let shown = if input == "-" { "<stdin>" } else { input };
     read.map_err(|e| Failure::Input(format!("{shown}: {e}")))?;
-    let options = Options { mesh_type, meshlets: with_meshlets };
+    let options = Options { mesh_type, meshlets: with_meshlets, flip_winding };
     let converted = convert_bytes(&bytes, name, &source, &options)
         .map_err(|e| Failure::Input(format!("{shown}: {e}")))?;
     if let Some(warning) = &converted.winding_warning {
         report(&format!("{shown}: {warning}"));
+    }
+    if converted.flipped > 0 {
+        report(&format!("{shown}: reversed {} triangles wound against their normals", converted.flipped));
     }
     let (mesh, out) = (&converted.mesh, &converted.source);
     let mut stdout = std::io::stdout().lock();

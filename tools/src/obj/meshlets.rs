@@ -36,12 +36,27 @@ pub fn build(mesh: &ObjMesh) -> Result<Clusters, String> {
 /// Triangles wound against their vertex normals, by the rule of
 /// [`Mesh::check_winding`] (applied to each triangle on its own).
 pub fn winding_mismatches(mesh: &ObjMesh) -> usize {
-    let disagrees = |t: &[u16; 3]| {
-        let p = t.map(|k| mesh.positions[usize::from(k)]);
-        let n = t.map(|k| mesh.normals[usize::from(k)]);
-        Mesh::new(&p, &n, &[[0, 1, 2]], bounding_sphere(&p)).check_winding().is_err()
-    };
-    mesh.indices.iter().filter(|t| disagrees(t)).count()
+    mesh.indices.iter().filter(|t| disagrees(mesh, t)).count()
+}
+
+/// Whether triangle `t` of `mesh` is wound against its normals.
+fn disagrees(mesh: &ObjMesh, t: &[u16; 3]) -> bool {
+    let p = t.map(|k| mesh.positions[usize::from(k)]);
+    let n = t.map(|k| mesh.normals[usize::from(k)]);
+    Mesh::new(&p, &n, &[[0, 1, 2]], bounding_sphere(&p)).check_winding().is_err()
+}
+
+/// Reverses the winding of every triangle that disagrees with its normals
+/// ([`winding_mismatches`]), so that the mesh passes
+/// [`Mesh::check_winding`]; returns how many were reversed. For a mesh
+/// exported clockwise, or a few faces flipped by mistake; when the normals
+/// are what points the wrong way, fix them in the modeller instead.
+pub fn flip_mismatches(mesh: &mut ObjMesh) -> usize {
+    let flip: Vec<bool> = mesh.indices.iter().map(|t| disagrees(mesh, t)).collect();
+    for (t, _) in mesh.indices.iter_mut().zip(&flip).filter(|(_, f)| **f) {
+        t.swap(1, 2);
+    }
+    flip.iter().filter(|&&f| f).count()
 }
 
 /// The converter's warning when triangles disagree with their normals.
@@ -50,7 +65,7 @@ pub fn winding_warning(mesh: &ObjMesh, meshlets: bool) -> Option<String> {
     (n > 0).then(|| {
         format!(
             "warning: {n} of {} triangles are wound clockwise seen from the side their normals point to \
-             (back-face culling hides them from the front){}",
+             (back-face culling hides them from the front; `obj2rs --flip-winding` reverses them){}",
             mesh.indices.len(),
             if meshlets { "; the MeshletMesh fails validation (WindingMismatch)" } else { "" }
         )

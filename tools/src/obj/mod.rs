@@ -22,11 +22,14 @@ pub struct Options {
     pub mesh_type: String,
     /// Also write the clusters (`--meshlets`).
     pub meshlets: bool,
+    /// Reverse the triangles wound against their normals before writing
+    /// (`--flip-winding`, [`meshlets::flip_mismatches`]).
+    pub flip_winding: bool,
 }
 
 impl Default for Options {
     fn default() -> Self {
-        Options { mesh_type: emit::DEFAULT_MESH_TYPE.to_string(), meshlets: false }
+        Options { mesh_type: emit::DEFAULT_MESH_TYPE.to_string(), meshlets: false, flip_winding: false }
     }
 }
 
@@ -40,8 +43,11 @@ pub struct Converted {
     /// The converted mesh (counts and statistics for a report).
     pub mesh: parse::ObjMesh,
     /// `Some` when some triangle's winding disagrees with its normals
-    /// (drawn inside out with back faces culled).
+    /// (drawn inside out with back faces culled); always `None` with
+    /// [`Options::flip_winding`].
     pub winding_warning: Option<String>,
+    /// Triangles reversed by [`Options::flip_winding`] (0 without it).
+    pub flipped: usize,
 }
 
 /// Converts the OBJ file at `path` into Rust source for `static NAME: Mesh`
@@ -85,16 +91,21 @@ pub fn convert(path: impl AsRef<Path>, name: &str) -> Result<String, Error> {
 /// let c = convert_bytes(obj, "tri", "tri.obj", &Options::default())?;
 /// assert!(c.source.contains("pub static TRI_INDICES"));
 /// assert!(c.winding_warning.is_some());
+/// // Reversed on request: the mesh then passes `Mesh::check_winding`.
+/// let flip = Options { flip_winding: true, ..Options::default() };
+/// let c = convert_bytes(obj, "tri", "tri.obj", &flip)?;
+/// assert_eq!((c.flipped, c.winding_warning, c.mesh.indices[0]), (1, None, [0, 2, 1]));
 /// # Ok::<(), microraster_tools::Error>(())
 /// ```
 pub fn convert_bytes(bytes: &[u8], name: &str, source: &str, options: &Options) -> Result<Converted, Error> {
     let text = String::from_utf8_lossy(bytes);
-    let mesh = parse::parse_obj(&text).map_err(|e| Error(e.to_string()))?;
+    let mut mesh = parse::parse_obj(&text).map_err(|e| Error(e.to_string()))?;
+    let flipped = if options.flip_winding { meshlets::flip_mismatches(&mut mesh) } else { 0 };
     let mut out = emit::rust_source(&mesh, name, source, &options.mesh_type).map_err(Error)?;
     if options.meshlets {
         let clusters = meshlets::build(&mesh).map_err(Error)?;
         out += &meshlets::rust_source(&clusters, name, &options.mesh_type).map_err(Error)?;
     }
     let winding_warning = meshlets::winding_warning(&mesh, options.meshlets);
-    Ok(Converted { source: out, mesh, winding_warning })
+    Ok(Converted { source: out, mesh, winding_warning, flipped })
 }
