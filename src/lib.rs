@@ -50,6 +50,7 @@ pub mod subpixel;
 #[cfg_attr(docsrs, doc(cfg(feature = "fragment")))]
 pub mod texture;
 pub mod varyings;
+pub mod view3d;
 
 pub use band::Band;
 pub use clip::{ClipRect, MAX_FRAME_DIM};

@@ -226,6 +226,21 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         color: C,
         bins: &mut heapless::Vec<ScreenTriangle<S>, N>,
     ) -> Result<MeshStats, Error> {
+        self.valid_mesh_into(mesh, model, color, |tri| bins.push(tri).map_err(|_| Error::BufferTooSmall))
+    }
+
+    /// [`Pipeline::draw_valid_mesh`] handing each triangle to `sink` instead
+    /// of a bin, in the same order (the binned path is this with a push):
+    /// with [`Pipeline::rows`] set to a band's rows, the vertex stage draws
+    /// straight into that band, no bins (the `view3d` front). Errors: those
+    /// of [`Pipeline::draw_valid_mesh`], with `sink`'s in place of a full bin.
+    pub(crate) fn valid_mesh_into<C: Interpolate>(
+        &self,
+        mesh: &ValidMesh<'_>,
+        model: &Mat4<T>,
+        color: C,
+        mut sink: impl FnMut(ScreenTriangle<S>) -> Result<(), Error>,
+    ) -> Result<MeshStats, Error> {
         let mesh = mesh.mesh();
         let mut stats = MeshStats::default();
         let Some(MeshSetup { ctx, planes, band, max }) = self.mesh_setup(mesh, model, color, &mut stats)?
@@ -248,14 +263,14 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
             };
             if class == Class::Inside {
                 if let Some(at) = self.snapped_and_kept(clip, &mut stats) {
-                    self.emit(at, colors(), max, bins, &mut stats)?;
+                    self.emit(at, colors(), max, &mut sink, &mut stats)?;
                 }
                 continue;
             }
             let cs = colors();
             let v = [0, 1, 2].map(|k| ClipVertex { pos: clip[k], attr: cs[k] });
             self.clip_and_emit(v, planes, &mut stats, |at, attr, stats| {
-                self.emit(at, attr, max, bins, stats)
+                self.emit(at, attr, max, &mut sink, stats)
             })?;
         }
         Ok(stats)
@@ -458,29 +473,18 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     }
 
     /// Colours the vertices and appends the triangle to `bins`.
-    fn emit<const N: usize>(
+    fn emit(
         &self,
         mut v: [ScreenVertex<S>; 3],
         colors: [[T; 3]; 3],
         max: [u8; 3],
-        bins: &mut heapless::Vec<ScreenTriangle<S>, N>,
+        sink: &mut impl FnMut(ScreenTriangle<S>) -> Result<(), Error>,
         stats: &mut MeshStats,
     ) -> Result<(), Error> {
         for (v, c) in v.iter_mut().zip(colors) {
             v.color = channels(c, max);
         }
-        self.push(v, bins, stats)
-    }
-
-    /// Appends a coloured triangle to `bins`.
-    fn push<const N: usize>(
-        &self,
-        v: [ScreenVertex<S>; 3],
-        bins: &mut heapless::Vec<ScreenTriangle<S>, N>,
-        stats: &mut MeshStats,
-    ) -> Result<(), Error> {
-        bins.push(ScreenTriangle { v, flat: self.shade == Shade::Flat })
-            .map_err(|_| Error::BufferTooSmall)?;
+        sink(ScreenTriangle { v, flat: self.shade == Shade::Flat })?;
         stats.emitted += 1;
         Ok(())
     }
