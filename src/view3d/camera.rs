@@ -38,7 +38,7 @@ pub enum Projection {
 /// 0.25 and 64 units, which keeps 16-bit depth fine-grained for scenes a
 /// few units across.
 pub const DEFAULT_PROJECTION: Projection =
-    Projection::Perspective { fov_y: 0.872_664_6, near: 0.25, far: 64.0 };
+    Projection::Perspective { fov_y: 50.0f32.to_radians(), near: 0.25, far: 64.0 };
 
 /// A camera: eye, target, the world's up direction (+y by default) and a
 /// [`Projection`].
