@@ -35,6 +35,7 @@ pub mod line_aa;
 pub mod math;
 pub mod mesh;
 pub mod pipeline;
+pub mod prelude;
 pub mod primitive;
 pub mod raster3d;
 pub mod render;

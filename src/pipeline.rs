@@ -69,6 +69,20 @@ pub struct MeshStats {
 
 /// The vertex-stage settings of a frame: camera, viewport, clipping, culling
 /// and lighting. `S` is the subpixel precision of the output.
+///
+/// ```
+/// use embedded_graphics::pixelcolor::{Rgb565, RgbColor};
+/// use microraster::math::{Vec3, transform};
+/// use microraster::{light::Lighting, pipeline::Pipeline, view3d::CUBE};
+/// let eye = transform::look_at(Vec3::new(0.0, 2.0, 5.0), Vec3::new(0.0, 0.0, 0.0), Vec3::new(0.0, 1.0, 0.0))?;
+/// let pipeline = Pipeline::<f32, 4>::perspective(eye, 0.9, 0.5, 50.0, 240, 240)?
+///     .with_lighting(Lighting::new(0.2, Vec3::new(0.0, 0.5, 1.0), 0.8));
+/// let mut bins = microraster::heapless::Vec::<_, 16>::new();
+/// let stats = pipeline.draw_valid_mesh(&CUBE, &transform::rotation_y(0.5), Rgb565::RED, &mut bins)?;
+/// // Three faces of the cube seen from above and in front, two triangles each.
+/// assert_eq!((stats.emitted, bins.len()), (6, 6));
+/// # Ok::<(), microraster::Error>(())
+/// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Pipeline<T: Scalar, const S: u32> {
     view: Mat4<T>,

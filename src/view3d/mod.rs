@@ -61,13 +61,35 @@ pub const DEFAULT_LIGHTING: Lighting<f32> =
 
 /// A [`View3d`] for 240 × 240 Rgb565 displays (ST7789, GC9A01): 16-row
 /// bands, 7,680 B of colour and 7,680 B of depth.
+///
+/// ```
+/// use embedded_graphics::pixelcolor::{Rgb565, RgbColor};
+/// use microraster::view3d::View240x240;
+/// let view = View240x240::new(Rgb565::BLACK);
+/// assert!(core::mem::size_of_val(&view) < 240 * 16 * 4 + 4096);
+/// ```
 pub type View240x240 = View3d<Rgb565, 240, 16>;
 
 /// A [`View3d`] for 320 × 240 Rgb565 displays (ILI9341 landscape): 16-row
 /// bands.
+///
+/// ```
+/// use embedded_graphics::pixelcolor::{Rgb565, RgbColor};
+/// use microraster::view3d::View320x240;
+/// let view = View320x240::new(Rgb565::WHITE);
+/// assert_eq!(view.background(), Rgb565::WHITE);
+/// ```
 pub type View320x240 = View3d<Rgb565, 320, 16>;
 
 /// A [`View3d`] for 160 × 128 Rgb565 displays (ST7735): 8-row bands.
+///
+/// ```
+/// use embedded_graphics::pixelcolor::{Rgb565, RgbColor};
+/// use microraster::{Cull, view3d::View160x128};
+/// let mut view = View160x128::new(Rgb565::BLACK);
+/// view.set_cull(Cull::None); // an open mesh, seen from both sides
+/// assert_eq!(view.cull(), Cull::None);
+/// ```
 pub type View160x128 = View3d<Rgb565, 160, 8>;
 
 /// The buffers and settings of 3D frames `W` pixels wide drawn in bands of
