@@ -4,6 +4,9 @@
 //! One module per pipeline stage: [`subpixel`] (snapping) → [`edge`] (triangle
 //! coverage) and [`mod@line`] (midpoint lines) → [`blit`] (where pixels go) →
 //! [`band`] (the band buffer) → [`render`] (the band loop).
+//!
+//! On top: [`view3d`], the one-call 3D front, and [`prelude`], the names
+//! most programs need.
 #![no_std]
 #![cfg_attr(docsrs, feature(doc_cfg))]
 #![forbid(unsafe_code)]
