@@ -20,9 +20,11 @@ const FACES: [[[f32; 3]; 3]; 6] = [
 const NV: usize = cube_vertex_count();
 const NT: usize = cube_triangle_count();
 
-/// Positions, normals and triangles, in `mesh::cube`'s order.
-#[allow(clippy::type_complexity)]
-const fn build() -> ([[f32; 3]; NV], [[f32; 3]; NV], [[u16; 3]; NT]) {
+/// Positions, normals and triangles.
+type Tables = ([[f32; 3]; NV], [[f32; 3]; NV], [[u16; 3]; NT]);
+
+/// The tables, in `mesh::cube`'s order.
+const fn build() -> Tables {
     let corners = [(-1.0f32, -1.0f32), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)];
     let (mut p, mut n, mut t) = ([[0.0; 3]; NV], [[0.0; 3]; NV], [[0u16; 3]; NT]);
     let mut f = 0;
@@ -47,7 +49,7 @@ const fn build() -> ([[f32; 3]; NV], [[f32; 3]; NV], [[u16; 3]; NT]) {
     (p, n, t)
 }
 
-const DATA: ([[f32; 3]; NV], [[f32; 3]; NV], [[u16; 3]; NT]) = build();
+const DATA: Tables = build();
 static POSITIONS: [[f32; 3]; NV] = DATA.0;
 static NORMALS: [[f32; 3]; NV] = DATA.1;
 static INDICES: [[u16; 3]; NT] = DATA.2;
