@@ -146,14 +146,8 @@ fn main() -> Result<()> {
     let mut depth = DepthBand::<Depth16, W, H>::new();
     let a2 = timed(|f| Ok(r.render(&prims, &mut band, f).map_err(|e| e.to_string())?))?;
     let a3 = timed(|f| {
-        r.render_3d::<_, Depth16, PerspectiveCorrect, S, W, H>(
-            &tris,
-            &mut band,
-            &mut depth,
-            DepthState::LESS_WRITE,
-            f,
-        )
-        .map_err(|e| e.to_string())?;
+        r.render_3d(&tris, &mut band, &mut depth, DepthState::LESS_WRITE, PerspectiveCorrect, f)
+            .map_err(|e| e.to_string())?;
         Ok(())
     })?;
     let aliased = (

@@ -202,14 +202,8 @@ fn speedup_table(frames: &[heapless::Vec<ScreenTriangle<4>, BINS>]) -> String {
     let one = best(&mut || {
         let (mut band, mut depth) = (Band::<Rgb565, W, BAND>::new(BG), DepthBand::<Depth16, W, BAND>::new());
         for tris in frames {
-            r.render_3d::<_, _, PerspectiveCorrect, 4, W, BAND>(
-                tris,
-                &mut band,
-                &mut depth,
-                DepthState::LESS_WRITE,
-                &mut Null,
-            )
-            .expect("frame");
+            r.render_3d(tris, &mut band, &mut depth, DepthState::LESS_WRITE, PerspectiveCorrect, &mut Null)
+                .expect("frame");
         }
     });
     let two = best(&mut || {

@@ -61,11 +61,12 @@ fn main() -> Result<(), Box<dyn Error>> {
     let mut display = SimulatorDisplay::<Rgb565>::new(Size::new(W as u32, H));
     let mut band = Band::<Rgb565, W, BAND_ROWS>::new(BG);
     let mut depth = DepthBand::<Depth16, W, BAND_ROWS>::new();
-    Renderer::new(H, BG).render_3d::<_, _, PerspectiveCorrect, 4, W, BAND_ROWS>(
+    Renderer::new(H, BG).render_3d(
         &bins,
         &mut band,
         &mut depth,
         DepthState::LESS_WRITE,
+        PerspectiveCorrect,
         &mut display,
     )?;
     let label = format!("microraster: {} triangles, {BAND_ROWS}-row bands", bins.len());

@@ -155,7 +155,14 @@ macro_rules! formats {
 formats! {
     /// 8-bit depth in a `u8`.
     Depth8: u8 = 8;
-    /// 16-bit depth in a `u16`.
+    /// 16-bit depth in a `u16`: 2 bytes a pixel, the usual choice.
+    ///
+    /// ```
+    /// use microraster::depth::{Depth16, DepthBand, DepthFormat};
+    /// assert_eq!(Depth16::FAR, 0xFFFF);
+    /// let z = DepthBand::<Depth16, 240, 16>::new();
+    /// assert_eq!(core::mem::size_of_val(&z), 240 * 16 * 2);
+    /// ```
     Depth16: u16 = 16;
     /// 24-bit depth in a `u32` (the top 8 bits are always 0).
     Depth24: u32 = 24;
@@ -261,6 +268,15 @@ impl DepthTest {
 
 /// How a primitive uses the depth buffer: the test, and whether passing
 /// fragments write their depth. (Default: [`DepthState::LESS_WRITE`].)
+///
+/// ```
+/// use microraster::depth::{DepthState, DepthTest};
+/// // Opaque geometry: nearer wins and is remembered.
+/// assert_eq!(DepthState::default(), DepthState::LESS_WRITE);
+/// // Translucent geometry: tested against the opaque, never written.
+/// let glass = DepthState::new(DepthTest::Less, false);
+/// assert!(!glass.write);
+/// ```
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub struct DepthState {

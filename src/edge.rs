@@ -40,6 +40,19 @@ pub(crate) mod small;
 pub use small::SMALL_PX;
 
 /// Which triangles to drop by their winding on screen (y pointing down).
+///
+/// ```
+/// use embedded_graphics::{mock_display::MockDisplay, pixelcolor::BinaryColor};
+/// use microraster::{Band, Cull, Primitive, Renderer, SubPoint, Triangle};
+/// let p = |x, y| SubPoint::<4>::from_pixels(x, y).unwrap();
+/// // Clockwise on screen (x right, y down).
+/// let scene = [Primitive::from(Triangle::flat([p(0, 0), p(4, 0), p(0, 4)], BinaryColor::On))];
+/// let mut display = MockDisplay::new();
+/// let r = Renderer::new(4, BinaryColor::Off).with_cull(Cull::Clockwise);
+/// r.render(&scene, &mut Band::<_, 4, 4>::new(BinaryColor::Off), &mut display)?;
+/// display.assert_pattern(&["....", "....", "....", "...."]);
+/// # Ok::<(), microraster::RenderError<core::convert::Infallible>>(())
+/// ```
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum Cull {

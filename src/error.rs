@@ -6,6 +6,11 @@ use core::fmt;
 ///
 /// Every public function that can receive bad input returns this error (or a
 /// [`RenderError`] that wraps it) instead of panicking.
+///
+/// ```
+/// use microraster::{Error, SubPoint};
+/// assert_eq!(SubPoint::<4>::from_f32(f32::NAN, 0.0), Err(Error::NonFiniteCoordinate));
+/// ```
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Error {

@@ -4,6 +4,9 @@
 //! One module per pipeline stage: [`subpixel`] (snapping) → [`edge`] (triangle
 //! coverage) and [`mod@line`] (midpoint lines) → [`blit`] (where pixels go) →
 //! [`band`] (the band buffer) → [`render`] (the band loop).
+//!
+//! On top: [`view3d`], the one-call 3D front, and [`prelude`], the names
+//! most programs need.
 #![no_std]
 #![cfg_attr(docsrs, feature(doc_cfg))]
 #![forbid(unsafe_code)]
@@ -35,6 +38,7 @@ pub mod line_aa;
 pub mod math;
 pub mod mesh;
 pub mod pipeline;
+pub mod prelude;
 pub mod primitive;
 pub mod raster3d;
 pub mod render;
@@ -50,6 +54,7 @@ pub mod subpixel;
 #[cfg_attr(docsrs, doc(cfg(feature = "fragment")))]
 pub mod texture;
 pub mod varyings;
+pub mod view3d;
 
 pub use band::Band;
 pub use clip::{ClipRect, MAX_FRAME_DIM};

@@ -72,6 +72,20 @@ pub struct MeshStats {
 
 /// The vertex-stage settings of a frame: camera, viewport, clipping, culling
 /// and lighting. `S` is the subpixel precision of the output.
+///
+/// ```
+/// use embedded_graphics::pixelcolor::{Rgb565, RgbColor};
+/// use microraster::math::{Vec3, transform};
+/// use microraster::{light::Lighting, pipeline::Pipeline, view3d::CUBE};
+/// let eye = transform::look_at(Vec3::new(0.0, 2.0, 5.0), Vec3::new(0.0, 0.0, 0.0), Vec3::new(0.0, 1.0, 0.0))?;
+/// let pipeline = Pipeline::<f32, 4>::perspective(eye, 0.9, 0.5, 50.0, 240, 240)?
+///     .with_lighting(Lighting::new(0.2, Vec3::new(0.0, 0.5, 1.0), 0.8));
+/// let mut bins = microraster::heapless::Vec::<_, 16>::new();
+/// let stats = pipeline.draw_valid_mesh(&CUBE, &transform::rotation_y(0.5), Rgb565::RED, &mut bins)?;
+/// // Three faces of the cube seen from above and in front, two triangles each.
+/// assert_eq!((stats.emitted, bins.len()), (6, 6));
+/// # Ok::<(), microraster::Error>(())
+/// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Pipeline<T: Scalar, const S: u32> {
     view: Mat4<T>,
@@ -232,18 +246,27 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         bins: &mut heapless::Vec<ScreenTriangle<S>, N>,
     ) -> Result<MeshStats, Error> {
         let mut bins = bins::BinWriter::new(bins);
-        let result = self.valid_mesh_into(mesh.mesh(), model, color, &mut bins);
+        let result = self.valid_mesh_into(mesh, model, color, |tri| {
+            bins.push(tri);
+            Ok(())
+        });
         bins.finish(result)
     }
 
-    /// The body of [`Pipeline::draw_valid_mesh`], into a [`bins::BinWriter`].
-    fn valid_mesh_into<C: Interpolate, const N: usize>(
+    /// [`Pipeline::draw_valid_mesh`] handing each triangle to `sink` instead
+    /// of a bin, in the same order (the binned path is this with a
+    /// [`bins::BinWriter`]): with [`Pipeline::rows`] set to a band's rows, the
+    /// vertex stage draws straight into that band, no bins (the `view3d`
+    /// front). Errors: those of [`Pipeline::draw_valid_mesh`], with `sink`'s
+    /// in place of a full bin.
+    pub(crate) fn valid_mesh_into<C: Interpolate>(
         &self,
-        mesh: &Mesh<'_>,
+        mesh: &ValidMesh<'_>,
         model: &Mat4<T>,
         color: C,
-        bins: &mut bins::BinWriter<'_, ScreenTriangle<S>, N>,
+        mut sink: impl FnMut(ScreenTriangle<S>) -> Result<(), Error>,
     ) -> Result<MeshStats, Error> {
+        let mesh = mesh.mesh();
         let mut stats = MeshStats::default();
         let Some(MeshSetup { ctx, planes, band, max }) = self.mesh_setup(mesh, model, color, &mut stats)?
         else {
@@ -265,15 +288,14 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
             };
             if class == Class::Inside {
                 if let Some(at) = self.snapped_and_kept(clip, &mut stats) {
-                    self.emit(at, colors(), max, bins, &mut stats);
+                    self.emit(at, colors(), max, &mut sink, &mut stats)?;
                 }
                 continue;
             }
             let cs = colors();
             let v = [0, 1, 2].map(|k| ClipVertex { pos: clip[k], attr: cs[k] });
             self.clip_and_emit(v, planes, &mut stats, |at, attr, stats| {
-                self.emit(at, attr, max, bins, stats);
-                Ok(())
+                self.emit(at, attr, max, &mut sink, stats)
             })?;
         }
         Ok(stats)
@@ -482,21 +504,23 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         self.rows.is_none_or(|(y0, y1)| lo <= y1 && hi >= y0)
     }
 
-    /// Colours the vertices and appends the triangle to `bins` (counted
-    /// in `stats.emitted` whether it fits or not: [`bins::BinWriter`]).
-    fn emit<const N: usize>(
+    /// Colours the vertices and hands the triangle to `sink` (counted in
+    /// `stats.emitted` once the sink takes it; a [`bins::BinWriter`] takes
+    /// every triangle, counting those that do not fit).
+    fn emit(
         &self,
         mut v: [ScreenVertex<S>; 3],
         colors: [[T; 3]; 3],
         max: [u8; 3],
-        bins: &mut bins::BinWriter<'_, ScreenTriangle<S>, N>,
+        sink: &mut impl FnMut(ScreenTriangle<S>) -> Result<(), Error>,
         stats: &mut MeshStats,
-    ) {
+    ) -> Result<(), Error> {
         for (v, c) in v.iter_mut().zip(colors) {
             v.color = channels(c, max);
         }
-        bins.push(ScreenTriangle { v, flat: self.shade == Shade::Flat });
+        sink(ScreenTriangle { v, flat: self.shade == Shade::Flat })?;
         stats.emitted += 1;
+        Ok(())
     }
 
     /// `origin + (1 ± ndc)·size/2` in subpixels, `ndc = c/w` (y flipped).

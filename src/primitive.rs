@@ -135,6 +135,17 @@ impl<C: Interpolate, const S: u32> Triangle<C, S> {
 ///
 /// The start pixel is drawn and the end pixel is not (lines are half-open), so
 /// a polyline lights each shared vertex once.
+///
+/// ```
+/// use embedded_graphics::{mock_display::MockDisplay, pixelcolor::BinaryColor};
+/// use microraster::{Band, Line, Primitive, Renderer, SubPoint};
+/// let p = |x, y| SubPoint::<4>::pixel_center(x, y).unwrap();
+/// let scene = [Primitive::from(Line::new(p(0, 1), p(4, 1), BinaryColor::On))];
+/// let mut display = MockDisplay::new();
+/// Renderer::new(3, BinaryColor::Off).render(&scene, &mut Band::<_, 4, 2>::new(BinaryColor::Off), &mut display)?;
+/// display.assert_pattern(&["....", "####", "...."]);
+/// # Ok::<(), microraster::RenderError<core::convert::Infallible>>(())
+/// ```
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Line<C, const S: u32> {
     start: SubPoint<S>,
@@ -179,7 +190,21 @@ impl<C: Interpolate, const S: u32> Line<C, S> {
     }
 }
 
-/// Anything a scene can hold.
+/// Anything a scene can hold: what [`Renderer::render`](crate::Renderer::render)
+/// draws, in order. (`embedded_graphics::prelude` has a trait of the same
+/// name: with both preludes glob-imported, write `microraster::Primitive`.)
+///
+/// ```
+/// use embedded_graphics::pixelcolor::BinaryColor;
+/// use microraster::{Line, Primitive, SubPoint, Triangle};
+/// let p = |x, y| SubPoint::<4>::from_pixels(x, y).unwrap();
+/// let scene = [
+///     Primitive::from(Triangle::flat([p(0, 0), p(8, 0), p(0, 8)], BinaryColor::On)),
+///     Primitive::from(Line::new(p(0, 9), p(8, 9), BinaryColor::On)),
+/// ];
+/// // Each knows its rows, for the band loop.
+/// assert_eq!(scene[0].rows(), (0, 7));
+/// ```
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Primitive<C, const S: u32> {
     /// A filled triangle.

@@ -113,10 +113,35 @@ pub trait Interpolation: sealed::Sealed + Copy + Default {
 }
 
 /// Screen-space (affine) interpolation: cheaper, skews on slanted surfaces.
+/// A value, passed to the render entry points (no turbofish):
+///
+/// ```
+/// use microraster::raster3d::{Affine, Interpolation, PerspectiveCorrect};
+/// assert!(!Affine::PERSPECTIVE && PerspectiveCorrect::PERSPECTIVE);
+/// # use embedded_graphics::{mock_display::MockDisplay, pixelcolor::Gray8};
+/// # use microraster::{Band, Renderer, depth::{Depth16, DepthBand, DepthState}};
+/// # let (mut band, mut depth) = (Band::<Gray8, 8, 4>::new(Gray8::new(0)), DepthBand::<Depth16, 8, 4>::new());
+/// # let tris: [microraster::raster3d::ScreenTriangle<4>; 0] = [];
+/// # let mut display = MockDisplay::new();
+/// Renderer::new(8, Gray8::new(0)).render_3d(&tris, &mut band, &mut depth, DepthState::LESS_WRITE, Affine, &mut display)?;
+/// # Ok::<(), microraster::RenderError<core::convert::Infallible>>(())
+/// ```
 #[derive(Debug, Clone, Copy, Default)]
 pub struct Affine;
 
 /// Perspective-correct interpolation: one division per channel and pixel.
+/// A value, passed to the render entry points (no turbofish):
+///
+/// ```
+/// use microraster::raster3d::{Interpolation, PerspectiveCorrect};
+/// # use embedded_graphics::{mock_display::MockDisplay, pixelcolor::Gray8};
+/// # use microraster::{Band, Renderer, depth::{Depth16, DepthBand, DepthState}};
+/// # let (mut band, mut depth) = (Band::<Gray8, 8, 4>::new(Gray8::new(0)), DepthBand::<Depth16, 8, 4>::new());
+/// # let mut display = MockDisplay::new();
+/// Renderer::new(8, Gray8::new(0)).render_3d_direct(&mut band, &mut depth, DepthState::LESS_WRITE, PerspectiveCorrect, &mut display, |_band| Ok(()))?;
+/// assert!(PerspectiveCorrect::PERSPECTIVE);
+/// # Ok::<(), microraster::RenderError<core::convert::Infallible>>(())
+/// ```
 #[derive(Debug, Clone, Copy, Default)]
 pub struct PerspectiveCorrect;
 

@@ -141,18 +141,36 @@ impl<C: Interpolate> Renderer<C> {
 
     /// Renders screen-space triangles from the vertex stage
     /// ([`pipeline`](crate::pipeline)) with the depth buffer `depth`, cleared to far at
-    /// each band, and colour interpolation `M`
+    /// each band, and colour interpolated as `interp` says
     /// ([`Affine`](crate::raster3d::Affine) or
-    /// [`PerspectiveCorrect`](crate::raster3d::PerspectiveCorrect)).
+    /// [`PerspectiveCorrect`](crate::raster3d::PerspectiveCorrect); a value,
+    /// so the call needs no turbofish).
     /// The renderer's cull mode does not apply: the vertex stage culls.
     ///
     /// Errors as for [`Renderer::render`].
+    ///
+    /// ```
+    /// use embedded_graphics::mock_display::MockDisplay;
+    /// use embedded_graphics::pixelcolor::Gray8;
+    /// use microraster::depth::{Depth16, DepthBand, DepthState};
+    /// use microraster::raster3d::{PerspectiveCorrect, ScreenTriangle};
+    /// use microraster::{Band, Renderer};
+    /// let tris: [ScreenTriangle<4>; 0] = []; // from Pipeline::draw_mesh
+    /// let mut band = Band::<Gray8, 8, 4>::new(Gray8::new(0));
+    /// let mut depth = DepthBand::<Depth16, 8, 4>::new();
+    /// let mut display = MockDisplay::new();
+    /// Renderer::new(8, Gray8::new(0))
+    ///     .render_3d(&tris, &mut band, &mut depth, DepthState::LESS_WRITE, PerspectiveCorrect, &mut display)
+    ///     .unwrap();
+    /// assert_eq!(display.get_pixel(embedded_graphics::prelude::Point::new(3, 3)), Some(Gray8::new(0)));
+    /// ```
     pub fn render_3d<D, F, M, const S: u32, const W: usize, const H: usize>(
         &self,
         triangles: &[ScreenTriangle<S>],
         band: &mut Band<C, W, H>,
         depth: &mut DepthBand<F, W, H>,
         state: DepthState,
+        interp: M,
         target: &mut D,
     ) -> Result<(), RenderError<D::Error>>
     where
@@ -160,6 +178,7 @@ impl<C: Interpolate> Renderer<C> {
         F: DepthFormat,
         M: Interpolation,
     {
+        let _ = interp; // a value, so the call needs no turbofish
         self.render_with(band, target, |view, y0, y1| {
             band3d::<C, F, M, W, H>(view, depth, state, y0, y1).draw_all(triangles)
         })
@@ -171,7 +190,8 @@ impl<C: Interpolate> Renderer<C> {
     /// triangles touching rows `y0..y1` (set [`Pipeline::rows`](crate::pipeline::Pipeline::rows)
     /// to `Some((y0, y1 − 1))` and call `draw_mesh`); `bins` is cleared before
     /// each band. Vertex work grows with the number of bands; the image is the
-    /// same as [`Renderer::render_3d`]'s.
+    /// same as [`Renderer::render_3d`]'s. `interp` is the colour
+    /// interpolation, as there.
     ///
     /// Errors as for [`Renderer::render`], plus [`RenderError::Input`] with the
     /// first error `geometry` returns (the remaining bands are not drawn).
@@ -183,6 +203,7 @@ impl<C: Interpolate> Renderer<C> {
         band: &mut Band<C, W, H>,
         depth: &mut DepthBand<F, W, H>,
         state: DepthState,
+        interp: M,
         target: &mut D,
     ) -> Result<(), RenderError<D::Error>>
     where
@@ -191,6 +212,7 @@ impl<C: Interpolate> Renderer<C> {
         M: Interpolation,
         G: FnMut(i32, i32, &mut heapless::Vec<ScreenTriangle<S>, N>) -> Result<(), Error>,
     {
+        let _ = interp; // a value, so the call needs no turbofish
         let mut failed = None;
         self.render_with(band, target, |view, y0, y1| {
             if failed.is_some() {

@@ -146,13 +146,7 @@ fn band_crcs_match_a_framebuffer() {
         let mut band = Box::new(Band::<Rgb565, W, B>::new(workload::BACKGROUND));
         let mut depth = Box::new(DepthBand::<Depth16, W, B>::new());
         Renderer::new(h, workload::BACKGROUND)
-            .render_3d::<_, Depth16, M, S, W, B>(
-                &bins,
-                &mut band,
-                &mut depth,
-                workload::DEPTH_STATE,
-                &mut frame,
-            )
+            .render_3d(&bins, &mut band, &mut depth, workload::DEPTH_STATE, M::default(), &mut frame)
             .unwrap();
         frame
     }

@@ -412,7 +412,7 @@ pub fn mr3d<T: Scalar, F: DepthFormat, M: Interpolation, const S: u32, const BH:
     bins.clear();
     Scene3d.draw::<T, Rgb565, S, BINS>(pipeline, ANGLE, bins).unwrap();
     Renderer::new(H as u32, BG3)
-        .render_3d::<_, F, M, S, W, BH>(bins, band, depth, DepthState::LESS_WRITE, target)
+        .render_3d(bins, band, depth, DepthState::LESS_WRITE, M::default(), target)
         .unwrap();
     bins.len()
 }

@@ -50,13 +50,7 @@ pub fn run(out: &Path) -> Result<()> {
     pipeline.draw_valid_mesh(&mesh, &model(), COLOR, &mut bins)?;
     let mut binned = Canvas::new(W as u32, HEIGHT);
     Renderer::new(HEIGHT, BACKGROUND)
-        .render_3d::<_, Depth16, Affine, S, W, BAND_ROWS>(
-            &bins,
-            &mut band,
-            &mut depth,
-            DepthState::LESS_WRITE,
-            &mut binned,
-        )
+        .render_3d(&bins, &mut band, &mut depth, DepthState::LESS_WRITE, Affine, &mut binned)
         .map_err(|e| e.to_string())?;
     if binned.px != canvas.px {
         return Err("the meshlet stage and the binned path drew different knots".into());

@@ -90,7 +90,7 @@ fn render_3d<M: Interpolation, const H: usize>(tris: &[ScreenTriangle<S>]) -> Re
     let mut band = Band::<Rgb888, W, H>::new(BACKGROUND);
     let mut depth = DepthBand::<Z, W, H>::new();
     Renderer::new(HEIGHT, BACKGROUND)
-        .render_3d::<_, Z, M, S, W, H>(tris, &mut band, &mut depth, DepthState::LESS_WRITE, &mut canvas)
+        .render_3d(tris, &mut band, &mut depth, DepthState::LESS_WRITE, M::default(), &mut canvas)
         .map_err(|e| e.to_string())?;
     Ok(canvas)
 }

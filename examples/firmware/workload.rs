@@ -292,7 +292,7 @@ pub fn scene3d<T: Scalar, M: Interpolation, const W: usize, const H: usize, cons
     Scene3d.draw::<T, Rgb565, S, N>(&pipeline, ANGLE, bins)?;
     let mut target = CrcTarget::new(name, W as u32, height, out);
     Renderer::new(height, BACKGROUND)
-        .render_3d::<_, Depth16, M, S, W, H>(bins, band, depth, DEPTH_STATE, &mut target)
+        .render_3d(bins, band, depth, DEPTH_STATE, M::default(), &mut target)
         .map_err(render_error)?;
     target.finish();
     Ok(())
@@ -321,14 +321,7 @@ pub fn scene3d_per_band<T: Scalar, M: Interpolation, const W: usize, const H: us
         Scene3d.draw::<T, Rgb565, S, N>(&pipeline, ANGLE, bins).map(|_| ())
     };
     Renderer::new(height, BACKGROUND)
-        .render_3d_per_band::<_, Depth16, M, _, S, W, H, N>(
-            bins,
-            geometry,
-            band,
-            depth,
-            DEPTH_STATE,
-            &mut target,
-        )
+        .render_3d_per_band(bins, geometry, band, depth, DEPTH_STATE, M::default(), &mut target)
         .map_err(render_error)?;
     target.finish();
     Ok(())

@@ -479,7 +479,7 @@ fn frame3d<T: Scalar, M: Interpolation, const W: usize, const H: usize, const N:
     let pipeline = Scene3d::pipeline::<T, S>(W as u32, height)?;
     b.bins.clear();
     Scene3d.draw::<T, Rgb565, S, N>(&pipeline, ANGLE, b.bins)?;
-    r.render_3d::<_, Depth16, M, S, W, H>(b.bins, b.band, b.depth, DEPTH_STATE, sink).map_err(input)
+    r.render_3d(b.bins, b.band, b.depth, DEPTH_STATE, M::default(), sink).map_err(input)
 }
 
 fn per_band3d<T: Scalar, M: Interpolation, const W: usize, const H: usize, const N: usize, const P: usize>(
@@ -492,8 +492,7 @@ fn per_band3d<T: Scalar, M: Interpolation, const W: usize, const H: usize, const
         pipeline.rows = Some((y0, y1 - 1));
         Scene3d.draw::<T, Rgb565, S, N>(&pipeline, ANGLE, bins).map(|_| ())
     };
-    r.render_3d_per_band::<_, Depth16, M, _, S, W, H, N>(b.bins, geometry, b.band, b.depth, DEPTH_STATE, sink)
-        .map_err(input)
+    r.render_3d_per_band(b.bins, geometry, b.band, b.depth, DEPTH_STATE, M::default(), sink).map_err(input)
 }
 
 /// Triangles and lines of one frame of `work` (each triangle counted once,

@@ -222,7 +222,7 @@ fn mesh3d<T: Scalar, F: DepthFormat, M: Interpolation, const S: u32, const BH: u
     m.start();
     let r = Scene3d.draw::<T, Rgb565, S, BINS>(&pipeline, ANGLE, &mut bins).and_then(|_| {
         Renderer::new(H as u32, BG)
-            .render_3d::<_, F, M, S, W, BH>(&bins, &mut band, &mut depth, DepthState::LESS_WRITE, fb)
+            .render_3d(&bins, &mut band, &mut depth, DepthState::LESS_WRITE, M::default(), fb)
             .map_err(input)
     });
     m.stop();
@@ -241,7 +241,7 @@ fn vertex3d<T: Scalar>(m: &mut dyn Meter, fb: &mut FrameBuffer) -> Result<(), Er
     let mut band = Band::<Rgb565, W, 16>::new(BG);
     let mut depth = DepthBand::<Depth16, W, 16>::zeroed();
     Renderer::new(H as u32, BG)
-        .render_3d::<_, Depth16, Affine, 4, W, 16>(&bins, &mut band, &mut depth, DepthState::LESS_WRITE, fb)
+        .render_3d(&bins, &mut band, &mut depth, DepthState::LESS_WRITE, Affine, fb)
         .map_err(input)
 }
 

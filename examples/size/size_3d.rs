@@ -21,11 +21,12 @@ fn main() {
     let mut band = Band::<Rgb565, 320, 16>::new(Rgb565::BLACK);
     let mut depth = DepthBand::<Depth16, 320, 16>::new();
     let mut sink = Sink(0);
-    let _ = Renderer::new(240, Rgb565::BLACK).render_3d::<_, _, PerspectiveCorrect, 4, 320, 16>(
+    let _ = Renderer::new(240, Rgb565::BLACK).render_3d(
         black_box(&bins),
         &mut band,
         &mut depth,
         DepthState::LESS_WRITE,
+        PerspectiveCorrect,
         &mut sink,
     );
     println!("{:08x}", black_box(sink.0));

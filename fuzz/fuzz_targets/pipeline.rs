@@ -450,7 +450,7 @@ fn render<F: DepthFormat, M: Interpolation, const S: u32, const H: usize>(
     let mut depth = Box::new(DepthBand::<F, FW, H>::new());
     let mut fb = Frame { h: fh, px: vec![None; FW * fh] };
     Renderer::new(fh as u32, bg)
-        .render_3d::<_, F, M, S, FW, H>(bins, &mut band, &mut depth, state, &mut fb)
+        .render_3d(bins, &mut band, &mut depth, state, M::default(), &mut fb)
         .unwrap();
     fb.px.into_iter().map(|p| p.expect("a frame pixel was never sent")).collect()
 }

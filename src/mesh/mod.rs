@@ -291,6 +291,13 @@ impl<'a> ValidMesh<'a> {
     pub const fn mesh(&self) -> &Mesh<'a> {
         &self.0
     }
+
+    /// `mesh`, which the caller has just checked ([`Mesh::validate`] or
+    /// [`Mesh::check_winding`]): the `view3d` front checks a plain mesh
+    /// once per frame, not once per band.
+    pub(crate) const fn trusted(mesh: Mesh<'a>) -> Self {
+        ValidMesh(mesh)
+    }
 }
 
 /// A bounding sphere of `positions`, for [`Mesh::bounding_sphere`]; the

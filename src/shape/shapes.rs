@@ -9,6 +9,16 @@ use crate::Error;
 use core::f32::consts::{FRAC_PI_2, PI, TAU};
 
 /// A geometric shape: its filled region and its stroke as closed contours.
+/// [`Shape::styled`] pairs it with a [`ShapeStyle`](super::ShapeStyle) for drawing.
+///
+/// ```
+/// use embedded_graphics::{mock_display::MockDisplay, pixelcolor::BinaryColor, Drawable};
+/// use microraster::shape::{Rect, Shape, ShapeStyle};
+/// let mut display = MockDisplay::new();
+/// Rect::new(1.0, 1.0, 3.0, 2.0)?.styled(ShapeStyle::fill(BinaryColor::On))?.draw(&mut display).unwrap();
+/// display.assert_pattern(&["    ", " ###", " ###"]);
+/// # Ok::<(), microraster::Error>(())
+/// ```
 pub trait Shape: Sized {
     /// Adds the contours of the filled region to `e`.
     #[doc(hidden)]

@@ -11,11 +11,12 @@ fn main() {
     let mut depth = DepthBand::<Depth16, 32, 8>::new();
     let mut display = MockDisplay::<Gray8>::new();
     let tris: [ScreenTriangle<4>; 0] = [];
-    let _ = Renderer::new(32, Gray8::new(0)).render_3d::<_, Depth16, Affine, 4, 32, 16>(
+    let _ = Renderer::new(32, Gray8::new(0)).render_3d(
         &tris,
         &mut band,
         &mut depth,
         DepthState::LESS_WRITE,
+        Affine,
         &mut display,
     );
 }

@@ -10,11 +10,12 @@ fn main() {
     let mut depth = DepthBand::<Depth8, 64, 16>::new();
     let mut display = MockDisplay::<Gray8>::new();
     let tris: [ScreenTriangle<4>; 0] = [];
-    let _ = Renderer::new(16, Gray8::new(0)).render_3d::<_, Depth8, PerspectiveCorrect, 4, 32, 16>(
+    let _ = Renderer::new(16, Gray8::new(0)).render_3d(
         &tris,
         &mut band,
         &mut depth,
         DepthState::LESS_WRITE,
+        PerspectiveCorrect,
         &mut display,
     );
 }

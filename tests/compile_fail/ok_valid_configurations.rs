@@ -25,11 +25,12 @@ fn main() {
     let mut band = Band::<Gray8, 32, 16>::new(Gray8::new(0));
     let mut depth = DepthBand::<Depth16, 32, 16>::new();
     let mut display = MockDisplay::<Gray8>::new();
-    let _ = Renderer::new(16, Gray8::new(0)).render_3d::<_, Depth16, Affine, 8, 32, 16>(
+    let _ = Renderer::new(16, Gray8::new(0)).render_3d(
         &bins,
         &mut band,
         &mut depth,
         DepthState::LESS_WRITE,
+        Affine,
         &mut display,
     );
     // Anti-aliasing: the sample bands of the two aa_* cases, made consistent.

@@ -231,13 +231,7 @@ fn ssaa_and_msaa_agree_on_flat_fills_and_n1_is_the_aliased_renderer() {
         let mut fb = Framebuffer::new(FW as u32, FH, BG);
         let (mut band, mut depth) = (Band::<_, FW, 4>::new(BG), DepthBand::<Depth16, FW, 4>::new());
         Renderer::new(FH, BG)
-            .render_3d::<_, _, Affine, 4, FW, 4>(
-                &tris,
-                &mut band,
-                &mut depth,
-                DepthState::LESS_WRITE,
-                &mut fb,
-            )
+            .render_3d(&tris, &mut band, &mut depth, DepthState::LESS_WRITE, Affine, &mut fb)
             .unwrap();
         assert_eq!(render_3d::<Ssaa<1>, Affine, Depth16, 4, FW, 4>(Ssaa, &tris), fb.pixels);
     }

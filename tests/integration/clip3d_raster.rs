@@ -82,13 +82,7 @@ fn check(s: &Setup, tri: [[f32; 3]; 3], loose: bool, expect_empty: bool, st: &mu
     let mut band = Box::new(Band::<Gray8, W, 16>::new(BG));
     let mut depth = Box::new(DepthBand::<Depth16, W, 16>::new());
     Renderer::new(H as u32, BG)
-        .render_3d::<_, Depth16, Affine, S, W, 16>(
-            &bins,
-            &mut band,
-            &mut depth,
-            DepthState::LESS_WRITE,
-            &mut fb,
-        )
+        .render_3d(&bins, &mut band, &mut depth, DepthState::LESS_WRITE, Affine, &mut fb)
         .unwrap();
 
     let poly = s.r.clip(tri.map(|p| s.r.vertex(p)));

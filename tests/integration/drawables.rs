@@ -301,13 +301,7 @@ fn scene3d(angle: f32) -> (heapless::Vec<microraster::raster3d::ScreenTriangle<4
     let mut fb = Framebuffer::new(W as u32, FH, Rgb565::BLACK);
     let (mut band, mut depth) = (Band::<Rgb565, W, 8>::new(BG), DepthBand::<Depth16, W, 8>::new());
     Renderer::new(FH, BG)
-        .render_3d::<_, _, PerspectiveCorrect, 4, W, 8>(
-            &bins,
-            &mut band,
-            &mut depth,
-            DepthState::LESS_WRITE,
-            &mut fb,
-        )
+        .render_3d(&bins, &mut band, &mut depth, DepthState::LESS_WRITE, PerspectiveCorrect, &mut fb)
         .unwrap();
     (bins, fb.pixels)
 }

@@ -36,19 +36,13 @@ fn both_ways<T: Scalar>(
     let mut band = Band::<Gray8, W, 8>::new(bg);
     let mut depth = DepthBand::<Depth16, W, 8>::new();
     Renderer::new(H as u32, bg)
-        .render_3d::<_, Depth16, Affine, 4, W, 8>(
-            &bins,
-            &mut band,
-            &mut depth,
-            DepthState::LESS_WRITE,
-            &mut fb,
-        )
+        .render_3d(&bins, &mut band, &mut depth, DepthState::LESS_WRITE, Affine, &mut fb)
         .unwrap();
     let whole = fb.pixels;
     let mut fb = Framebuffer::new(W as u32, H as u32, bg);
     let mut pb = *p;
     let mut failed = None;
-    let r = Renderer::new(H as u32, bg).render_3d_per_band::<_, Depth16, Affine, _, 4, W, 8, 64>(
+    let r = Renderer::new(H as u32, bg).render_3d_per_band(
         &mut bins,
         |y0, y1, bins| {
             pb.rows = Some((y0, y1 - 1));
@@ -57,6 +51,7 @@ fn both_ways<T: Scalar>(
         &mut band,
         &mut depth,
         DepthState::LESS_WRITE,
+        Affine,
         &mut fb,
     );
     if let Some(e) = failed {
@@ -431,13 +426,7 @@ fn binned<const BH: usize>(bins: &[ScreenTriangle<4>]) -> Img {
         let mut band = Box::new(Band::<Gray8, PW, BH>::new(Gray8::new(0)));
         let mut depth = Box::new(DepthBand::<Depth16, PW, BH>::new());
         Renderer::new(PH as u32, Gray8::new(0))
-            .render_3d::<_, Depth16, Affine, 4, PW, BH>(
-                bins,
-                &mut band,
-                &mut depth,
-                DepthState::LESS_WRITE,
-                fb,
-            )
+            .render_3d(bins, &mut band, &mut depth, DepthState::LESS_WRITE, Affine, fb)
             .map_err(|_| Error::InvalidParameter)
     })
 }
@@ -454,22 +443,22 @@ fn per_band<T: Scalar, const BH: usize>(
         let mut bins = heapless::Vec::<ScreenTriangle<4>, PBINS>::new();
         let mut cache = Box::new(VertexCache::<T, 4, 8>::new());
         let mut pb = *p;
-        let r = Renderer::new(PH as u32, Gray8::new(0))
-            .render_3d_per_band::<_, Depth16, Affine, _, 4, PW, BH, PBINS>(
-                &mut bins,
-                |y0, y1, bins| {
-                    pb.rows = Some((y0, y1 - 1));
-                    if cached {
-                        pb.draw_valid_mesh_cached(mesh, model, Gray8::new(200), &mut cache, bins).map(|_| ())
-                    } else {
-                        pb.draw_valid_mesh(mesh, model, Gray8::new(200), bins).map(|_| ())
-                    }
-                },
-                &mut band,
-                &mut depth,
-                DepthState::LESS_WRITE,
-                fb,
-            );
+        let r = Renderer::new(PH as u32, Gray8::new(0)).render_3d_per_band(
+            &mut bins,
+            |y0, y1, bins| {
+                pb.rows = Some((y0, y1 - 1));
+                if cached {
+                    pb.draw_valid_mesh_cached(mesh, model, Gray8::new(200), &mut cache, bins).map(|_| ())
+                } else {
+                    pb.draw_valid_mesh(mesh, model, Gray8::new(200), bins).map(|_| ())
+                }
+            },
+            &mut band,
+            &mut depth,
+            DepthState::LESS_WRITE,
+            Affine,
+            fb,
+        );
         match r {
             Ok(()) => Ok(()),
             Err(RenderError::Input(e)) => Err(e),
@@ -543,13 +532,7 @@ fn every_path<T: Scalar>(
         let mut band = Box::new(Band::<Gray8, PW, 16>::new(Gray8::new(0)));
         let mut depth = Box::new(DepthBand::<Depth16, PW, 16>::new());
         Renderer::new(PH as u32, Gray8::new(0))
-            .render_3d::<_, Depth16, Affine, 4, PW, 16>(
-                &bins,
-                &mut band,
-                &mut depth,
-                DepthState::DISABLED,
-                fb,
-            )
+            .render_3d(&bins, &mut band, &mut depth, DepthState::DISABLED, Affine, fb)
             .map_err(|_| Error::InvalidParameter)
     })?;
     Ok((images[0].clone()?, cross))

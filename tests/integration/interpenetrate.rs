@@ -92,13 +92,7 @@ fn check_pairs<F: DepthFormat>(rng: &mut Rng, pairs: usize) -> Stats {
         let mut band = Box::new(Band::<Gray8, W, 16>::new(BG));
         let mut depth = Box::new(DepthBand::<F, W, 16>::new());
         Renderer::new(H as u32, BG)
-            .render_3d::<_, F, PerspectiveCorrect, 4, W, 16>(
-                &t,
-                &mut band,
-                &mut depth,
-                DepthState::LESS_WRITE,
-                &mut fb,
-            )
+            .render_3d(&t, &mut band, &mut depth, DepthState::LESS_WRITE, PerspectiveCorrect, &mut fb)
             .unwrap();
         let mut winners = [false; 2];
         for y in 0..H as i32 {

@@ -103,13 +103,7 @@ pub fn plain_3d<const H: usize>(angle: f32) -> Vec<Rgb565> {
     let mut fb = Framebuffer::new(W as u32, HEIGHT, Rgb565::BLACK);
     let (mut band, mut depth) = (Band::<Rgb565, W, H>::new(BG), DepthBand::<Depth16, W, H>::new());
     Renderer::new(HEIGHT, BG)
-        .render_3d::<_, _, PerspectiveCorrect, 4, W, H>(
-            &bins(angle),
-            &mut band,
-            &mut depth,
-            DepthState::LESS_WRITE,
-            &mut fb,
-        )
+        .render_3d(&bins(angle), &mut band, &mut depth, DepthState::LESS_WRITE, PerspectiveCorrect, &mut fb)
         .unwrap();
     fb.pixels
 }

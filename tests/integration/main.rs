@@ -27,6 +27,8 @@
 //! - 3D: `depth3d`, `zfight`, `perspective`, `clip3d_raster`, `interpenetrate`, `pipeline3d` (references in `ref3d`, `clip3d_ref`).
 //! - `antialias`, `antialias_images`: anti-aliasing (`microraster::aa`): coverage vs exact area,
 //!   shared edges, uniform meshes, band invariance, modes, ranges.
+//! - `view3d`: the one-call 3D front draws what the explicit API draws, for every band
+//!   height; its defaults (culling, lighting, winding check) and errors.
 //! - `framebuffer`: a recording host `DrawTarget` used by the suites above.
 
 mod antialias;
@@ -68,6 +70,7 @@ mod triangles_exact;
 mod triangles_float;
 mod triangles_skia;
 mod varyings;
+mod view3d;
 mod watertight;
 mod watertight_clip;
 mod zfight;

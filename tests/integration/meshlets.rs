@@ -148,7 +148,7 @@ fn binned<T: Scalar, M: Interpolation, const BH: usize>(
     let mut fb = Framebuffer::new(W as u32, H, BG);
     let (mut band, mut depth) = (Band::<Rgb565, W, BH>::new(BG), DepthBand::<Depth16, W, BH>::new());
     Renderer::new(H, BG)
-        .render_3d::<_, _, M, 4, W, BH>(&bins, &mut band, &mut depth, DepthState::LESS_WRITE, &mut fb)
+        .render_3d(&bins, &mut band, &mut depth, DepthState::LESS_WRITE, M::default(), &mut fb)
         .unwrap();
     fb.pixels
 }

@@ -20,13 +20,7 @@ fn per_frame<T: Scalar>(angle: f32) -> Vec<Rgb565> {
     let mut fb = Framebuffer::new(W as u32, H, Rgb565::BLACK);
     let (mut band, mut depth) = (Band::<Rgb565, W, 8>::new(Rgb565::BLACK), DepthBand::<Depth16, W, 8>::new());
     Renderer::new(H, Rgb565::BLACK)
-        .render_3d::<_, _, PerspectiveCorrect, 4, W, 8>(
-            &bins,
-            &mut band,
-            &mut depth,
-            DepthState::LESS_WRITE,
-            &mut fb,
-        )
+        .render_3d(&bins, &mut band, &mut depth, DepthState::LESS_WRITE, PerspectiveCorrect, &mut fb)
         .unwrap();
     fb.pixels
 }
@@ -38,7 +32,7 @@ fn per_band<T: Scalar, const N: usize>(angle: f32) -> (Vec<Rgb565>, usize) {
     let (mut band, mut depth) = (Band::<Rgb565, W, 8>::new(Rgb565::BLACK), DepthBand::<Depth16, W, 8>::new());
     let mut most = 0;
     Renderer::new(H, Rgb565::BLACK)
-        .render_3d_per_band::<_, _, PerspectiveCorrect, _, 4, W, 8, N>(
+        .render_3d_per_band(
             &mut bins,
             |y0, y1, bins| {
                 pipeline.rows = Some((y0, y1 - 1));
@@ -49,6 +43,7 @@ fn per_band<T: Scalar, const N: usize>(angle: f32) -> (Vec<Rgb565>, usize) {
             &mut band,
             &mut depth,
             DepthState::LESS_WRITE,
+            PerspectiveCorrect,
             &mut fb,
         )
         .unwrap();
@@ -76,12 +71,13 @@ fn per_band_reports_full_bins_as_an_error() {
     let mut bins = heapless::Vec::<_, 4>::new();
     let mut fb = Framebuffer::new(W as u32, H, Rgb565::BLACK);
     let (mut band, mut depth) = (Band::<Rgb565, W, 8>::new(Rgb565::BLACK), DepthBand::<Depth16, W, 8>::new());
-    let r = Renderer::new(H, Rgb565::BLACK).render_3d_per_band::<_, _, Affine, _, 4, W, 8, 4>(
+    let r = Renderer::new(H, Rgb565::BLACK).render_3d_per_band(
         &mut bins,
         |_, _, bins| Scene3d.draw::<f32, Rgb565, 4, 4>(&pipeline, 0.3, bins).map(|_| ()),
         &mut band,
         &mut depth,
         DepthState::LESS_WRITE,
+        Affine,
         &mut fb,
     );
     let Err(microraster::RenderError::Input(microraster::Error::CapacityExceeded { needed, capacity: 4 })) =

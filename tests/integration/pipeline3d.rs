@@ -32,7 +32,7 @@ fn render<F: DepthFormat, M: Interpolation, const H: usize>(bins: &[ScreenTriang
     let mut band = Box::new(Band::<Rgb565, W, H>::new(BG));
     let mut depth = Box::new(DepthBand::<F, W, H>::new());
     Renderer::new(HEIGHT as u32, BG)
-        .render_3d::<_, F, M, 4, W, H>(bins, &mut band, &mut depth, DepthState::LESS_WRITE, &mut fb)
+        .render_3d(bins, &mut band, &mut depth, DepthState::LESS_WRITE, M::default(), &mut fb)
         .unwrap();
     // One fill_contiguous per band, full width, consecutive, the last one short.
     assert_eq!(fb.contiguous.len(), HEIGHT.div_ceil(H), "band count for H = {H}");

@@ -155,21 +155,9 @@ fn render<const S: u32, const H: usize>(
     let mut depth = Box::new(DepthBand::<Depth16, FW, H>::new());
     let r = Renderer::new(FH as u32, bg);
     if perspective {
-        r.render_3d::<_, Depth16, PerspectiveCorrect, S, FW, H>(
-            bins,
-            &mut band,
-            &mut depth,
-            DepthState::LESS_WRITE,
-            &mut fb,
-        )
+        r.render_3d(bins, &mut band, &mut depth, DepthState::LESS_WRITE, PerspectiveCorrect, &mut fb)
     } else {
-        r.render_3d::<_, Depth16, Affine, S, FW, H>(
-            bins,
-            &mut band,
-            &mut depth,
-            DepthState::LESS_WRITE,
-            &mut fb,
-        )
+        r.render_3d(bins, &mut band, &mut depth, DepthState::LESS_WRITE, Affine, &mut fb)
     }
     .unwrap();
     assert!(fb.writes.iter().all(|&w| w == 1), "a frame pixel sent {:?} times", fb.writes.iter().max());

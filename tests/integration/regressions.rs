@@ -90,13 +90,7 @@ fn viewport_smaller_than_frame_is_not_overdrawn() {
     let mut band = Box::new(Band::<Gray8, W, 16>::new(Gray8::new(0)));
     let mut depth = Box::new(DepthBand::<Depth16, W, 16>::new());
     Renderer::new(H as u32, Gray8::new(0))
-        .render_3d::<_, Depth16, Affine, 4, W, 16>(
-            &bins,
-            &mut band,
-            &mut depth,
-            DepthState::LESS_WRITE,
-            &mut fb,
-        )
+        .render_3d(&bins, &mut band, &mut depth, DepthState::LESS_WRITE, Affine, &mut fb)
         .unwrap();
     let outside: Vec<(usize, usize)> = (0..H)
         .flat_map(|y| (0..W).map(move |x| (x, y)))

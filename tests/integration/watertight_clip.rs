@@ -169,13 +169,7 @@ fn hits_3d(p: &Pipeline<f32, 4>, pos: &[[f32; 3]], idx: &[[u16; 3]]) -> (Vec<u32
     let mut band = Box::new(Band::<Gray8, { W as usize }, 16>::new(Gray8::new(0)));
     let mut depth = Box::new(DepthBand::<NoDepth, { W as usize }, 16>::new());
     Renderer::new(H as u32, Gray8::new(0))
-        .render_3d::<_, NoDepth, Affine, 4, { W as usize }, 16>(
-            &bins,
-            &mut band,
-            &mut depth,
-            DepthState::DISABLED,
-            &mut fb,
-        )
+        .render_3d(&bins, &mut band, &mut depth, DepthState::DISABLED, Affine, &mut fb)
         .unwrap();
     for (i, (&c, &px)) in h.iter().zip(&fb.pixels).enumerate() {
         assert_eq!(c > 0, px == Gray8::new(255), "pixel {i}: spans and renderer disagree");

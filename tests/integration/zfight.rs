@@ -98,7 +98,7 @@ fn near_wins<F: DepthFormat>(stage: &Stage, z: f64, tilt: f64, delta: f64) -> bo
     let mut band = Box::new(Band::<Rgb565, W, H>::new(BG));
     let mut depth = Box::new(DepthBand::<F, W, H>::new());
     Renderer::new(H as u32, BG)
-        .render_3d::<_, F, Affine, 4, W, H>(&bins, &mut band, &mut depth, DepthState::LESS_WRITE, &mut fb)
+        .render_3d(&bins, &mut band, &mut depth, DepthState::LESS_WRITE, Affine, &mut fb)
         .unwrap();
     assert!(!fb.pixels.contains(&BG), "a pixel is not covered by the quads");
     fb.pixels.iter().all(|&c| c == NEAR)

@@ -152,11 +152,12 @@ mod firmware {
         let pipeline = Scene3d::pipeline::<f32, S>(W as u32, H)?;
         bins.clear();
         Scene3d.draw::<f32, Rgb565, S, BINS>(&pipeline, angle, bins)?;
-        Renderer::new(H, BACKGROUND).render_3d::<_, Depth16, PerspectiveCorrect, S, W, BAND>(
+        Renderer::new(H, BACKGROUND).render_3d(
             bins,
             band,
             depth,
             DepthState::LESS_WRITE,
+            PerspectiveCorrect,
             display,
         )
     }

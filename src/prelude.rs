@@ -1,0 +1,40 @@
+//! The names most programs need, in one `use microraster::prelude::*;`
+//! (28 with the default `fragment` feature, 20 without):
+//!
+//! - the 3D front: [`View3d`] (and [`View240x240`] for the common ST7789
+//!   display), [`Camera`], [`Object`], the built-in [`CUBE`];
+//! - the band renderer and its 2D scene: [`Band`], [`Renderer`],
+//!   [`Primitive`], [`Triangle`], [`Line`], [`SubPoint`], [`Cull`];
+//! - errors: [`Error`], [`RenderError`];
+//! - the explicit 3D API's usual choices: [`Pipeline`], [`DepthBand`],
+//!   [`DepthState`], [`Depth16`], and the interpolations [`Affine`] and
+//!   [`PerspectiveCorrect`] (values handed to the render calls);
+//! - with the `fragment` feature, 2D shapes ([`Shape`], [`ShapeStyle`],
+//!   [`Rect`], [`RoundedRect`], [`Circle`], [`Polyline`]) and sprites
+//!   ([`Sprite`], [`Texture`]).
+//!
+//! Everything else stays in its module. `embedded_graphics::prelude` also
+//! exports a trait named `Primitive`: glob-importing both preludes is
+//! fine (e-g's trait methods still work), but write `microraster::Primitive`
+//! to name the scene type.
+//!
+//! ```
+//! use embedded_graphics::pixelcolor::{Rgb565, RgbColor};
+//! use microraster::prelude::*;
+//! # let mut display = embedded_graphics::mock_display::MockDisplay::new();
+//! # display.set_allow_overdraw(true);
+//! let mut view = View3d::<Rgb565, 64, 8>::new(Rgb565::BLACK);
+//! let camera = Camera::look_at([0.0, 2.0, 5.0], [0.0, 0.0, 0.0]);
+//! view.draw(&camera, &[Object::new(&CUBE, Rgb565::GREEN).rotate_y(0.5)], &mut display)?;
+//! # Ok::<(), RenderError<core::convert::Infallible>>(())
+//! ```
+
+pub use crate::depth::{Depth16, DepthBand, DepthState};
+pub use crate::pipeline::Pipeline;
+pub use crate::raster3d::{Affine, PerspectiveCorrect};
+#[cfg(feature = "fragment")]
+pub use crate::shape::{Circle, Polyline, Rect, RoundedRect, Shape, ShapeStyle};
+#[cfg(feature = "fragment")]
+pub use crate::texture::{Sprite, Texture};
+pub use crate::view3d::{CUBE, Camera, Object, View3d, View240x240};
+pub use crate::{Band, Cull, Error, Line, Primitive, RenderError, Renderer, SubPoint, Triangle};

@@ -1,0 +1,287 @@
+//! The one-call 3D front: a [`Camera`], [`Object`]s (a mesh, a place, a
+//! colour) and a [`View3d`] that owns the band buffers and draws a frame
+//! into any `embedded-graphics` display with [`View3d::draw`].
+//!
+//! Defaults, each one call to change: lighting on (ambient plus one light
+//! from the upper left behind the viewer, [`DEFAULT_LIGHTING`]), back faces
+//! culled (with every mesh's winding checked against its normals, so a mesh
+//! wound the wrong way is an error, not a dark inside), Gouraud shading,
+//! 16-bit depth, perspective-correct colour, 4 subpixel bits, the `f32`
+//! vertex path. Everything here is built on the explicit API
+//! ([`Pipeline`], [`Renderer::render_3d_direct`]) and draws the same pixels
+//! (`tests/integration/view3d.rs`); use that API for other depth formats,
+//! the `Fx` path, fragment shaders or anti-aliasing.
+//!
+//! ```
+//! use embedded_graphics::pixelcolor::{Rgb565, RgbColor};
+//! use microraster::view3d::{CUBE, Camera, Object, View240x240};
+//! # use embedded_graphics::framebuffer::{Framebuffer, buffer_size};
+//! # use embedded_graphics::pixelcolor::raw::{LittleEndian, RawU16};
+//! # let mut display = Framebuffer::<Rgb565, RawU16, LittleEndian, 240, 240, { buffer_size::<Rgb565>(240, 240) }>::new();
+//!
+//! let mut view = View240x240::new(Rgb565::BLACK); // 240 wide, 16-row bands
+//! let camera = Camera::look_at([0.0, 2.0, 5.0], [0.0, 0.0, 0.0]);
+//! for frame in 0..3 {
+//!     let cube = Object::new(&CUBE, Rgb565::CYAN).rotate_y(frame as f32 * 0.1);
+//!     view.draw(&camera, &[cube], &mut display)?;
+//! }
+//! # use embedded_graphics::{image::GetPixel, prelude::Point};
+//! # assert_ne!(display.pixel(Point::new(120, 120)), Some(Rgb565::BLACK));
+//! # assert_eq!(display.pixel(Point::new(2, 2)), Some(Rgb565::BLACK));
+//! # Ok::<(), microraster::RenderError<core::convert::Infallible>>(())
+//! ```
+
+mod camera;
+mod cube;
+mod object;
+
+pub use camera::{Camera, DEFAULT_PROJECTION, Projection};
+pub use cube::CUBE;
+pub use object::{Geometry, Object};
+
+use embedded_graphics_core::draw_target::DrawTarget;
+use embedded_graphics_core::pixelcolor::Rgb565;
+
+use crate::band::Band;
+use crate::depth::{Depth16, DepthBand, DepthState};
+use crate::edge::Cull;
+use crate::light::Lighting;
+use crate::math::Vec3;
+use crate::mesh::ValidMesh;
+use crate::pipeline::{ClusterCache, Pipeline, Shade};
+use crate::raster3d::PerspectiveCorrect;
+use crate::{Error, Interpolate, MAX_FRAME_DIM, RenderError, Renderer};
+
+/// The front's lighting unless told otherwise: ambient 0.25 and a light of
+/// strength 0.75 towards (−0.36, 0.48, 0.8) in eye space (above left,
+/// behind the viewer), so the faces of a box turned towards the camera all
+/// differ in brightness.
+pub const DEFAULT_LIGHTING: Lighting<f32> =
+    Lighting { ambient: 0.25, direction: Vec3::new(-0.36, 0.48, 0.8), diffuse: 0.75, specular: None };
+
+/// A [`View3d`] for 240 × 240 Rgb565 displays (ST7789, GC9A01): 16-row
+/// bands, 7,680 B of colour and 7,680 B of depth.
+///
+/// ```
+/// use embedded_graphics::pixelcolor::{Rgb565, RgbColor};
+/// use microraster::view3d::View240x240;
+/// let view = View240x240::new(Rgb565::BLACK);
+/// assert!(core::mem::size_of_val(&view) < 240 * 16 * 4 + 4096);
+/// ```
+pub type View240x240 = View3d<Rgb565, 240, 16>;
+
+/// A [`View3d`] for 320 × 240 Rgb565 displays (ILI9341 landscape): 16-row
+/// bands.
+///
+/// ```
+/// use embedded_graphics::pixelcolor::{Rgb565, RgbColor};
+/// use microraster::view3d::View320x240;
+/// let view = View320x240::new(Rgb565::WHITE);
+/// assert_eq!(view.background(), Rgb565::WHITE);
+/// ```
+pub type View320x240 = View3d<Rgb565, 320, 16>;
+
+/// A [`View3d`] for 160 × 128 Rgb565 displays (ST7735): 8-row bands.
+///
+/// ```
+/// use embedded_graphics::pixelcolor::{Rgb565, RgbColor};
+/// use microraster::{Cull, view3d::View160x128};
+/// let mut view = View160x128::new(Rgb565::BLACK);
+/// view.set_cull(Cull::None); // an open mesh, seen from both sides
+/// assert_eq!(view.cull(), Cull::None);
+/// ```
+pub type View160x128 = View3d<Rgb565, 160, 8>;
+
+/// The buffers and settings of 3D frames `W` pixels wide drawn in bands of
+/// `H` rows: the colour [`Band`], its 16-bit [`DepthBand`] and the
+/// [`ClusterCache`] of meshlet meshes. The frame is as tall as the display
+/// ([`View3d::set_height`] to use fewer rows); rows, not columns, are
+/// banded, so `W` must not exceed the display's width.
+///
+/// Size: `W × H × 4` bytes plus about 3.3 KB (the cluster cache).
+///
+/// ```
+/// use embedded_graphics::mock_display::MockDisplay;
+/// use embedded_graphics::pixelcolor::{Rgb565, RgbColor};
+/// use microraster::view3d::{CUBE, Camera, Object, View3d};
+/// let mut view = View3d::<Rgb565, 64, 8>::new(Rgb565::BLACK);
+/// let mut display = MockDisplay::new();
+/// display.set_allow_overdraw(true);
+/// let camera = Camera::look_at([3.0, 3.0, 3.0], [0.0, 0.0, 0.0]);
+/// view.draw(&camera, &[Object::new(&CUBE, Rgb565::RED)], &mut display)?;
+/// assert_ne!(display.get_pixel(embedded_graphics::prelude::Point::new(32, 32)), Some(Rgb565::BLACK));
+/// # Ok::<(), microraster::RenderError<core::convert::Infallible>>(())
+/// ```
+pub struct View3d<C, const W: usize, const H: usize> {
+    band: Band<C, W, H>,
+    depth: DepthBand<Depth16, W, H>,
+    cache: ClusterCache<f32, 4>,
+    background: C,
+    height: Option<u32>,
+    lighting: Option<Lighting<f32>>,
+    cull: Cull,
+    shade: Shade,
+}
+
+impl<C: Interpolate, const W: usize, const H: usize> View3d<C, W, H> {
+    /// Buffers for frames cleared to `background`, with the defaults of the
+    /// [module docs](self).
+    pub const fn new(background: C) -> Self {
+        View3d {
+            band: Band::new(background),
+            depth: DepthBand::new(),
+            cache: ClusterCache::new(),
+            background,
+            height: None,
+            lighting: Some(DEFAULT_LIGHTING),
+            cull: Cull::Clockwise,
+            shade: Shade::Gouraud,
+        }
+    }
+
+    /// Frames of `rows` rows from the display's top (`None`, the default:
+    /// as tall as the display).
+    pub fn set_height(&mut self, rows: Option<u32>) {
+        self.height = rows;
+    }
+
+    /// The lighting (`None`: material colours unlit). A bad light (a zero or
+    /// non-finite direction) fails the frame, as in
+    /// [`Lighting::validate`]. For a highlight:
+    /// `view.set_lighting(Some(DEFAULT_LIGHTING.with_specular(0.5, 16)))`.
+    pub fn set_lighting(&mut self, lighting: Option<Lighting<f32>>) {
+        self.lighting = lighting;
+    }
+
+    /// Which screen winding is dropped ([`Cull::Clockwise`], back faces, by
+    /// default; [`Cull::None`] for open meshes seen from both sides).
+    pub fn set_cull(&mut self, cull: Cull) {
+        self.cull = cull;
+    }
+
+    /// Gouraud (the default) or flat shading.
+    pub fn set_shade(&mut self, shade: Shade) {
+        self.shade = shade;
+    }
+
+    /// The colour frames are cleared to.
+    pub fn background(&self) -> C {
+        self.background
+    }
+
+    /// The lighting.
+    pub fn lighting(&self) -> Option<Lighting<f32>> {
+        self.lighting
+    }
+
+    /// The cull mode.
+    pub fn cull(&self) -> Cull {
+        self.cull
+    }
+
+    /// The vertex stage and renderer this view draws a `W × rows` frame
+    /// with: the explicit-API equivalent of a [`View3d::draw`] call, for
+    /// drawing more into the same frame through
+    /// [`Renderer::render_3d_direct`], or for comparing.
+    ///
+    /// Errors: [`Error::InvalidFrameSize`] for 0 or more than
+    /// [`MAX_FRAME_DIM`] rows, then those of the camera ([`Camera::view`]
+    /// and its lens, as [`Pipeline::perspective`] and
+    /// [`transform::orthographic`](crate::math::transform::orthographic)).
+    ///
+    /// ```
+    /// use embedded_graphics::pixelcolor::{Rgb565, RgbColor};
+    /// use microraster::view3d::{Camera, View240x240};
+    /// let view = View240x240::new(Rgb565::BLACK);
+    /// let (pipeline, renderer) = view.pipeline(&Camera::look_at([0.0, 0.0, 4.0], [0.0; 3]), 240)?;
+    /// assert_eq!((renderer.height(), pipeline.lighting.is_some()), (240, true));
+    /// # Ok::<(), microraster::Error>(())
+    /// ```
+    pub fn pipeline(&self, camera: &Camera, rows: u32) -> Result<(Pipeline<f32, 4>, Renderer<C>), Error> {
+        // Size first: a zero-size display is a frame-size error, not a lens one.
+        if rows == 0 || rows > MAX_FRAME_DIM || W as u32 > MAX_FRAME_DIM {
+            return Err(Error::InvalidFrameSize);
+        }
+        let mut p = camera.pipeline(W as u32, rows, self.lighting)?;
+        (p.cull, p.shade) = (self.cull, self.shade);
+        Ok((p, Renderer::new(rows, self.background)))
+    }
+
+    /// Draws one frame of `objects` seen by `camera` into `display`, band
+    /// by band: each band is cleared, every object's triangles that touch
+    /// it are drawn straight into it (no bins: the vertex stage runs per
+    /// band, [`Pipeline::rows`] set to the band's rows; meshlet meshes go
+    /// through [`Pipeline::draw_meshlets`]), and the band is sent with one
+    /// `fill_contiguous`. The image does not depend on `H`.
+    ///
+    /// Errors (nothing is sent unless stated): [`Error::InvalidFrameSize`]
+    /// for a display (or [`View3d::set_height`]) of 0 rows or more than
+    /// [`MAX_FRAME_DIM`]; the camera's errors ([`View3d::pipeline`]); a mesh's
+    /// ([`Mesh::check_winding`](crate::mesh::Mesh::check_winding), including
+    /// [`Error::WindingMismatch`]); [`Error::FrameOutsideTarget`] if `W`
+    /// columns or the frame's rows do not fit the display; errors of the
+    /// vertex stage in a band ([`Pipeline::draw_valid_mesh`], for example
+    /// [`Error::InvalidParameter`] for a singular model, [`Error::InvalidMeshlet`]),
+    /// which stop the frame after the bands already sent; and
+    /// [`RenderError::Target`] from the display.
+    pub fn draw<D>(
+        &mut self,
+        camera: &Camera,
+        objects: &[Object<'_, C>],
+        display: &mut D,
+    ) -> Result<(), RenderError<D::Error>>
+    where
+        D: DrawTarget<Color = C>,
+    {
+        let rows = self.height.unwrap_or(display.bounding_box().size.height);
+        let (pipe, renderer) = self.pipeline(camera, rows)?;
+        // Whole-mesh checks once per frame, before any band is sent.
+        for o in objects {
+            match o.geometry() {
+                Geometry::Mesh(m) => m.check_winding()?,
+                Geometry::Valid(m) => m.mesh().check_winding()?,
+                Geometry::Meshlets(_) => {}
+            }
+        }
+        let cache = &mut self.cache;
+        renderer.render_3d_direct(
+            &mut self.band,
+            &mut self.depth,
+            DepthState::LESS_WRITE,
+            PerspectiveCorrect,
+            display,
+            |band| {
+                let mut banded = pipe;
+                banded.rows = Some(band.rows());
+                for o in objects {
+                    let (model, color) = (o.model(), o.color());
+                    let mut into_band = |t| {
+                        band.draw(&t);
+                        Ok(())
+                    };
+                    match o.geometry() {
+                        Geometry::Mesh(m) => {
+                            banded.valid_mesh_into(&ValidMesh::trusted(m), &model, color, &mut into_band)?
+                        }
+                        Geometry::Valid(m) => banded.valid_mesh_into(&m, &model, color, &mut into_band)?,
+                        Geometry::Meshlets(m) => pipe.draw_meshlets(m, &model, color, cache, band)?,
+                    };
+                }
+                Ok(())
+            },
+        )
+    }
+}
+
+impl<C: core::fmt::Debug, const W: usize, const H: usize> core::fmt::Debug for View3d<C, W, H> {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.debug_struct("View3d")
+            .field("size", &(W, H))
+            .field("background", &self.background)
+            .field("height", &self.height)
+            .field("lighting", &self.lighting)
+            .field("cull", &self.cull)
+            .field("shade", &self.shade)
+            .finish_non_exhaustive()
+    }
+}
