@@ -68,7 +68,7 @@
 //! let mut band = Band::<Rgb888, 16, 16>::new(Rgb888::BLACK);
 //! let mut depth = DepthBand::<NoDepth, 16, 16>::new();
 //! let mut view = band.view(0, 16, Rgb888::BLACK);
-//! draw_fragments::<Rgb888, NoDepth, 4, 16>(&tri, &mut view, depth.rows_mut(16), DepthState::DISABLED, |x, y| {
+//! draw_fragments(&tri, &mut view, &mut depth.rows_mut(16), DepthState::DISABLED, |x, y| {
 //!     let texel = TEX.sample(Sampler::NEAREST_WRAP, uv.at(x, y));
 //!     Some(from_rgb8(modulate(texel, tint)))
 //! });
