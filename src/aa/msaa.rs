@@ -83,7 +83,9 @@ where
     const { assert!(mode_ok::<A>(), "anti-aliasing needs a supported N") };
     let scaled = scale_triangle(tri, A::N)?;
     if let Some(shader) = PixelShader::<C>::new::<M, S>(tri) {
-        draw_scaled::<A, C, F, S, SW>(&scaled, Cull::None, samples, &mut *depth, state, |x, y| shader.at(x, y));
+        draw_scaled::<A, C, F, S, SW>(&scaled, Cull::None, samples, &mut *depth, state, |x, y| {
+            shader.at(x, y)
+        });
     }
     Ok(())
 }

@@ -227,7 +227,14 @@ impl<C: Interpolate> Renderer<C> {
                     if A::SHADE_PER_PIXEL {
                         let Some(shader) = PixelShader::<C>::new::<M, S>(tri) else { continue };
                         let shade = |x, y| shader.at(x, y);
-                        msaa::draw_scaled::<A, C, F, S, SW>(&scaled, Cull::None, &mut sv, &mut rows, state, shade);
+                        msaa::draw_scaled::<A, C, F, S, SW>(
+                            &scaled,
+                            Cull::None,
+                            &mut sv,
+                            &mut rows,
+                            state,
+                            shade,
+                        );
                     } else {
                         draw_triangle(&scaled, &mut sv, &mut rows, state, interpolation);
                     }

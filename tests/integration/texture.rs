@@ -246,10 +246,10 @@ fn draw_textured<M: Interpolation, Fi: Filter>(
     let varyings = Varyings::<2>::new::<M, 4>(tri, uv).unwrap()?;
     let mut band = Box::new(Band::<Rgb888, W, H>::new(Rgb888::BLACK));
     let mut depth = DepthBand::<NoDepth, W, H>::new();
-    draw_fragments::<Rgb888, NoDepth, 4, W>(
+    draw_fragments(
         tri,
         &mut band.view(0, H, Rgb888::BLACK),
-        depth.rows_mut(H),
+        &mut depth.rows_mut(H),
         DepthState::DISABLED,
         |x, y| Some(from_rgb8(tex.sample(sampler, varyings.at(x, y)))),
     );

@@ -170,11 +170,12 @@ mod firmware {
                     let rows = (y1 - y0) as usize;
                     depth.clear(rows);
                     for tri in bins.iter() {
-                        draw_triangle::<_, Depth16, PerspectiveCorrect, S, W>(
+                        draw_triangle(
                             tri,
                             view,
-                            depth.rows_mut(rows),
+                            &mut depth.rows_mut(rows),
                             DepthState::LESS_WRITE,
+                            PerspectiveCorrect,
                         );
                     }
                 })
