@@ -163,7 +163,7 @@ where
     Sh: FragmentShader<C, A> + ?Sized,
 {
     let _ = interp; // a value, so the call needs no turbofish
-    let Some(vary) = Varyings::<A>::new::<M, S>(&t.tri, t.varyings)? else { return Ok(()) };
+    let Some(vary) = Varyings::new(&t.tri, t.varyings, interp)? else { return Ok(()) };
     let base = t.tri.v[0].color;
     crate::varyings::for_each_fragment::<C, F, S, W>(&t.tri, color, &mut *depth, out.depth, |x, y, dst| {
         let frag = Fragment { x, y, varyings: vary.at(x, y), color: base };

@@ -43,7 +43,7 @@ const Q_BITS: u32 = 30;
 /// let v = |x, y| ScreenVertex { pos: SubPoint::<4>::from_pixels(x, y).unwrap(), inv_w: 1 << 30, ..Default::default() };
 /// let tri = ScreenTriangle { v: [v(0, 0), v(16, 0), v(0, 16)], flat: false };
 /// // u runs 0 → 1600 from left to right.
-/// let uv = Varyings::<2>::new::<Affine, 4>(&tri, [[0, 0], [1600, 0], [0, 1600]])?.unwrap();
+/// let uv = Varyings::new(&tri, [[0, 0], [1600, 0], [0, 1600]], Affine)?.unwrap();
 /// assert_eq!(uv.at(7, 0)[0], 750); // centre x = 7.5 px → 7.5 · 100
 /// # Ok::<(), microraster::Error>(())
 /// ```
@@ -54,13 +54,17 @@ pub struct Varyings<const A: usize> {
 }
 
 impl<const A: usize> Varyings<A> {
-    /// Planes through `values[i]` at vertex `i` of `tri`, interpolated as `M`
-    /// says. `Ok(None)` for a zero-area triangle;
+    /// Planes through `values[i]` at vertex `i` of `tri`, interpolated as
+    /// `interp` says ([`Affine`](crate::raster3d::Affine) or
+    /// [`PerspectiveCorrect`](crate::raster3d::PerspectiveCorrect)).
+    /// `Ok(None)` for a zero-area triangle;
     /// [`Error::CoordinateOutOfRange`] for a value beyond [`MAX_VARYING`].
     pub fn new<M: Interpolation, const S: u32>(
         tri: &ScreenTriangle<S>,
         values: [[i32; A]; 3],
+        interp: M,
     ) -> Result<Option<Self>, Error> {
+        let _ = interp; // a value, so the call needs no turbofish
         if values.iter().flatten().any(|v| v.unsigned_abs() > MAX_VARYING as u32) {
             return Err(Error::CoordinateOutOfRange);
         }

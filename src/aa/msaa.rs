@@ -239,7 +239,7 @@ impl<C: Interpolate> PixelShader<C> {
         }
         // Channels are ≤ 255, far inside the varyings' range: no error path.
         let values = tri.v.map(|v| v.color.map(i32::from));
-        Varyings::new::<M, S>(tri, values).ok().flatten().map(PixelShader::Planes)
+        Varyings::new(tri, values, M::default()).ok().flatten().map(PixelShader::Planes)
     }
 
     #[inline]

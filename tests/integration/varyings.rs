@@ -38,8 +38,8 @@ fn affine_and_perspective_varyings_within_derived_bounds() {
             [0, 1, 2].map(|_| if big { rng.range(-(MAX_VARYING as i64), MAX_VARYING as i64) } else { rng.range(-4000, 4000) } as i32)
         });
         let (Some(a), Some(p)) = (
-            Varyings::new::<Affine, 4>(&tri, vals).unwrap(),
-            Varyings::new::<PerspectiveCorrect, 4>(&tri, vals).unwrap(),
+            Varyings::new(&tri, vals, Affine).unwrap(),
+            Varyings::new(&tri, vals, PerspectiveCorrect).unwrap(),
         ) else {
             continue;
         };
@@ -80,7 +80,7 @@ fn affine_and_perspective_varyings_within_derived_bounds() {
     );
     assert!(tris > 2000 && samples > 1_000_000);
     assert_eq!(
-        Varyings::<1>::new::<Affine, 4>(&random_triangle(&mut rng, 2.0), [[MAX_VARYING + 1], [0], [0]]).err(),
+        Varyings::new(&random_triangle(&mut rng, 2.0), [[MAX_VARYING + 1], [0], [0]], Affine).err(),
         Some(microraster::Error::CoordinateOutOfRange)
     );
 }
