@@ -62,7 +62,7 @@ pub struct Fragment<const A: usize> {
     /// Pixel row.
     pub y: i32,
     /// The varyings at the pixel centre, rounded (affine or perspective-correct
-    /// as the draw call's `M` says; error bounds in [`Varyings`]).
+    /// as the draw call's `interp` says; error bounds in [`Varyings`]).
     pub varyings: [i32; A],
     /// Vertex 0's colour channels (the mesh's material colour when the
     /// pipeline has no lighting).

@@ -26,8 +26,9 @@
 //! The narrow accumulators give exactly the values of the `i64` planes (see
 //! [`draw_triangle`]'s helpers): the error bounds below keep every sampled
 //! value in their range. Variants (and the common depth state
-//! [`DepthState::LESS_WRITE`]) are chosen by type parameters, so the loop a
-//! scene does not use is not compiled.
+//! [`DepthState::LESS_WRITE`]) are chosen by type (the depth rows' format,
+//! the interpolation's type), so the loop a scene does not use is not
+//! compiled.
 //!
 //! # Set-up cost
 //! Per triangle and band: the edge functions (for a small triangle in `i32`

@@ -12,7 +12,7 @@
 //!
 //! Colour at the pixel centre: flat triangles use vertex 0's colour; the
 //! others interpolate their vertex colours with [`Varyings`], affine or
-//! perspective-correct as the type parameter `M` says, so the colour is
+//! perspective-correct as the `interp` argument says, so the colour is
 //! within that module's stated bound of the exact value (½ + 2^-7 of a
 //! channel step for affine), and for 2D Gouraud triangles it equals, pixel for
 //! pixel, what the aliased renderer draws where the centre is covered.
