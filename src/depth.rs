@@ -78,6 +78,9 @@
 use crate::{Error, MAX_FRAME_DIM};
 use core::fmt::Debug;
 
+mod rows;
+pub use rows::DepthRows;
+
 mod sealed {
     pub trait Sealed {}
 }
@@ -390,12 +393,6 @@ impl<F: DepthFormat, const W: usize, const H: usize> DepthBand<F, W, H> {
     /// `clear_to(rows, 0)` prepares reversed depth.
     pub fn clear_to(&mut self, rows: usize, z: u32) {
         self.fill(rows, F::from_u32(z));
-    }
-
-    /// The first `rows` rows (at most `H`) for writing, as
-    /// [`draw_triangle`](crate::raster3d::draw_triangle) takes them.
-    pub fn rows_mut(&mut self, rows: usize) -> &mut [[F::Storage; W]] {
-        &mut self.rows[..rows.min(H)]
     }
 
     fn fill(&mut self, rows: usize, v: F::Storage) {

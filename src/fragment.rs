@@ -33,7 +33,7 @@ use crate::texture::div255_round;
 
 use crate::band::BandView;
 use crate::blend::Blend;
-use crate::depth::{DepthFormat, DepthState};
+use crate::depth::{DepthFormat, DepthRows, DepthState};
 use crate::raster3d::{Interpolation, ScreenTriangle};
 use crate::varyings::Varyings;
 use crate::{Error, Interpolate};
@@ -62,7 +62,7 @@ pub struct Fragment<const A: usize> {
     /// Pixel row.
     pub y: i32,
     /// The varyings at the pixel centre, rounded (affine or perspective-correct
-    /// as the draw call's `M` says; error bounds in [`Varyings`]).
+    /// as the draw call's `interp` says; error bounds in [`Varyings`]).
     pub varyings: [i32; A],
     /// Vertex 0's colour channels (the mesh's material colour when the
     /// pipeline has no lighting).
@@ -119,18 +119,41 @@ impl Output<crate::blend::Mix> {
 }
 
 /// Draws `t` into one band: coverage, the depth test of `out`, the shader
-/// per passing pixel, then blending. Interpolation `M` is
-/// [`Affine`](crate::raster3d::Affine) or
-/// [`PerspectiveCorrect`](crate::raster3d::PerspectiveCorrect).
+/// per passing pixel, then blending. The varyings are interpolated as
+/// `interp` says ([`Affine`](crate::raster3d::Affine) or
+/// [`PerspectiveCorrect`](crate::raster3d::PerspectiveCorrect)); `depth`
+/// as for [`draw_triangle`](crate::raster3d::draw_triangle). Every parameter
+/// is inferred from the arguments.
 ///
 /// Errors: [`Error::CoordinateOutOfRange`] for a varying beyond
 /// [`MAX_VARYING`](crate::varyings::MAX_VARYING) (nothing is drawn).
+///
+/// ```
+/// use embedded_graphics_core::pixelcolor::{Gray8, GrayColor};
+/// use microraster::depth::{Depth16, DepthBand};
+/// use microraster::fragment::{FragTriangle, Fragment, Output, draw_fragment_triangle};
+/// use microraster::raster3d::{PerspectiveCorrect, ScreenTriangle, ScreenVertex};
+/// use microraster::{Band, SubPoint};
+/// let v = |x, y| ScreenVertex { pos: SubPoint::<4>::from_pixels(x, y).unwrap(), inv_w: 1 << 30, ..Default::default() };
+/// let tri = ScreenTriangle { v: [v(0, 0), v(8, 0), v(0, 4)], flat: false };
+/// // One varying: 0 at the left vertices, 160 at the right one.
+/// let t = FragTriangle { tri, varyings: [[0], [160], [0]] };
+/// let mut band = Band::<Gray8, 8, 4>::new(Gray8::BLACK);
+/// let mut depth = DepthBand::<Depth16, 8, 4>::new();
+/// let mut view = band.view(0, 4, Gray8::BLACK);
+/// let shader = |f: &Fragment<1>| Gray8::new(f.varyings[0] as u8);
+/// draw_fragment_triangle(&t, &mut view, &mut depth.rows_mut(4), &shader, Output::OPAQUE, PerspectiveCorrect)?;
+/// // Pixel (1, 0), centre x = 1.5: 160 · 1.5 / 8 = 30 (equal 1/w: exact).
+/// assert_eq!(view.pixels().nth(1), Some(Gray8::new(30)));
+/// # Ok::<(), microraster::Error>(())
+/// ```
 pub fn draw_fragment_triangle<C, F, M, B, Sh, const S: u32, const W: usize, const A: usize>(
     t: &FragTriangle<S, A>,
     color: &mut BandView<'_, C, W>,
-    depth: &mut [[F::Storage; W]],
+    depth: &mut DepthRows<'_, F, W>,
     shader: &Sh,
     out: Output<B>,
+    interp: M,
 ) -> Result<(), Error>
 where
     C: Interpolate,
@@ -139,9 +162,10 @@ where
     B: Blend,
     Sh: FragmentShader<C, A> + ?Sized,
 {
-    let Some(vary) = Varyings::<A>::new::<M, S>(&t.tri, t.varyings)? else { return Ok(()) };
+    let _ = interp; // a value, so the call needs no turbofish
+    let Some(vary) = Varyings::new(&t.tri, t.varyings, interp)? else { return Ok(()) };
     let base = t.tri.v[0].color;
-    crate::varyings::for_each_fragment::<C, F, S, W>(&t.tri, color, depth, out.depth, |x, y, dst| {
+    crate::varyings::for_each_fragment::<C, F, S, W>(&t.tri, color, &mut *depth, out.depth, |x, y, dst| {
         let frag = Fragment { x, y, varyings: vary.at(x, y), color: base };
         let Some((src, a)) = shader.shade_or_discard(&frag) else { return false };
         // The default's 255 folds away: the same code as without discard.
@@ -155,16 +179,41 @@ where
 
 /// Draws every triangle of `tris` that touches the band (rows `y0..y1` of
 /// `color`), in order: the body of a
-/// [`Renderer::render_with`](crate::Renderer::render_with) pass.
+/// [`Renderer::render_with`](crate::Renderer::render_with) pass. Arguments
+/// as for [`draw_fragment_triangle`].
 ///
 /// Errors: as [`draw_fragment_triangle`]; the first error stops the pass.
+///
+/// ```
+/// use embedded_graphics::mock_display::MockDisplay;
+/// use embedded_graphics_core::pixelcolor::{Gray8, GrayColor};
+/// use microraster::depth::{Depth16, DepthBand};
+/// use microraster::fragment::{FragTriangle, Fragment, Output, draw_fragment_band};
+/// use microraster::raster3d::{Affine, ScreenTriangle, ScreenVertex};
+/// use microraster::{Band, Renderer, SubPoint};
+/// let v = |x, y| ScreenVertex { pos: SubPoint::<4>::from_pixels(x, y).unwrap(), inv_w: 1 << 30, ..Default::default() };
+/// let tris = [FragTriangle { tri: ScreenTriangle { v: [v(0, 0), v(8, 0), v(0, 8)], flat: false }, varyings: [[90]; 3] }];
+/// let shader = |f: &Fragment<1>| Gray8::new(f.varyings[0] as u8);
+/// let (mut band, mut depth) = (Band::<Gray8, 8, 4>::new(Gray8::BLACK), DepthBand::<Depth16, 8, 4>::new());
+/// let mut display = MockDisplay::new();
+/// let mut result = Ok(());
+/// Renderer::new(8, Gray8::BLACK).render_with(&mut band, &mut display, |view, y0, y1| {
+///     depth.clear((y1 - y0) as usize); // far, each band
+///     let mut rows = depth.rows_mut((y1 - y0) as usize);
+///     result = result.and(draw_fragment_band(&tris, view, &mut rows, &shader, Output::OPAQUE, Affine));
+/// })?;
+/// result?;
+/// assert_eq!(display.get_pixel(embedded_graphics_core::prelude::Point::new(0, 6)), Some(Gray8::new(90)));
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
 #[allow(clippy::too_many_arguments)]
 pub fn draw_fragment_band<C, F, M, B, Sh, const S: u32, const W: usize, const A: usize>(
     tris: &[FragTriangle<S, A>],
     color: &mut BandView<'_, C, W>,
-    depth: &mut [[F::Storage; W]],
+    depth: &mut DepthRows<'_, F, W>,
     shader: &Sh,
     out: Output<B>,
+    interp: M,
 ) -> Result<(), Error>
 where
     C: Interpolate,
@@ -177,7 +226,7 @@ where
     for t in tris {
         let (lo, hi) = t.rows();
         if lo < y1 && hi >= y0 {
-            draw_fragment_triangle::<C, F, M, B, Sh, S, W, A>(t, color, depth, shader, out)?;
+            draw_fragment_triangle(t, color, depth, shader, out, interp)?;
         }
     }
     Ok(())

@@ -26,8 +26,9 @@
 //! The narrow accumulators give exactly the values of the `i64` planes (see
 //! [`draw_triangle`]'s helpers): the error bounds below keep every sampled
 //! value in their range. Variants (and the common depth state
-//! [`DepthState::LESS_WRITE`]) are chosen by type parameters, so the loop a
-//! scene does not use is not compiled.
+//! [`DepthState::LESS_WRITE`]) are chosen by type (the depth rows' format,
+//! the interpolation's type), so the loop a scene does not use is not
+//! compiled.
 //!
 //! # Set-up cost
 //! Per triangle and band: the edge functions (for a small triangle in `i32`
@@ -40,7 +41,7 @@
 
 use crate::attr::{COLOR_FRAC, Plane, PlaneFrame, PlaneSetup, channel};
 use crate::band::BandView;
-use crate::depth::{DepthFormat, DepthState, DepthTest};
+use crate::depth::{DepthFormat, DepthRows, DepthState, DepthTest};
 use crate::edge::{Cull, Span, SpanRest, TriangleSpans};
 use crate::primitive::{center_rows, reference_pixel};
 use crate::{Interpolate, SubPoint};
@@ -152,19 +153,45 @@ impl Interpolation for PerspectiveCorrect {
     const PERSPECTIVE: bool = true;
 }
 
-/// Rasterizes `tri` into a band's colour and depth rows. `depth` holds the
-/// depth rows of the view's rows, first to last; a row the slice lacks is not
-/// drawn (for [`NoDepth`](crate::depth::NoDepth) pass any slice).
+/// Rasterizes `tri` into a band's colour and depth rows, colour
+/// interpolated as `interp` says ([`Affine`] or [`PerspectiveCorrect`]).
+/// `depth` holds the depth rows of the view's rows, first to last
+/// ([`DepthBand::rows_mut`](crate::depth::DepthBand::rows_mut)); a row it
+/// lacks is not drawn (with [`NoDepth`](crate::depth::NoDepth), pass
+/// [`DepthRows::none`]). Every parameter is inferred from the arguments.
+///
+/// ```
+/// use embedded_graphics_core::pixelcolor::{Gray8, GrayColor};
+/// use microraster::depth::{Depth16, DepthBand, DepthState};
+/// use microraster::raster3d::{Affine, ScreenTriangle, ScreenVertex, draw_triangle};
+/// use microraster::{Band, SubPoint};
+/// let v = |x, y| ScreenVertex {
+///     pos: SubPoint::<4>::from_pixels(x, y).unwrap(),
+///     color: [200, 0, 0],
+///     inv_w: 1 << 30,
+///     ..Default::default()
+/// };
+/// let tri = ScreenTriangle { v: [v(0, 0), v(8, 0), v(0, 4)], flat: true };
+/// let mut band = Band::<Gray8, 8, 4>::new(Gray8::BLACK);
+/// let mut depth = DepthBand::<Depth16, 8, 4>::new();
+/// let mut view = band.view(0, 4, Gray8::BLACK);
+/// draw_triangle(&tri, &mut view, &mut depth.rows_mut(4), DepthState::LESS_WRITE, Affine);
+/// assert_eq!(view.pixels().next(), Some(Gray8::new(200)));
+/// assert_eq!(depth.get(0, 0), Some(0)); // depth 0: at the near plane
+/// ```
 pub fn draw_triangle<C, F, M, const S: u32, const W: usize>(
     tri: &ScreenTriangle<S>,
     color: &mut BandView<'_, C, W>,
-    depth: &mut [[F::Storage; W]],
+    depth: &mut DepthRows<'_, F, W>,
     state: DepthState,
+    interp: M,
 ) where
     C: Interpolate,
     F: DepthFormat,
     M: Interpolation,
 {
+    let _ = interp; // a value, so the call needs no turbofish
+    let depth: &mut [[F::Storage; W]] = depth;
     use crate::blit::Blitter;
     let v = tri.v.map(|v| v.pos);
     // A small triangle (most of a dense mesh's) keeps its coverage state in

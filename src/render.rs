@@ -336,7 +336,7 @@ where
     F: DepthFormat,
     M: Interpolation,
 {
-    let rows = depth.rows_mut((y1 - y0) as usize);
+    let mut rows = depth.rows_mut((y1 - y0) as usize);
     for r in rows.iter_mut() {
         r.fill(F::FAR);
     }

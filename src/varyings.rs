@@ -22,7 +22,7 @@
 
 use crate::attr::Plane;
 use crate::band::BandView;
-use crate::depth::{DepthFormat, DepthState};
+use crate::depth::{DepthFormat, DepthRows, DepthState};
 use crate::edge::{Cull, TriangleSpans};
 use crate::raster3d::{DEPTH_FRAC, Interpolation, ScreenTriangle, depth_value, normalised_q};
 use crate::{Error, Interpolate};
@@ -43,7 +43,7 @@ const Q_BITS: u32 = 30;
 /// let v = |x, y| ScreenVertex { pos: SubPoint::<4>::from_pixels(x, y).unwrap(), inv_w: 1 << 30, ..Default::default() };
 /// let tri = ScreenTriangle { v: [v(0, 0), v(16, 0), v(0, 16)], flat: false };
 /// // u runs 0 → 1600 from left to right.
-/// let uv = Varyings::<2>::new::<Affine, 4>(&tri, [[0, 0], [1600, 0], [0, 1600]])?.unwrap();
+/// let uv = Varyings::new(&tri, [[0, 0], [1600, 0], [0, 1600]], Affine)?.unwrap();
 /// assert_eq!(uv.at(7, 0)[0], 750); // centre x = 7.5 px → 7.5 · 100
 /// # Ok::<(), microraster::Error>(())
 /// ```
@@ -54,13 +54,17 @@ pub struct Varyings<const A: usize> {
 }
 
 impl<const A: usize> Varyings<A> {
-    /// Planes through `values[i]` at vertex `i` of `tri`, interpolated as `M`
-    /// says. `Ok(None)` for a zero-area triangle;
+    /// Planes through `values[i]` at vertex `i` of `tri`, interpolated as
+    /// `interp` says ([`Affine`](crate::raster3d::Affine) or
+    /// [`PerspectiveCorrect`](crate::raster3d::PerspectiveCorrect)).
+    /// `Ok(None)` for a zero-area triangle;
     /// [`Error::CoordinateOutOfRange`] for a value beyond [`MAX_VARYING`].
     pub fn new<M: Interpolation, const S: u32>(
         tri: &ScreenTriangle<S>,
         values: [[i32; A]; 3],
+        interp: M,
     ) -> Result<Option<Self>, Error> {
+        let _ = interp; // a value, so the call needs no turbofish
         if values.iter().flatten().any(|v| v.unsigned_abs() > MAX_VARYING as u32) {
             return Err(Error::CoordinateOutOfRange);
         }
@@ -124,17 +128,36 @@ fn round_shift(v: i64, s: u32) -> i64 {
 /// `shade(x, y)` for every fragment that passes; the returned colour (if any)
 /// is written, and then its depth (if `state.write`). `None` discards the
 /// fragment: neither colour nor depth is written, so it does not occlude.
+/// `depth` as for [`draw_triangle`](crate::raster3d::draw_triangle); every
+/// parameter is inferred from the arguments.
+///
+/// ```
+/// use embedded_graphics_core::pixelcolor::{Gray8, GrayColor};
+/// use microraster::depth::{DepthRows, DepthState};
+/// use microraster::raster3d::{ScreenTriangle, ScreenVertex};
+/// use microraster::varyings::draw_fragments;
+/// use microraster::{Band, SubPoint};
+/// let v = |x, y| ScreenVertex { pos: SubPoint::<4>::from_pixels(x, y).unwrap(), ..Default::default() };
+/// let tri = ScreenTriangle { v: [v(0, 0), v(4, 0), v(0, 4)], flat: true };
+/// let mut band = Band::<Gray8, 4, 4>::new(Gray8::BLACK);
+/// let mut view = band.view(0, 4, Gray8::BLACK);
+/// // No depth; column 0 discarded.
+/// draw_fragments(&tri, &mut view, &mut DepthRows::none(), DepthState::DISABLED, |x, _| {
+///     (x > 0).then_some(Gray8::WHITE)
+/// });
+/// assert_eq!(view.pixels().take(3).collect::<Vec<_>>(), [Gray8::BLACK, Gray8::WHITE, Gray8::WHITE]);
+/// ```
 pub fn draw_fragments<C, F, const S: u32, const W: usize>(
     tri: &ScreenTriangle<S>,
     color: &mut BandView<'_, C, W>,
-    depth: &mut [[F::Storage; W]],
+    depth: &mut DepthRows<'_, F, W>,
     state: DepthState,
     mut shade: impl FnMut(i32, i32) -> Option<C>,
 ) where
     C: Interpolate,
     F: DepthFormat,
 {
-    for_each_fragment::<C, F, S, W>(tri, color, depth, state, |x, y, p| {
+    for_each_fragment::<C, F, S, W>(tri, color, &mut *depth, state, |x, y, p| {
         shade(x, y).map(|c| *p = c).is_some()
     });
 }

@@ -204,20 +204,20 @@ pub fn draw_passes<
     y0: i32,
     y1: i32,
 ) -> Result<(), Error> {
-    let rows = depth.rows_mut((y1 - y0) as usize);
+    let mut rows = depth.rows_mut((y1 - y0) as usize);
     for r in rows.iter_mut() {
         r.fill(F::FAR);
     }
     for t in &bins.gouraud {
         let (lo, hi) = t.rows();
         if lo < y1 && hi >= y0 {
-            draw_triangle::<C, F, M, S, BW>(t, view, rows, Output::OPAQUE.depth);
+            draw_triangle(t, view, &mut rows, Output::OPAQUE.depth, M::default());
         }
     }
     let phong = Phong { lighting: light() };
-    draw_fragment_band::<C, F, M, _, _, S, BW, 6>(&bins.phong, view, rows, &phong, Output::OPAQUE)?;
+    draw_fragment_band(&bins.phong, view, &mut rows, &phong, Output::OPAQUE, M::default())?;
     let bricks = Textured { texture: &BRICKS, sampler: Sampler::BILINEAR_WRAP };
-    draw_fragment_band::<C, F, M, _, _, S, BW, 5>(&bins.textured, view, rows, &bricks, Output::OPAQUE)?;
+    draw_fragment_band(&bins.textured, view, &mut rows, &bricks, Output::OPAQUE, M::default())?;
     let glass = |f: &Fragment<3>| from_rgb8::<C>(f.varyings.map(|c| c.clamp(0, 255) as u8));
-    draw_fragment_band::<C, F, M, _, _, S, BW, 3>(&bins.glass, view, rows, &glass, Output::translucent(140))
+    draw_fragment_band(&bins.glass, view, &mut rows, &glass, Output::translucent(140), M::default())
 }

@@ -109,11 +109,11 @@ fn render_keeping_depth<M: Interpolation, const H: usize>(
     Renderer::new(HEIGHT, BACKGROUND)
         .render_with(&mut band, &mut canvas, |view, y0, y1| {
             zband.clear(H);
-            let rows = zband.rows_mut((y1 - y0) as usize);
+            let mut rows = zband.rows_mut((y1 - y0) as usize);
             for tri in tris {
                 let (lo, hi) = tri.rows();
                 if lo < y1 && hi >= y0 {
-                    draw_triangle::<Rgb888, Z, M, S, W>(tri, view, rows, DepthState::LESS_WRITE);
+                    draw_triangle(tri, view, &mut rows, DepthState::LESS_WRITE, M::default());
                 }
             }
             for (dst, src) in depth.chunks_exact_mut(W).skip(y0 as usize).zip(rows.iter()) {

@@ -123,13 +123,12 @@ fn frag3d_with<const A: usize, M: Interpolation, Sh: FragmentShader<Rgb565, A>>(
         let mut inner = Ok(());
         Renderer::new(H as u32, BG)
             .render_with(&mut band, fb, |view, y0, y1| {
-                let rows = depth.rows_mut((y1 - y0) as usize);
+                let mut rows = depth.rows_mut((y1 - y0) as usize);
                 for r in rows.iter_mut() {
                     r.fill(Depth16::FAR);
                 }
                 if inner.is_ok() {
-                    inner =
-                        draw_fragment_band::<_, Depth16, M, _, _, 4, W, A>(&bins, view, rows, shader, out);
+                    inner = draw_fragment_band(&bins, view, &mut rows, shader, out, M::default());
                 }
             })
             .map_err(input)?;

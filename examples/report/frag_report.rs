@@ -89,14 +89,7 @@ pub fn texture_error<M: Interpolation, Fi: Filter>(sampler: Sampler<Fi>) -> (f64
         let mut view = band.view(0, W, Rgb888::BLACK);
         let out = Output { depth: DepthState::DISABLED, ..Output::OPAQUE };
         for t in &tris {
-            draw_fragment_triangle::<_, NoDepth, M, _, _, 4, W, 5>(
-                t,
-                &mut view,
-                depth.rows_mut(W),
-                &shader,
-                out,
-            )
-            .unwrap();
+            draw_fragment_triangle(t, &mut view, &mut depth.rows_mut(W), &shader, out, M::default()).unwrap();
         }
     }
     let texel = |x: i64, y: i64| {

@@ -7,7 +7,7 @@ use crate::common::*;
 use crate::timing::median_ns;
 use embedded_graphics_core::pixelcolor::{Rgb565, Rgb888};
 use fixed::types::I16F16;
-use microraster::depth::{DepthBand, DepthFormat, DepthState};
+use microraster::depth::{DepthBand, DepthFormat, DepthRows, DepthState};
 use microraster::edge::{Cull, TriangleSpans};
 use microraster::math::Scalar;
 use microraster::raster3d::{Affine, Interpolation, ScreenTriangle, draw_triangle};
@@ -106,8 +106,9 @@ fn full_frame<F: DepthFormat, M: Interpolation, const S: u32>(
     let mut depth = vec![[F::FAR; W]; H];
     {
         let mut view = band.view(0, H, Rgb888::new(0, 0, 0));
+        let mut rows = DepthRows::<F, W>::new(&mut depth);
         for t in tris {
-            draw_triangle::<Rgb888, F, M, S, W>(t, &mut view, &mut depth, DepthState::LESS_WRITE);
+            draw_triangle(t, &mut view, &mut rows, DepthState::LESS_WRITE, M::default());
         }
     }
     let color = band.rows().iter().flatten().copied().collect();

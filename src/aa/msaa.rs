@@ -12,7 +12,7 @@
 //!
 //! Colour at the pixel centre: flat triangles use vertex 0's colour; the
 //! others interpolate their vertex colours with [`Varyings`], affine or
-//! perspective-correct as the type parameter `M` says, so the colour is
+//! perspective-correct as the `interp` argument says, so the colour is
 //! within that module's stated bound of the exact value (½ + 2^-7 of a
 //! channel step for affine), and for 2D Gouraud triangles it equals, pixel for
 //! pixel, what the aliased renderer draws where the centre is covered.
@@ -29,15 +29,17 @@
 use super::{Antialias, MAX_GRID, mode_ok, scale_triangle};
 use crate::band::BandView;
 use crate::blit::Blitter;
-use crate::depth::{DepthFormat, DepthState};
+use crate::depth::{DepthFormat, DepthRows, DepthState};
 use crate::edge::{Cull, Span, TriangleSpans};
 use crate::raster3d::{Interpolation, ScreenTriangle, depth_value};
 use crate::varyings::Varyings;
 use crate::{ClipRect, Error, Interpolate};
 
 /// Rasterizes `tri` (positions in pixels) into a sample-resolution colour
-/// view and its depth rows (`depth` holds the view's rows, first to last; for
-/// `NoDepth` pass any slice), multisampled on the `N × N` grid of `A`.
+/// view and its depth rows (`depth` holds the view's rows, first to last;
+/// without depth pass [`DepthRows::none`]), multisampled on the `N × N` grid
+/// of `mode`, the colour interpolated as `interp` says. Every parameter is
+/// inferred from the arguments.
 ///
 /// Errors with [`Error::CoordinateOutOfRange`] if the positions times `N`
 /// leave the [`SubPoint`](crate::SubPoint) range; nothing is drawn then.
@@ -46,7 +48,7 @@ use crate::{ClipRect, Error, Interpolate};
 /// use embedded_graphics_core::pixelcolor::Gray8;
 /// use embedded_graphics_core::prelude::*;
 /// use microraster::aa::{Msaa, msaa};
-/// use microraster::depth::{DepthState, NoDepth};
+/// use microraster::depth::{DepthRows, DepthState};
 /// use microraster::raster3d::{Affine, ScreenTriangle, ScreenVertex};
 /// use microraster::{Band, SubPoint};
 /// let v = |x, y| ScreenVertex {
@@ -58,16 +60,18 @@ use crate::{ClipRect, Error, Interpolate};
 /// let tri = ScreenTriangle { v: [v(0, 0), v(2, 1), v(0, 1)], flat: true };
 /// let mut samples = Band::<Gray8, 4, 2>::new(Gray8::BLACK);
 /// let mut view = samples.view(0, 2, Gray8::BLACK);
-/// msaa::draw_triangle::<Msaa<2>, _, NoDepth, Affine, 4, 4>(&tri, &mut view, &mut [], DepthState::DISABLED)?;
+/// msaa::draw_triangle(Msaa::<2>, &tri, &mut view, &mut DepthRows::none(), DepthState::DISABLED, Affine)?;
 /// let lit = view.pixels().filter(|c| *c == Gray8::WHITE).count();
 /// assert_eq!(lit, 4); // half of the 8 samples
 /// # Ok::<(), microraster::Error>(())
 /// ```
 pub fn draw_triangle<A, C, F, M, const S: u32, const SW: usize>(
+    mode: A,
     tri: &ScreenTriangle<S>,
     samples: &mut BandView<'_, C, SW>,
-    depth: &mut [[F::Storage; SW]],
+    depth: &mut DepthRows<'_, F, SW>,
     state: DepthState,
+    interp: M,
 ) -> Result<(), Error>
 where
     A: Antialias,
@@ -75,10 +79,13 @@ where
     F: DepthFormat,
     M: Interpolation,
 {
+    let _ = (mode, interp); // values, so the call needs no turbofish
     const { assert!(mode_ok::<A>(), "anti-aliasing needs a supported N") };
     let scaled = scale_triangle(tri, A::N)?;
     if let Some(shader) = PixelShader::<C>::new::<M, S>(tri) {
-        draw_scaled::<A, C, F, S, SW>(&scaled, Cull::None, samples, depth, state, |x, y| shader.at(x, y));
+        draw_scaled::<A, C, F, S, SW>(&scaled, Cull::None, samples, &mut *depth, state, |x, y| {
+            shader.at(x, y)
+        });
     }
     Ok(())
 }
@@ -93,7 +100,7 @@ where
 /// use embedded_graphics_core::pixelcolor::Gray8;
 /// use embedded_graphics_core::prelude::*;
 /// use microraster::aa::{Msaa, msaa};
-/// use microraster::depth::{DepthState, NoDepth};
+/// use microraster::depth::{DepthRows, DepthState};
 /// use microraster::raster3d::{ScreenTriangle, ScreenVertex};
 /// use microraster::{Band, SubPoint};
 /// let v = |x, y| ScreenVertex { pos: SubPoint::<4>::from_pixels(x, y).unwrap(), ..Default::default() };
@@ -101,7 +108,7 @@ where
 /// let mut samples = Band::<Gray8, 16, 8>::new(Gray8::BLACK); // 4 × 2 px, 4 × 4 samples each
 /// let mut view = samples.view(0, 8, Gray8::BLACK);
 /// let mut calls = 0;
-/// msaa::draw_fragments::<Msaa<4>, _, NoDepth, 4, 16>(&tri, &mut view, &mut [], DepthState::DISABLED, |x, y| {
+/// msaa::draw_fragments(Msaa::<4>, &tri, &mut view, &mut DepthRows::none(), DepthState::DISABLED, |x, y| {
 ///     calls += 1;
 ///     Gray8::new(10 * x as u8 + y as u8)
 /// })?;
@@ -109,9 +116,10 @@ where
 /// # Ok::<(), microraster::Error>(())
 /// ```
 pub fn draw_fragments<A, C, F, const S: u32, const SW: usize>(
+    mode: A,
     tri: &ScreenTriangle<S>,
     samples: &mut BandView<'_, C, SW>,
-    depth: &mut [[F::Storage; SW]],
+    depth: &mut DepthRows<'_, F, SW>,
     state: DepthState,
     shade: impl FnMut(i32, i32) -> C,
 ) -> Result<(), Error>
@@ -120,9 +128,10 @@ where
     C: Interpolate,
     F: DepthFormat,
 {
+    let _ = mode; // a value, so the call needs no turbofish
     const { assert!(mode_ok::<A>(), "anti-aliasing needs a supported N") };
     let scaled = scale_triangle(tri, A::N)?;
-    draw_scaled::<A, C, F, S, SW>(&scaled, Cull::None, samples, depth, state, shade);
+    draw_scaled::<A, C, F, S, SW>(&scaled, Cull::None, samples, &mut *depth, state, shade);
     Ok(())
 }
 
@@ -230,7 +239,7 @@ impl<C: Interpolate> PixelShader<C> {
         }
         // Channels are ≤ 255, far inside the varyings' range: no error path.
         let values = tri.v.map(|v| v.color.map(i32::from));
-        Varyings::new::<M, S>(tri, values).ok().flatten().map(PixelShader::Planes)
+        Varyings::new(tri, values, M::default()).ok().flatten().map(PixelShader::Planes)
     }
 
     #[inline]

@@ -216,7 +216,7 @@ impl<C: Interpolate> Renderer<C> {
         self.render_with(out, target, |view, y0, y1| {
             let mut sv = sample_view::<A, C, SW, SH>(samples, self.background(), y0, y1);
             let (sy0, sy1) = (sv.y0(), sv.y0() + sv.height() as i32);
-            let rows = depth.rows_mut(sv.height());
+            let mut rows = depth.rows_mut(sv.height());
             for r in rows.iter_mut() {
                 r.fill(F::FAR);
             }
@@ -227,9 +227,16 @@ impl<C: Interpolate> Renderer<C> {
                     if A::SHADE_PER_PIXEL {
                         let Some(shader) = PixelShader::<C>::new::<M, S>(tri) else { continue };
                         let shade = |x, y| shader.at(x, y);
-                        msaa::draw_scaled::<A, C, F, S, SW>(&scaled, Cull::None, &mut sv, rows, state, shade);
+                        msaa::draw_scaled::<A, C, F, S, SW>(
+                            &scaled,
+                            Cull::None,
+                            &mut sv,
+                            &mut rows,
+                            state,
+                            shade,
+                        );
                     } else {
-                        draw_triangle::<C, F, M, S, SW>(&scaled, &mut sv, rows, state);
+                        draw_triangle(&scaled, &mut sv, &mut rows, state, interpolation);
                     }
                 }
             }

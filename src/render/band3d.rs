@@ -13,7 +13,7 @@ use embedded_graphics_core::primitives::Rectangle;
 
 use crate::Interpolate;
 use crate::band::BandView;
-use crate::depth::{DepthFormat, DepthState};
+use crate::depth::{DepthFormat, DepthRows, DepthState};
 use crate::raster3d::{Interpolation, ScreenTriangle, draw_triangle};
 
 /// The band being drawn, handed to the closure of
@@ -22,7 +22,7 @@ use crate::raster3d::{Interpolation, ScreenTriangle, draw_triangle};
 /// depth rows were cleared to far by the renderer.
 pub struct Band3d<'a, 'v, C, F: DepthFormat, M, const W: usize> {
     view: &'a mut BandView<'v, C, W>,
-    depth: &'a mut [[F::Storage; W]],
+    depth: DepthRows<'a, F, W>,
     state: DepthState,
     y0: i32,
     y1: i32,
@@ -38,7 +38,7 @@ where
     /// The band of frame rows `y0..y1` with its colour view and depth rows.
     pub(crate) fn new(
         view: &'a mut BandView<'v, C, W>,
-        depth: &'a mut [[F::Storage; W]],
+        depth: DepthRows<'a, F, W>,
         state: DepthState,
         (y0, y1): (i32, i32),
     ) -> Self {
@@ -78,7 +78,7 @@ where
     /// coverage set-up).
     #[inline]
     pub fn draw<const S: u32>(&mut self, tri: &ScreenTriangle<S>) {
-        draw_triangle::<C, F, M, S, W>(tri, self.view, self.depth, self.state);
+        draw_triangle(tri, self.view, &mut self.depth, self.state, M::default());
     }
 
     /// Draws the triangles that touch the band, in order.

@@ -62,13 +62,13 @@
 //! // The right vertex is 4× farther away than the others.
 //! let tri = ScreenTriangle { v: [v(0, 0, 1 << 30), v(16, 0, 1 << 28), v(0, 16, 1 << 30)], flat: false };
 //! let uv = [[0, 0], [4 * UV_ONE, 0], [0, 4 * UV_ONE]]; // 4 repeats
-//! let uv = Varyings::<2>::new::<PerspectiveCorrect, 4>(&tri, uv)?.unwrap();
+//! let uv = Varyings::new(&tri, uv, PerspectiveCorrect)?.unwrap();
 //! let tint = [255, 160, 0]; // orange, at 8 bits
 //!
 //! let mut band = Band::<Rgb888, 16, 16>::new(Rgb888::BLACK);
 //! let mut depth = DepthBand::<NoDepth, 16, 16>::new();
 //! let mut view = band.view(0, 16, Rgb888::BLACK);
-//! draw_fragments::<Rgb888, NoDepth, 4, 16>(&tri, &mut view, depth.rows_mut(16), DepthState::DISABLED, |x, y| {
+//! draw_fragments(&tri, &mut view, &mut depth.rows_mut(16), DepthState::DISABLED, |x, y| {
 //!     let texel = TEX.sample(Sampler::NEAREST_WRAP, uv.at(x, y));
 //!     Some(from_rgb8(modulate(texel, tint)))
 //! });

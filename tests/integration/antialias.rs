@@ -347,10 +347,11 @@ fn check_shades_once<A: Antialias, F: DepthFormat, const SW: usize, const SH: us
         let mut depth = DepthBand::<F, SW, SH>::new();
         let mut view = samples.view(0, SH, Gray8::BLACK);
         let mut calls = vec![0u32; FW * FH as usize];
-        msaa::draw_fragments::<A, _, F, 4, SW>(
+        msaa::draw_fragments(
+            A::default(),
             &tri,
             &mut view,
-            depth.rows_mut(SH),
+            &mut depth.rows_mut(SH),
             DepthState::LESS_WRITE,
             |x, y| {
                 calls[y as usize * FW + x as usize] += 1;

@@ -28,14 +28,7 @@ fn draw<Sh: FragmentShader<Rgb888, 0>>(
     depth: &mut DepthBand<Depth16, 100, 60>,
 ) {
     for t in t {
-        draw_fragment_triangle::<_, Depth16, Affine, _, _, 4, 100, 0>(
-            t,
-            view,
-            depth.rows_mut(60),
-            shader,
-            Output::OPAQUE,
-        )
-        .unwrap();
+        draw_fragment_triangle(t, view, &mut depth.rows_mut(60), shader, Output::OPAQUE, Affine).unwrap();
     }
 }
 

@@ -65,14 +65,8 @@ fn phong_matches_an_f64_evaluation_and_keeps_highlights_gouraud_loses() {
     let mut band = Box::new(Band::<Rgb888, W, H>::new(BG));
     let mut depth = Box::new(DepthBand::<Depth16, W, H>::new());
     let mut view = band.view(0, H, BG);
-    draw_fragment_band::<_, Depth16, PerspectiveCorrect, _, _, 4, W, 6>(
-        &bins,
-        &mut view,
-        depth.rows_mut(H),
-        &shader,
-        Output::OPAQUE,
-    )
-    .unwrap();
+    draw_fragment_band(&bins, &mut view, &mut depth.rows_mut(H), &shader, Output::OPAQUE, PerspectiveCorrect)
+        .unwrap();
     // The f64 evaluation at every pixel each front triangle covers (the
     // sphere is convex: every covered pixel shows its only front triangle).
     let l = light();
@@ -117,12 +111,7 @@ fn phong_matches_an_f64_evaluation_and_keeps_highlights_gouraud_loses() {
     let mut gdepth = Box::new(DepthBand::<Depth16, W, H>::new());
     let mut gview = gband.view(0, H, BG);
     for t in gouraud.iter() {
-        draw_triangle::<_, Depth16, PerspectiveCorrect, 4, W>(
-            t,
-            &mut gview,
-            gdepth.rows_mut(H),
-            DepthState::LESS_WRITE,
-        );
+        draw_triangle(t, &mut gview, &mut gdepth.rows_mut(H), DepthState::LESS_WRITE, PerspectiveCorrect);
     }
     let peak = |b: &Band<Rgb888, W, H>| b.rows().iter().flatten().map(|c| u16::from(c.r())).max().unwrap();
     let (phong_peak, gouraud_peak) = (peak(&band), peak(&gband));
@@ -162,14 +151,7 @@ fn translucent_geometry_blends_depth_tested_without_writing_depth() {
     ) {
         let flat = |f: &Fragment<0>| Rgb888::new(f.color[0], f.color[1], f.color[2]);
         for t in t {
-            draw_fragment_triangle::<_, Depth16, Affine, _, _, 4, 100, 0>(
-                t,
-                view,
-                depth.rows_mut(60),
-                &flat,
-                out,
-            )
-            .unwrap();
+            draw_fragment_triangle(t, view, &mut depth.rows_mut(60), &flat, out, Affine).unwrap();
         }
     }
     draw(&rect(0, 40, z(0.5), blue), Output::OPAQUE, &mut view, &mut depth);

@@ -333,9 +333,9 @@ fn depth_quad<F: DepthFormat>(near: f32, far: f32, z: f32, state: DepthState) ->
     let mut codes = vec![None; W * H];
     {
         let mut view = band.view(0, H, Gray8::new(0));
-        let rows = depth.rows_mut(H);
+        let mut rows = depth.rows_mut(H);
         for t in &bins {
-            microraster::raster3d::draw_triangle::<Gray8, F, Affine, 4, W>(t, &mut view, rows, state);
+            microraster::raster3d::draw_triangle(t, &mut view, &mut rows, state, Affine);
         }
     }
     for y in 0..H {

@@ -433,11 +433,12 @@ fn prop_depth_near_far_ratios() {
             {
                 let mut view = band.view(0, H, Gray8::new(0));
                 for tri in &bins {
-                    microraster::raster3d::draw_triangle::<Gray8, Depth16, Affine, 4, W>(
+                    microraster::raster3d::draw_triangle(
                         tri,
                         &mut view,
-                        depth.rows_mut(H),
+                        &mut depth.rows_mut(H),
                         DepthState::LESS_EQUAL_WRITE,
+                        Affine,
                     );
                 }
             }

@@ -4,7 +4,7 @@
 //! depth `z/w` as `depth / 2^32`, D3D/Vulkan clip volume), not from `src/`.
 
 use microraster::band::Band;
-use microraster::depth::{DepthFormat, DepthState};
+use microraster::depth::{DepthFormat, DepthRows, DepthState};
 use microraster::raster3d::{Interpolation, ScreenTriangle, draw_triangle};
 use microraster::{Interpolate, SubPoint};
 
@@ -58,8 +58,9 @@ where
     let mut depth = vec![[F::FAR; W]; H];
     {
         let mut view = band.view(0, H, bg);
+        let mut rows = DepthRows::<F, W>::new(&mut depth);
         for t in tris {
-            draw_triangle::<C, F, M, S, W>(t, &mut view, &mut depth, state);
+            draw_triangle(t, &mut view, &mut rows, state, M::default());
         }
     }
     let color = band.rows().iter().flatten().copied().collect();

@@ -333,14 +333,7 @@ fn discarding_shader_skips_and_blends_by_texel_alpha() {
         let mut depth = DepthBand::<NoDepth, 32, 32>::new();
         let out = Output { depth: DepthState::DISABLED, blend: Mix, alpha: draw_alpha };
         let mut view = band.view(0, 32, bg);
-        draw_fragment_triangle::<_, NoDepth, Affine, _, _, 4, 32, 5>(
-            &tri,
-            &mut view,
-            depth.rows_mut(32),
-            &shader,
-            out,
-        )
-        .unwrap();
+        draw_fragment_triangle(&tri, &mut view, &mut depth.rows_mut(32), &shader, out, Affine).unwrap();
         // Reference: the same coverage and varyings, discard and alpha done by hand.
         let mut want = Band::<Rgb888, 32, 32>::new(bg);
         let mut view = want.view(0, 32, bg);
@@ -351,14 +344,7 @@ fn discarding_shader_skips_and_blends_by_texel_alpha() {
             if a < cutoff { bg } else { Mix.blend(c, bg, alpha) }
         };
         let replace = Output { depth: DepthState::DISABLED, blend: Replace, alpha: 255 };
-        draw_fragment_triangle::<_, NoDepth, Affine, _, _, 4, 32, 5>(
-            &tri,
-            &mut view,
-            depth.rows_mut(32),
-            &by_hand,
-            replace,
-        )
-        .unwrap();
+        draw_fragment_triangle(&tri, &mut view, &mut depth.rows_mut(32), &by_hand, replace, Affine).unwrap();
         assert_eq!(band.rows(), want.rows(), "cutoff {cutoff}, alpha {draw_alpha}");
         let kept = band.rows().iter().flatten().filter(|&&c| c == bg).count();
         assert!(kept > 0 && kept < 32 * 32, "some pixels discarded, some drawn");

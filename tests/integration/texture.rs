@@ -243,13 +243,13 @@ fn draw_textured<M: Interpolation, Fi: Filter>(
     tex: &Texture<'_, Rgb565>,
     sampler: Sampler<Fi>,
 ) -> Option<Box<Band<Rgb888, W, H>>> {
-    let varyings = Varyings::<2>::new::<M, 4>(tri, uv).unwrap()?;
+    let varyings = Varyings::new(tri, uv, M::default()).unwrap()?;
     let mut band = Box::new(Band::<Rgb888, W, H>::new(Rgb888::BLACK));
     let mut depth = DepthBand::<NoDepth, W, H>::new();
-    draw_fragments::<Rgb888, NoDepth, 4, W>(
+    draw_fragments(
         tri,
         &mut band.view(0, H, Rgb888::BLACK),
-        depth.rows_mut(H),
+        &mut depth.rows_mut(H),
         DepthState::DISABLED,
         |x, y| Some(from_rgb8(tex.sample(sampler, varyings.at(x, y)))),
     );
@@ -413,8 +413,8 @@ fn affine_swims_on_a_receding_floor_perspective_correct_does_not() {
     for [a, b, c] in [[0, 1, 2], [0, 2, 3]] {
         let tri = ScreenTriangle { v: [v[a], v[b], v[c]], flat: false };
         let uv = [uvs[a], uvs[b], uvs[c]];
-        let p = Varyings::<2>::new::<PerspectiveCorrect, 4>(&tri, uv).unwrap().unwrap();
-        let l = Varyings::<2>::new::<Affine, 4>(&tri, uv).unwrap().unwrap();
+        let p = Varyings::new(&tri, uv, PerspectiveCorrect).unwrap().unwrap();
+        let l = Varyings::new(&tri, uv, Affine).unwrap().unwrap();
         let bands = [
             draw_textured::<PerspectiveCorrect, Bilinear>(&tri, uv, &tex, Sampler::BILINEAR_WRAP).unwrap(),
             draw_textured::<Affine, Bilinear>(&tri, uv, &tex, Sampler::BILINEAR_WRAP).unwrap(),

@@ -38,8 +38,8 @@ fn affine_and_perspective_varyings_within_derived_bounds() {
             [0, 1, 2].map(|_| if big { rng.range(-(MAX_VARYING as i64), MAX_VARYING as i64) } else { rng.range(-4000, 4000) } as i32)
         });
         let (Some(a), Some(p)) = (
-            Varyings::new::<Affine, 4>(&tri, vals).unwrap(),
-            Varyings::new::<PerspectiveCorrect, 4>(&tri, vals).unwrap(),
+            Varyings::new(&tri, vals, Affine).unwrap(),
+            Varyings::new(&tri, vals, PerspectiveCorrect).unwrap(),
         ) else {
             continue;
         };
@@ -80,7 +80,7 @@ fn affine_and_perspective_varyings_within_derived_bounds() {
     );
     assert!(tris > 2000 && samples > 1_000_000);
     assert_eq!(
-        Varyings::<1>::new::<Affine, 4>(&random_triangle(&mut rng, 2.0), [[MAX_VARYING + 1], [0], [0]]).err(),
+        Varyings::new(&random_triangle(&mut rng, 2.0), [[MAX_VARYING + 1], [0], [0]], Affine).err(),
         Some(microraster::Error::CoordinateOutOfRange)
     );
 }
@@ -95,35 +95,30 @@ fn fragment_hook_covers_what_the_colour_rasterizer_covers() {
         tri.v[0].color = [31, 0, 0];
         let mut a = Band::<Rgb565, W, H>::new(Rgb565::BLACK);
         let mut za = DepthBand::<Depth16, W, H>::new();
-        draw_triangle::<Rgb565, Depth16, Affine, 4, W>(
+        draw_triangle(
             &tri,
             &mut a.view(0, H, Rgb565::BLACK),
-            za.rows_mut(H),
+            &mut za.rows_mut(H),
             DepthState::LESS_WRITE,
+            Affine,
         );
         let mut b = Band::<Rgb565, W, H>::new(Rgb565::BLACK);
         let mut zb = DepthBand::<Depth16, W, H>::new();
         let mut view = b.view(0, H, Rgb565::BLACK);
-        draw_fragments::<Rgb565, Depth16, 4, W>(
-            &tri,
-            &mut view,
-            zb.rows_mut(H),
-            DepthState::LESS_WRITE,
-            |_, _| {
-                fragments += 1;
-                Some(Rgb565::RED)
-            },
-        );
+        draw_fragments(&tri, &mut view, &mut zb.rows_mut(H), DepthState::LESS_WRITE, |_, _| {
+            fragments += 1;
+            Some(Rgb565::RED)
+        });
         assert_eq!(a.rows(), b.rows());
         assert_eq!(za.rows(), zb.rows());
         // Without depth: every covered pixel, once.
         let mut seen = std::collections::HashSet::new();
         let mut c = Band::<Rgb565, W, H>::new(Rgb565::BLACK);
         let mut zn = DepthBand::<NoDepth, W, H>::new();
-        draw_fragments::<Rgb565, NoDepth, 4, W>(
+        draw_fragments(
             &tri,
             &mut c.view(0, H, Rgb565::BLACK),
-            zn.rows_mut(H),
+            &mut zn.rows_mut(H),
             DepthState::LESS_WRITE,
             |x, y| {
                 assert!(seen.insert((x, y)), "fragment ({x},{y}) twice");

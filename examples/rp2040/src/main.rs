@@ -169,13 +169,9 @@ mod firmware {
                     }
                     let rows = (y1 - y0) as usize;
                     depth.clear(rows);
+                    let mut z = depth.rows_mut(rows);
                     for tri in bins.iter() {
-                        draw_triangle::<_, Depth16, PerspectiveCorrect, S, W>(
-                            tri,
-                            view,
-                            depth.rows_mut(rows),
-                            DepthState::LESS_WRITE,
-                        );
+                        draw_triangle(tri, view, &mut z, DepthState::LESS_WRITE, PerspectiveCorrect);
                     }
                 })
                 .unwrap();
