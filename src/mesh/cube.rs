@@ -15,8 +15,8 @@ pub const fn cube_triangle_count() -> usize {
 
 /// `(outward normal, u, v)` per face with `u × v = normal`, so the corners
 /// `n − u − v, n + u − v, n + u + v, n − u + v` run counter-clockwise seen
-/// from outside.
-const FACES: [[[f32; 3]; 3]; 6] = [
+/// from outside. (Also the table of the const-built `view3d::CUBE`.)
+pub(crate) const FACES: [[[f32; 3]; 3]; 6] = [
     [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]],
     [[-1.0, 0.0, 0.0], [0.0, 0.0, 1.0], [0.0, 1.0, 0.0]],
     [[0.0, 1.0, 0.0], [0.0, 0.0, 1.0], [1.0, 0.0, 0.0]],

@@ -34,7 +34,7 @@
 //! `micromath` square root, so they produce bit-identical results on the host
 //! and on Cortex-M targets.
 
-mod cube;
+pub(crate) mod cube;
 mod icosphere;
 mod meshlet;
 mod meshlet_adjacency;

@@ -1,21 +1,10 @@
 //! A built-in mesh, so a first scene needs no generator buffers: the cube
 //! `[-1, 1]³` with per-face normals, the same vertices, normals and
-//! triangles as [`mesh::cube`](crate::mesh::cube) writes, computed at
+//! triangles as [`mesh::cube`](fn@crate::mesh::cube) writes, computed at
 //! compile time and checked there ([`ValidMesh::new`] is `const`).
 
+use crate::mesh::cube::FACES;
 use crate::mesh::{Mesh, ValidMesh, cube_triangle_count, cube_vertex_count};
-
-/// `(outward normal, u, v)` per face with `u × v = normal`, so the corners
-/// `n − u − v, n + u − v, n + u + v, n − u + v` run counter-clockwise seen
-/// from outside (the table of `mesh::cube`).
-const FACES: [[[f32; 3]; 3]; 6] = [
-    [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]],
-    [[-1.0, 0.0, 0.0], [0.0, 0.0, 1.0], [0.0, 1.0, 0.0]],
-    [[0.0, 1.0, 0.0], [0.0, 0.0, 1.0], [1.0, 0.0, 0.0]],
-    [[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]],
-    [[0.0, 0.0, 1.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]],
-    [[0.0, 0.0, -1.0], [0.0, 1.0, 0.0], [1.0, 0.0, 0.0]],
-];
 
 const NV: usize = cube_vertex_count();
 const NT: usize = cube_triangle_count();
