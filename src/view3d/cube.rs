@@ -45,7 +45,7 @@ static INDICES: [[u16; 3]; NT] = DATA.2;
 
 /// The cube `[-1, 1]³` (side 2, centred on the origin), 24 vertices with
 /// per-face unit normals and 12 triangles counter-clockwise from outside:
-/// the mesh [`mesh::cube`](crate::mesh::cube) writes, as a `static`
+/// the mesh [`mesh::cube`](fn@crate::mesh::cube) writes, as a `static`
 /// checked at compile time. Scale and place it with
 /// [`Object`](super::Object)'s transforms.
 ///
