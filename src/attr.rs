@@ -4,7 +4,7 @@
 //! A value `v` with vertex values `v₀, v₁, v₂` is the plane
 //! `v(p) = v₀ + λ₁(v₁ − v₀) + λ₂(v₂ − v₀)`, the barycentric weights taken from
 //! the same snapped coordinates as coverage. Setup (once per triangle and
-//! band; the determinant and its reciprocal once for all of a triangle's
+//! band; the determinant and its divisor once for all of a triangle's
 //! values, [`PlaneSetup`]) computes, each rounded to nearest in the caller's
 //! fixed-point units:
 //! the per-pixel gradients `gx`, `gy` and the value `base` at a reference
@@ -27,9 +27,9 @@
 //! Gradients of slivers can exceed `i64`, and so can the terms `gx·(x − rx)`;
 //! evaluation therefore uses wrapping arithmetic, which is exact modulo 2^64
 //! and so returns the (in-range) sum. Setup runs in `i64` when the products fit
-//! (checked on bit lengths), dividing exactly through a reciprocal of the
-//! determinant, and in `i128` otherwise; both give the same correctly rounded
-//! values.
+//! (checked on bit lengths), dividing exactly by the determinant in one of
+//! the ways of [`divide`] (chosen by its size and the target), and in `i128`
+//! otherwise; all give the same correctly rounded values.
 
 mod divide;
 
@@ -85,7 +85,7 @@ impl Plane {
 }
 
 /// The part of plane set-up shared by every value of one triangle: the
-/// determinant (with a reciprocal for exact division by multiplication), the
+/// determinant (prepared once for exact division, [`divide`]), the
 /// edge vectors and the reference pixel. Planes made from it are exactly those
 /// of [`Plane::new`].
 #[derive(Debug, Clone, Copy)]
