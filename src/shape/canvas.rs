@@ -15,6 +15,32 @@ use embedded_graphics_core::prelude::DrawTarget;
 /// [`TargetCanvas`] adapts any `DrawTarget`. For your own readable
 /// framebuffer, implement the three methods (as `BandView` does, through
 /// [`Blitter`] and [`BlendTarget`]).
+///
+/// ```
+/// use embedded_graphics_core::pixelcolor::{Gray8, GrayColor};
+/// use microraster::shape::{Canvas, Rect, Shape, ShapeStyle};
+/// use microraster::{ClipRect, edge::Span};
+/// // A canvas that only measures: the covered area, in 1/255 pixels.
+/// struct Area(u32);
+/// impl Canvas<Gray8> for Area {
+///     fn clip(&self) -> ClipRect {
+///         ClipRect::new(0, 0, 32, 32)
+///     }
+///     fn fill(&mut self, span: Span, _: Gray8, alpha: u8) {
+///         self.0 += span.len * u32::from(alpha);
+///     }
+///     fn shade<I: Iterator<Item = Gray8>>(&mut self, span: Span, _: I, alpha: u8) {
+///         self.0 += span.len * u32::from(alpha);
+///     }
+/// }
+/// let mut area = Area(0);
+/// let square = Rect::new(2.5, 2.5, 4.0, 4.0)?.styled(ShapeStyle::fill(Gray8::WHITE).antialiased())?;
+/// square.draw_on(&mut area);
+/// // 4 × 4 px spread over 5 × 5 pixels: 9 whole, 12 halves, 4 quarters,
+/// // each partial alpha rounded to the nearest 1/255 (128 and 64).
+/// assert_eq!(area.0, 9 * 255 + 12 * 128 + 4 * 64);
+/// # Ok::<(), microraster::Error>(())
+/// ```
 pub trait Canvas<C: Interpolate> {
     /// The pixels the canvas holds; shapes emit nothing outside.
     fn clip(&self) -> ClipRect;

@@ -73,6 +73,22 @@ use crate::edge::Span;
 pub const MAX_EDGES: usize = 256;
 
 /// Which winding numbers are inside.
+///
+/// ```
+/// use embedded_graphics::{mock_display::MockDisplay, prelude::*};
+/// use embedded_graphics_core::pixelcolor::BinaryColor;
+/// use microraster::shape::{FillRule, Polygon, Shape, ShapeStyle};
+/// // A pentagram: its centre has winding number 2.
+/// let star = [(5.0, 0.0), (8.0, 9.0), (0.0, 3.5), (10.0, 3.5), (2.0, 9.0)];
+/// let centre = Point::new(5, 5);
+/// for (rule, filled) in [(FillRule::NonZero, true), (FillRule::EvenOdd, false)] {
+///     let style = ShapeStyle::fill(BinaryColor::On).with_fill_rule(rule);
+///     let mut display = MockDisplay::new();
+///     Polygon::new(&star)?.styled(style)?.draw(&mut display).unwrap();
+///     assert_eq!(display.get_pixel(centre) == Some(BinaryColor::On), filled);
+/// }
+/// # Ok::<(), microraster::Error>(())
+/// ```
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum FillRule {
     /// Nonzero winding (overlapping contours of one direction unite).
@@ -104,7 +120,21 @@ mod sealed {
 }
 
 /// How pixel coverage is computed: [`Aliased`] or [`AntiAliased`], chosen by
-/// the type of [`ShapeStyle::antialias`].
+/// the type of [`ShapeStyle::antialias`]. Sealed: the two are the only
+/// kinds; code generic over either names the bound.
+///
+/// ```
+/// use embedded_graphics_core::pixelcolor::{Gray8, GrayColor};
+/// use microraster::shape::{Circle, Coverage, Shape, ShapeStyle, Styled};
+/// // One disc builder for both kinds of coverage.
+/// fn disc<A: Coverage>(style: ShapeStyle<Gray8, A>) -> Result<Styled<Circle, Gray8, A>, microraster::Error> {
+///     Circle::new((8.0, 8.0), 6.0)?.styled(style)
+/// }
+/// let sharp = disc(ShapeStyle::fill(Gray8::WHITE))?;
+/// let smooth = disc(ShapeStyle::fill(Gray8::WHITE).antialiased())?;
+/// assert_eq!(sharp.rows(), smooth.rows());
+/// # Ok::<(), microraster::Error>(())
+/// ```
 pub trait Coverage: sealed::Sealed + Copy + Default + core::fmt::Debug {
     /// Emits `(span, alpha)` runs of the covered pixels of `edges` in `clip`.
     #[doc(hidden)]

@@ -49,6 +49,19 @@ impl<C> From<RadialGradient<C>> for Paint<C> {
 
 /// `colors[0]` at `start`, `colors[1]` at `end`, constant along lines
 /// perpendicular to `start → end` and padded beyond.
+///
+/// ```
+/// use embedded_graphics::{mock_display::MockDisplay, prelude::*};
+/// use embedded_graphics_core::pixelcolor::{Gray8, GrayColor};
+/// use microraster::shape::{LinearGradient, Rect, Shape, ShapeStyle};
+/// // Black at x = 0 to white at x = 16, as the fill of a bar.
+/// let ramp = LinearGradient::new((0.0, 0.0), (16.0, 0.0), [Gray8::BLACK, Gray8::WHITE])?;
+/// let mut display = MockDisplay::<Gray8>::new();
+/// Rect::new(0.0, 0.0, 16.0, 2.0)?.styled(ShapeStyle::fill(ramp))?.draw(&mut display).unwrap();
+/// let luma = |x| display.get_pixel(Point::new(x, 1)).unwrap().luma();
+/// assert!(luma(0) < luma(8) && luma(8) < luma(15));
+/// # Ok::<(), microraster::Error>(())
+/// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct LinearGradient<C> {
     start: (f32, f32),
@@ -81,6 +94,19 @@ impl<C> LinearGradient<C> {
 }
 
 /// `colors[0]` at `center`, `colors[1]` at distance `radius` and beyond.
+///
+/// ```
+/// use embedded_graphics::{mock_display::MockDisplay, prelude::*};
+/// use embedded_graphics_core::pixelcolor::{Gray8, GrayColor};
+/// use microraster::shape::{Circle, RadialGradient, Shape, ShapeStyle};
+/// // A lit ball: white in the middle, black at the rim.
+/// let glow = RadialGradient::new((8.0, 8.0), 8.0, [Gray8::WHITE, Gray8::BLACK])?;
+/// let mut display = MockDisplay::<Gray8>::new();
+/// Circle::new((8.0, 8.0), 8.0)?.styled(ShapeStyle::fill(glow))?.draw(&mut display).unwrap();
+/// let luma = |x| display.get_pixel(Point::new(x, 8)).unwrap().luma();
+/// assert!(luma(8) > luma(4) && luma(4) > luma(1));
+/// # Ok::<(), microraster::Error>(())
+/// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct RadialGradient<C> {
     center: (f32, f32),

@@ -12,6 +12,24 @@ use embedded_graphics_core::Drawable;
 use embedded_graphics_core::prelude::DrawTarget;
 
 /// How thick lines meet at a vertex.
+///
+/// ```
+/// use embedded_graphics::{mock_display::MockDisplay, prelude::*};
+/// use embedded_graphics_core::pixelcolor::BinaryColor;
+/// use microraster::shape::{Join, Polyline, Shape, ShapeStyle};
+/// // A right angle at (4, 4), 4 px wide: the miter fills the outer corner
+/// // square, the bevel cuts it off.
+/// let corner = [(4.0, 12.0), (4.0, 4.0), (12.0, 4.0)];
+/// let drawn = |join| -> Result<bool, microraster::Error> {
+///     let mut display = MockDisplay::new();
+///     let style = ShapeStyle::stroke(BinaryColor::On, 4.0).with_join(join);
+///     Polyline::new(&corner)?.styled(style)?.draw(&mut display).unwrap();
+///     Ok(display.get_pixel(Point::new(2, 2)) == Some(BinaryColor::On))
+/// };
+/// assert!(drawn(Join::Miter)?);
+/// assert!(!drawn(Join::Bevel)?);
+/// # Ok::<(), microraster::Error>(())
+/// ```
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum Join {
     /// The outer edges extended to their meeting point, or [`Join::Bevel`]
@@ -25,6 +43,24 @@ pub enum Join {
 }
 
 /// How open ends of thick lines finish.
+///
+/// ```
+/// use embedded_graphics::{mock_display::MockDisplay, prelude::*};
+/// use embedded_graphics_core::pixelcolor::BinaryColor;
+/// use microraster::shape::{Cap, Polyline, Shape, ShapeStyle};
+/// // A 4 px wide line ending at x = 10: a butt cap stops there, a square
+/// // cap reaches 2 px (half the width) beyond.
+/// let line = [(2.0, 6.0), (10.0, 6.0)];
+/// let reach = |cap| -> Result<bool, microraster::Error> {
+///     let mut display = MockDisplay::new();
+///     let style = ShapeStyle::stroke(BinaryColor::On, 4.0).with_cap(cap);
+///     Polyline::new(&line)?.styled(style)?.draw(&mut display).unwrap();
+///     Ok(display.get_pixel(Point::new(11, 6)) == Some(BinaryColor::On))
+/// };
+/// assert!(!reach(Cap::Butt)?);
+/// assert!(reach(Cap::Square)?);
+/// # Ok::<(), microraster::Error>(())
+/// ```
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum Cap {
     /// Square, at the end point.
