@@ -424,7 +424,7 @@ pub fn pipeline3d<T: Scalar, const S: u32>() -> Pipeline<T, S> {
 }
 
 /// The model matrix and material colour of mesh `k` (sphere, torus, cube) at
-/// `angle`, as `Scene3d::draw` builds them (`src/scenes3d.rs`; the report
+/// `angle`, as `Scene3d::draw` builds them (`scenes/src/scenes3d.rs`; the report
 /// checks that drawing with these reproduces `Scene3d::draw`'s bins).
 pub fn model<T: Scalar>(k: usize, angle: f32) -> (Mat4<T>, [f32; 3]) {
     let f = T::from_f32;
