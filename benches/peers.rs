@@ -5,7 +5,7 @@
 //! cargo bench --bench peers -- scatter      # one scene (criterion filter)
 //! ```
 //!
-//! Scenes (`microraster::scenes::benchmarks`, `microraster::scenes3d`), all at
+//! Scenes (`microraster_scenes::scenes::benchmarks`, `microraster_scenes::scenes3d`), all at
 //! 320 × 240 `Rgb565` (tiny-skia: RGBA8888, its only format): (1) `scatter`,
 //! 1,000 triangles of mixed sizes; (2) `large`, 8 large triangles (fill-rate
 //! bound); (3) `tiny`, 10,000 tiny triangles (setup bound); (4) `mesh3d`, the
@@ -27,7 +27,7 @@ use microraster::Band;
 use microraster::depth::{Depth16, DepthBand};
 use microraster::math::Fx;
 use microraster::raster3d::{Affine, PerspectiveCorrect};
-use microraster::scenes;
+use microraster_scenes::scenes;
 use std::hint::black_box;
 use std::path::PathBuf;
 use std::time::Duration;

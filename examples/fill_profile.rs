@@ -23,7 +23,8 @@
 
 use embedded_graphics_core::pixelcolor::Rgb565;
 use microraster::edge::{Cull, TriangleSpans};
-use microraster::{Band, ClipRect, Primitive, scenes};
+use microraster::{Band, ClipRect, Primitive};
+use microraster_scenes::scenes;
 use std::hint::black_box;
 
 #[path = "../benches/common/mod.rs"]

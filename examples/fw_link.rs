@@ -31,8 +31,8 @@ mod firmware {
     use microraster::depth::{Depth16, DepthBand, DepthState};
     use microraster::raster3d::{PerspectiveCorrect, ScreenTriangle};
     use microraster::render::{BandSink, Lent};
-    use microraster::scenes3d::{BINS, Scene3d};
     use microraster::{Band, Renderer};
+    use microraster_scenes::scenes3d::{BINS, Scene3d};
     use panic_semihosting as _;
 
     const W: usize = 320;

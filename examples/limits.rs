@@ -6,8 +6,8 @@ use embedded_graphics_core::pixelcolor::{Gray8, Rgb565, Rgb888};
 use microraster::depth::{Depth8, Depth16, Depth24, Depth32, DepthBand, NoDepth};
 use microraster::edge::fast_path_extent_px;
 use microraster::raster3d::ScreenTriangle;
-use microraster::scenes3d::{BINS, Scene3d};
 use microraster::{Band, MAX_FRAME_DIM, SubPoint};
+use microraster_scenes::scenes3d::{BINS, Scene3d};
 
 fn main() {
     println!(

@@ -24,8 +24,8 @@ use embedded_graphics_core::primitives::Rectangle;
 use microraster::depth::{Depth16, DepthBand, DepthState};
 use microraster::raster3d::{PerspectiveCorrect, ScreenTriangle};
 use microraster::render::DirtyBands;
-use microraster::scenes3d::{BINS, Scene3d};
 use microraster::{Band, Renderer};
+use microraster_scenes::scenes3d::{BINS, Scene3d};
 
 const W: usize = 320;
 const HEIGHT: u32 = 240;

@@ -3,14 +3,18 @@
 # same program with the standard 3D scene, and the 3D program with the whole
 # fragment stage (textures, per-pixel lighting, blending, 2x2 supersampling;
 # examples/size/), then lists the microraster code each one links, by module.
+# The demo scenes the programs draw come from the development-only scenes/
+# crate (microraster-scenes); they are listed too, as the modules `scenes` and
+# `scenes3d`, so the totals still show what each program pays for its scene.
 # Run: bash scripts/code-size.sh
 set -euo pipefail
 cd "$(dirname "$0")/.."
 cargo build --quiet --release -p microraster --example size_2d --example size_3d --example size_frag
 
-sizes() { # bytes of microraster code per module in binary $1
-  nm -C --size-sort -S "target/release/examples/$1" | grep ' microraster::' | while read -r _ size _ name; do
-    module=${name#microraster::}
+sizes() { # bytes of microraster (and demo scene) code per module in binary $1
+  nm -C --size-sort -S "target/release/examples/$1" | grep -E ' microraster(_scenes)?::' | while read -r _ size _ name; do
+    module=${name#microraster_scenes::}
+    module=${module#microraster::}
     module=${module%%::*}
     module=${module%%<*}
     [[ $module =~ ^[a-z_0-9]+$ ]] || module=other

@@ -42,8 +42,6 @@ pub mod prelude;
 pub mod primitive;
 pub mod raster3d;
 pub mod render;
-pub mod scenes;
-pub mod scenes3d;
 // Anti-aliased coverage and gradients blend (`blend`), so shapes go with the
 // fragment stage's modules.
 #[cfg(feature = "fragment")]

@@ -22,8 +22,9 @@ use embedded_graphics_core::prelude::*;
 use microraster::depth::{Depth16, DepthBand};
 use microraster::math::Fx;
 use microraster::raster3d::{Affine, PerspectiveCorrect, ScreenTriangle};
-use microraster::scenes3d::{BINS, Scene3d};
-use microraster::{Band, Primitive, Renderer, scenes};
+use microraster::{Band, Primitive, Renderer};
+use microraster_scenes::scenes;
+use microraster_scenes::scenes3d::{BINS, Scene3d};
 use workload::{Crc32, Record, S};
 
 fn records(run: impl FnOnce(workload::Out<'_>) -> Result<(), microraster::Error>) -> Vec<Record> {

@@ -2,7 +2,7 @@
 //! benchmarks (`benches/peers.rs`) and the report
 //! (`cargo run --release --example report`, which includes this file with
 //! `#[path]`). Each one draws a whole `W × H` frame, background included, of
-//! the same scene from `microraster::scenes` / `microraster::scenes3d`:
+//! the same scene from `microraster_scenes::scenes` / `microraster_scenes::scenes3d`:
 //!
 //! * microraster: the band renderer ([`mr_band`]) and direct drawing through
 //!   `TargetBlitter` ([`mr_direct`]); the 3D scene through the vertex stage and
@@ -41,8 +41,9 @@ use microraster::math::{Fx, Mat4, Scalar, Vec3, transform};
 use microraster::mesh::Mesh;
 use microraster::pipeline::Pipeline;
 use microraster::raster3d::{Interpolation, ScreenTriangle};
-use microraster::scenes3d::{BINS, Scene3d};
-use microraster::{Band, Interpolate, Primitive, Renderer, SubPoint, scenes};
+use microraster::{Band, Interpolate, Primitive, Renderer, SubPoint};
+use microraster_scenes::scenes;
+use microraster_scenes::scenes3d::{BINS, Scene3d};
 
 /// Frame width.
 pub const W: usize = 320;
@@ -423,7 +424,7 @@ pub fn pipeline3d<T: Scalar, const S: u32>() -> Pipeline<T, S> {
 }
 
 /// The model matrix and material colour of mesh `k` (sphere, torus, cube) at
-/// `angle`, as `Scene3d::draw` builds them (`src/scenes3d.rs`; the report
+/// `angle`, as `Scene3d::draw` builds them (`scenes/src/scenes3d.rs`; the report
 /// checks that drawing with these reproduces `Scene3d::draw`'s bins).
 pub fn model<T: Scalar>(k: usize, angle: f32) -> (Mat4<T>, [f32; 3]) {
     let f = T::from_f32;

@@ -17,9 +17,9 @@ use microraster::math::{Mat4, Vec3, transform};
 use microraster::mesh::{Mesh, ValidMesh};
 use microraster::pipeline::{Pipeline, VertexInput};
 use microraster::raster3d::{Interpolation, ScreenTriangle, draw_triangle};
-use microraster::scenes3d::Scene3d;
 use microraster::texture::{Sampler, from_rgb8};
 use microraster::{Error, Interpolate, band::BandView};
+use microraster_scenes::scenes3d::Scene3d;
 
 #[allow(dead_code)]
 #[path = "../demo/texture_data.rs"]

@@ -11,8 +11,8 @@ use microraster::math::{Mat4, transform};
 use microraster::mesh::ValidMesh;
 use microraster::pipeline::{ClusterCache, MeshStats};
 use microraster::raster3d::{Affine, ScreenTriangle};
-use microraster::scenes3d::Scene3d;
 use microraster::{Band, Renderer};
+use microraster_scenes::scenes3d::Scene3d;
 use std::path::Path;
 
 #[path = "../common/knot_mesh.rs"]

@@ -1,5 +1,5 @@
-//! Host simulator: renders the standard scenes (`microraster::scenes` and,
-//! in [`scene3d`], `microraster::scenes3d`) with the band renderer into an
+//! Host simulator: renders the standard scenes (`microraster_scenes::scenes` and,
+//! in [`scene3d`], `microraster_scenes::scenes3d`) with the band renderer into an
 //! in-memory display and writes them as PNGs.
 //!
 //! ```text
@@ -11,7 +11,8 @@ use embedded_graphics::prelude::*;
 use embedded_graphics::primitives::{Circle, Line as EgLine, Primitive as _, PrimitiveStyle, Rectangle};
 use embedded_graphics::text::{Baseline, Text};
 use embedded_graphics_core::pixelcolor::{Rgb565, Rgb888};
-use microraster::{Band, Primitive, Renderer, SubPoint, scenes};
+use microraster::{Band, Primitive, Renderer, SubPoint};
+use microraster_scenes::scenes;
 use std::convert::Infallible;
 use std::error::Error;
 use std::path::{Path, PathBuf};

@@ -1,4 +1,4 @@
-//! The standard 3D scene (`microraster::scenes3d`) at 320×240: the colour
+//! The standard 3D scene (`microraster_scenes::scenes3d`) at 320×240: the colour
 //! frame, its depth buffer, the fixed-point vertex path and affine colour
 //! interpolation for comparison, a band-height invariance check and the
 //! memory the frame needs.
@@ -9,8 +9,8 @@ use embedded_graphics_core::pixelcolor::{Rgb565, Rgb888};
 use microraster::depth::{Depth16, DepthBand, DepthFormat, DepthState};
 use microraster::math::{Fx, Scalar};
 use microraster::raster3d::{Affine, Interpolation, PerspectiveCorrect, ScreenTriangle, draw_triangle};
-use microraster::scenes3d::{BINS, Scene3d, Stats, TRIANGLES};
 use microraster::{Band, Renderer};
+use microraster_scenes::scenes3d::{BINS, Scene3d, Stats, TRIANGLES};
 use std::path::Path;
 
 pub const W: usize = 320;

@@ -38,10 +38,12 @@ mod firmware {
     use cortex_m_semihosting::{debug, hprintln};
     use embedded_graphics_core::pixelcolor::Rgb565;
     use microraster::Band;
+    #[cfg(target_abi = "eabihf")]
+    use microraster::Primitive;
     use microraster::depth::{Depth16, DepthBand};
     use microraster::raster3d::ScreenTriangle;
     #[cfg(target_abi = "eabihf")]
-    use microraster::{Primitive, scenes, scenes3d};
+    use microraster_scenes::{scenes, scenes3d};
     use panic_semihosting as _;
 
     fn print(r: &Record) {

@@ -32,8 +32,9 @@ use microraster::depth::{Depth16, DepthBand, DepthState};
 use microraster::edge::Cull;
 use microraster::math::{Fx, Scalar};
 use microraster::raster3d::{Affine, Interpolation, PerspectiveCorrect, ScreenTriangle};
-use microraster::scenes3d::{BINS, Scene3d};
-use microraster::{Band, Error, Primitive, RenderError, Renderer, scenes};
+use microraster::{Band, Error, Primitive, RenderError, Renderer};
+use microraster_scenes::scenes;
+use microraster_scenes::scenes3d::{BINS, Scene3d};
 
 /// Subpixel bits of every scene.
 pub const S: u32 = 4;

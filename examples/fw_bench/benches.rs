@@ -36,15 +36,16 @@ use microraster::edge::Cull;
 use microraster::math::{Fx, Scalar};
 use microraster::pipeline::{ClusterCache, VertexCache};
 use microraster::raster3d::{Affine, Interpolation, PerspectiveCorrect, ScreenTriangle};
-use microraster::scenes3d::{CACHE_VERTICES, Scene3d};
-use microraster::{Band, Error, Primitive, RenderError, Renderer, scenes};
+use microraster::{Band, Error, Primitive, RenderError, Renderer};
+use microraster_scenes::scenes;
+use microraster_scenes::scenes3d::{CACHE_VERTICES, Scene3d};
 
 pub use crate::sink::{Mode, Sink};
 use crate::workload::{ANGLE, DEPTH_STATE, S};
 #[allow(unused_imports)] // each target uses its own
 pub use crate::workload::{BACKGROUND, BAND_BINS, M0_BAND, M0_SIZE, M4F_BAND, M4F_SIZE};
 #[allow(unused_imports)]
-pub use microraster::scenes3d::BINS;
+pub use microraster_scenes::scenes3d::BINS;
 
 /// A 2D scene function.
 pub type Scene2d = scenes::Scene<Rgb565, S>;

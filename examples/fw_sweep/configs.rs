@@ -24,11 +24,9 @@ use microraster::edge::Cull;
 use microraster::math::{Fx, Scalar, transform};
 use microraster::pipeline::{ClusterCache, Pipeline};
 use microraster::raster3d::{Affine, Interpolation, PerspectiveCorrect, ScreenTriangle};
-use microraster::scenes::{self, FineTriangle};
-use microraster::scenes3d::{BINS, Scene3d};
-use microraster::{
-    Band, Error, Primitive, RenderError, Renderer, SubPoint, Triangle, blit::TargetBlitter, scenes::Scene,
-};
+use microraster::{Band, Error, Primitive, RenderError, Renderer, SubPoint, Triangle, blit::TargetBlitter};
+use microraster_scenes::scenes::{self, FineTriangle, Scene};
+use microraster_scenes::scenes3d::{BINS, Scene3d};
 
 use crate::frame::FrameBuffer;
 

@@ -16,9 +16,10 @@ use microraster::line_aa::LineAa;
 use microraster::math::{Mat4, Vec3, transform};
 use microraster::pipeline::VertexInput;
 use microraster::raster3d::{Affine, Interpolation, PerspectiveCorrect, ScreenTriangle};
-use microraster::scenes3d::{BINS, Scene3d};
 use microraster::texture::{Filter, Sampler, Texture, from_rgb8};
-use microraster::{Band, Error, Primitive, Renderer, scenes};
+use microraster::{Band, Error, Primitive, Renderer};
+use microraster_scenes::scenes;
+use microraster_scenes::scenes3d::{BINS, Scene3d};
 
 use crate::configs::{ANGLE, BG, Config, H, Meter, W, input};
 use crate::frame::FrameBuffer;

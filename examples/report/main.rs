@@ -21,7 +21,8 @@ use microraster::edge::{Cull, TriangleSpans};
 use microraster::line::line_pixels;
 use microraster::math::Fx;
 use microraster::raster3d::{Affine, PerspectiveCorrect};
-use microraster::{ClipRect, Primitive, Renderer, scenes};
+use microraster::{ClipRect, Primitive, Renderer};
+use microraster_scenes::scenes;
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
@@ -185,8 +186,8 @@ fn main() -> Res<()> {
     let setups: Vec<(usize, usize)> = {
         let p = pipeline3d::<f32, 4>();
         let mut bins = Box::new(Bins::<4>::new());
-        microraster::scenes3d::Scene3d
-            .draw::<f32, Rgb565, 4, { microraster::scenes3d::BINS }>(&p, ANGLE, &mut bins)?;
+        microraster_scenes::scenes3d::Scene3d
+            .draw::<f32, Rgb565, 4, { microraster_scenes::scenes3d::BINS }>(&p, ANGLE, &mut bins)?;
         [1, 8, 16, 32, H].iter().map(|&bh| (bh, sweep::setups_per_frame(&bins, bh))).collect()
     };
 
@@ -414,8 +415,8 @@ fn document(
     let _ = writeln!(w, "## microraster against its peers\n");
     let _ = writeln!(
         w,
-        "Same scene, same resolution, same run. Scenes (`microraster::scenes::benchmarks`, \
-         `microraster::scenes3d`): **scatter** = (1) 1,000 triangles of mixed sizes; **large** = (2) 8 large \
+        "Same scene, same resolution, same run. Scenes (`microraster_scenes::scenes::benchmarks`, \
+         `microraster_scenes::scenes3d`): **scatter** = (1) 1,000 triangles of mixed sizes; **large** = (2) 8 large \
          triangles, fill-rate bound; **tiny** = (3) 10,000 tiny triangles, setup bound; **mesh3d** = (4) the \
          standard 3D scene (1,116 triangles, 16-bit depth, Gouraud, vertex stage included); **lines** = (5) \
          1,000 lines; **knot20k** = the 20,480-triangle knot (10,240 vertices, Gouraud with specular, 16-bit \

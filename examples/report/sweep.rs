@@ -11,9 +11,9 @@ use microraster::depth::{DepthBand, DepthFormat, DepthRows, DepthState};
 use microraster::edge::{Cull, TriangleSpans};
 use microraster::math::Scalar;
 use microraster::raster3d::{Affine, Interpolation, ScreenTriangle, draw_triangle};
-use microraster::scenes::{self, FineTriangle};
-use microraster::scenes3d::{BINS, Scene3d};
 use microraster::{Band, ClipRect, Interpolate, Primitive, SubPoint, Triangle};
+use microraster_scenes::scenes::{self, FineTriangle};
+use microraster_scenes::scenes3d::{BINS, Scene3d};
 
 /// One setting of the 3D scene.
 #[derive(Clone, Debug, Default)]

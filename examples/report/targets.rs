@@ -245,7 +245,7 @@ fn issue12(peers: &[Peer], breakdown: &[Breakdown], counts: &Counts, fw: &FwBenc
             us(b.spans),
             us(b.empty),
             find(peers, "tiny/band16/S4/flat")
-                .map_or(f64::NAN, |p| p.covered as f64 / microraster::scenes::TINY_LEN as f64),
+                .map_or(f64::NAN, |p| p.covered as f64 / microraster_scenes::scenes::TINY_LEN as f64),
             find(peers, "tiny/reference").map_or("?".into(), |p| us(p.ns)),
         );
     }

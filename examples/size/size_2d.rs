@@ -5,8 +5,8 @@
 use core::hint::black_box;
 use embedded_graphics_core::pixelcolor::Rgb565;
 use embedded_graphics_core::prelude::RgbColor;
-use microraster::scenes;
 use microraster::{Band, Primitive, Renderer};
+use microraster_scenes::scenes;
 
 #[path = "sink.rs"]
 mod sink;

@@ -6,8 +6,8 @@ use embedded_graphics_core::pixelcolor::Rgb565;
 use embedded_graphics_core::prelude::RgbColor;
 use microraster::depth::{Depth16, DepthBand, DepthState};
 use microraster::raster3d::PerspectiveCorrect;
-use microraster::scenes3d::{BINS, Scene3d};
 use microraster::{Band, Renderer};
+use microraster_scenes::scenes3d::{BINS, Scene3d};
 
 #[path = "sink.rs"]
 mod sink;

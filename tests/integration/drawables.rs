@@ -20,8 +20,8 @@ use embedded_graphics_core::pixelcolor::Rgb565;
 use microraster::depth::{Depth16, DepthBand, DepthState};
 use microraster::edge::Cull;
 use microraster::raster3d::PerspectiveCorrect;
-use microraster::scenes3d::{BINS, Scene3d};
 use microraster::{Band, Error, Renderer, SubPoint, Triangle};
+use microraster_scenes::scenes3d::{BINS, Scene3d};
 
 const W: usize = 96;
 const FH: u32 = 64;

@@ -12,8 +12,9 @@ use embedded_graphics_core::prelude::*;
 use microraster::depth::{Depth16, DepthBand, DepthState};
 use microraster::raster3d::PerspectiveCorrect;
 use microraster::render::{BandSink, Blocking, DirtyBands, Lent};
-use microraster::scenes3d::{BINS, Scene3d};
-use microraster::{Band, Error, Primitive, RenderError, Renderer, scenes};
+use microraster::{Band, Error, Primitive, RenderError, Renderer};
+use microraster_scenes::scenes;
+use microraster_scenes::scenes3d::{BINS, Scene3d};
 
 pub const W: usize = 96;
 pub const HEIGHT: u32 = 72;

@@ -14,8 +14,8 @@ use microraster::math::{Fx, Mat4, Scalar, Vec3, transform};
 use microraster::mesh::{self, Mesh, Meshlet, MeshletMesh, ValidMesh, ValidMeshletMesh};
 use microraster::pipeline::{ClusterCache, Pipeline};
 use microraster::raster3d::{Affine, Interpolation, PerspectiveCorrect};
-use microraster::scenes3d::Scene3d;
 use microraster::{Band, Renderer};
+use microraster_scenes::scenes3d::Scene3d;
 
 const W: usize = 160;
 const H: u32 = 120;

@@ -7,8 +7,8 @@ use embedded_graphics_core::prelude::RgbColor;
 use microraster::depth::{Depth16, DepthBand, DepthState};
 use microraster::math::{Fx, Scalar};
 use microraster::raster3d::{Affine, PerspectiveCorrect};
-use microraster::scenes3d::{BINS, Scene3d};
 use microraster::{Band, Renderer};
+use microraster_scenes::scenes3d::{BINS, Scene3d};
 
 const W: usize = 160;
 const H: u32 = 120;

@@ -11,8 +11,8 @@ use microraster::mesh::{
 };
 use microraster::pipeline::{MeshStats, Pipeline};
 use microraster::raster3d::{Affine, Interpolation, PerspectiveCorrect, ScreenTriangle};
-use microraster::scenes3d::{BINS, Scene3d};
 use microraster::{Band, Interpolate, Renderer};
+use microraster_scenes::scenes3d::{BINS, Scene3d};
 
 const W: usize = 160;
 const HEIGHT: usize = 120; // not a multiple of 7 or 16: the last band is short

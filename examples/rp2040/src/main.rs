@@ -46,7 +46,7 @@ mod firmware {
     use microraster::depth::{Depth16, DepthBand, DepthState};
     use microraster::raster3d::{PerspectiveCorrect, ScreenTriangle, draw_triangle};
     use microraster::render::{BandSink, Lent};
-    use microraster::scenes3d::{BINS, Scene3d};
+    use microraster_scenes::scenes3d::{BINS, Scene3d};
     use microraster::{Band, Renderer};
     use rp2040_hal::fugit::RateExtU32;
     use rp2040_hal::gpio::{FunctionSioOutput, FunctionSpi, Pin, PullDown, bank0};

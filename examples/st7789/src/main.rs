@@ -75,7 +75,7 @@ mod firmware {
     use microraster::Renderer;
     use microraster::depth::{Depth16, DepthBand, DepthState};
     use microraster::raster3d::{PerspectiveCorrect, ScreenTriangle};
-    use microraster::scenes3d::{BINS, Scene3d};
+    use microraster_scenes::scenes3d::{BINS, Scene3d};
     use microraster::{Band, RenderError};
     use mipidsi::interface::SpiInterface;
     use mipidsi::models::ST7789;

@@ -43,7 +43,7 @@ mod firmware {
     use microraster::depth::{Depth16, DepthBand, DepthState};
     use microraster::raster3d::{PerspectiveCorrect, ScreenTriangle};
     use microraster::render::SpiPanel;
-    use microraster::scenes3d::{BINS, Scene3d};
+    use microraster_scenes::scenes3d::{BINS, Scene3d};
     use microraster::{Band, Renderer};
 
     /// Frame size (landscape), band rows, subpixel bits.

@@ -8,15 +8,16 @@
 //! runs the vertex stage for a given frame size and animation angle into the
 //! caller's bins.
 
-use crate::light::Lighting;
-use crate::math::{Mat4, Scalar, Vec3, transform};
-use crate::mesh::{
+use microraster::heapless;
+use microraster::light::Lighting;
+use microraster::math::{Mat4, Scalar, Vec3, transform};
+use microraster::mesh::{
     Mesh, ValidMesh, cube, cube_triangle_count, cube_vertex_count, icosphere, icosphere_triangle_count,
     icosphere_vertex_count, torus, torus_triangle_count, torus_vertex_count,
 };
-use crate::pipeline::{MeshStats, Pipeline, Shade, VertexCache};
-use crate::raster3d::ScreenTriangle;
-use crate::{Error, Interpolate};
+use microraster::pipeline::{MeshStats, Pipeline, Shade, VertexCache};
+use microraster::raster3d::ScreenTriangle;
+use microraster::{Error, Interpolate};
 
 mod meshes;
 
@@ -39,7 +40,7 @@ pub const BINS: usize = 576;
 /// Caller-owned storage for generating the standard scene's meshes at run
 /// time (about 20 KB); only [`generate`] needs it. [`Scene3d`] itself draws the
 /// same meshes from flash (`meshes.rs`, written by
-/// `cargo run --example gen_scene_meshes` and checked against [`generate`]).
+/// `cargo run -p microraster-scenes --example gen_scene_meshes` and checked against [`generate`]).
 pub struct MeshBuffers {
     sphere: Buffers<SV, ST>,
     torus: Buffers<TV, TT>,
@@ -184,7 +185,7 @@ impl Scene3d {
 
 /// Vertices of the standard scene's largest mesh: the capacity of a
 /// [`VertexCache`] for [`Scene3d::draw_cached`] (the torus, 392; about
-/// 15.7 KB for `f32` and for [`Fx`](crate::math::Fx)).
+/// 15.7 KB for `f32` and for [`Fx`](microraster::math::Fx)).
 pub const CACHE_VERTICES: usize = max3(SV, TV, CV);
 
 const fn max3(a: usize, b: usize, c: usize) -> usize {
@@ -280,13 +281,13 @@ mod tests {
     #[test]
     fn vertex_cache_gives_the_same_triangles() {
         cached_equals_uncached::<f32>();
-        cached_equals_uncached::<crate::math::Fx>();
+        cached_equals_uncached::<microraster::math::Fx>();
     }
 
     #[test]
     fn bins_hold_every_angle_for_both_vertex_paths() {
         let p = Scene3d::pipeline::<f32, 4>(320, 240).unwrap();
-        let q = Scene3d::pipeline::<crate::math::Fx, 4>(320, 240).unwrap();
+        let q = Scene3d::pipeline::<microraster::math::Fx, 4>(320, 240).unwrap();
         let mut most = 0;
         for i in 0..96 {
             let angle = i as f32 * core::f32::consts::TAU / 96.0;

@@ -17,14 +17,16 @@
 //!
 //! ```
 //! use embedded_graphics_core::pixelcolor::Rgb565;
-//! use microraster::{Primitive, scenes};
+//! use microraster::{Primitive, heapless};
+//! use microraster_scenes::scenes;
 //! let mut scene = heapless::Vec::<Primitive<Rgb565, 4>, { scenes::MIXED_LEN }>::new();
 //! let dropped = scenes::collect(scenes::mixed, 320, 240, &mut scene)?;
 //! assert_eq!((dropped, scene.len()), (0, scenes::MIXED_LEN));
 //! # Ok::<(), microraster::Error>(())
 //! ```
 
-use crate::{Error, Interpolate, Line, MAX_FRAME_DIM, Primitive, SubPoint, Triangle};
+use microraster::heapless;
+use microraster::{Error, Interpolate, Line, MAX_FRAME_DIM, Primitive, SubPoint, Triangle};
 
 /// Where a scene puts its primitives.
 pub type Sink<'a, C, const S: u32> = &'a mut dyn FnMut(Primitive<C, S>);
@@ -608,8 +610,13 @@ impl XorShift {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::edge::{Cull, TriangleSpans};
-    use crate::{ClipRect, Shading};
+    use microraster::edge::{Cull, TriangleSpans};
+    use microraster::{ClipRect, Shading};
+
+    /// Twice the signed area of a triangle (zero: degenerate).
+    fn signed_area2(p: [(i64, i64); 3]) -> i64 {
+        (p[1].0 - p[0].0) * (p[2].1 - p[0].1) - (p[2].0 - p[0].0) * (p[1].1 - p[0].1)
+    }
     use embedded_graphics_core::pixelcolor::{BinaryColor, Gray8, Rgb565, Rgb888, RgbColor};
 
     /// Checks counts, vertices inside the frame and row ranges inside the frame.
@@ -824,7 +831,7 @@ mod tests {
                         TriangleSpans::new(t.vertices(), clip, Cull::None).map(|s| s.len as u64).sum();
                     px += n;
                     let v = t.vertices().map(|v| (v.x() as i64, v.y() as i64));
-                    empty += usize::from(crate::edge::signed_area2(v) == 0);
+                    empty += usize::from(signed_area2(v) == 0);
                     gouraud += usize::from(matches!(t.shading(), Shading::Gouraud(_)));
                 }
             })
