@@ -21,6 +21,19 @@ use super::{Texture, UV_ONE};
 use core::fmt::Debug;
 
 /// How a coordinate outside `[0, 1)` is brought back onto the texture.
+///
+/// ```
+/// use embedded_graphics_core::pixelcolor::Gray8;
+/// use microraster::texture::{Address, Sampler, Texture, UV_ONE};
+/// let tex = Texture::<Gray8>::new(&[10, 20, 30, 40], 4, 1)?;
+/// // u = 1.125 is a quarter texel into the second period: texel 0 when
+/// // repeating, the last texel when the edge extends.
+/// let uv = [UV_ONE + UV_ONE / 8, UV_ONE / 2];
+/// assert_eq!(tex.sample(Sampler::NEAREST_WRAP, uv), [10; 3]);
+/// let clamp = Sampler::NEAREST_WRAP.with_address(Address::Clamp, Address::Clamp);
+/// assert_eq!(tex.sample(clamp, uv), [40; 3]);
+/// # Ok::<(), microraster::Error>(())
+/// ```
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
 pub enum Address {
     /// Repeat: `u` and `u + 1` sample the same point (bilinear filtering
@@ -40,6 +53,20 @@ mod sealed {
 
 /// A texture filter: [`Nearest`] or [`Bilinear`]. Sealed; a type parameter of
 /// [`Sampler`], so only the filters a program samples with are compiled.
+///
+/// ```
+/// use embedded_graphics_core::pixelcolor::Gray8;
+/// use microraster::texture::{Address, Bilinear, Filter, Nearest, Sampler, Texture, UV_ONE};
+/// let tex = Texture::<Gray8>::new(&[0, 200], 2, 1)?;
+/// // Code generic over the filter; half-way between the two texel centres.
+/// fn mid<Fi: Filter>(t: &Texture<Gray8>, filter: Fi) -> u8 {
+///     let clamp = Sampler { filter, ..Sampler::default() }.with_address(Address::Clamp, Address::Clamp);
+///     t.sample(clamp, [UV_ONE / 2, UV_ONE / 2])[0]
+/// }
+/// assert_eq!(mid(&tex, Nearest), 200); // the texel containing the point
+/// assert_eq!(mid(&tex, Bilinear), 100); // both texels, equally weighted
+/// # Ok::<(), microraster::Error>(())
+/// ```
 pub trait Filter: sealed::Sealed + Copy + Default + Debug {
     /// True for [`Bilinear`].
     const BILINEAR: bool;
