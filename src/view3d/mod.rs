@@ -1,5 +1,5 @@
 //! The one-call 3D front: a [`Camera`], [`Object`]s (a mesh, a place, a
-//! colour) and a [`View3d`] that owns the band buffers and draws a frame
+//! colour, or a colour per vertex or per face) and a [`View3d`] that owns the band buffers and draws a frame
 //! into any `embedded-graphics` display with [`View3d::draw`].
 //!
 //! Defaults, each one call to change: lighting on (ambient plus one light
@@ -219,7 +219,10 @@ impl<C: Interpolate, const W: usize, const H: usize> View3d<C, W, H> {
     /// for a display (or [`View3d::set_height`]) of 0 rows or more than
     /// [`MAX_FRAME_DIM`]; the camera's errors ([`View3d::pipeline`]); a mesh's
     /// ([`Mesh::check_winding`](crate::mesh::Mesh::check_winding), including
-    /// [`Error::WindingMismatch`]); [`Error::FrameOutsideTarget`] if `W`
+    /// [`Error::WindingMismatch`]); [`Error::InvalidParameter`] for an
+    /// object's per-vertex or per-face colours that do not match its mesh
+    /// ([`Object::with_vertex_colors`], [`Object::with_face_colors`]);
+    /// [`Error::FrameOutsideTarget`] if `W`
     /// columns or the frame's rows do not fit the display; errors of the
     /// vertex stage in a band ([`Pipeline::draw_valid_mesh`], for example
     /// [`Error::InvalidParameter`] for a singular model, [`Error::InvalidMeshlet`]),
