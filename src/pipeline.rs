@@ -17,12 +17,14 @@
 mod bins;
 mod cache;
 mod cluster;
+mod material;
 mod presnap;
 #[cfg(feature = "fragment")]
 mod varying;
 
 pub use cache::VertexCache;
 pub use cluster::ClusterCache;
+pub(crate) use material::{Material, PerFace, PerVertex, Uniform};
 
 #[cfg(feature = "fragment")]
 #[cfg_attr(docsrs, doc(cfg(feature = "fragment")))]
@@ -246,7 +248,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         bins: &mut heapless::Vec<ScreenTriangle<S>, N>,
     ) -> Result<MeshStats, Error> {
         let mut bins = bins::BinWriter::new(bins);
-        let result = self.valid_mesh_into(mesh, model, color, |tri| {
+        let result = self.valid_mesh_into(mesh, model, color, &Uniform, |tri| {
             bins.push(tri);
             Ok(())
         });
@@ -257,13 +259,15 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     /// of a bin, in the same order (the binned path is this with a
     /// [`bins::BinWriter`]): with [`Pipeline::rows`] set to a band's rows, the
     /// vertex stage draws straight into that band, no bins (the `view3d`
-    /// front). Errors: those of [`Pipeline::draw_valid_mesh`], with `sink`'s
-    /// in place of a full bin.
-    pub(crate) fn valid_mesh_into<C: Interpolate>(
+    /// front). `material` gives each vertex its material colour
+    /// ([`Uniform`]: `color`). Errors: those of
+    /// [`Pipeline::draw_valid_mesh`], with `sink`'s in place of a full bin.
+    pub(crate) fn valid_mesh_into<C: Interpolate, M: Material<T>>(
         &self,
         mesh: &ValidMesh<'_>,
         model: &Mat4<T>,
         color: C,
+        material: &M,
         mut sink: impl FnMut(ScreenTriangle<S>) -> Result<(), Error>,
     ) -> Result<MeshStats, Error> {
         let mesh = mesh.mesh();
@@ -281,7 +285,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
             let colors = || -> [[T; 3]; 3] {
                 let c = |k: usize| {
                     let n = if flat { face_n } else { mesh.normals.get(idx[k] as usize).copied() };
-                    ctx.color(pos[k], n)
+                    ctx.color_of(pos[k], n, material.base(ctx.base, i, usize::from(idx[k])))
                 };
                 // Flat: one lit colour per face, vertex 0 lit with the face normal.
                 if self.shade == Shade::Flat { [c(0); 3] } else { [c(0), c(1), c(2)] }
@@ -328,7 +332,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
             };
             let cache = &mut cache.v[..mesh.vertex_count()];
             let triangles = mesh.indices.iter().map(|t| t.map(usize::from));
-            self.draw_cached(&setup, mesh, cache, triangles, &mut stats, |tri, _| {
+            self.draw_cached(&setup, mesh, &Uniform, cache, triangles, &mut stats, |tri, _| {
                 bins.push(tri);
                 Ok(())
             })?;
@@ -410,9 +414,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         let range = guard_band_for_range(self.size.0, self.size.1, S);
         let planes = self.clip.with_guard_band(self.clip.guard_band().min(range));
         let max = C::CHANNEL_MAX;
-        let ch = color.to_channels();
-        let base =
-            [0, 1, 2].map(|k| if max[k] == 0 { T::ZERO } else { T::from_f32(ch[k] as f32 / max[k] as f32) });
+        let base = material::base_of(color);
         let ctx = VertexCtx { mv: model_view, mvp, nm: normal_matrix, base, lighting: self.lighting };
         Ok(Some(MeshSetup { ctx, planes, band, max }))
     }
@@ -758,8 +760,15 @@ impl<T: Scalar> VertexCtx<T> {
     /// as `Fx` saturates; NaN (`0·∞`) and −infinity are channel 0. The
     /// clipper would otherwise take a non-finite value for a reason to
     /// discard the triangle.
+    #[inline]
     fn color(&self, p: Vec3<T>, normal: Option<[f32; 3]>) -> [T; 3] {
-        self.lit(p, normal).map(|c| {
+        self.color_of(p, normal, self.base)
+    }
+
+    /// [`VertexCtx::color`] of material `base` instead of the mesh's
+    /// colour (per-vertex and per-face colours, [`Material`]).
+    fn color_of(&self, p: Vec3<T>, normal: Option<[f32; 3]>, base: [T; 3]) -> [T; 3] {
+        self.lit(p, normal, base).map(|c| {
             if c.is_finite() {
                 c
             } else if c > T::ZERO {
@@ -770,7 +779,7 @@ impl<T: Scalar> VertexCtx<T> {
         })
     }
 
-    fn lit(&self, p: Vec3<T>, normal: Option<[f32; 3]>) -> [T; 3] {
+    fn lit(&self, p: Vec3<T>, normal: Option<[f32; 3]>, base: [T; 3]) -> [T; 3] {
         match (self.lighting, normal) {
             (Some(l), Some(n)) => {
                 let n_eye = (self.nm * Vec3::from_f32(n)).normalize_fast();
@@ -781,11 +790,11 @@ impl<T: Scalar> VertexCtx<T> {
                     a[1] * p.x + b[1] * p.y + c[1] * p.z + d[1],
                     a[2] * p.x + b[2] * p.y + c[2] * p.z + d[2],
                 );
-                l.shade(n_eye, p_eye, self.base)
+                l.shade(n_eye, p_eye, base)
             }
             // No light, or a degenerate face without a normal: ambient only.
-            (Some(l), None) => self.base.map(|b| b * l.ambient),
-            (None, _) => self.base,
+            (Some(l), None) => base.map(|b| b * l.ambient),
+            (None, _) => base,
         }
     }
 }

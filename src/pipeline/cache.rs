@@ -12,7 +12,7 @@
 //! of [`Pipeline::draw_valid_mesh`], bit for bit, in the same order.
 
 use super::presnap::{PreSnap, orientation};
-use super::{MeshSetup, MeshStats, Pipeline, Shade, channels};
+use super::{Material, MeshSetup, MeshStats, Pipeline, Shade, channels};
 use crate::Error;
 use crate::clip3d::{Class, ClipVertex, VertexClass};
 use crate::edge::Cull;
@@ -89,6 +89,9 @@ pub(super) trait VertexSource {
     fn normal(&self, i: usize) -> Option<[f32; 3]>;
     /// Whether the mesh has per-vertex normals.
     fn has_normals(&self) -> bool;
+    /// The mesh vertex of slot `i` (for its [`Material`] colour; `usize::MAX`
+    /// out of range).
+    fn vertex(&self, i: usize) -> usize;
 }
 
 impl<T: Scalar, const S: u32> Pipeline<T, S> {
@@ -96,19 +99,27 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     /// from outside): every triangle [`Pipeline::draw_valid_mesh`] would emit
     /// for them goes to `sink`, in order, with the same vertices and colours.
     /// `cache` holds one entry per slot of `src` and is overwritten.
+    /// `material` colours the vertices ([`super::Uniform`]: the mesh's
+    /// colour); it cannot be per face (one lit colour is cached per vertex).
     ///
-    /// Errors: [`Error::InvalidMesh`] for a slot beyond `cache` or `src`
+    /// Errors: [`Error::InvalidParameter`] for a per-face `material`;
+    /// [`Error::InvalidMesh`] for a slot beyond `cache` or `src`
     /// (validated meshes have none; not looked for when every vertex lies
     /// on one side of the band), and whatever `sink` returns.
-    pub(super) fn draw_cached<Src: VertexSource>(
+    #[allow(clippy::too_many_arguments)]
+    pub(super) fn draw_cached<Src: VertexSource, M: Material<T>>(
         &self,
         setup: &MeshSetup<T>,
         src: &Src,
+        material: &M,
         cache: &mut [Cached<T, S>],
         triangles: impl Iterator<Item = [usize; 3]>,
         stats: &mut MeshStats,
         mut sink: impl FnMut(ScreenTriangle<S>, &mut MeshStats) -> Result<(), Error>,
     ) -> Result<(), Error> {
+        if M::PER_FACE {
+            return Err(Error::InvalidParameter);
+        }
         let MeshSetup { ctx, planes, band, max } = setup;
         let (planes, max) = (*planes, *max);
         let coder = VertexClass::<T>::new(planes);
@@ -173,7 +184,8 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
             };
             let light = |k: usize, face_n: Option<[f32; 3]>| -> Result<[T; 3], Error> {
                 let n = if flat { face_n } else { src.normal(idx[k]) };
-                Ok(ctx.color(position(idx[k])?, n))
+                let base = material.base(ctx.base, 0, src.vertex(idx[k]));
+                Ok(ctx.color_of(position(idx[k])?, n, base))
             };
             if class == Class::Inside {
                 // A certain back face (`presnap`) needs no snapping: counted
@@ -321,5 +333,9 @@ impl VertexSource for crate::mesh::Mesh<'_> {
     }
     fn has_normals(&self) -> bool {
         !self.normals.is_empty()
+    }
+    #[inline]
+    fn vertex(&self, i: usize) -> usize {
+        i
     }
 }

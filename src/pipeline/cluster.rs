@@ -20,7 +20,7 @@
 //! images.
 
 use super::cache::{VertexCache, VertexSource};
-use super::{Band, MeshStats, Pipeline, rows_f32, view_planes};
+use super::{Band, Material, MeshStats, Pipeline, Uniform, rows_f32, view_planes};
 use crate::depth::DepthFormat;
 use crate::edge::Cull;
 use crate::math::{Mat4, Scalar, Vec3, Vec4};
@@ -53,6 +53,10 @@ impl VertexSource for ClusterSource<'_> {
     }
     fn has_normals(&self) -> bool {
         !self.mesh.normals.is_empty()
+    }
+    #[inline]
+    fn vertex(&self, i: usize) -> usize {
+        self.vertices.get(i).map_or(usize::MAX, |&v| usize::from(v))
     }
 }
 
@@ -190,8 +194,28 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         F: DepthFormat,
         M: Interpolation,
     {
+        self.draw_meshlets_with(mesh, model, color, &Uniform, cache, band)
+    }
+
+    /// [`Pipeline::draw_meshlets`] with the vertices coloured by `material`
+    /// (per vertex; a per-face material is [`Error::InvalidParameter`]).
+    pub(crate) fn draw_meshlets_with<C, F, M, Mat, const W: usize>(
+        &self,
+        mesh: &ValidMeshletMesh<'_>,
+        model: &Mat4<T>,
+        color: C,
+        material: &Mat,
+        cache: &mut ClusterCache<T, S>,
+        band: &mut Band3d<'_, '_, C, F, M, W>,
+    ) -> Result<MeshStats, Error>
+    where
+        C: Interpolate,
+        F: DepthFormat,
+        M: Interpolation,
+        Mat: Material<T>,
+    {
         let rows = band.rows();
-        self.meshlet_triangles(mesh, model, color, cache, rows, |tri| band.draw(tri))
+        self.meshlets_into(mesh, model, color, material, cache, rows, |tri| band.draw(tri))
     }
 
     /// The triangles [`Pipeline::draw_meshlets`] would draw into the band of
@@ -226,6 +250,22 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         color: C,
         cache: &mut ClusterCache<T, S>,
         rows: (i32, i32),
+        sink: impl FnMut(&ScreenTriangle<S>),
+    ) -> Result<MeshStats, Error> {
+        self.meshlets_into(mesh, model, color, &Uniform, cache, rows, sink)
+    }
+
+    /// [`Pipeline::meshlet_triangles`] with the vertices coloured by
+    /// `material` ([`Pipeline::draw_meshlets_with`]).
+    #[allow(clippy::too_many_arguments)]
+    fn meshlets_into<C: Interpolate, Mat: Material<T>>(
+        &self,
+        mesh: &ValidMeshletMesh<'_>,
+        model: &Mat4<T>,
+        color: C,
+        material: &Mat,
+        cache: &mut ClusterCache<T, S>,
+        rows: (i32, i32),
         mut sink: impl FnMut(&ScreenTriangle<S>),
     ) -> Result<MeshStats, Error> {
         // Validated: the culling relies on each cluster's sphere and cone.
@@ -248,7 +288,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
             let slots = cache.v.get_mut(..vc).ok_or(Error::InvalidMeshlet)?;
             let src = ClusterSource { mesh: &mesh.mesh, vertices };
             let tris = triangles.iter().map(|t| t.map(usize::from));
-            pipe.draw_cached(&setup, &src, slots, tris, &mut stats, |tri, _| {
+            pipe.draw_cached(&setup, &src, material, slots, tris, &mut stats, |tri, _| {
                 sink(&tri);
                 Ok(())
             })

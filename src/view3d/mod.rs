@@ -1,5 +1,5 @@
 //! The one-call 3D front: a [`Camera`], [`Object`]s (a mesh, a place, a
-//! colour) and a [`View3d`] that owns the band buffers and draws a frame
+//! colour, or a colour per vertex or per face) and a [`View3d`] that owns the band buffers and draws a frame
 //! into any `embedded-graphics` display with [`View3d::draw`].
 //!
 //! Defaults, each one call to change: lighting on (ambient plus one light
@@ -37,7 +37,7 @@ mod object;
 
 pub use camera::{Camera, DEFAULT_PROJECTION, Projection};
 pub use cube::CUBE;
-pub use object::{Geometry, Object};
+pub use object::{Colors, Geometry, Object};
 
 use embedded_graphics_core::draw_target::DrawTarget;
 use embedded_graphics_core::pixelcolor::Rgb565;
@@ -48,8 +48,9 @@ use crate::edge::Cull;
 use crate::light::Lighting;
 use crate::math::Vec3;
 use crate::mesh::ValidMesh;
-use crate::pipeline::{ClusterCache, Pipeline, Shade};
+use crate::pipeline::{ClusterCache, Material, PerFace, PerVertex, Pipeline, Shade, Uniform};
 use crate::raster3d::PerspectiveCorrect;
+use crate::render::Band3d;
 use crate::{Error, Interpolate, MAX_FRAME_DIM, RenderError, Renderer};
 
 /// The front's lighting unless told otherwise: ambient 0.25 and a light of
@@ -218,7 +219,10 @@ impl<C: Interpolate, const W: usize, const H: usize> View3d<C, W, H> {
     /// for a display (or [`View3d::set_height`]) of 0 rows or more than
     /// [`MAX_FRAME_DIM`]; the camera's errors ([`View3d::pipeline`]); a mesh's
     /// ([`Mesh::check_winding`](crate::mesh::Mesh::check_winding), including
-    /// [`Error::WindingMismatch`]); [`Error::FrameOutsideTarget`] if `W`
+    /// [`Error::WindingMismatch`]); [`Error::InvalidParameter`] for an
+    /// object's per-vertex or per-face colours that do not match its mesh
+    /// ([`Object::with_vertex_colors`], [`Object::with_face_colors`]);
+    /// [`Error::FrameOutsideTarget`] if `W`
     /// columns or the frame's rows do not fit the display; errors of the
     /// vertex stage in a band ([`Pipeline::draw_valid_mesh`], for example
     /// [`Error::InvalidParameter`] for a singular model, [`Error::InvalidMeshlet`]),
@@ -242,6 +246,7 @@ impl<C: Interpolate, const W: usize, const H: usize> View3d<C, W, H> {
                 Geometry::Valid(m) => m.mesh().check_winding()?,
                 Geometry::Meshlets(_) => {}
             }
+            o.check_colors()?;
         }
         let cache = &mut self.cache;
         renderer.render_3d_direct(
@@ -254,23 +259,42 @@ impl<C: Interpolate, const W: usize, const H: usize> View3d<C, W, H> {
                 let mut banded = pipe;
                 banded.rows = Some(band.rows());
                 for o in objects {
-                    let (model, color) = (o.model(), o.color());
-                    let mut into_band = |t| {
-                        band.draw(&t);
-                        Ok(())
-                    };
-                    match o.geometry() {
-                        Geometry::Mesh(m) => {
-                            banded.valid_mesh_into(&ValidMesh::trusted(m), &model, color, &mut into_band)?
-                        }
-                        Geometry::Valid(m) => banded.valid_mesh_into(&m, &model, color, &mut into_band)?,
-                        Geometry::Meshlets(m) => pipe.draw_meshlets(m, &model, color, cache, band)?,
-                    };
+                    // The colour source is a type, chosen once per object.
+                    match o.colors() {
+                        Colors::Material => draw_object(&banded, o, &Uniform, cache, band)?,
+                        Colors::PerVertex(c) => draw_object(&banded, o, &PerVertex(c), cache, band)?,
+                        Colors::PerFace(c) => draw_object(&banded, o, &PerFace(c), cache, band)?,
+                    }
                 }
                 Ok(())
             },
         )
     }
+}
+
+/// One object into a band: through the vertex stage straight into it, or
+/// cluster by cluster for a meshlet mesh ([`Pipeline::rows`] of `banded`
+/// set to the band's rows).
+fn draw_object<C: Interpolate, Mat: Material<f32>, const W: usize>(
+    banded: &Pipeline<f32, 4>,
+    o: &Object<'_, C>,
+    material: &Mat,
+    cache: &mut ClusterCache<f32, 4>,
+    band: &mut Band3d<'_, '_, C, Depth16, PerspectiveCorrect, W>,
+) -> Result<(), Error> {
+    let (model, color) = (o.model(), o.color());
+    let mut into_band = |t| {
+        band.draw(&t);
+        Ok(())
+    };
+    match o.geometry() {
+        Geometry::Mesh(m) => {
+            banded.valid_mesh_into(&ValidMesh::trusted(m), &model, color, material, &mut into_band)?
+        }
+        Geometry::Valid(m) => banded.valid_mesh_into(&m, &model, color, material, &mut into_band)?,
+        Geometry::Meshlets(m) => banded.draw_meshlets_with(m, &model, color, material, cache, band)?,
+    };
+    Ok(())
 }
 
 impl<C: core::fmt::Debug, const W: usize, const H: usize> core::fmt::Debug for View3d<C, W, H> {

@@ -1,6 +1,8 @@
 //! What the front draws: a mesh, where it is (a model transform built from
-//! translate, rotate and scale steps) and its material colour.
+//! translate, rotate and scale steps) and its material colour, one for the
+//! object or one per vertex or per face.
 
+use crate::Error;
 use crate::math::{Mat4, Vec3, transform};
 use crate::mesh::{Mesh, ValidMesh, ValidMeshletMesh};
 
@@ -39,7 +41,21 @@ impl<'a> From<&'a ValidMeshletMesh<'a>> for Geometry<'a> {
     }
 }
 
-/// A mesh placed in the world, in one colour. The transform steps apply in
+/// Where an [`Object`]'s material colours come from. Every colour is lit
+/// as the object's one colour would be.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Colors<'a, C> {
+    /// The object's colour ([`Object::color`]) everywhere.
+    Material,
+    /// One colour per mesh vertex ([`Object::with_vertex_colors`]),
+    /// interpolated across each triangle.
+    PerVertex(&'a [C]),
+    /// One colour per triangle ([`Object::with_face_colors`]).
+    PerFace(&'a [C]),
+}
+
+/// A mesh placed in the world, in one colour (or a colour per vertex or per
+/// face, [`Colors`]). The transform steps apply in
 /// the order they are written: `.scale(0.5).rotate_y(a).translate(p)`
 /// shrinks the mesh about its origin, turns it, then moves it to `p`.
 ///
@@ -57,13 +73,14 @@ pub struct Object<'a, C> {
     geometry: Geometry<'a>,
     model: Mat4<f32>,
     color: C,
+    colors: Colors<'a, C>,
 }
 
 impl<'a, C: Copy> Object<'a, C> {
     /// `geometry` (`&Mesh`, `&ValidMesh` or `&ValidMeshletMesh`) at the
     /// world's origin, untransformed, in material colour `color`.
     pub fn new(geometry: impl Into<Geometry<'a>>, color: C) -> Self {
-        Object { geometry: geometry.into(), model: Mat4::IDENTITY, color }
+        Object { geometry: geometry.into(), model: Mat4::IDENTITY, color, colors: Colors::Material }
     }
 
     /// Then moves it by `offset`.
@@ -103,9 +120,101 @@ impl<'a, C: Copy> Object<'a, C> {
         Object { model: m * self.model, ..self }
     }
 
-    /// The same object in another colour.
+    /// The same object in another colour (where per-vertex or per-face
+    /// colours are set, they still apply).
     pub fn with_color(self, color: C) -> Self {
         Object { color, ..self }
+    }
+
+    /// The same object with a colour per mesh vertex, `colors[i]` for vertex
+    /// `i`, in place of its one colour: interpolated across each triangle
+    /// with Gouraud shading (the default; with flat shading a triangle takes
+    /// its first vertex's colour), and lit as the one colour would be. For a
+    /// meshlet mesh, the vertices of the mesh the clusters were built from.
+    ///
+    /// Errors, at [`View3d::draw`](super::View3d::draw), before any band is
+    /// sent: [`Error::InvalidParameter`] if `colors.len()` is not the mesh's
+    /// vertex count.
+    ///
+    /// ```
+    /// use embedded_graphics::mock_display::MockDisplay;
+    /// use embedded_graphics::pixelcolor::{Rgb565, RgbColor};
+    /// use microraster::view3d::{CUBE, Camera, Object, View3d};
+    /// // The cube's 24 vertices, red on top (y = 1), blue below.
+    /// let mut colors = [Rgb565::BLUE; 24];
+    /// for (c, p) in colors.iter_mut().zip(CUBE.mesh().positions) {
+    ///     if p[1] > 0.0 { *c = Rgb565::RED; }
+    /// }
+    /// let cube = Object::new(&CUBE, Rgb565::WHITE).with_vertex_colors(&colors);
+    /// let mut view = View3d::<Rgb565, 64, 8>::new(Rgb565::BLACK);
+    /// view.set_lighting(None);
+    /// let mut display = MockDisplay::new();
+    /// display.set_allow_overdraw(true);
+    /// view.draw(&Camera::look_at([0.0, 0.0, 4.0], [0.0; 3]), &[cube], &mut display)?;
+    /// // The front face shades from red at its top to blue at its bottom.
+    /// let at = |y| display.get_pixel(embedded_graphics::prelude::Point::new(32, y)).unwrap();
+    /// assert!(at(22).r() > at(22).b() && at(42).b() > at(42).r());
+    /// // The wrong number of colours is an error.
+    /// let short = Object::new(&CUBE, Rgb565::WHITE).with_vertex_colors(&colors[..8]);
+    /// let err = view.draw(&Camera::look_at([0.0, 0.0, 4.0], [0.0; 3]), &[short], &mut display);
+    /// assert_eq!(err, Err(microraster::Error::InvalidParameter.into()));
+    /// # Ok::<(), microraster::RenderError<core::convert::Infallible>>(())
+    /// ```
+    pub fn with_vertex_colors(self, colors: &'a [C]) -> Self {
+        Object { colors: Colors::PerVertex(colors), ..self }
+    }
+
+    /// The same object with a colour per triangle, `colors[i]` for the
+    /// mesh's triangle `i`, in place of its one colour: the same colour at
+    /// the triangle's three corners, lit as the one colour would be (so with
+    /// lighting off, or flat normals, one colour across the triangle).
+    ///
+    /// Errors, at [`View3d::draw`](super::View3d::draw), before any band is
+    /// sent: [`Error::InvalidParameter`] if `colors.len()` is not the mesh's
+    /// triangle count, or if the mesh is a meshlet mesh (its triangles are
+    /// reordered into clusters).
+    ///
+    /// ```
+    /// use embedded_graphics::mock_display::MockDisplay;
+    /// use embedded_graphics::pixelcolor::{Rgb565, RgbColor};
+    /// use microraster::view3d::{CUBE, Camera, Object, View3d};
+    /// // The cube's 12 triangles, two per face: each face its own colour.
+    /// let faces = [Rgb565::RED, Rgb565::GREEN, Rgb565::BLUE, Rgb565::CYAN, Rgb565::MAGENTA, Rgb565::YELLOW];
+    /// let colors: [Rgb565; 12] = core::array::from_fn(|t| faces[t / 2]);
+    /// let cube = Object::new(&CUBE, Rgb565::WHITE).with_face_colors(&colors);
+    /// let mut view = View3d::<Rgb565, 64, 8>::new(Rgb565::BLACK);
+    /// view.set_lighting(None);
+    /// let mut display = MockDisplay::new();
+    /// display.set_allow_overdraw(true);
+    /// view.draw(&Camera::look_at([0.0, 0.0, 4.0], [0.0; 3]), &[cube], &mut display)?;
+    /// // Unlit, the face towards the camera shows exactly one of the colours.
+    /// let c = display.get_pixel(embedded_graphics::prelude::Point::new(32, 32)).unwrap();
+    /// assert!(faces.contains(&c));
+    /// # Ok::<(), microraster::RenderError<core::convert::Infallible>>(())
+    /// ```
+    pub fn with_face_colors(self, colors: &'a [C]) -> Self {
+        Object { colors: Colors::PerFace(colors), ..self }
+    }
+
+    /// Where the material colours come from.
+    pub fn colors(&self) -> Colors<'a, C> {
+        self.colors
+    }
+
+    /// [`Error::InvalidParameter`] if the per-vertex or per-face colours do
+    /// not match the mesh, or are per face on a meshlet mesh.
+    pub(crate) fn check_colors(&self) -> Result<(), Error> {
+        let (vertices, triangles) = match self.geometry {
+            Geometry::Mesh(m) => (m.vertex_count(), Some(m.triangle_count())),
+            Geometry::Valid(m) => (m.mesh().vertex_count(), Some(m.mesh().triangle_count())),
+            Geometry::Meshlets(m) => (m.get().mesh.vertex_count(), None),
+        };
+        let ok = match self.colors {
+            Colors::Material => true,
+            Colors::PerVertex(c) => c.len() == vertices,
+            Colors::PerFace(c) => Some(c.len()) == triangles,
+        };
+        if ok { Ok(()) } else { Err(Error::InvalidParameter) }
     }
 
     /// The model matrix: object space to world space.

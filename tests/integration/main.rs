@@ -29,6 +29,7 @@
 //!   shared edges, uniform meshes, band invariance, modes, ranges.
 //! - `view3d`: the one-call 3D front draws what the explicit API draws, for every band
 //!   height; its defaults (culling, lighting, winding check) and errors.
+//! - `view3d_colors`: the front's per-vertex and per-face colours.
 //! - `framebuffer`: a recording host `DrawTarget` used by the suites above.
 
 mod antialias;
@@ -71,6 +72,7 @@ mod triangles_float;
 mod triangles_skia;
 mod varyings;
 mod view3d;
+mod view3d_colors;
 mod watertight;
 mod watertight_clip;
 mod zfight;
