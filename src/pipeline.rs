@@ -285,7 +285,11 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
             let colors = || -> [[T; 3]; 3] {
                 let c = |k: usize| {
                     let n = if flat { face_n } else { mesh.normals.get(idx[k] as usize).copied() };
-                    ctx.color_of(pos[k], n, material.base(ctx.base, i, usize::from(idx[k])))
+                    if M::UNIFORM {
+                        ctx.color(pos[k], n)
+                    } else {
+                        ctx.color_of(pos[k], n, material.base(ctx.base, i, usize::from(idx[k])))
+                    }
                 };
                 // Flat: one lit colour per face, vertex 0 lit with the face normal.
                 if self.shade == Shade::Flat { [c(0); 3] } else { [c(0), c(1), c(2)] }
@@ -760,26 +764,20 @@ impl<T: Scalar> VertexCtx<T> {
     /// as `Fx` saturates; NaN (`0·∞`) and −infinity are channel 0. The
     /// clipper would otherwise take a non-finite value for a reason to
     /// discard the triangle.
-    #[inline]
     fn color(&self, p: Vec3<T>, normal: Option<[f32; 3]>) -> [T; 3] {
-        self.color_of(p, normal, self.base)
+        finite_color(self.lit(p, normal, |ctx: &Self| ctx.base))
     }
 
     /// [`VertexCtx::color`] of material `base` instead of the mesh's
     /// colour (per-vertex and per-face colours, [`Material`]).
     fn color_of(&self, p: Vec3<T>, normal: Option<[f32; 3]>, base: [T; 3]) -> [T; 3] {
-        self.lit(p, normal, base).map(|c| {
-            if c.is_finite() {
-                c
-            } else if c > T::ZERO {
-                T::ONE
-            } else {
-                T::ZERO
-            }
-        })
+        finite_color(self.lit(p, normal, move |_: &Self| base))
     }
 
-    fn lit(&self, p: Vec3<T>, normal: Option<[f32; 3]>, base: [T; 3]) -> [T; 3] {
+    /// The lit colour of material `base`: a function, so the one-colour
+    /// path (`|ctx| ctx.base`, zero-sized) passes no argument; a pointer
+    /// argument cost 2 Cortex-M4F instructions per lit vertex.
+    fn lit(&self, p: Vec3<T>, normal: Option<[f32; 3]>, base: impl FnOnce(&Self) -> [T; 3]) -> [T; 3] {
         match (self.lighting, normal) {
             (Some(l), Some(n)) => {
                 let n_eye = (self.nm * Vec3::from_f32(n)).normalize_fast();
@@ -790,11 +788,26 @@ impl<T: Scalar> VertexCtx<T> {
                     a[1] * p.x + b[1] * p.y + c[1] * p.z + d[1],
                     a[2] * p.x + b[2] * p.y + c[2] * p.z + d[2],
                 );
-                l.shade(n_eye, p_eye, base)
+                l.shade(n_eye, p_eye, base(self))
             }
             // No light, or a degenerate face without a normal: ambient only.
-            (Some(l), None) => base.map(|b| b * l.ambient),
-            (None, _) => base,
+            (Some(l), None) => base(self).map(|b| b * l.ambient),
+            (None, _) => base(self),
         }
     }
+}
+
+/// The clamp of [`VertexCtx::color`]: +infinity is full intensity, NaN and
+/// −infinity channel 0.
+#[inline]
+fn finite_color<T: Scalar>(c: [T; 3]) -> [T; 3] {
+    c.map(|c| {
+        if c.is_finite() {
+            c
+        } else if c > T::ZERO {
+            T::ONE
+        } else {
+            T::ZERO
+        }
+    })
 }

@@ -184,8 +184,12 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
             };
             let light = |k: usize, face_n: Option<[f32; 3]>| -> Result<[T; 3], Error> {
                 let n = if flat { face_n } else { src.normal(idx[k]) };
-                let base = material.base(ctx.base, 0, src.vertex(idx[k]));
-                Ok(ctx.color_of(position(idx[k])?, n, base))
+                let p = position(idx[k])?;
+                Ok(if M::UNIFORM {
+                    ctx.color(p, n)
+                } else {
+                    ctx.color_of(p, n, material.base(ctx.base, 0, src.vertex(idx[k])))
+                })
             };
             if class == Class::Inside {
                 // A certain back face (`presnap`) needs no snapping: counted

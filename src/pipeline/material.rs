@@ -19,6 +19,10 @@ pub(crate) trait Material<T: Scalar> {
     /// vertex) cannot take it.
     const PER_FACE: bool;
 
+    /// True for [`Uniform`]: the callers then light `VertexCtx::base` in
+    /// place, the code the one-colour path had before materials existed.
+    const UNIFORM: bool = false;
+
     /// The material of mesh vertex `vertex` in face `face`; `uniform` is the
     /// mesh's one colour (also the fallback for an index out of range,
     /// which the callers' length checks exclude).
@@ -30,6 +34,7 @@ pub(crate) struct Uniform;
 
 impl<T: Scalar> Material<T> for Uniform {
     const PER_FACE: bool = false;
+    const UNIFORM: bool = true;
 
     #[inline(always)]
     fn base(&self, uniform: [T; 3], _: usize, _: usize) -> [T; 3] {
