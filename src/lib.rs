@@ -1,9 +1,19 @@
 #![doc = include_str!("../README.md")]
 //! ## Modules
 //!
-//! One module per pipeline stage: [`subpixel`] (snapping) → [`edge`] (triangle
-//! coverage) and [`mod@line`] (midpoint lines) → [`blit`] (where pixels go) →
-//! [`band`] (the band buffer) → [`render`] (the band loop).
+//! One module per pipeline stage, in the order a vertex travels (the source
+//! folders are the stages: `src/geometry/`, `src/raster/`, `src/pixel/`,
+//! `src/output/`; the paths below are flat):
+//!
+//! * geometry, meshes in and snapped screen triangles out: [`math`],
+//!   [`mesh`], [`light`], [`clip3d`], [`pipeline`] (the vertex stage);
+//! * raster, exact coverage and interpolation: [`subpixel`] (snapping),
+//!   [`edge`] (triangle coverage), [`mod@line`] (midpoint lines), [`clip`],
+//!   [`mod@primitive`], [`raster3d`], [`varyings`];
+//! * pixel, the opt-in per-pixel work (cargo feature `fragment`):
+//!   `fragment` (shaders), `texture`, `blend`, `aa`, `line_aa`, `shape`;
+//! * output, the buffers and the band loop down to the `DrawTarget`:
+//!   [`band`], [`depth`], [`blit`] (where pixels go), [`render`].
 //!
 //! On top: [`view3d`], the one-call 3D front, and [`prelude`], the names
 //! most programs need.
@@ -12,47 +22,24 @@
 #![forbid(unsafe_code)]
 #![deny(missing_docs)]
 
+// The stages are folders; their modules keep the flat public paths.
+mod geometry;
+mod output;
 #[cfg(feature = "fragment")]
-#[cfg_attr(docsrs, doc(cfg(feature = "fragment")))]
-pub mod aa;
-mod attr;
-pub mod band;
-#[cfg(feature = "fragment")]
-#[cfg_attr(docsrs, doc(cfg(feature = "fragment")))]
-pub mod blend;
-pub mod blit;
-pub mod clip;
-pub mod clip3d;
+mod pixel;
+mod raster;
+
 pub mod color;
-pub mod depth;
-pub mod edge;
 pub mod error;
-#[cfg(feature = "fragment")]
-#[cfg_attr(docsrs, doc(cfg(feature = "fragment")))]
-pub mod fragment;
-pub mod light;
-pub mod line;
-#[cfg(feature = "fragment")]
-#[cfg_attr(docsrs, doc(cfg(feature = "fragment")))]
-pub mod line_aa;
-pub mod math;
-pub mod mesh;
-pub mod pipeline;
 pub mod prelude;
-pub mod primitive;
-pub mod raster3d;
-pub mod render;
-// Anti-aliased coverage and gradients blend (`blend`), so shapes go with the
-// fragment stage's modules.
-#[cfg(feature = "fragment")]
-#[cfg_attr(docsrs, doc(cfg(feature = "fragment")))]
-pub mod shape;
-pub mod subpixel;
-#[cfg(feature = "fragment")]
-#[cfg_attr(docsrs, doc(cfg(feature = "fragment")))]
-pub mod texture;
-pub mod varyings;
 pub mod view3d;
+
+pub use geometry::{clip3d, light, math, mesh, pipeline};
+pub use output::{band, blit, depth, render};
+#[cfg(feature = "fragment")]
+pub use pixel::{aa, blend, fragment, line_aa, shape, texture};
+use raster::attr;
+pub use raster::{clip, edge, line, primitive, raster3d, subpixel, varyings};
 
 pub use band::Band;
 pub use clip::{ClipRect, MAX_FRAME_DIM};

@@ -10,7 +10,7 @@
 //! coordinates are dyadic, so only the intersection points round, by far
 //! less than the tolerance 1e-9).
 //!
-//! Bounds (derived in `src/aa/mod.rs`): pixels that no edge meets are exact;
+//! Bounds (derived in `src/pixel/aa/mod.rs`): pixels that no edge meets are exact;
 //! pixels crossed by one edge and holding no vertex are within
 //! `1/(2N) + 1/(4N²)`; all others within `min(1, 4/N)` (and, observed
 //! rather than proven, below `1/N`).

@@ -75,7 +75,7 @@ fn sp<const S: u32>(x: i64, y: i64) -> SubPoint<S> {
 }
 
 /// The exact fast-path threshold: the largest bounding-box side, in
-/// subpixels, that takes the `i32` path (`src/edge.rs`: `2·side + 2^(S+1) ≤
+/// subpixels, that takes the `i32` path (`src/raster/edge.rs`: `2·side + 2^(S+1) ≤
 /// X` with `X = ⌊√((2^31 − 3)·2^S)⌋`).
 pub fn fast_threshold_sub(s: u32) -> i64 {
     let limit = (i128::from(i32::MAX) - 2) << s;
@@ -432,7 +432,7 @@ fn limit_near_far_ratio() {
 /// same `f32` points, inside the documented `Fx` envelope (model coordinates
 /// within ±4, eye within ±256, target within ±64, fov 20°..120°, near ≥
 /// 1/16, far ≤ 4096), bucketed by clip `w` as in the table of
-/// `src/math/transform.rs`: the error must stay below the documented bound
+/// `src/geometry/math/transform.rs`: the error must stay below the documented bound
 /// plus half a subpixel of snapping (`S = 8`). Beyond the envelope `Fx`
 /// constructors report saturation as a typed error.
 #[test]

@@ -1,7 +1,7 @@
 //! Lines: `line_pixels` against an independent `f64` midpoint reference and
 //! against embedded-graphics 0.8's Bresenham `Line`.
 //!
-//! The exact-arithmetic check of the rule lives in `src/line.rs`; these tests
+//! The exact-arithmetic check of the rule lives in `src/raster/line.rs`; these tests
 //! compare with code that shares nothing with it.
 
 use embedded_graphics::geometry::Point;

@@ -1,7 +1,7 @@
 //! Independent reference rasterizers, coverage bitmaps, a PRNG and generators.
 //!
 //! Written from the specification (pixel `(X, Y)` sampled at `(X+0.5, Y+0.5)`,
-//! top-left rule of D3D11.3 §3.4.2.1), not from `src/edge.rs`, so agreement
+//! top-left rule of D3D11.3 §3.4.2.1), not from `src/raster/edge.rs`, so agreement
 //! between the two means something. Everything here is brute force: one
 //! exact `i128` evaluation of each edge function per pixel centre.
 

@@ -3,7 +3,7 @@
 //! reference per pixel centre.
 //!
 //! The reference is written from the documented conventions of
-//! `src/texture/mod.rs`, not from its code: `u` in units of 2^-16 of the
+//! `src/pixel/texture/mod.rs`, not from its code: `u` in units of 2^-16 of the
 //! texture; texel `i` covers `[i, i + 1)` in `p = u·size`; nearest takes
 //! texel `⌊p⌋`, bilinear blends texels `⌊p − ½⌋` and `⌊p − ½⌋ + 1` by the
 //! fraction of `p − ½`; wrap takes indices modulo the size, clamp clamps them
@@ -11,7 +11,7 @@
 //!
 //! Stated bounds checked here: nearest exact; bilinear within ½ + 2^-9 of the
 //! exact blend. Through a triangle, the `Varyings` bound `δ` on `(u, v)`
-//! (src/varyings.rs) adds `255 · size · δ / 2^16` per axis to bilinear's
+//! (src/raster/varyings.rs) adds `255 · size · δ / 2^16` per axis to bilinear's
 //! bound (the exact blend changes by at most 255 per texel of motion, and is
 //! continuous in both addressing modes), and lets nearest pick any texel
 //! within `δ` of the exact coordinate.
@@ -205,7 +205,7 @@ fn bilinear_reproduces_texels_at_their_centres_and_blends_across_the_wrap_seam()
 const W: usize = 80;
 const H: usize = 64;
 
-/// The `Varyings` bound (src/varyings.rs) on a value with exact value `v`:
+/// The `Varyings` bound (src/raster/varyings.rs) on a value with exact value `v`:
 /// affine ½ + 2^-7 of the screen-linear value; perspective-correct
 /// ½ + (2^10 + |v|/8)/(Q − 1/8) with `Q` the normalised `1/w` of the
 /// pixel, at least the smallest normalised vertex value.

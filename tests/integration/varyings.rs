@@ -45,7 +45,7 @@ fn affine_and_perspective_varyings_within_derived_bounds() {
         };
         tris += 1;
         let inv: Vec<f64> = tri.v.iter().map(|v| f64::from(v.inv_w)).collect();
-        // The normalisation of src/varyings.rs: the largest 1/w gets 30 bits.
+        // The normalisation of src/raster/varyings.rs: the largest 1/w gets 30 bits.
         let qmax = tri.v.iter().map(|v| v.inv_w).max().unwrap();
         let scale = 2f64.powi(30 - (32 - qmax.leading_zeros()) as i32);
         let q_lo = inv.iter().cloned().fold(f64::MAX, f64::min) * scale;
@@ -64,7 +64,7 @@ fn affine_and_perspective_varyings_within_derived_bounds() {
                     let persp: f64 = (0..3).map(|i| l[i] * inv[i] * v(i)).sum::<f64>() / den;
                     let ea = (f64::from(got_a[k]) - lin).abs();
                     let ep = (f64::from(got_p[k]) - persp).abs();
-                    // Bounds from src/varyings.rs (plus f64 evaluation slack).
+                    // Bounds from src/raster/varyings.rs (plus f64 evaluation slack).
                     assert!(ea <= 0.5 + 1.0 / 128.0 + 1e-6, "affine {ea} at ({x},{y}) {tri:?} {vals:?}");
                     let bound = 0.5 + (1024.0 + persp.abs() / 8.0) / (q_lo - 0.125) + 1e-6;
                     assert!(ep <= bound, "perspective {ep} > {bound} at ({x},{y})");
