@@ -7,9 +7,10 @@
 //!
 //! * geometry, meshes in and snapped screen triangles out: [`math`],
 //!   [`mesh`], [`light`], [`clip3d`], [`pipeline`] (the vertex stage);
-//! * raster, exact coverage and interpolation: [`subpixel`] (snapping),
-//!   [`edge`] (triangle coverage), [`mod@line`] (midpoint lines), [`clip`],
-//!   [`mod@primitive`], [`raster3d`], [`varyings`];
+//! * raster, exact coverage and interpolation: snapping ([`SubPoint`]),
+//!   [`edge`] (triangle coverage), [`mod@line`] (midpoint lines), the
+//!   clip rectangle ([`ClipRect`]), the 2D primitives ([`Primitive`]),
+//!   [`raster3d`] (screen triangles), [`varyings`];
 //! * pixel, the opt-in per-pixel work (cargo feature `fragment`):
 //!   `fragment` (shaders), `texture`, `blend`, `aa`, `line_aa`, `shape`;
 //! * output, the buffers and the band loop down to the `DrawTarget`:
@@ -29,8 +30,8 @@ mod output;
 mod pixel;
 mod raster;
 
-pub mod color;
-pub mod error;
+mod color;
+mod error;
 pub mod prelude;
 pub mod view3d;
 
@@ -39,7 +40,8 @@ pub use output::{band, blit, depth, render};
 #[cfg(feature = "fragment")]
 pub use pixel::{aa, blend, fragment, line_aa, shape, texture};
 use raster::attr;
-pub use raster::{clip, edge, line, primitive, raster3d, subpixel, varyings};
+pub use raster::{edge, line, raster3d, varyings};
+use raster::{clip, primitive, subpixel};
 
 pub use band::Band;
 pub use clip::{ClipRect, MAX_FRAME_DIM};

@@ -11,7 +11,7 @@
 //!   far plane. Perspective sets `w = −z_view` (the distance along the view).
 //! * [`Viewport`] maps NDC x, y ∈ [−1, 1] to pixels with y flipped: NDC
 //!   (−1, +1) is the top-left *corner* of the viewport, pixel (0, 0) covers
-//!   `[0, 1) × [0, 1)` as in [`crate::subpixel`]. Depth stays `z/w` ∈ [0, 1].
+//!   `[0, 1) × [0, 1)` as in [`SubPoint`](crate::SubPoint). Depth stays `z/w` ∈ [0, 1].
 //!
 //! Bad parameters never panic: the view and projection constructors return
 //! [`Error::NonFiniteCoordinate`] for NaN or infinite inputs,
