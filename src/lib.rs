@@ -40,8 +40,8 @@ pub use output::{band, blit, depth, render};
 #[cfg(feature = "fragment")]
 pub use pixel::{aa, blend, fragment, line_aa, shape, texture};
 use raster::attr;
-pub use raster::{edge, line, raster3d, varyings};
 use raster::{clip, primitive, subpixel};
+pub use raster::{edge, line, raster3d, varyings};
 
 pub use band::Band;
 pub use clip::{ClipRect, MAX_FRAME_DIM};
