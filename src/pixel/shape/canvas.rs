@@ -96,16 +96,65 @@ where
     D::Color: Interpolate,
 {
     /// Draws into `target` (clipped as [`TargetBlitter::new`]).
+    ///
+    /// ```
+    /// use embedded_graphics::{mock_display::MockDisplay, pixelcolor::BinaryColor};
+    /// use microraster::shape::{Rect, Shape, ShapeStyle, TargetCanvas};
+    /// let bar = Rect::new(1.0, 0.0, 2.0, 1.0)?.styled(ShapeStyle::fill(BinaryColor::On))?;
+    /// let mut display = MockDisplay::new();
+    /// let mut canvas = TargetCanvas::new(&mut display);
+    /// bar.draw_on(&mut canvas);
+    /// canvas.finish().unwrap();
+    /// display.assert_pattern(&[" ##"]);
+    /// # Ok::<(), microraster::Error>(())
+    /// ```
     pub fn new(target: &'a mut D) -> Self {
         TargetCanvas { blitter: TargetBlitter::new(target), background: None }
     }
 
     /// Mixes partial pixels over `background`.
+    ///
+    /// ```
+    /// use embedded_graphics::{mock_display::MockDisplay, prelude::*};
+    /// use embedded_graphics_core::pixelcolor::{Gray8, GrayColor};
+    /// use microraster::shape::{Rect, Shape, ShapeStyle, TargetCanvas};
+    /// // Pixel 1 is a quarter covered: skipped plain, grey over black.
+    /// let bar = Rect::new(0.0, 0.0, 1.25, 1.0)?.styled(ShapeStyle::fill(Gray8::WHITE).antialiased())?;
+    /// let (mut plain, mut over) = (MockDisplay::<Gray8>::new(), MockDisplay::<Gray8>::new());
+    /// bar.draw_on(&mut TargetCanvas::new(&mut plain));
+    /// bar.draw_on(&mut TargetCanvas::new(&mut over).over(Gray8::BLACK));
+    /// assert_eq!(plain.get_pixel(Point::new(1, 0)), None);
+    /// let grey = over.get_pixel(Point::new(1, 0)).unwrap().luma();
+    /// assert!(grey > 0 && grey < 128);
+    /// # Ok::<(), microraster::Error>(())
+    /// ```
     pub fn over(self, background: D::Color) -> Self {
         TargetCanvas { background: Some(background), ..self }
     }
 
     /// The first error the target reported, if any.
+    ///
+    /// ```
+    /// use embedded_graphics_core::{pixelcolor::BinaryColor, prelude::*};
+    /// use microraster::shape::{Rect, Shape, ShapeStyle, TargetCanvas};
+    /// # struct Broken;
+    /// # impl OriginDimensions for Broken {
+    /// #     fn size(&self) -> Size { Size::new(8, 8) }
+    /// # }
+    /// # impl DrawTarget for Broken {
+    /// #     type Color = BinaryColor;
+    /// #     type Error = &'static str;
+    /// #     fn draw_iter<I: IntoIterator<Item = Pixel<BinaryColor>>>(&mut self, _: I) -> Result<(), &'static str> {
+    /// #         Err("bus")
+    /// #     }
+    /// # }
+    /// let mut display = Broken; // a DrawTarget whose every write fails with "bus"
+    /// let bar = Rect::new(0.0, 0.0, 4.0, 2.0)?.styled(ShapeStyle::fill(BinaryColor::On))?;
+    /// let mut canvas = TargetCanvas::new(&mut display);
+    /// bar.draw_on(&mut canvas);
+    /// assert_eq!(canvas.finish(), Err("bus"));
+    /// # Ok::<(), microraster::Error>(())
+    /// ```
     pub fn finish(self) -> Result<(), D::Error> {
         self.blitter.error.map_or(Ok(()), Err)
     }

@@ -62,6 +62,16 @@ pub struct Rect {
 impl Rect {
     /// Errors: NaN or infinity ([`Error::NonFiniteCoordinate`]), a negative
     /// size ([`Error::InvalidParameter`]).
+    ///
+    /// ```
+    /// use embedded_graphics::{mock_display::MockDisplay, pixelcolor::BinaryColor, Drawable};
+    /// use microraster::shape::{Rect, Shape, ShapeStyle};
+    /// let mut display = MockDisplay::new();
+    /// Rect::new(0.0, 1.0, 2.0, 1.0)?.styled(ShapeStyle::fill(BinaryColor::On))?.draw(&mut display).unwrap();
+    /// display.assert_pattern(&["  ", "##"]);
+    /// assert_eq!(Rect::new(f32::NAN, 0.0, 1.0, 1.0), Err(microraster::Error::NonFiniteCoordinate));
+    /// # Ok::<(), microraster::Error>(())
+    /// ```
     pub fn new(x: f32, y: f32, w: f32, h: f32) -> Result<Self, Error> {
         finite(&[x, y])?;
         size(&[w, h])?;
@@ -101,12 +111,28 @@ pub struct RoundedRect {
 
 impl RoundedRect {
     /// Errors: a NaN or negative radius, as for [`Rect::new`].
+    ///
+    /// ```
+    /// use microraster::{Error, shape::{Rect, RoundedRect}};
+    /// let rect = Rect::new(0.0, 0.0, 8.0, 6.0)?;
+    /// assert_eq!(RoundedRect::new(rect, 2.0)?.radius(), 2.0); // fits: unchanged
+    /// assert_eq!(RoundedRect::new(rect, -1.0), Err(Error::InvalidParameter));
+    /// assert_eq!(RoundedRect::new(rect, f32::NAN), Err(Error::NonFiniteCoordinate));
+    /// # Ok::<(), Error>(())
+    /// ```
     pub fn new(rect: Rect, radius: f32) -> Result<Self, Error> {
         size(&[radius])?;
         Ok(RoundedRect { rect, r: radius.min(0.5 * rect.w.min(rect.h)) })
     }
 
     /// The corner radius after clamping.
+    ///
+    /// ```
+    /// use microraster::shape::{Rect, RoundedRect};
+    /// let pill = RoundedRect::new(Rect::new(0.0, 0.0, 12.0, 3.0)?, 5.0)?;
+    /// assert_eq!(pill.radius(), 1.5); // half the height
+    /// # Ok::<(), microraster::Error>(())
+    /// ```
     pub fn radius(&self) -> f32 {
         self.r
     }
@@ -162,6 +188,17 @@ pub struct Ellipse {
 
 impl Ellipse {
     /// Errors as for [`Rect::new`].
+    ///
+    /// ```
+    /// use embedded_graphics::{mock_display::MockDisplay, pixelcolor::BinaryColor, prelude::*};
+    /// use microraster::shape::{Ellipse, Shape, ShapeStyle};
+    /// let mut display = MockDisplay::new();
+    /// Ellipse::new((4.0, 4.0), 3.0, 1.0)?.styled(ShapeStyle::fill(BinaryColor::On))?.draw(&mut display).unwrap();
+    /// // Wide, not tall: 1.5 px right of the centre is in, 1.5 px below is out.
+    /// assert_eq!(display.get_pixel(Point::new(5, 4)), Some(BinaryColor::On));
+    /// assert_eq!(display.get_pixel(Point::new(4, 5)), None);
+    /// # Ok::<(), microraster::Error>(())
+    /// ```
     pub fn new(center: (f32, f32), rx: f32, ry: f32) -> Result<Self, Error> {
         finite(&[center.0, center.1])?;
         size(&[rx, ry])?;
@@ -203,6 +240,16 @@ pub struct Circle(Ellipse);
 
 impl Circle {
     /// Errors as for [`Rect::new`].
+    ///
+    /// ```
+    /// use embedded_graphics::{mock_display::MockDisplay, pixelcolor::BinaryColor, prelude::*};
+    /// use microraster::shape::{Circle, Shape, ShapeStyle};
+    /// let mut display = MockDisplay::new();
+    /// Circle::new((2.0, 2.0), 1.0)?.styled(ShapeStyle::fill(BinaryColor::On))?.draw(&mut display).unwrap();
+    /// display.assert_pattern(&["    ", " ## ", " ## "]); // the 4 centres 0.71 px away
+    /// assert_eq!(Circle::new((f32::INFINITY, 0.0), 1.0), Err(microraster::Error::NonFiniteCoordinate));
+    /// # Ok::<(), microraster::Error>(())
+    /// ```
     pub fn new(center: (f32, f32), radius: f32) -> Result<Self, Error> {
         Ellipse::new(center, radius, radius).map(Circle)
     }
@@ -253,6 +300,19 @@ pub struct Arc(ArcGeom);
 
 impl Arc {
     /// Errors as for [`Rect::new`]; `start` and `sweep` must be finite.
+    ///
+    /// ```
+    /// use core::f32::consts::PI;
+    /// use embedded_graphics::{mock_display::MockDisplay, pixelcolor::BinaryColor, prelude::*};
+    /// use microraster::shape::{Arc, Shape, ShapeStyle};
+    /// let mut display = MockDisplay::new();
+    /// // The lower half (clockwise from +x), stroked 2 px wide: radii 2 to 4.
+    /// Arc::new((4.0, 4.0), 3.0, 0.0, PI)?.styled(ShapeStyle::stroke(BinaryColor::On, 2.0))?.draw(&mut display).unwrap();
+    /// assert_eq!(display.get_pixel(Point::new(4, 7)), Some(BinaryColor::On));
+    /// assert_eq!(display.get_pixel(Point::new(4, 0)), None);
+    /// assert_eq!(Arc::new((4.0, 4.0), 3.0, 0.0, f32::NAN), Err(microraster::Error::NonFiniteCoordinate));
+    /// # Ok::<(), microraster::Error>(())
+    /// ```
     pub fn new(center: (f32, f32), radius: f32, start: f32, sweep: f32) -> Result<Self, Error> {
         ArcGeom::new(center, radius, start, sweep).map(Arc)
     }
@@ -298,6 +358,19 @@ pub struct Sector(ArcGeom);
 
 impl Sector {
     /// Errors as for [`Arc::new`].
+    ///
+    /// ```
+    /// use core::f32::consts::FRAC_PI_2;
+    /// use embedded_graphics::{mock_display::MockDisplay, pixelcolor::BinaryColor, prelude::*};
+    /// use microraster::shape::{Sector, Shape, ShapeStyle};
+    /// let mut display = MockDisplay::new();
+    /// // The quarter from +x clockwise to +y: down and right of the centre.
+    /// Sector::new((4.0, 4.0), 3.0, 0.0, FRAC_PI_2)?.styled(ShapeStyle::fill(BinaryColor::On))?.draw(&mut display).unwrap();
+    /// assert_eq!(display.get_pixel(Point::new(5, 5)), Some(BinaryColor::On));
+    /// assert_eq!(display.get_pixel(Point::new(2, 5)), None);
+    /// assert_eq!(display.get_pixel(Point::new(5, 2)), None);
+    /// # Ok::<(), microraster::Error>(())
+    /// ```
     pub fn new(center: (f32, f32), radius: f32, start: f32, sweep: f32) -> Result<Self, Error> {
         ArcGeom::new(center, radius, start, sweep).map(Sector)
     }
@@ -331,6 +404,18 @@ pub struct Polygon<'a>(&'a [(f32, f32)]);
 
 impl<'a> Polygon<'a> {
     /// Errors: a NaN or infinite coordinate.
+    ///
+    /// ```
+    /// use embedded_graphics::{mock_display::MockDisplay, pixelcolor::BinaryColor, prelude::*};
+    /// use microraster::shape::{Polygon, Shape, ShapeStyle};
+    /// let mut display = MockDisplay::new();
+    /// let corner = [(0.0, 0.0), (4.0, 0.0), (0.0, 4.0)];
+    /// Polygon::new(&corner)?.styled(ShapeStyle::fill(BinaryColor::On))?.draw(&mut display).unwrap();
+    /// assert_eq!(display.get_pixel(Point::new(0, 0)), Some(BinaryColor::On));
+    /// assert_eq!(display.get_pixel(Point::new(3, 3)), None); // beyond the diagonal
+    /// assert_eq!(Polygon::new(&[(0.0, f32::NAN)]), Err(microraster::Error::NonFiniteCoordinate));
+    /// # Ok::<(), microraster::Error>(())
+    /// ```
     pub fn new(points: &'a [(f32, f32)]) -> Result<Self, Error> {
         points.iter().try_for_each(|p| finite(&[p.0, p.1]))?;
         Ok(Polygon(points))
@@ -358,6 +443,17 @@ pub struct Polyline<'a>(&'a [(f32, f32)]);
 
 impl<'a> Polyline<'a> {
     /// Errors: a NaN or infinite coordinate.
+    ///
+    /// ```
+    /// use embedded_graphics::{mock_display::MockDisplay, pixelcolor::BinaryColor, Drawable};
+    /// use microraster::shape::{Polyline, Shape, ShapeStyle};
+    /// let mut display = MockDisplay::new();
+    /// // One segment along y = 2, 2 px wide: rows 1 and 2, butt caps at x = 0 and 4.
+    /// let line = Polyline::new(&[(0.0, 2.0), (4.0, 2.0)])?;
+    /// line.styled(ShapeStyle::stroke(BinaryColor::On, 2.0))?.draw(&mut display).unwrap();
+    /// display.assert_pattern(&["    ", "####", "####"]);
+    /// # Ok::<(), microraster::Error>(())
+    /// ```
     pub fn new(points: &'a [(f32, f32)]) -> Result<Self, Error> {
         points.iter().try_for_each(|p| finite(&[p.0, p.1]))?;
         Ok(Polyline(points))

@@ -106,6 +106,14 @@ pub struct ShapeStyle<C, A = Aliased> {
 
 impl<C> ShapeStyle<C, Aliased> {
     /// Nothing drawn (add a fill or a stroke).
+    ///
+    /// ```
+    /// use embedded_graphics_core::pixelcolor::BinaryColor;
+    /// use microraster::shape::{FillRule, ShapeStyle};
+    /// let style = ShapeStyle::<BinaryColor>::new();
+    /// assert!(style.fill.is_none() && style.stroke.is_none());
+    /// assert_eq!((style.fill_rule, style.opacity), (FillRule::NonZero, 255));
+    /// ```
     pub const fn new() -> Self {
         ShapeStyle {
             fill: None,
@@ -121,11 +129,27 @@ impl<C> ShapeStyle<C, Aliased> {
     }
 
     /// A solid or gradient fill.
+    ///
+    /// ```
+    /// use embedded_graphics_core::pixelcolor::BinaryColor;
+    /// use microraster::shape::{Paint, ShapeStyle};
+    /// let style = ShapeStyle::fill(BinaryColor::On);
+    /// assert_eq!(style.fill, Some(Paint::Solid(BinaryColor::On)));
+    /// assert!(style.stroke.is_none());
+    /// ```
     pub fn fill(paint: impl Into<Paint<C>>) -> Self {
         Self::new().with_fill(paint)
     }
 
     /// A solid or gradient outline `width` px wide.
+    ///
+    /// ```
+    /// use embedded_graphics_core::pixelcolor::BinaryColor;
+    /// use microraster::shape::{Paint, ShapeStyle};
+    /// let style = ShapeStyle::stroke(BinaryColor::On, 2.0);
+    /// assert_eq!((style.stroke, style.stroke_width), (Some(Paint::Solid(BinaryColor::On)), 2.0));
+    /// assert!(style.fill.is_none());
+    /// ```
     pub fn stroke(paint: impl Into<Paint<C>>, width: f32) -> Self {
         Self::new().with_stroke(paint, width)
     }
@@ -139,22 +163,59 @@ impl<C> Default for ShapeStyle<C, Aliased> {
 
 impl<C, A: Coverage> ShapeStyle<C, A> {
     /// With this fill.
+    ///
+    /// ```
+    /// use embedded_graphics_core::pixelcolor::BinaryColor;
+    /// use microraster::shape::{Paint, ShapeStyle};
+    /// let style = ShapeStyle::stroke(BinaryColor::On, 1.0).with_fill(BinaryColor::Off);
+    /// assert_eq!(style.fill, Some(Paint::Solid(BinaryColor::Off)));
+    /// assert_eq!(style.stroke, Some(Paint::Solid(BinaryColor::On))); // kept
+    /// ```
     pub fn with_fill(self, paint: impl Into<Paint<C>>) -> Self {
         ShapeStyle { fill: Some(paint.into()), ..self }
     }
     /// With this outline.
+    ///
+    /// ```
+    /// use embedded_graphics_core::pixelcolor::BinaryColor;
+    /// use microraster::shape::{Paint, ShapeStyle};
+    /// let style = ShapeStyle::fill(BinaryColor::Off).with_stroke(BinaryColor::On, 3.0);
+    /// assert_eq!((style.stroke, style.stroke_width), (Some(Paint::Solid(BinaryColor::On)), 3.0));
+    /// assert_eq!(style.fill, Some(Paint::Solid(BinaryColor::Off))); // kept
+    /// ```
     pub fn with_stroke(self, paint: impl Into<Paint<C>>, width: f32) -> Self {
         ShapeStyle { stroke: Some(paint.into()), stroke_width: width, ..self }
     }
     /// With this join.
+    ///
+    /// ```
+    /// use embedded_graphics_core::pixelcolor::BinaryColor;
+    /// use microraster::shape::{Join, ShapeStyle};
+    /// assert_eq!(ShapeStyle::stroke(BinaryColor::On, 2.0).join, Join::Miter);
+    /// assert_eq!(ShapeStyle::stroke(BinaryColor::On, 2.0).with_join(Join::Round).join, Join::Round);
+    /// ```
     pub fn with_join(self, join: Join) -> Self {
         ShapeStyle { join, ..self }
     }
     /// With this cap.
+    ///
+    /// ```
+    /// use embedded_graphics_core::pixelcolor::BinaryColor;
+    /// use microraster::shape::{Cap, ShapeStyle};
+    /// assert_eq!(ShapeStyle::stroke(BinaryColor::On, 2.0).cap, Cap::Butt);
+    /// assert_eq!(ShapeStyle::stroke(BinaryColor::On, 2.0).with_cap(Cap::Square).cap, Cap::Square);
+    /// ```
     pub fn with_cap(self, cap: Cap) -> Self {
         ShapeStyle { cap, ..self }
     }
     /// With this fill rule.
+    ///
+    /// ```
+    /// use embedded_graphics_core::pixelcolor::BinaryColor;
+    /// use microraster::shape::{FillRule, ShapeStyle};
+    /// let style = ShapeStyle::fill(BinaryColor::On).with_fill_rule(FillRule::EvenOdd);
+    /// assert_eq!(style.fill_rule, FillRule::EvenOdd);
+    /// ```
     pub fn with_fill_rule(self, fill_rule: FillRule) -> Self {
         ShapeStyle { fill_rule, ..self }
     }
@@ -177,10 +238,32 @@ impl<C, A: Coverage> ShapeStyle<C, A> {
         ShapeStyle { opacity, ..self }
     }
     /// The same style, anti-aliased.
+    ///
+    /// ```
+    /// use embedded_graphics_core::pixelcolor::{Gray8, GrayColor};
+    /// use microraster::{Band, shape::{Rect, Shape, ShapeStyle}};
+    /// let bar = Rect::new(0.0, 0.0, 1.25, 1.0)?.styled(ShapeStyle::fill(Gray8::WHITE).antialiased())?;
+    /// let mut band = Band::<Gray8, 2, 1>::new(Gray8::BLACK);
+    /// bar.draw_on(&mut band.view(0, 1, Gray8::BLACK));
+    /// let edge = band.rows()[0][1].luma(); // a quarter of the pixel covered: grey
+    /// assert!(edge > 0 && edge < 255);
+    /// # Ok::<(), microraster::Error>(())
+    /// ```
     pub fn antialiased(self) -> ShapeStyle<C, AntiAliased> {
         self.with_coverage(AntiAliased)
     }
     /// The same style, aliased.
+    ///
+    /// ```
+    /// use embedded_graphics_core::pixelcolor::{Gray8, GrayColor};
+    /// use microraster::{Band, shape::{Rect, Shape, ShapeStyle}};
+    /// let style = ShapeStyle::fill(Gray8::WHITE).antialiased().aliased();
+    /// let bar = Rect::new(0.0, 0.0, 1.25, 1.0)?.styled(style)?;
+    /// let mut band = Band::<Gray8, 2, 1>::new(Gray8::BLACK);
+    /// bar.draw_on(&mut band.view(0, 1, Gray8::BLACK));
+    /// assert_eq!(band.rows()[0], [Gray8::WHITE, Gray8::BLACK]); // centre 1.5 is outside
+    /// # Ok::<(), microraster::Error>(())
+    /// ```
     pub fn aliased(self) -> ShapeStyle<C, Aliased> {
         self.with_coverage(Aliased)
     }
@@ -231,6 +314,16 @@ impl<S: Shape, C: Copy, A: Coverage> Styled<S, C, A> {
     /// coordinates beyond the snapping range
     /// ([`Error::CoordinateOutOfRange`]); more than [`MAX_EDGES`] edges
     /// ([`Error::BufferTooSmall`]).
+    ///
+    /// ```
+    /// use embedded_graphics_core::pixelcolor::BinaryColor;
+    /// use microraster::{Error, shape::{Rect, ShapeStyle, Styled}};
+    /// let rect = Rect::new(0.0, 0.0, 4.0, 4.0)?;
+    /// assert!(Styled::new(rect, ShapeStyle::stroke(BinaryColor::On, 1.0)).is_ok());
+    /// assert_eq!(Styled::new(rect, ShapeStyle::stroke(BinaryColor::On, -1.0)), Err(Error::InvalidParameter));
+    /// assert_eq!(Styled::new(rect, ShapeStyle::stroke(BinaryColor::On, f32::NAN)), Err(Error::NonFiniteCoordinate));
+    /// # Ok::<(), Error>(())
+    /// ```
     pub fn new(shape: S, style: ShapeStyle<C, A>) -> Result<Self, Error> {
         let (w, m) = (style.stroke_width, style.miter_limit);
         if !w.is_finite() || !m.is_finite() {
@@ -245,11 +338,27 @@ impl<S: Shape, C: Copy, A: Coverage> Styled<S, C, A> {
     }
 
     /// The shape.
+    ///
+    /// ```
+    /// use embedded_graphics_core::pixelcolor::BinaryColor;
+    /// use microraster::shape::{Circle, Shape, ShapeStyle};
+    /// let disc = Circle::new((4.0, 4.0), 3.0)?;
+    /// assert_eq!(disc.styled(ShapeStyle::fill(BinaryColor::On))?.shape(), &disc);
+    /// # Ok::<(), microraster::Error>(())
+    /// ```
     pub fn shape(&self) -> &S {
         &self.shape
     }
 
     /// The style.
+    ///
+    /// ```
+    /// use embedded_graphics_core::pixelcolor::BinaryColor;
+    /// use microraster::shape::{Circle, Shape, ShapeStyle};
+    /// let ring = Circle::new((4.0, 4.0), 3.0)?.styled(ShapeStyle::stroke(BinaryColor::On, 2.0))?;
+    /// assert_eq!(ring.style().stroke_width, 2.0);
+    /// # Ok::<(), microraster::Error>(())
+    /// ```
     pub fn style(&self) -> &ShapeStyle<C, A> {
         &self.style
     }
@@ -314,6 +423,19 @@ impl<S: Shape, C: Copy, A: Coverage> Styled<S, C, A> {
 impl<S: Shape, C: Interpolate, A: Coverage> Styled<S, C, A> {
     /// Draws on `canvas` (a band view, or a readable framebuffer): fill
     /// first, then stroke; partial pixels are blended exactly.
+    ///
+    /// ```
+    /// use embedded_graphics_core::pixelcolor::{Gray8, GrayColor};
+    /// use microraster::{Band, shape::{Rect, Shape, ShapeStyle}};
+    /// // White inside x 1 .. 4, then a 2 px black outline on top (x 0 .. 2 and 3 .. 5).
+    /// let style = ShapeStyle::fill(Gray8::WHITE).with_stroke(Gray8::BLACK, 2.0);
+    /// let boxed = Rect::new(1.0, -2.0, 3.0, 5.0)?.styled(style)?;
+    /// let mut band = Band::<Gray8, 6, 1>::new(Gray8::BLACK);
+    /// boxed.draw_on(&mut band.view(0, 1, Gray8::new(9)));
+    /// let [g, b, w] = [Gray8::new(9), Gray8::BLACK, Gray8::WHITE];
+    /// assert_eq!(band.rows()[0], [b, b, w, b, b, g]);
+    /// # Ok::<(), microraster::Error>(())
+    /// ```
     // Not inlined, for the stack (see `extent`).
     #[inline(never)]
     pub fn draw_on<T: Canvas<C>>(&self, canvas: &mut T) {

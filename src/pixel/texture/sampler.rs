@@ -73,11 +73,31 @@ pub trait Filter: sealed::Sealed + Copy + Default + Debug {
 }
 
 /// Nearest texel: the texel containing the sample point. Exact.
+///
+/// ```
+/// use embedded_graphics_core::pixelcolor::Gray8;
+/// use microraster::texture::{Nearest, Sampler, Texture, UV_ONE};
+/// let tex = Texture::<Gray8>::new(&[0, 200], 2, 1)?;
+/// // u = 3/8 is in texel 0 (u < 1/2), a quarter texel right of its centre.
+/// let nearest = Sampler { filter: Nearest, ..Sampler::NEAREST_CLAMP };
+/// assert_eq!(tex.sample(nearest, [3 * UV_ONE / 8, UV_ONE / 2]), [0; 3]);
+/// # Ok::<(), microraster::Error>(())
+/// ```
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
 pub struct Nearest;
 
 /// Bilinear: the four texels around the sample point, weighted by distance
 /// (texel centres at `(i + ½)/n`).
+///
+/// ```
+/// use embedded_graphics_core::pixelcolor::Gray8;
+/// use microraster::texture::{Bilinear, Sampler, Texture, UV_ONE};
+/// let tex = Texture::<Gray8>::new(&[0, 200], 2, 1)?;
+/// // u = 3/8: a quarter of the way from texel 0's centre to texel 1's.
+/// let bilinear = Sampler { filter: Bilinear, ..Sampler::BILINEAR_CLAMP };
+/// assert_eq!(tex.sample(bilinear, [3 * UV_ONE / 8, UV_ONE / 2]), [50; 3]);
+/// # Ok::<(), microraster::Error>(())
+/// ```
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
 pub struct Bilinear;
 
@@ -129,6 +149,17 @@ impl Sampler<Bilinear> {
 
 impl<Fi: Filter> Sampler<Fi> {
     /// The same filter with addressing `u` across and `v` down.
+    ///
+    /// ```
+    /// use embedded_graphics_core::pixelcolor::Gray8;
+    /// use microraster::texture::{Address, Sampler, Texture, UV_ONE};
+    /// let tex = Texture::<Gray8>::new(&[10, 20, 30, 40], 4, 1)?;
+    /// let uv = [-UV_ONE / 8, UV_ONE / 2]; // left of the texture
+    /// assert_eq!(tex.sample(Sampler::NEAREST_WRAP, uv), [40; 3]); // from the right end
+    /// let clamped = Sampler::NEAREST_WRAP.with_address(Address::Clamp, Address::Wrap);
+    /// assert_eq!(tex.sample(clamped, uv), [10; 3]); // the left edge extended
+    /// # Ok::<(), microraster::Error>(())
+    /// ```
     pub const fn with_address(self, u: Address, v: Address) -> Self {
         Sampler { filter: self.filter, address_u: u, address_v: v }
     }

@@ -78,6 +78,16 @@ pub struct Sprite<'t, F: TexelFormat, C, Fi: Filter = Nearest> {
 impl<'t, F: TexelFormat, C> Sprite<'t, F, C, Nearest> {
     /// The texture at the origin, scale 1, unrotated, nearest texel, untinted
     /// (white), opaque.
+    ///
+    /// ```
+    /// use embedded_graphics_core::pixelcolor::{Gray8, GrayColor};
+    /// use microraster::{Band, texture::{A8, Sprite, Texture}};
+    /// static TEX: Texture<'static, A8> = Texture::from_rows(&[[255, 255]]);
+    /// let mut band = Band::<Gray8, 3, 1>::new(Gray8::BLACK);
+    /// Sprite::new(&TEX).blend_into(&mut band.view(0, 1, Gray8::BLACK))?;
+    /// assert_eq!(band.rows()[0], [Gray8::WHITE, Gray8::WHITE, Gray8::BLACK]);
+    /// # Ok::<(), microraster::Error>(())
+    /// ```
     pub fn new(texture: &'t Texture<'t, F>) -> Self {
         Sprite {
             texture,
@@ -94,23 +104,69 @@ impl<'t, F: TexelFormat, C> Sprite<'t, F, C, Nearest> {
 
 impl<'t, F: TexelFormat, C, Fi: Filter> Sprite<'t, F, C, Fi> {
     /// The top-left corner of the unrotated box, in pixels.
+    ///
+    /// ```
+    /// use embedded_graphics_core::{pixelcolor::{Gray8, GrayColor}, prelude::Point};
+    /// use microraster::{Band, texture::{A8, Sprite, Texture}};
+    /// static DOT: Texture<'static, A8> = Texture::from_rows(&[[255]]);
+    /// let mut band = Band::<Gray8, 3, 1>::new(Gray8::BLACK);
+    /// Sprite::new(&DOT).at(Point::new(2, 0)).blend_into(&mut band.view(0, 1, Gray8::BLACK))?;
+    /// assert_eq!(band.rows()[0], [Gray8::BLACK, Gray8::BLACK, Gray8::WHITE]);
+    /// # Ok::<(), microraster::Error>(())
+    /// ```
     pub fn at(self, at: Point) -> Self {
         Sprite { at, ..self }
     }
 
     /// Pixels per texel, in [`SPRITE_SCALE_RANGE`] (checked when drawn).
+    ///
+    /// ```
+    /// use embedded_graphics_core::pixelcolor::{Gray8, GrayColor};
+    /// use microraster::{Band, Error, texture::{A8, Sprite, Texture}};
+    /// static DOT: Texture<'static, A8> = Texture::from_rows(&[[255]]);
+    /// let mut band = Band::<Gray8, 3, 1>::new(Gray8::BLACK);
+    /// Sprite::new(&DOT).scale(2.0).blend_into(&mut band.view(0, 1, Gray8::BLACK))?;
+    /// assert_eq!(band.rows()[0], [Gray8::WHITE, Gray8::WHITE, Gray8::BLACK]);
+    /// let too_big = Sprite::new(&DOT).scale(1000.0).blend_into(&mut band.view(0, 1, Gray8::BLACK));
+    /// assert_eq!(too_big, Err(Error::InvalidParameter));
+    /// # Ok::<(), Error>(())
+    /// ```
     pub fn scale(self, scale: f32) -> Self {
         Sprite { scale, ..self }
     }
 
     /// The angle in radians, clockwise on screen, about the box's centre
     /// (finite; checked when drawn).
+    ///
+    /// ```
+    /// use core::f32::consts::PI;
+    /// use embedded_graphics_core::pixelcolor::{Gray8, GrayColor};
+    /// use microraster::{Band, texture::{A8, Sprite, Texture}};
+    /// static HALF: Texture<'static, A8> = Texture::from_rows(&[[255, 0]]); // opaque, clear
+    /// let mut band = Band::<Gray8, 2, 1>::new(Gray8::BLACK);
+    /// Sprite::new(&HALF).rotate(PI).blend_into(&mut band.view(0, 1, Gray8::BLACK))?; // half a turn
+    /// assert_eq!(band.rows()[0], [Gray8::BLACK, Gray8::WHITE]);
+    /// # Ok::<(), microraster::Error>(())
+    /// ```
     pub fn rotate(self, angle: f32) -> Self {
         Sprite { angle, ..self }
     }
 
     /// The same sprite sampled with `filter` ([`Nearest`] or
     /// [`Bilinear`](super::Bilinear)).
+    ///
+    /// ```
+    /// use embedded_graphics_core::pixelcolor::{Gray8, GrayColor};
+    /// use microraster::{Band, texture::{A8, Bilinear, Sprite, Texture}};
+    /// static RAMP: Texture<'static, A8> = Texture::from_rows(&[[0, 255]]);
+    /// let mut band = Band::<Gray8, 4, 1>::new(Gray8::BLACK);
+    /// // Pixel 1 is a quarter texel right of texel 0's centre: nearest gives texel 0
+    /// // (clear), bilinear a quarter of texel 1.
+    /// Sprite::new(&RAMP).scale(2.0).filter(Bilinear).blend_into(&mut band.view(0, 1, Gray8::BLACK))?;
+    /// let grey = band.rows()[0][1].luma();
+    /// assert!(grey > 0 && grey < 128);
+    /// # Ok::<(), microraster::Error>(())
+    /// ```
     pub fn filter<G: Filter>(self, filter: G) -> Sprite<'t, F, C, G> {
         let Sprite { texture, at, scale, angle, tint, opacity, .. } = self;
         Sprite { texture, at, scale, angle, filter, tint, opacity, _c: PhantomData }
@@ -118,11 +174,31 @@ impl<'t, F: TexelFormat, C, Fi: Filter> Sprite<'t, F, C, Fi> {
 
     /// Multiplies the texels' colour by `tint` (8-bit channels; white leaves
     /// them unchanged): the colour of an [`A8`](super::A8) mask.
+    ///
+    /// ```
+    /// use embedded_graphics_core::pixelcolor::{Rgb565, RgbColor};
+    /// use microraster::{Band, texture::{A8, Sprite, Texture}};
+    /// static DOT: Texture<'static, A8> = Texture::from_rows(&[[255]]);
+    /// let mut band = Band::<Rgb565, 1, 1>::new(Rgb565::BLACK);
+    /// Sprite::new(&DOT).tint([0, 255, 0]).blend_into(&mut band.view(0, 1, Rgb565::BLACK))?;
+    /// assert_eq!(band.rows()[0], [Rgb565::GREEN]);
+    /// # Ok::<(), microraster::Error>(())
+    /// ```
     pub fn tint(self, tint: [u8; 3]) -> Self {
         Sprite { tint, ..self }
     }
 
     /// Multiplies the texels' alpha by `opacity / 255`.
+    ///
+    /// ```
+    /// use embedded_graphics_core::pixelcolor::{Gray8, GrayColor};
+    /// use microraster::{Band, blend::{Blend, Mix}, texture::{A8, Sprite, Texture}};
+    /// static DOT: Texture<'static, A8> = Texture::from_rows(&[[255]]);
+    /// let mut band = Band::<Gray8, 1, 1>::new(Gray8::BLACK);
+    /// Sprite::new(&DOT).opacity(128).blend_into(&mut band.view(0, 1, Gray8::BLACK))?;
+    /// assert_eq!(band.rows()[0], [Mix.blend(Gray8::WHITE, Gray8::BLACK, 128)]);
+    /// # Ok::<(), microraster::Error>(())
+    /// ```
     pub fn opacity(self, opacity: u8) -> Self {
         Sprite { opacity, ..self }
     }
