@@ -19,8 +19,9 @@ const W: usize = 96;
 const H: u32 = 72;
 const BG: Rgb565 = Rgb565::BLACK;
 
-/// An icosphere of 2 subdivisions in leaked buffers (162 vertices, 320 triangles).
-fn sphere() -> Mesh<'static> {
+/// An icosphere of 2 subdivisions in leaked buffers (162 vertices, 320
+/// triangles); also the mesh of `view3d_colors`.
+pub(crate) fn sphere() -> Mesh<'static> {
     let (nv, nt) = (mesh::icosphere_vertex_count(2), mesh::icosphere_triangle_count(2));
     let p = Vec::leak(vec![[0.0; 3]; nv]);
     let n = Vec::leak(vec![[0.0; 3]; nv]);
@@ -29,7 +30,7 @@ fn sphere() -> Mesh<'static> {
 }
 
 /// The same sphere in clusters.
-fn sphere_meshlets() -> &'static ValidMeshletMesh<'static> {
+pub(crate) fn sphere_meshlets() -> &'static ValidMeshletMesh<'static> {
     let m = sphere();
     let (nv, nt) = (m.vertex_count(), m.triangle_count());
     let meshlets = Vec::leak(vec![Meshlet::default(); mesh::meshlet_bound(nt)]);

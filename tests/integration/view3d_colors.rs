@@ -5,36 +5,15 @@
 //! do not match the mesh are errors.
 
 use crate::framebuffer::Framebuffer;
+use crate::view3d::{sphere, sphere_meshlets};
 use embedded_graphics_core::pixelcolor::Rgb565;
 use embedded_graphics_core::prelude::RgbColor;
-use microraster::mesh::{self, Mesh, Meshlet, ValidMeshletMesh};
 use microraster::view3d::{CUBE, Camera, Object, View3d};
 use microraster::{Error, RenderError};
 
 const W: usize = 96;
 const H: u32 = 72;
 const BG: Rgb565 = Rgb565::BLACK;
-
-/// An icosphere of 2 subdivisions in leaked buffers.
-fn sphere() -> Mesh<'static> {
-    let (nv, nt) = (mesh::icosphere_vertex_count(2), mesh::icosphere_triangle_count(2));
-    let p = Vec::leak(vec![[0.0; 3]; nv]);
-    let n = Vec::leak(vec![[0.0; 3]; nv]);
-    let i = Vec::leak(vec![[0u16; 3]; nt]);
-    mesh::icosphere(2, p, n, i).unwrap()
-}
-
-/// The same sphere in clusters.
-fn sphere_meshlets() -> &'static ValidMeshletMesh<'static> {
-    let m = sphere();
-    let (nv, nt) = (m.vertex_count(), m.triangle_count());
-    let meshlets = Vec::leak(vec![Meshlet::default(); mesh::meshlet_bound(nt)]);
-    let vertices = Vec::leak(vec![0u16; mesh::meshlet_vertex_bound(nt)]);
-    let triangles = Vec::leak(vec![[0u8; 3]; nt]);
-    let scratch = Vec::leak(vec![0u32; mesh::meshlet_scratch_len(nv, nt)]);
-    let built = mesh::build_meshlets(m, meshlets, vertices, triangles, scratch).unwrap();
-    Box::leak(Box::new(ValidMeshletMesh::new(built).unwrap()))
-}
 
 /// The scene through the front in `BH`-row bands, lit or not.
 fn draw<const BH: usize>(camera: &Camera, objects: &[Object<'_, Rgb565>], lit: bool) -> Vec<Rgb565> {
