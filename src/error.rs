@@ -16,8 +16,10 @@ use core::fmt;
 pub enum Error {
     /// A coordinate was NaN or infinite.
     NonFiniteCoordinate,
-    /// A coordinate lies outside the supported range
-    /// (see [`SubPoint::MAX_SUBPIXELS`](crate::SubPoint::MAX_SUBPIXELS)).
+    /// A coordinate lies outside the supported range: the subpixel range
+    /// (see [`SubPoint::MAX_SUBPIXELS`](crate::SubPoint::MAX_SUBPIXELS)), or
+    /// in the [`Fx`](crate::math::Fx) vertex stage a matrix entry or
+    /// coordinate that 16.16 cannot hold (docs/limits.md, "The `Fx` range in the vertex stage").
     CoordinateOutOfRange,
     /// A frame or viewport width or height is zero or larger than
     /// [`MAX_FRAME_DIM`](crate::MAX_FRAME_DIM).

@@ -33,11 +33,11 @@ use microraster::raster3d::{Affine, Interpolation, PerspectiveCorrect, ScreenTri
 use microraster::{Band, Error, Renderer};
 use microraster_fuzz::Input;
 
-/// Whether drawn pixels must lie inside the viewport itself. The vertex
-/// stage clips x/y only at the guard band and the renderer scissors to the
-/// frame, so a viewport smaller than the frame is overdrawn (reported; see
-/// docs/limits.md). Until that is fixed the target checks the guard-band
-/// bound instead.
+/// Whether drawn pixels must lie inside the viewport itself. A pipeline
+/// that is not `confined` (or given an origin) clips x/y at the guard band
+/// and the renderer scissors to the frame, so a viewport smaller than the
+/// frame is drawn up to the guard band by design (docs/limits.md). The
+/// target checks the guard-band bound, which holds for every pipeline.
 const STRICT_VIEWPORT: bool = false;
 
 const FW: usize = 64;

@@ -9,8 +9,8 @@ use embedded_graphics_core::Drawable;
 use embedded_graphics_core::pixelcolor::{Gray8, GrayColor};
 use microraster::edge::{Cull, Span, TriangleSpans};
 use microraster::shape::{
-    Arc, Canvas, Cap, Circle, Coverage, Ellipse, FillRule, Polygon, Polyline, Rect, RoundedRect, Sector,
-    Shape, ShapeStyle, Styled, TOLERANCE,
+    Arc, Canvas, Cap, Circle, Coverage, Ellipse, FillRule, LinearGradient, Polygon, Polyline, RadialGradient,
+    Rect, RoundedRect, Sector, Shape, ShapeStyle, Styled, TOLERANCE,
 };
 use microraster::{Band, ClipRect, Error, Renderer, SubPoint};
 
@@ -282,6 +282,19 @@ fn bad_input_is_a_typed_error() {
     let zigzag: Vec<(f32, f32)> = (0..400).map(|i| (i as f32 * 0.1, (i % 2) as f32 * 5.0)).collect();
     assert_eq!(Polygon::new(&zigzag).unwrap().styled(fill()).err(), Some(Error::BufferTooSmall));
     assert!(Polygon::new(&zigzag[..200]).unwrap().styled(fill()).is_ok());
+    // Gradients: NaN or infinity anywhere, a zero-length axis, a radius that is not positive.
+    let c = [Gray8::BLACK, Gray8::WHITE];
+    assert_eq!(LinearGradient::new((nan, 0.0), (1.0, 0.0), c), Err(Error::NonFiniteCoordinate));
+    assert_eq!(LinearGradient::new((0.0, 0.0), (1.0, f32::INFINITY), c), Err(Error::NonFiniteCoordinate));
+    // Finite ends whose squared distance overflows.
+    assert_eq!(LinearGradient::new((-3e38, 0.0), (3e38, 0.0), c), Err(Error::NonFiniteCoordinate));
+    assert_eq!(LinearGradient::new((2.0, 3.0), (2.0, 3.0), c), Err(Error::InvalidParameter));
+    assert!(LinearGradient::new((2.0, 3.0), (2.0, 3.5), c).is_ok());
+    assert_eq!(RadialGradient::new((0.0, nan), 1.0, c), Err(Error::NonFiniteCoordinate));
+    assert_eq!(RadialGradient::new((0.0, 0.0), f32::INFINITY, c), Err(Error::NonFiniteCoordinate));
+    assert_eq!(RadialGradient::new((0.0, 0.0), 0.0, c), Err(Error::InvalidParameter));
+    assert_eq!(RadialGradient::new((0.0, 0.0), -2.0, c), Err(Error::InvalidParameter));
+    assert!(RadialGradient::new((0.0, 0.0), 1e-3, c).is_ok());
 }
 
 #[test]
