@@ -283,6 +283,11 @@ fn model_table() -> String {
 
 /// Wall time of the frames on one thread and on two, best of 5.
 fn speedup_table(frames: &[heapless::Vec<ScreenTriangle<4>, BINS>]) -> String {
+    // Other jobs on the machine take cores from the second thread: say how busy it was before the runs.
+    let load = std::fs::read_to_string("/proc/loadavg")
+        .ok()
+        .and_then(|l| l.split_whitespace().next().map(str::to_owned))
+        .unwrap_or_else(|| "unknown".into());
     struct Null;
     impl OriginDimensions for Null {
         fn size(&self) -> Size {
@@ -341,7 +346,7 @@ fn speedup_table(frames: &[heapless::Vec<ScreenTriangle<4>, BINS>]) -> String {
     });
     let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
     format!(
-        "| host, {cores} cores reported, 60 frames (bins ready) | one thread `render_3d` (ms) | two threads `render_3d_threads` (ms) | speed-up |\n|---|---|---|---|\n\
+        "| host, {cores} cores reported, load average {load} (1 min, before the run), 60 frames (bins ready) | one thread `render_3d` (ms) | two threads `render_3d_threads` (ms) | speed-up |\n|---|---|---|---|\n\
          | best of 5 | {:.1} | {:.1} | {:.2}× |\n",
         one * 1e3,
         two * 1e3,
