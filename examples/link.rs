@@ -98,6 +98,9 @@ impl DrawTarget for Screen {
     }
 }
 
+/// Bytes sent in each frame: every band, and with dirty bands.
+type Sent = (Vec<u64>, Vec<u64>);
+
 /// Bytes each frame sends: the plain band loop (`full`, every band) and the
 /// double-banded loop through `DirtyBands` (`dirty`). Asserts after every
 /// frame that the display fed by dirty bands shows the full render's frame.
@@ -105,7 +108,7 @@ fn sent(
     frames: usize,
     mut full: impl FnMut(usize, &mut Screen),
     mut dirty: impl FnMut(usize, &mut DirtyBands<Blocking<'_, Screen>, BANDS>),
-) -> (Vec<u64>, Vec<u64>) {
+) -> Sent {
     let (mut plain, mut skipping) = (Screen::new(), Screen::new());
     let mut sink = DirtyBands::<_, BANDS>::new(Blocking(&mut skipping));
     let (mut all, mut some) = (Vec::new(), Vec::new());
@@ -121,7 +124,7 @@ fn sent(
 }
 
 /// The spinning 3D scene's bytes per frame (every band, dirty bands).
-fn scene3d_sent(frames: &[heapless::Vec<ScreenTriangle<4>, BINS>]) -> (Vec<u64>, Vec<u64>) {
+fn scene3d_sent(frames: &[heapless::Vec<ScreenTriangle<4>, BINS>]) -> Sent {
     let r = Renderer::new(HEIGHT, BG);
     let (mut band, mut bands) =
         (Band::<Rgb565, W, BAND>::new(BG), [const { Band::<Rgb565, W, BAND>::new(BG) }; 2]);
@@ -155,7 +158,7 @@ fn scene3d_sent(frames: &[heapless::Vec<ScreenTriangle<4>, BINS>]) -> (Vec<u64>,
 }
 
 /// The driving dashboard's bytes per frame (every band, dirty bands).
-fn dashboard_sent() -> (Vec<u64>, Vec<u64>) {
+fn dashboard_sent() -> Sent {
     let r = Renderer::new(HEIGHT, scene::NIGHT);
     let mut band = Band::<Rgb565, W, BAND>::new(scene::NIGHT);
     let mut bands = [const { Band::<Rgb565, W, BAND>::new(scene::NIGHT) }; 2];
@@ -179,7 +182,7 @@ fn dashboard_sent() -> (Vec<u64>, Vec<u64>) {
 }
 
 /// Bytes sent per frame, all bands and with dirty bands, for each scene.
-fn bytes_table(scenes: &[(&str, (Vec<u64>, Vec<u64>))]) -> String {
+fn bytes_table(scenes: &[(&str, Sent)]) -> String {
     let mut s = String::new();
     s += "| 60 frames, 320×240 Rgb565, 16-row bands | bytes per frame (frames 2–60: mean, min, max) | bytes, all 60 frames |\n|---|---|---|\n";
     for (name, (all, some)) in scenes {

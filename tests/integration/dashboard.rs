@@ -99,7 +99,7 @@ fn drive<const BH: usize, const N: usize>() -> (u64, u64) {
         let mut plain = Framebuffer::new(W as u32, H, Rgb565::new(31, 0, 31));
         r.render_drawables(&mut band, &mut plain, |v| live::dashboard_at(v, kmh)).unwrap();
         let mut failed = Ok(());
-        r.render_with_linked(&mut *bands, &mut sink, |view, _, _| {
+        r.render_with_linked(&mut bands, &mut sink, |view, _, _| {
             if failed.is_ok() {
                 failed = live::dashboard_at(view, kmh);
             }
