@@ -1,15 +1,20 @@
 //! The dashboard example (`examples/common/dashboard.rs`): the same image
 //! for band heights 1, 16 and the full frame; its text pixel for pixel the
 //! plain embedded-graphics version's; the panel translucent where e-g's is
-//! opaque.
+//! opaque. The driving dashboard (`examples/common/dashboard_live.rs`):
+//! `dashboard` at its speed, and through dirty bands every frame of the drive
+//! is the plain band loop's, with fewer bands sent.
 
 use crate::framebuffer::Framebuffer;
 use embedded_graphics_core::pixelcolor::Rgb565;
 use microraster::{Band, Renderer};
 
+#[path = "../../examples/common/dashboard_live.rs"]
+mod live;
 #[allow(dead_code)] // the constants the demo and benches use
 #[path = "../../examples/common/dashboard.rs"]
 mod scene;
+use microraster::render::{Blocking, DirtyBands};
 use scene::{H, NIGHT, TEXT, W};
 
 fn render<const BH: usize>() -> Vec<Rgb565> {
@@ -67,4 +72,55 @@ fn dashboard_panel_is_translucent_over_the_ring() {
         at(&mr, over_sky.0, over_sky.1),
         "microraster: the ring shows"
     );
+}
+
+#[test]
+fn driving_dashboard_at_its_speed_is_the_dashboard() {
+    let mut band = Box::new(Band::<Rgb565, W, 16>::new(NIGHT));
+    let mut fb = Framebuffer::new(W as u32, H, Rgb565::new(31, 0, 31));
+    Renderer::new(H, NIGHT)
+        .render_drawables(&mut band, &mut fb, |v| live::dashboard_at(v, scene::SPEED))
+        .unwrap();
+    assert!(fb.pixels == render::<16>(), "dashboard_at(SPEED) differs from dashboard");
+}
+
+/// The drive through `DirtyBands` (double-banded loop, `BH`-row bands): after
+/// every frame the display shows the plain band loop's frame; returns the
+/// bands sent and the bands of all frames.
+fn drive<const BH: usize, const N: usize>() -> (u64, u64) {
+    let r = Renderer::new(H, NIGHT);
+    let mut band = Box::new(Band::<Rgb565, W, BH>::new(NIGHT));
+    let mut bands = Box::new([const { Band::<Rgb565, W, BH>::new(NIGHT) }; 2]);
+    let mut display = Framebuffer::new(W as u32, H, Rgb565::new(31, 0, 31));
+    let mut sink = DirtyBands::<_, N>::new(Blocking(&mut display));
+    let mut sent_before = 0;
+    for f in 0..live::FRAMES {
+        let kmh = live::speed(f);
+        let mut plain = Framebuffer::new(W as u32, H, Rgb565::new(31, 0, 31));
+        r.render_drawables(&mut band, &mut plain, |v| live::dashboard_at(v, kmh)).unwrap();
+        let mut failed = Ok(());
+        r.render_with_linked(&mut bands, &mut sink, |view, _, _| {
+            if failed.is_ok() {
+                failed = live::dashboard_at(view, kmh);
+            }
+        })
+        .unwrap();
+        failed.unwrap();
+        assert!(sink.inner().0.pixels == plain.pixels, "wrong skip: {BH}-row bands, frame {f}");
+        let sent = sink.sent_bands() - sent_before;
+        sent_before = sink.sent_bands();
+        if (21..35).contains(&f) {
+            assert_eq!(sent, 0, "frame {f} repeats frame {}: nothing to send", f - 1);
+        } else {
+            assert!(sent > 0, "frame {f}: the needle moved, some band must go out");
+        }
+    }
+    (sink.sent_bands(), (live::FRAMES * (H as usize).div_ceil(BH)) as u64)
+}
+
+#[test]
+fn driving_dashboard_through_dirty_bands_is_the_plain_loop_and_sends_less() {
+    for (sent, all) in [drive::<16, 15>(), drive::<7, 35>()] {
+        assert!(sent * 2 < all, "{sent} of {all} bands sent");
+    }
 }

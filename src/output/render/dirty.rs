@@ -142,6 +142,10 @@ where
 /// b[17] = Rgb565::new(1, 2, 4);
 /// assert_ne!(signature(&a), signature(&b));
 /// ```
+// Out of line: one call a band (thousands of pixels), one copy of the loop
+// in the program, and a symbol (`…::render::dirty::signature`) by which
+// `scripts/code-size.sh` sees whether a program links the dirty-band code.
+#[inline(never)]
 pub fn signature<C: Interpolate>(pixels: &[C]) -> u64 {
     const K: u64 = 0x9E37_79B9_7F4A_7C15;
     let mut h = (pixels.len() as u64).wrapping_mul(K);
