@@ -7,11 +7,14 @@
 //!   and microraster's code itself;
 //! * `shapes-ratios`: the ratios of `cargo bench --bench shapes` (criterion's
 //!   medians of its last run, in `target/criterion`), each shape and the
-//!   dashboard frame against their peers, with the verdicts.
+//!   dashboard frame against their peers, with the verdicts;
+//! * `sprites-ratios`: the ratios of `cargo bench --bench sprites` (the same
+//!   criterion medians), each sprite against its peer.
 //!
 //! ```text
-//! cargo bench --bench shapes        # optional: refreshes the ratios
-//! cargo run --example readme_2d     # rewrites both README sections
+//! cargo bench --bench shapes        # optional: refreshes the shape ratios
+//! cargo bench --bench sprites       # optional: refreshes the sprite ratios
+//! cargo run --example readme_2d     # rewrites the README sections
 //! ```
 //!
 //! A section whose numbers are missing (no bench run yet) is left as it is.
@@ -57,6 +60,12 @@ fn main() -> Result<()> {
         Some(table) => replace(&mut readme, "shapes-ratios", &table)?,
         None => println!(
             "shapes-ratios: no complete `cargo bench --bench shapes` run found; section left as it is"
+        ),
+    }
+    match sprite_ratios() {
+        Some(table) => replace(&mut readme, "sprites-ratios", &table)?,
+        None => println!(
+            "sprites-ratios: no complete `cargo bench --bench sprites` run found; section left as it is"
         ),
     }
     std::fs::write("README.md", readme)?;
@@ -129,5 +138,34 @@ fn ratios() -> Option<String> {
         dash,
         if dash >= 1.0 { "microraster faster" } else { "e-g faster" }
     );
+    Some(rows)
+}
+
+/// The sprite ratio table (`benches/sprites.rs`), if all four were measured.
+fn sprite_ratios() -> Option<String> {
+    let m = |id: &str| median("sprite", id);
+    let mut rows = String::from("| microraster sprite | peer | peer / microraster |\n|---|---|---|\n");
+    let mut eg_faster = false;
+    for (peer, ours, what, against) in [
+        (
+            "skia",
+            "mr_bilinear",
+            "scaled 1.5×, rotated 0.3 rad, bilinear, blended",
+            "tiny-skia `draw_pixmap`, same transform and filter",
+        ),
+        (
+            "eg",
+            "mr_nearest",
+            "unscaled, nearest, blended through the alpha mask",
+            "e-g `Image` of opaque pixels (e-g has no alpha, scale or rotation)",
+        ),
+    ] {
+        let r = ratio(m(peer), m(ours))?;
+        eg_faster |= peer == "eg" && r < 1.0;
+        rows += &format!("| {what} | {against} | **{r:.2}** |\n");
+    }
+    if eg_faster {
+        rows += "\ne-g is faster unscaled: a sprite maps and blends every pixel of its box, where e-g copies rows.\n";
+    }
     Some(rows)
 }
