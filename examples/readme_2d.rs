@@ -24,20 +24,13 @@ use std::error::Error;
 #[path = "../benches/common/criterion_median.rs"]
 mod criterion_median;
 use criterion_median::median;
+#[path = "common/shapes_ratios.rs"]
+mod shapes_ratios;
+use shapes_ratios::ratio;
 
 type Result<T> = std::result::Result<T, Box<dyn Error>>;
 
 const SCENE: &str = "examples/common/dashboard.rs";
-const SHAPES: [(&str, &str); 8] = [
-    ("rect", "rect"),
-    ("rounded", "rounded rect"),
-    ("circle", "circle"),
-    ("ellipse", "ellipse"),
-    ("arc", "arc (stroke 5 px)"),
-    ("sector", "sector"),
-    ("polygon", "polygon (star)"),
-    ("polyline", "polyline (stroke 5 px)"),
-];
 
 fn main() -> Result<()> {
     let source = std::fs::read_to_string(SCENE)?;
@@ -56,7 +49,7 @@ fn main() -> Result<()> {
         mr.iter().map(|l| format!("{l}\n")).collect::<String>()
     );
     replace(&mut readme, "dashboard", &text)?;
-    match ratios() {
+    match shapes_ratios::table("[below](#the-dashboard)") {
         Some(table) => replace(&mut readme, "shapes-ratios", &table)?,
         None => println!(
             "shapes-ratios: no complete `cargo bench --bench shapes` run found; section left as it is"
@@ -97,48 +90,6 @@ fn replace(readme: &mut String, name: &str, text: &str) -> Result<()> {
     let e = readme[b..].find(&end).ok_or(format!("no `{end}` in README.md"))? + b;
     readme.replace_range(b..e, text);
     Ok(())
-}
-
-/// Peer / microraster (> 1: microraster faster).
-fn ratio(peer: Option<f64>, ours: Option<f64>) -> Option<f64> {
-    peer.zip(ours).map(|(p, o)| p / o)
-}
-
-/// The ratio table and its verdicts, if every shape was measured.
-fn ratios() -> Option<String> {
-    let cell = |r: Option<f64>| r.map_or("–".into(), |r| format!("{r:.2}"));
-    let mut rows = String::from(
-        "| shape | e-g / direct | tiny-skia / bands | tiny-skia AA / AA bands |\n|---|---|---|---|\n",
-    );
-    let (mut faster, mut total, mut fill_worst) = (0, 0, f64::INFINITY);
-    for (name, label) in SHAPES {
-        let g = format!("shape_{name}");
-        let m = |id: &str| median(&g, id);
-        median(&g, "mr_band16")?;
-        let r = [
-            ratio(m("eg"), m("mr_direct")),
-            ratio(m("skia"), m("mr_band16")),
-            ratio(m("skia_aa"), m("mr_aa_band16")),
-        ];
-        for v in r.iter().flatten() {
-            total += 1;
-            faster += usize::from(*v > 1.0);
-            if !matches!(name, "arc" | "polyline") {
-                fill_worst = fill_worst.min(*v);
-            }
-        }
-        rows += &format!("| {label} | {} | {} | {} |\n", cell(r[0]), cell(r[1]), cell(r[2]));
-    }
-    let dash = ratio(median("dashboard", "eg"), median("dashboard", "mr_band16"))?;
-    rows += &format!(
-        "\nmicroraster is faster in {faster} of {total} comparisons; the slowest filled shape \
-         takes {:.1}× its peer's time. The dashboard frame ([below](#the-dashboard); microraster in 16-row \
-         bands, e-g into a framebuffer): e-g / microraster = {:.2} ({}).\n",
-        1.0 / fill_worst,
-        dash,
-        if dash >= 1.0 { "microraster faster" } else { "e-g faster" }
-    );
-    Some(rows)
 }
 
 /// The sprite ratio table (`benches/sprites.rs`), if all four were measured.
