@@ -407,6 +407,9 @@ fn dist_to_arc(p: (f64, f64), c: (f64, f64), r: f64, a0: f64, sweep: f64) -> f64
     }
 }
 
+/// A lower bound of a pixel centre's distance to a shape's true outline.
+type DistFn = Box<dyn Fn((f64, f64)) -> f64>;
+
 /// Compares `ours` with tiny-skia's aliased `skia` alphas where `dist` (a
 /// lower bound of the centre's distance to the true outline) exceeds `mask`.
 /// Returns (compared, covered, compared within 1 px beyond the mask,
@@ -451,7 +454,7 @@ fn curve_fills_match_tiny_skia_away_from_the_true_curve() {
         let kind = i % 3;
         let c = (rng.uniform(8.0, 56.0), rng.uniform(6.0, 42.0));
         let cf = (c.0 as f32, c.1 as f32);
-        let (ours, path, input, dist): (_, _, f64, Box<dyn Fn((f64, f64)) -> f64>) = match kind {
+        let (ours, path, input, dist): (_, _, f64, DistFn) = match kind {
             0 => {
                 let r = rng.uniform(0.5, 24.0);
                 let ours = draw(Circle::new(cf, r as f32).unwrap(), fill());
@@ -552,7 +555,7 @@ fn curve_strokes_match_tiny_skia_away_from_the_true_outline() {
         let style = ShapeStyle::stroke(Gray8::WHITE, w).with_cap(cap);
         let n_per_turn = 512;
         let mut pb = PathBuilder::new();
-        let (ours, input, dist): (_, f64, Box<dyn Fn((f64, f64)) -> f64>) = if kind == 0 {
+        let (ours, input, dist): (_, f64, DistFn) = if kind == 0 {
             let ours = draw(Circle::new(cf, r).unwrap(), style);
             pb.move_to((c.0 + r64) as f32, c.1 as f32);
             arc_quads(&mut pb, c, r64, 0.0, TAU, n_per_turn);
