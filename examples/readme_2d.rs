@@ -7,11 +7,14 @@
 //!   and microraster's code itself;
 //! * `shapes-ratios`: the ratios of `cargo bench --bench shapes` (criterion's
 //!   medians of its last run, in `target/criterion`), each shape and the
-//!   dashboard frame against their peers, with the verdicts.
+//!   dashboard frame against their peers, with the verdicts;
+//! * `sprites-ratios`: the ratios of `cargo bench --bench sprites` (the same
+//!   criterion medians), each sprite against its peer.
 //!
 //! ```text
-//! cargo bench --bench shapes        # optional: refreshes the ratios
-//! cargo run --example readme_2d     # rewrites both README sections
+//! cargo bench --bench shapes        # optional: refreshes the shape ratios
+//! cargo bench --bench sprites       # optional: refreshes the sprite ratios
+//! cargo run --example readme_2d     # rewrites the README sections
 //! ```
 //!
 //! A section whose numbers are missing (no bench run yet) is left as it is.
@@ -21,20 +24,13 @@ use std::error::Error;
 #[path = "../benches/common/criterion_median.rs"]
 mod criterion_median;
 use criterion_median::median;
+#[path = "common/shapes_ratios.rs"]
+mod shapes_ratios;
+use shapes_ratios::ratio;
 
 type Result<T> = std::result::Result<T, Box<dyn Error>>;
 
 const SCENE: &str = "examples/common/dashboard.rs";
-const SHAPES: [(&str, &str); 8] = [
-    ("rect", "rect"),
-    ("rounded", "rounded rect"),
-    ("circle", "circle"),
-    ("ellipse", "ellipse"),
-    ("arc", "arc (stroke 5 px)"),
-    ("sector", "sector"),
-    ("polygon", "polygon (star)"),
-    ("polyline", "polyline (stroke 5 px)"),
-];
 
 fn main() -> Result<()> {
     let source = std::fs::read_to_string(SCENE)?;
@@ -53,10 +49,16 @@ fn main() -> Result<()> {
         mr.iter().map(|l| format!("{l}\n")).collect::<String>()
     );
     replace(&mut readme, "dashboard", &text)?;
-    match ratios() {
+    match shapes_ratios::table("[below](#the-dashboard)") {
         Some(table) => replace(&mut readme, "shapes-ratios", &table)?,
         None => println!(
             "shapes-ratios: no complete `cargo bench --bench shapes` run found; section left as it is"
+        ),
+    }
+    match sprite_ratios() {
+        Some(table) => replace(&mut readme, "sprites-ratios", &table)?,
+        None => println!(
+            "sprites-ratios: no complete `cargo bench --bench sprites` run found; section left as it is"
         ),
     }
     std::fs::write("README.md", readme)?;
@@ -90,44 +92,31 @@ fn replace(readme: &mut String, name: &str, text: &str) -> Result<()> {
     Ok(())
 }
 
-/// Peer / microraster (> 1: microraster faster).
-fn ratio(peer: Option<f64>, ours: Option<f64>) -> Option<f64> {
-    peer.zip(ours).map(|(p, o)| p / o)
-}
-
-/// The ratio table and its verdicts, if every shape was measured.
-fn ratios() -> Option<String> {
-    let cell = |r: Option<f64>| r.map_or("–".into(), |r| format!("{r:.2}"));
-    let mut rows = String::from(
-        "| shape | e-g / direct | tiny-skia / bands | tiny-skia AA / AA bands |\n|---|---|---|---|\n",
-    );
-    let (mut faster, mut total, mut fill_worst) = (0, 0, f64::INFINITY);
-    for (name, label) in SHAPES {
-        let g = format!("shape_{name}");
-        let m = |id: &str| median(&g, id);
-        median(&g, "mr_band16")?;
-        let r = [
-            ratio(m("eg"), m("mr_direct")),
-            ratio(m("skia"), m("mr_band16")),
-            ratio(m("skia_aa"), m("mr_aa_band16")),
-        ];
-        for v in r.iter().flatten() {
-            total += 1;
-            faster += usize::from(*v > 1.0);
-            if !matches!(name, "arc" | "polyline") {
-                fill_worst = fill_worst.min(*v);
-            }
-        }
-        rows += &format!("| {label} | {} | {} | {} |\n", cell(r[0]), cell(r[1]), cell(r[2]));
+/// The sprite ratio table (`benches/sprites.rs`), if all four were measured.
+fn sprite_ratios() -> Option<String> {
+    let m = |id: &str| median("sprite", id);
+    let mut rows = String::from("| microraster sprite | peer | peer / microraster |\n|---|---|---|\n");
+    let mut eg_faster = false;
+    for (peer, ours, what, against) in [
+        (
+            "skia",
+            "mr_bilinear",
+            "scaled 1.5×, rotated 0.3 rad, bilinear, blended",
+            "tiny-skia `draw_pixmap`, same transform and filter",
+        ),
+        (
+            "eg",
+            "mr_nearest",
+            "unscaled, nearest, blended through the alpha mask",
+            "e-g `Image` of opaque pixels (e-g has no alpha, scale or rotation)",
+        ),
+    ] {
+        let r = ratio(m(peer), m(ours))?;
+        eg_faster |= peer == "eg" && r < 1.0;
+        rows += &format!("| {what} | {against} | **{r:.2}** |\n");
     }
-    let dash = ratio(median("dashboard", "eg"), median("dashboard", "mr_band16"))?;
-    rows += &format!(
-        "\nmicroraster is faster in {faster} of {total} comparisons; the slowest filled shape \
-         takes {:.1}× its peer's time. The dashboard frame ([below](#the-dashboard); microraster in 16-row \
-         bands, e-g into a framebuffer): e-g / microraster = {:.2} ({}).\n",
-        1.0 / fill_worst,
-        dash,
-        if dash >= 1.0 { "microraster faster" } else { "e-g faster" }
-    );
+    if eg_faster {
+        rows += "\ne-g is faster unscaled: a sprite maps and blends every pixel of its box, where e-g copies rows.\n";
+    }
     Some(rows)
 }

@@ -13,6 +13,9 @@
 //! (`benches/common/mod.rs`, included below) with criterion. Cortex-M
 //! instruction counts are read from `docs/data/cortex-m.tsv`, which
 //! `bash scripts/firmware.sh sweep` writes (`examples/fw_sweep`, [`cortex`]).
+//! The 2D shape ratios are criterion's medians of the last
+//! `cargo bench --bench shapes` run, read from `target/criterion` (the
+//! report does not run that bench; without its data the section says so).
 
 use embedded_graphics_core::pixelcolor::{Rgb565, RgbColor};
 use microraster::Band;
@@ -30,8 +33,12 @@ mod charts;
 #[path = "../../benches/common/mod.rs"]
 mod common;
 mod cortex;
+#[path = "../../benches/common/criterion_median.rs"]
+mod criterion_median;
 mod frag_report;
 mod knot;
+#[path = "../common/shapes_ratios.rs"]
+mod shapes_ratios;
 mod sweep;
 mod targets;
 // The Cortex-M counts' configurations (examples/fw_sweep), timed on the host.
@@ -206,6 +213,7 @@ fn main() -> Res<()> {
     let (mut doc, targets) =
         document(&cpu, memset_ns, ceiling, &peers, &breakdown, &s2, &s3, &setups, &counts, &fw);
     doc.push_str(&fragment_section(&frag, aliased_coverage, &peers, &counts));
+    doc.push_str(&shapes_section());
     std::fs::write(out.join("tradeoffs.md"), doc)?;
     // The README quotes the targets table; keep it in step when writing docs/.
     let readme = out.join("../README.md");
@@ -997,4 +1005,21 @@ fn draw_charts(
         false,
     )?;
     Ok(())
+}
+
+/// The 2D shapes against their peers: criterion's medians of the last
+/// `cargo bench --bench shapes` run (read only; not measured here).
+fn shapes_section() -> String {
+    let mut d = String::from("## 2D shapes against their peers\n\n");
+    d += "Each shape (24 instances, 8 to 120 px, 320 × 240 `Rgb565`) against embedded-graphics' and tiny-skia's same \
+          shape: criterion's medians of the last `cargo bench --bench shapes` run (`benches/shapes.rs`), read from \
+          `target/criterion` when this report was written, not measured by it (> 1: microraster faster).\n\n";
+    match shapes_ratios::table("[README](../README.md#the-dashboard)") {
+        Some(table) => d += &table,
+        None => {
+            d += "*Not available: no complete `cargo bench --bench shapes` run in `target/criterion` when this \
+                      report was written. Run it, then the report.*\n"
+        }
+    }
+    d
 }

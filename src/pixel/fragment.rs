@@ -80,6 +80,36 @@ pub trait FragmentShader<C, const A: usize> {
     /// [`Output::alpha`] (exactly `round(a·b/255)`; 255 leaves it as it is).
     /// The default is `shade` at alpha 255. A discarded fragment writes no
     /// depth (see the [module docs](self)): it does not occlude.
+    ///
+    /// ```
+    /// use embedded_graphics::pixelcolor::{Gray8, GrayColor};
+    /// use microraster::depth::{Depth16, DepthBand};
+    /// use microraster::fragment::{FragTriangle, Fragment, FragmentShader, Output, draw_fragment_triangle};
+    /// use microraster::raster3d::{Affine, ScreenTriangle, ScreenVertex};
+    /// use microraster::{Band, SubPoint};
+    /// /// White on columns 4 and beyond; the others discarded.
+    /// struct RightHalf;
+    /// impl FragmentShader<Gray8, 1> for RightHalf {
+    ///     fn shade(&self, _: &Fragment<1>) -> Gray8 {
+    ///         Gray8::WHITE
+    ///     }
+    ///     fn shade_or_discard(&self, f: &Fragment<1>) -> Option<(Gray8, u8)> {
+    ///         (f.x >= 4).then_some((Gray8::WHITE, 255))
+    ///     }
+    /// }
+    /// let v = |x, y| ScreenVertex { pos: SubPoint::<4>::from_pixels(x, y).unwrap(), inv_w: 1 << 30, ..Default::default() };
+    /// // Covers the whole row: its hypotenuse crosses y = ½ at x = 12.
+    /// let t = FragTriangle { tri: ScreenTriangle { v: [v(0, 0), v(16, 0), v(0, 2)], flat: false }, varyings: [[0]; 3] };
+    /// let mut band = Band::<Gray8, 8, 1>::new(Gray8::BLACK);
+    /// let mut depth = DepthBand::<Depth16, 8, 1>::new();
+    /// let g = Gray8::new(9);
+    /// let mut view = band.view(0, 1, g);
+    /// draw_fragment_triangle(&t, &mut view, &mut depth.rows_mut(1), &RightHalf, Output::OPAQUE, Affine)?;
+    /// // Discarded pixels keep the clear colour.
+    /// let w = Gray8::WHITE;
+    /// assert_eq!(view.pixels().collect::<Vec<_>>(), [g, g, g, g, w, w, w, w]);
+    /// # Ok::<(), microraster::Error>(())
+    /// ```
     #[inline]
     fn shade_or_discard(&self, frag: &Fragment<A>) -> Option<(C, u8)> {
         Some((self.shade(frag), 255))

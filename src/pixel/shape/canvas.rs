@@ -43,10 +43,39 @@ use embedded_graphics_core::prelude::DrawTarget;
 /// ```
 pub trait Canvas<C: Interpolate> {
     /// The pixels the canvas holds; shapes emit nothing outside.
+    ///
+    /// ```
+    /// use embedded_graphics::pixelcolor::{Gray8, GrayColor};
+    /// use microraster::{Band, ClipRect, shape::Canvas};
+    /// let mut band = Band::<Gray8, 8, 4>::new(Gray8::BLACK);
+    /// // A view of 3 rows as frame rows 4 .. 7, at the band's width.
+    /// let view = band.view(4, 3, Gray8::BLACK);
+    /// assert_eq!(Canvas::<Gray8>::clip(&view), ClipRect::new(0, 4, 8, 7));
+    /// ```
     fn clip(&self) -> ClipRect;
     /// `color` over `span` with coverage `alpha`.
+    ///
+    /// ```
+    /// use embedded_graphics::pixelcolor::{Gray8, GrayColor};
+    /// use microraster::{Band, blend::{Blend, Mix}, edge::Span, shape::Canvas};
+    /// let mut band = Band::<Gray8, 4, 1>::new(Gray8::BLACK);
+    /// let mut view = band.view(0, 1, Gray8::BLACK);
+    /// view.fill(Span { y: 0, x: 1, len: 2 }, Gray8::WHITE, 255);
+    /// view.fill(Span { y: 0, x: 2, len: 2 }, Gray8::WHITE, 128);
+    /// let half = Mix.blend(Gray8::WHITE, Gray8::BLACK, 128);
+    /// assert_eq!(band.rows()[0], [Gray8::BLACK, Gray8::WHITE, Gray8::WHITE, half]);
+    /// ```
     fn fill(&mut self, span: Span, color: C, alpha: u8);
     /// One colour per pixel of `span` with coverage `alpha`.
+    ///
+    /// ```
+    /// use embedded_graphics::pixelcolor::{Gray8, GrayColor};
+    /// use microraster::{Band, edge::Span, shape::Canvas};
+    /// let mut band = Band::<Gray8, 4, 1>::new(Gray8::BLACK);
+    /// let mut view = band.view(0, 1, Gray8::BLACK);
+    /// view.shade(Span { y: 0, x: 1, len: 3 }, [10, 20, 30].map(Gray8::new).into_iter(), 255);
+    /// assert_eq!(band.rows()[0], [0, 10, 20, 30].map(Gray8::new));
+    /// ```
     fn shade<I: Iterator<Item = C>>(&mut self, span: Span, colors: I, alpha: u8);
 }
 

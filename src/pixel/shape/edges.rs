@@ -9,6 +9,25 @@
 use crate::{Error, SubPoint};
 
 /// Subpixel bits of every shape vertex (1/16 px, as `SubPoint<4>`).
+///
+/// A vertex moves by at most 1/32 px when snapped, so a rectangle narrower
+/// than that can vanish even when it holds a pixel centre:
+///
+/// ```
+/// use embedded_graphics::{mock_display::MockDisplay, pixelcolor::BinaryColor, prelude::*};
+/// use microraster::{SubPoint, shape::{Rect, Shape, ShapeStyle, edges::BITS}};
+/// assert_eq!(1 << BITS, 16);
+/// let p = SubPoint::<BITS>::from_f32(0.49, 0.51)?;
+/// assert_eq!((p.x(), p.y()), (8, 8)); // both 8/16 px
+/// let style = ShapeStyle::fill(BinaryColor::On);
+/// for (x, w, drawn) in [(0.49, 0.02, false), (0.45, 0.1, true)] {
+///     // x 0.49 .. 0.51 snaps to 8/16 .. 8/16: empty; 0.45 .. 0.55 to 7/16 .. 9/16.
+///     let mut display = MockDisplay::new();
+///     Rect::new(x, 0.0, w, 1.0)?.styled(style)?.draw(&mut display).unwrap();
+///     assert_eq!(display.get_pixel(Point::new(0, 0)).is_some(), drawn);
+/// }
+/// # Ok::<(), microraster::Error>(())
+/// ```
 pub const BITS: u32 = 4;
 
 /// One non-horizontal edge, stored top to bottom (`y0 < y1`) in subpixel

@@ -19,9 +19,30 @@ use core::f32::consts::{PI, TAU};
 
 /// Largest distance (px) between a flattened curve and the true curve, below
 /// the [`MAX_SEGMENTS`] cap.
+///
+/// ```
+/// use core::f32::consts::{PI, TAU};
+/// use microraster::shape::flatten::{TOLERANCE, segments};
+/// for r in [0.5f32, 3.0, 10.0, 100.0, 400.0] {
+///     // n equal chords of a circle: each is r·(1 − cos(π/n)) from its arc at most.
+///     let n = segments(r, TAU) as f32;
+///     let sagitta = r * (1.0 - (PI / n).cos());
+///     assert!(sagitta <= TOLERANCE, "r {r}: {sagitta}");
+/// }
+/// ```
 pub const TOLERANCE: f32 = 0.125;
 
 /// Most chords for a full turn.
+///
+/// ```
+/// use core::f32::consts::{PI, TAU};
+/// use microraster::shape::flatten::{MAX_SEGMENTS, TOLERANCE, segments};
+/// assert_eq!(segments(1000.0, TAU), MAX_SEGMENTS);
+/// assert_eq!(segments(1000.0, TAU / 2.0), MAX_SEGMENTS / 2);
+/// // Past r ≈ 415 px the cap wins over the tolerance: 0.3 px at r = 1000.
+/// let err = 1000.0 * (1.0 - (PI / MAX_SEGMENTS as f32).cos());
+/// assert!(err > TOLERANCE && err < 0.31, "{err}");
+/// ```
 pub const MAX_SEGMENTS: u32 = 128;
 
 /// Chords for an arc of radius `r` (px) sweeping `sweep` radians (at least

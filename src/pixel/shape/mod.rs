@@ -69,7 +69,21 @@ pub use style::{Cap, Join, ShapeStyle, Styled};
 use crate::ClipRect;
 use crate::edge::Span;
 
-/// The most edges one styled shape may have.
+/// The most edges one styled shape may have (horizontal edges are dropped
+/// and do not count); more is [`Error::BufferTooSmall`](crate::Error::BufferTooSmall)
+/// when the [`Styled`] is built.
+///
+/// ```
+/// use embedded_graphics::pixelcolor::BinaryColor;
+/// use microraster::{Error, shape::{MAX_EDGES, Polygon, Shape, ShapeStyle}};
+/// // A zigzag of n points, every edge slanted (the closing one too for even
+/// // n): n edges.
+/// let zigzag = |n: usize| (0..n).map(|i| (i as f32, (i % 2) as f32 * 4.0)).collect::<Vec<_>>();
+/// let style = ShapeStyle::fill(BinaryColor::On);
+/// assert!(Polygon::new(&zigzag(MAX_EDGES))?.styled(style).is_ok());
+/// assert_eq!(Polygon::new(&zigzag(MAX_EDGES + 2))?.styled(style).err(), Some(Error::BufferTooSmall));
+/// # Ok::<(), Error>(())
+/// ```
 pub const MAX_EDGES: usize = 256;
 
 /// Which winding numbers are inside.

@@ -29,6 +29,16 @@ pub trait Shape: Sized {
     fn stroke_contours<const N: usize>(&self, e: &mut EdgeList<N>, p: &StrokeParams) -> Result<(), Error>;
 
     /// Pairs the shape with a style (checked: see [`Styled::new`]).
+    ///
+    /// ```
+    /// use embedded_graphics::pixelcolor::BinaryColor;
+    /// use microraster::{Error, shape::{Circle, Shape, ShapeStyle}};
+    /// let ring = Circle::new((8.0, 8.0), 6.0)?.styled(ShapeStyle::stroke(BinaryColor::On, 2.0))?;
+    /// assert_eq!(ring.rows(), (1, 16)); // rows 1 ..= 15: 8 ± (6 + 1) px
+    /// let bad = Circle::new((8.0, 8.0), 6.0)?.styled(ShapeStyle::stroke(BinaryColor::On, f32::NAN));
+    /// assert_eq!(bad.err(), Some(Error::NonFiniteCoordinate));
+    /// # Ok::<(), Error>(())
+    /// ```
     fn styled<C: Copy, A: Coverage>(self, style: ShapeStyle<C, A>) -> Result<Styled<Self, C, A>, Error> {
         Styled::new(self, style)
     }

@@ -29,10 +29,24 @@ pub trait TexelFormat: sealed::Sealed {
     /// One stored texel: `u16` raw bits for [`Rgb565`] (red in bits 15–11,
     /// green 10–5, blue 4–0: `embedded-graphics`' `RawU16`), `u8` for
     /// [`Gray8`].
+    ///
+    /// ```
+    /// use embedded_graphics::pixelcolor::{Gray8, Rgb565};
+    /// use microraster::texture::{A8, Argb4444, TexelFormat};
+    /// let sizes = [size_of::<<Rgb565 as TexelFormat>::Storage>(), size_of::<<Gray8 as TexelFormat>::Storage>()];
+    /// assert_eq!(sizes, [2, 1]);
+    /// assert_eq!([size_of::<<A8 as TexelFormat>::Storage>(), size_of::<<Argb4444 as TexelFormat>::Storage>()], [1, 2]);
+    /// ```
     type Storage: Copy + Default + Debug + PartialEq + 'static;
 
     /// Channels that carry information (3 for [`Rgb565`], 1 for [`Gray8`]);
     /// filters only compute these and copy channel 0 to the others.
+    ///
+    /// ```
+    /// use embedded_graphics::pixelcolor::{Gray8, Rgb565};
+    /// use microraster::texture::{A8, Argb4444, TexelFormat};
+    /// assert_eq!([Rgb565::CHANNELS, Gray8::CHANNELS, A8::CHANNELS, Argb4444::CHANNELS], [3, 1, 1, 3]);
+    /// ```
     const CHANNELS: usize;
 
     /// The texel's channels at 8 bits. [`Rgb565`]: each channel by bit
@@ -45,9 +59,26 @@ pub trait TexelFormat: sealed::Sealed {
 
     /// True for formats with an alpha channel ([`A8`](crate::texture::A8),
     /// [`Argb4444`](crate::texture::Argb4444)).
+    ///
+    /// ```
+    /// use embedded_graphics::pixelcolor::{Gray8, Rgb565};
+    /// use microraster::texture::{A8, Argb4444, TexelFormat};
+    /// assert!(!Rgb565::ALPHA && !Gray8::ALPHA);
+    /// assert!(A8::ALPHA && Argb4444::ALPHA);
+    /// ```
     const ALPHA: bool = false;
 
     /// The texel's alpha at 8 bits (255, opaque, for formats without one).
+    ///
+    /// ```
+    /// use embedded_graphics::pixelcolor::Rgb565;
+    /// use microraster::texture::{A8, Argb4444, TexelFormat};
+    /// assert_eq!(Rgb565::alpha(0x1234), 255); // no alpha channel: opaque
+    /// assert_eq!(A8::alpha(77), 77);
+    /// // The top nibble, 4 bits to 8 by replication (×17): 8 → 136, 15 → 255.
+    /// assert_eq!(Argb4444::alpha(0x80F0), 136);
+    /// assert_eq!(Argb4444::alpha(0xF000), 255);
+    /// ```
     #[inline]
     fn alpha(texel: Self::Storage) -> u8 {
         let _ = texel;

@@ -69,6 +69,11 @@ mod sealed {
 /// ```
 pub trait Filter: sealed::Sealed + Copy + Default + Debug {
     /// True for [`Bilinear`].
+    ///
+    /// ```
+    /// use microraster::texture::{Bilinear, Filter, Nearest};
+    /// assert!(Bilinear::BILINEAR && !Nearest::BILINEAR);
+    /// ```
     const BILINEAR: bool;
 }
 
@@ -131,18 +136,54 @@ pub struct Sampler<Fi: Filter = Nearest> {
 
 impl Sampler<Nearest> {
     /// Nearest texel, repeating.
+    ///
+    /// ```
+    /// use embedded_graphics::pixelcolor::Gray8;
+    /// use microraster::texture::{Sampler, Texture, UV_ONE};
+    /// let tex = Texture::<Gray8>::new(&[10, 20], 2, 1)?;
+    /// // u = 5/4 wraps to 1/4: texel 0.
+    /// assert_eq!(tex.sample(Sampler::NEAREST_WRAP, [5 * UV_ONE / 4, 0]), [10; 3]);
+    /// # Ok::<(), microraster::Error>(())
+    /// ```
     pub const NEAREST_WRAP: Self =
         Sampler { filter: Nearest, address_u: Address::Wrap, address_v: Address::Wrap };
     /// Nearest texel, edges extended.
+    ///
+    /// ```
+    /// use embedded_graphics::pixelcolor::Gray8;
+    /// use microraster::texture::{Sampler, Texture, UV_ONE};
+    /// let tex = Texture::<Gray8>::new(&[10, 20], 2, 1)?;
+    /// // u = 5/4 is past the right edge: the last texel.
+    /// assert_eq!(tex.sample(Sampler::NEAREST_CLAMP, [5 * UV_ONE / 4, 0]), [20; 3]);
+    /// # Ok::<(), microraster::Error>(())
+    /// ```
     pub const NEAREST_CLAMP: Self =
         Sampler { filter: Nearest, address_u: Address::Clamp, address_v: Address::Clamp };
 }
 
 impl Sampler<Bilinear> {
     /// Bilinear, repeating.
+    ///
+    /// ```
+    /// use embedded_graphics::pixelcolor::Gray8;
+    /// use microraster::texture::{Sampler, Texture, UV_ONE};
+    /// let tex = Texture::<Gray8>::new(&[10, 20], 2, 1)?;
+    /// // u = 0 is half-way between texel 1's centre (wrapped left) and texel 0's.
+    /// assert_eq!(tex.sample(Sampler::BILINEAR_WRAP, [0, UV_ONE / 2]), [15; 3]);
+    /// # Ok::<(), microraster::Error>(())
+    /// ```
     pub const BILINEAR_WRAP: Self =
         Sampler { filter: Bilinear, address_u: Address::Wrap, address_v: Address::Wrap };
     /// Bilinear, edges extended.
+    ///
+    /// ```
+    /// use embedded_graphics::pixelcolor::Gray8;
+    /// use microraster::texture::{Sampler, Texture, UV_ONE};
+    /// let tex = Texture::<Gray8>::new(&[10, 20], 2, 1)?;
+    /// // Left of texel 0's centre there is only texel 0.
+    /// assert_eq!(tex.sample(Sampler::BILINEAR_CLAMP, [0, UV_ONE / 2]), [10; 3]);
+    /// # Ok::<(), microraster::Error>(())
+    /// ```
     pub const BILINEAR_CLAMP: Self =
         Sampler { filter: Bilinear, address_u: Address::Clamp, address_v: Address::Clamp };
 }

@@ -29,7 +29,24 @@ use crate::{Error, Interpolate, MAX_FRAME_DIM};
 use core::marker::PhantomData;
 use embedded_graphics_core::prelude::{DrawTarget, Drawable, Pixel, Point};
 
-/// The smallest and largest [`Sprite::scale`].
+/// The smallest and largest [`Sprite::scale`] (both allowed); a scale
+/// outside is [`Error::InvalidParameter`] when drawn.
+///
+/// ```
+/// use embedded_graphics::{pixelcolor::Gray8, prelude::*};
+/// use microraster::texture::{A8, SPRITE_SCALE_RANGE, Sprite, Texture};
+/// use microraster::{Band, Error};
+/// static DOT: Texture<'static, A8> = Texture::from_rows(&[[255]]);
+/// let mut band = Band::<Gray8, 4, 1>::new(Gray8::BLACK);
+/// let (lo, hi) = SPRITE_SCALE_RANGE;
+/// for scale in [lo, 1.0, hi] {
+///     assert_eq!(Sprite::new(&DOT).scale(scale).blend_into(&mut band.view(0, 1, Gray8::BLACK)), Ok(()));
+/// }
+/// for scale in [lo / 2.0, hi * 2.0, 0.0, -1.0] {
+///     let drawn = Sprite::new(&DOT).scale(scale).blend_into(&mut band.view(0, 1, Gray8::BLACK));
+///     assert_eq!(drawn, Err(Error::InvalidParameter), "{scale}");
+/// }
+/// ```
 pub const SPRITE_SCALE_RANGE: (f32, f32) = (1.0 / 256.0, 256.0);
 
 /// A texture drawn at a position, scaled, rotated, filtered ([`Nearest`] or
