@@ -184,6 +184,12 @@ impl Shape for RoundedRect {
 
 /// An ellipse: centre and the two radii (px).
 ///
+/// Its stroke is the region between the ellipses of radii `± width/2`: for
+/// a circle exactly the offset curve, for a stretched ellipse as wide as
+/// the pen at the four ends of the axes and narrower between them (about
+/// 0.95 of the width for radii 10 × 5 and 0.82 for 20 × 5 with `width/2 =
+/// 1`), where tiny-skia and SVG stroke the true offset curve.
+///
 /// ```
 /// use microraster::shape::Ellipse;
 /// assert!(Ellipse::new((5.0, 5.0), 4.0, 2.0).is_ok());
