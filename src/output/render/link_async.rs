@@ -54,6 +54,7 @@ use crate::{Error, Interpolate, Primitive, RenderError};
 /// let Some(result) = microraster::render::poll_ready(frame) else { unreachable!() };
 /// assert_eq!((result, sink.0), (Ok(()), 8 * 5));
 /// ```
+#[cfg_attr(docsrs, doc(cfg(feature = "async")))]
 pub trait AsyncBandSink<C> {
     /// What a failed transfer reports.
     type Error;
@@ -70,6 +71,7 @@ pub trait AsyncBandSink<C> {
     fn send(&mut self, area: Rectangle, pixels: &[C]) -> impl Future<Output = Result<(), Self::Error>>;
 }
 
+#[cfg_attr(docsrs, doc(cfg(feature = "async")))]
 impl<C: Interpolate> Renderer<C> {
     /// [`Renderer::render_linked`] into an [`AsyncBandSink`] over two bands:
     /// band *k + 1* is drawn while band *k*'s transfer is pending. Same
@@ -215,6 +217,7 @@ async fn overlap<F: Future>(transfer: F, work: impl FnOnce()) -> F::Output {
 /// ```
 /// assert_eq!(microraster::render::poll_ready(async { 7 }), Some(7));
 /// ```
+#[cfg_attr(docsrs, doc(cfg(feature = "async")))]
 pub fn poll_ready<F: Future>(future: F) -> Option<F::Output> {
     let future = pin!(future);
     match future.poll(&mut core::task::Context::from_waker(core::task::Waker::noop())) {

@@ -30,6 +30,7 @@ const RAMWR: u8 = 0x2C;
 
 /// What a failed [`SpiPanel`] transfer reports.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[cfg_attr(docsrs, doc(cfg(feature = "async")))]
 pub enum SpiPanelError<S, P> {
     /// The SPI device failed.
     Spi(S),
@@ -72,6 +73,7 @@ pub enum SpiPanelError<S, P> {
 /// // Window commands (1 + 4 bytes, twice, and 1), then 8 × 8 pixels of 2 bytes.
 /// assert_eq!(panel.release().0.0, 11 + 128);
 /// ```
+#[cfg_attr(docsrs, doc(cfg(feature = "async")))]
 pub struct SpiPanel<'w, SPI, DC> {
     spi: SPI,
     dc: DC,

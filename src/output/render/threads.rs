@@ -16,6 +16,7 @@ use crate::depth::{DepthBand, DepthFormat, DepthState};
 use crate::raster3d::{Interpolation, ScreenTriangle};
 use crate::{Interpolate, RenderError};
 
+#[cfg_attr(docsrs, doc(cfg(feature = "std")))]
 impl<C: Interpolate + Send + Sync> Renderer<C> {
     /// [`Renderer::render_with`] on `N` threads: thread `t` draws bands
     /// `t, t + N, t + 2N, …` into `bands[t]` with its own `scratch[t]` (a
