@@ -43,7 +43,7 @@ fn main() -> Result<()> {
         "![the dashboard with microraster](docs/dashboard.png) \
          ![the same screen in plain embedded-graphics](docs/dashboard_eg.png)\n\n\
          Left: microraster, {n_mr} lines; right: plain embedded-graphics, {n_eg} lines \
-         (non-blank, non-comment lines of `dashboard` and `dashboard_eg` in \
+         (non-blank, non-comment lines of `dashboard_showing` and `dashboard_eg_showing`, the speed and its readout as arguments, in \
          [`{SCENE}`]({SCENE}); target, no more lines than e-g: **{verdict}**).\n\n\
          ```rust,ignore\n{}```\n",
         mr.iter().map(|l| format!("{l}\n")).collect::<String>()

@@ -109,7 +109,11 @@ pub static FUEL: Texture<'static, A8> = Texture::from_rows(&FUEL_MASK);
 
 // dashboard:mr:begin
 /// The dashboard with microraster's shapes, into one band (any height).
-pub fn dashboard<const N: usize>(view: &mut BandView<'_, Rgb565, N>) -> Result<(), Error> {
+pub fn dashboard_showing<const N: usize>(
+    view: &mut BandView<'_, Rgb565, N>,
+    kmh: f32,
+    readout: &str,
+) -> Result<(), Error> {
     let sky = LinearGradient::new((0.0, 0.0), (0.0, 240.0), [NIGHT, DEEP])?;
     Rect::new(0.0, 0.0, 320.0, 240.0)?.styled(ShapeStyle::fill(sky))?.draw_on(view);
     let zones = LinearGradient::new((40.0, 0.0), (210.0, 0.0), [GREEN, RED])?;
@@ -126,7 +130,7 @@ pub fn dashboard<const N: usize>(view: &mut BandView<'_, Rgb565, N>) -> Result<(
             Text::with_alignment(LABELS[k / 4], at, text, Alignment::Center).draw(view)?;
         }
     }
-    let a = angle(SPEED);
+    let a = angle(kmh);
     let needle = [polar(90.0, a), polar(5.0, a + PI / 2.0), polar(16.0, a + PI), polar(5.0, a - PI / 2.0)];
     Polygon::new(&needle)?.styled(ShapeStyle::fill(NEEDLE).antialiased())?.draw_on(view);
     let hub = RadialGradient::new((C.0 - 3.0, C.1 - 3.0), 12.0, [WHITE, DEEP])?;
@@ -138,15 +142,25 @@ pub fn dashboard<const N: usize>(view: &mut BandView<'_, Rgb565, N>) -> Result<(
     Text::new("ODO 12840", Point::new(216, 110), text).draw(view)?;
     Text::new("21.5 C", Point::new(216, 130), text).draw(view)?;
     let big = MonoTextStyle::new(&FONT_10X20, TEXT);
-    Text::with_alignment("88", Point::new(124, 178), big, Alignment::Center).draw(view)?;
+    Text::with_alignment(readout, Point::new(124, 178), big, Alignment::Center).draw(view)?;
     Text::with_alignment("km/h", Point::new(124, 192), text, Alignment::Center).draw(view)?;
     Ok(())
 }
 // dashboard:mr:end
 
+/// The dashboard at [`SPEED`], reading "88" (the README's screen, the
+/// benches' and the firmware's frame).
+pub fn dashboard<const N: usize>(view: &mut BandView<'_, Rgb565, N>) -> Result<(), Error> {
+    dashboard_showing(view, SPEED, "88")
+}
+
 // dashboard:eg:begin
 /// The same dashboard in plain embedded-graphics, into any `DrawTarget`.
-pub fn dashboard_eg<D: DrawTarget<Color = Rgb565>>(d: &mut D) -> Result<(), D::Error> {
+pub fn dashboard_eg_showing<D: DrawTarget<Color = Rgb565>>(
+    d: &mut D,
+    kmh: f32,
+    readout: &str,
+) -> Result<(), D::Error> {
     d.clear(NIGHT)?;
     let deg = |a: f32| Angle::from_radians(a);
     let ring = PrimitiveStyle::with_stroke(GREEN, 10);
@@ -162,7 +176,7 @@ pub fn dashboard_eg<D: DrawTarget<Color = Rgb565>>(d: &mut D) -> Result<(), D::E
             Text::with_alignment(LABELS[k / 4], at, text, Alignment::Center).draw(d)?;
         }
     }
-    let a = angle(SPEED);
+    let a = angle(kmh);
     let needle = PrimitiveStyle::with_fill(NEEDLE);
     let (tip, back) = (pixel(90.0, a), pixel(16.0, a + PI));
     eg::Triangle::new(tip, pixel(5.0, a + PI / 2.0), back).into_styled(needle).draw(d)?;
@@ -180,8 +194,13 @@ pub fn dashboard_eg<D: DrawTarget<Color = Rgb565>>(d: &mut D) -> Result<(), D::E
     Text::new("ODO 12840", Point::new(216, 110), text).draw(d)?;
     Text::new("21.5 C", Point::new(216, 130), text).draw(d)?;
     let big = MonoTextStyle::new(&FONT_10X20, TEXT);
-    Text::with_alignment("88", Point::new(124, 178), big, Alignment::Center).draw(d)?;
+    Text::with_alignment(readout, Point::new(124, 178), big, Alignment::Center).draw(d)?;
     Text::with_alignment("km/h", Point::new(124, 192), text, Alignment::Center).draw(d)?;
     Ok(())
 }
 // dashboard:eg:end
+
+/// The plain embedded-graphics dashboard at [`SPEED`], reading "88".
+pub fn dashboard_eg<D: DrawTarget<Color = Rgb565>>(d: &mut D) -> Result<(), D::Error> {
+    dashboard_eg_showing(d, SPEED, "88")
+}
