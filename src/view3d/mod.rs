@@ -127,6 +127,18 @@ pub struct View3d<C, const W: usize, const H: usize> {
 impl<C: Interpolate, const W: usize, const H: usize> View3d<C, W, H> {
     /// Buffers for frames cleared to `background`, with the defaults of the
     /// [module docs](self).
+    ///
+    /// ```
+    /// use embedded_graphics::pixelcolor::{Rgb565, RgbColor};
+    /// use microraster::Cull;
+    /// use microraster::view3d::{DEFAULT_LIGHTING, View3d};
+    /// // `const`: it can be a `static` in firmware (W × H × 4 bytes plus the cluster cache).
+    /// static VIEW: View3d<Rgb565, 320, 16> = View3d::new(Rgb565::BLACK);
+    /// let view = View3d::<Rgb565, 64, 8>::new(Rgb565::BLUE);
+    /// assert_eq!(view.background(), Rgb565::BLUE);
+    /// assert_eq!((view.lighting(), view.cull()), (Some(DEFAULT_LIGHTING), Cull::Clockwise));
+    /// # let _ = &VIEW;
+    /// ```
     pub const fn new(background: C) -> Self {
         View3d {
             band: Band::new(background),
@@ -142,6 +154,21 @@ impl<C: Interpolate, const W: usize, const H: usize> View3d<C, W, H> {
 
     /// Frames of `rows` rows from the display's top (`None`, the default:
     /// as tall as the display).
+    ///
+    /// ```
+    /// use embedded_graphics::{mock_display::MockDisplay, prelude::Point};
+    /// use embedded_graphics::pixelcolor::{Rgb565, RgbColor};
+    /// use microraster::view3d::{CUBE, Camera, Object, View3d};
+    /// let mut view = View3d::<Rgb565, 64, 8>::new(Rgb565::BLACK);
+    /// view.set_height(Some(20));
+    /// let (camera, cube) = (Camera::look_at([3.0, 3.0, 3.0], [0.0; 3]), Object::new(&CUBE, Rgb565::RED));
+    /// let mut display = MockDisplay::new();
+    /// view.draw(&camera, &[cube], &mut display)?;
+    /// // Rows 0–19 are sent; the rest of the 64-row display is not touched.
+    /// assert!(display.get_pixel(Point::new(0, 19)).is_some());
+    /// assert!(display.get_pixel(Point::new(0, 20)).is_none());
+    /// # Ok::<(), microraster::RenderError<core::convert::Infallible>>(())
+    /// ```
     pub fn set_height(&mut self, rows: Option<u32>) {
         self.height = rows;
     }
@@ -150,12 +177,34 @@ impl<C: Interpolate, const W: usize, const H: usize> View3d<C, W, H> {
     /// non-finite direction) fails the frame, as in
     /// [`Lighting::validate`]. For a highlight:
     /// `view.set_lighting(Some(DEFAULT_LIGHTING.with_specular(0.5, 16)))`.
+    ///
+    /// ```
+    /// use embedded_graphics::{mock_display::MockDisplay, prelude::Point};
+    /// use embedded_graphics::pixelcolor::{Rgb565, RgbColor};
+    /// use microraster::view3d::{CUBE, Camera, Object, View3d};
+    /// let mut view = View3d::<Rgb565, 64, 8>::new(Rgb565::BLACK);
+    /// view.set_lighting(None);
+    /// let (camera, cube) = (Camera::look_at([3.0, 3.0, 3.0], [0.0; 3]), Object::new(&CUBE, Rgb565::RED));
+    /// let mut display = MockDisplay::new();
+    /// view.draw(&camera, &[cube], &mut display)?;
+    /// // Unlit: every face is the material colour itself.
+    /// assert_eq!(display.get_pixel(Point::new(32, 32)), Some(Rgb565::RED));
+    /// # Ok::<(), microraster::RenderError<core::convert::Infallible>>(())
+    /// ```
     pub fn set_lighting(&mut self, lighting: Option<Lighting<f32>>) {
         self.lighting = lighting;
     }
 
     /// Which screen winding is dropped ([`Cull::Clockwise`], back faces, by
     /// default; [`Cull::None`] for open meshes seen from both sides).
+    ///
+    /// ```
+    /// use embedded_graphics::pixelcolor::{Rgb565, RgbColor};
+    /// use microraster::{Cull, view3d::View3d};
+    /// let mut view = View3d::<Rgb565, 64, 8>::new(Rgb565::BLACK);
+    /// view.set_cull(Cull::None);
+    /// assert_eq!(view.cull(), Cull::None);
+    /// ```
     pub fn set_cull(&mut self, cull: Cull) {
         self.cull = cull;
     }
@@ -214,6 +263,23 @@ impl<C: Interpolate, const W: usize, const H: usize> View3d<C, W, H> {
     /// band, [`Pipeline::rows`] set to the band's rows; meshlet meshes go
     /// through [`Pipeline::draw_meshlets`]), and the band is sent with one
     /// `fill_contiguous`. The image does not depend on `H`.
+    ///
+    /// ```
+    /// use embedded_graphics::{mock_display::MockDisplay, prelude::Point};
+    /// use embedded_graphics::pixelcolor::{Rgb565, RgbColor};
+    /// use microraster::view3d::{CUBE, Camera, Object, View3d};
+    /// let mut view = View3d::<Rgb565, 64, 8>::new(Rgb565::BLACK);
+    /// let camera = Camera::look_at([3.0, 2.0, 4.0], [0.0; 3]);
+    /// // A spinning cube: three frames, each turned a little further.
+    /// for frame in 0..3 {
+    ///     let cube = Object::new(&CUBE, Rgb565::RED).rotate_y(0.2 * frame as f32);
+    ///     let mut display = MockDisplay::new();
+    ///     view.draw(&camera, &[cube], &mut display)?;
+    ///     assert_ne!(display.get_pixel(Point::new(32, 32)), Some(Rgb565::BLACK));
+    ///     assert_eq!(display.get_pixel(Point::new(0, 0)), Some(Rgb565::BLACK));
+    /// }
+    /// # Ok::<(), microraster::RenderError<core::convert::Infallible>>(())
+    /// ```
     ///
     /// Errors (nothing is sent unless stated): [`Error::InvalidFrameSize`]
     /// for a display (or [`View3d::set_height`]) of 0 rows or more than
