@@ -1,5 +1,6 @@
-//! Host preview: a lit, depth-tested microraster scene rendered band by band
-//! into `embedded-graphics-simulator`'s `SimulatorDisplay`, with e-g text
+//! Host preview: a lit, depth-tested microraster scene drawn by the one-call
+//! front ([`View3d`](microraster::view3d::View3d)) band by band into
+//! `embedded-graphics-simulator`'s `SimulatorDisplay`, with e-g text
 //! drawn over it, and written as a PNG through the simulator's output image
 //! (`to_rgb_output_image(..).save_png(..)`). The simulator is a host-only
 //! dev-dependency with `default-features = false`: no SDL window, so no
@@ -21,18 +22,11 @@ use embedded_graphics::pixelcolor::Rgb565;
 use embedded_graphics::prelude::*;
 use embedded_graphics::text::Text;
 use embedded_graphics_simulator::{OutputSettingsBuilder, SimulatorDisplay};
-use microraster::depth::{Depth16, DepthBand, DepthState};
 use microraster::light::Lighting;
-use microraster::math::{Vec3, transform};
+use microraster::math::Vec3;
 use microraster::mesh::{ValidMesh, icosphere, torus, torus_triangle_count, torus_vertex_count};
-use microraster::pipeline::Pipeline;
-use microraster::raster3d::{PerspectiveCorrect, ScreenTriangle};
-use microraster::{Band, Renderer};
+use microraster::view3d::{Camera, Object, View320x240};
 
-const W: usize = 320;
-const H: u32 = 240;
-/// Rows per band: the RAM a firmware build would spend (colour and depth).
-const BAND_ROWS: usize = 16;
 const BG: Rgb565 = Rgb565::new(2, 6, 8);
 const TORUS: (usize, usize) = (32, 12);
 
@@ -47,30 +41,21 @@ fn main() -> Result<(), Box<dyn Error>> {
     let mut ti = vec![[0; 3]; torus_triangle_count(TORUS.0, TORUS.1)];
     let ring = ValidMesh::new(torus(TORUS.0, TORUS.1, 1.0, 0.35, &mut tp, &mut tn, &mut ti)?)?;
 
-    // Camera and light, then the vertex stage into the frame's bins.
-    let eye =
-        transform::look_at(Vec3::new(0.0, 1.2, 4.5), Vec3::new(0.0, 0.0, 0.0), Vec3::new(0.0, 1.0, 0.0))?;
-    let light = Lighting::try_new(0.25, Vec3::new(-0.5, 0.7, 1.0), 0.75)?;
-    let pipeline = Pipeline::<f32, 4>::perspective(eye, 0.9, 1.0, 20.0, W as u32, H)?.with_lighting(light);
-    let mut bins = heapless::Vec::<ScreenTriangle<4>, 1024>::new();
-    let at = |x, angle| transform::translation(Vec3::new(x, 0.0, 0.0)) * transform::rotation_x(angle);
-    pipeline.draw_valid_mesh(&sphere, &at(-1.1, 0.0), Rgb565::new(31, 36, 6), &mut bins)?;
-    pipeline.draw_valid_mesh(&ring, &at(1.1, 0.35), Rgb565::new(8, 40, 31), &mut bins)?;
+    // The view (320 × 240 in 16-row bands: the RAM a firmware build would
+    // spend), its light, the camera and the two objects.
+    let mut view = View320x240::new(BG);
+    view.set_lighting(Some(Lighting::try_new(0.25, Vec3::new(-0.5, 0.7, 1.0), 0.75)?));
+    let camera = Camera::look_at([0.0, 1.2, 4.5], [0.0; 3]).perspective(0.9, 1.0, 20.0);
+    let objects = [
+        Object::new(&sphere, Rgb565::new(31, 36, 6)).translate([-1.1, 0.0, 0.0]),
+        Object::new(&ring, Rgb565::new(8, 40, 31)).rotate_x(0.35).translate([1.1, 0.0, 0.0]),
+    ];
 
-    // Bands into the simulator's display: any e-g `DrawTarget` takes them.
-    let mut display = SimulatorDisplay::<Rgb565>::new(Size::new(W as u32, H));
-    let mut band = Band::<Rgb565, W, BAND_ROWS>::new(BG);
-    let mut depth = DepthBand::<Depth16, W, BAND_ROWS>::new();
-    Renderer::new(H, BG).render_3d(
-        &bins,
-        &mut band,
-        &mut depth,
-        DepthState::LESS_WRITE,
-        PerspectiveCorrect,
-        &mut display,
-    )?;
-    let label = format!("microraster: {} triangles, {BAND_ROWS}-row bands", bins.len());
-    Text::new(&label, Point::new(6, 14), MonoTextStyle::new(&FONT_6X10, Rgb565::WHITE)).draw(&mut display)?;
+    // One call: every band into the simulator's display (any e-g `DrawTarget`).
+    let mut display = SimulatorDisplay::<Rgb565>::new(Size::new(320, 240));
+    view.draw(&camera, &objects, &mut display)?;
+    let label = "microraster: View3d, 16-row bands";
+    Text::new(label, Point::new(6, 14), MonoTextStyle::new(&FONT_6X10, Rgb565::WHITE)).draw(&mut display)?;
 
     // The simulator's own PNG output (2x, no gaps between pixels).
     let settings = OutputSettingsBuilder::new().scale(2).pixel_spacing(0).build();
@@ -78,6 +63,6 @@ fn main() -> Result<(), Box<dyn Error>> {
         std::fs::create_dir_all(dir)?;
     }
     display.to_rgb_output_image(&settings).save_png(&path)?;
-    println!("{}: {} × {} display, {} triangles", path.display(), W, H, bins.len());
+    println!("{}: 320 × 240 display, {} objects", path.display(), objects.len());
     Ok(())
 }
