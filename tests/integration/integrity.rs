@@ -501,22 +501,36 @@ fn every_path<T: Scalar>(
         whole.and_then(|_| binned::<1>(&bins)),
         whole.and_then(|_| binned::<3>(&bins)),
         whole.and_then(|_| binned::<16>(&bins)),
+        cached.and_then(|_| binned::<PH>(&cbins)),
+        cached.and_then(|_| binned::<1>(&cbins)),
+        cached.and_then(|_| binned::<3>(&cbins)),
         cached.and_then(|_| binned::<16>(&cbins)),
         per_band::<T, 1>(&p, &mesh, &model, false),
         per_band::<T, 3>(&p, &mesh, &model, false),
-        per_band::<T, 16>(&p, &mesh, &model, true),
+        per_band::<T, 16>(&p, &mesh, &model, false),
         per_band::<T, PH>(&p, &mesh, &model, false),
+        per_band::<T, 1>(&p, &mesh, &model, true),
+        per_band::<T, 3>(&p, &mesh, &model, true),
+        per_band::<T, 16>(&p, &mesh, &model, true),
+        per_band::<T, PH>(&p, &mesh, &model, true),
     ];
-    const NAMES: [&str; 9] = [
+    const NAMES: [&str; 16] = [
         "binned, full-frame band",
         "binned, 1-row bands",
         "binned, 3-row bands",
         "binned, 16-row bands",
+        "cached, full-frame band",
+        "cached, 1-row bands",
+        "cached, 3-row bands",
         "cached, 16-row bands",
         "per band, 1 row",
         "per band, 3 rows",
-        "per band (cached), 16 rows",
+        "per band, 16 rows",
         "per band, full frame",
+        "per band (cached), 1 row",
+        "per band (cached), 3 rows",
+        "per band (cached), 16 rows",
+        "per band (cached), full frame",
     ];
     for (img, name) in images.iter().zip(NAMES).skip(1) {
         if img != &images[0] {
@@ -571,8 +585,9 @@ fn within_a_pixel(reference: &[Gray8], other: &[Gray8]) -> Option<(usize, usize)
 
 /// 5,000 random clipped scenes (cameras within ±10^4, far/near up to 10^5,
 /// coordinates up to 10^4 and beyond the `Fx` range) through every path:
-/// binned with bands of 1, 3, 16 and 40 rows, cached, and per band (1, 3,
-/// 16 cached, 40 rows), in f32 and in `Fx`. Within a numeric type every path
+/// binned and cached, each with bands of 1, 3, 16 and 40 rows, and per band
+/// (1, 3, 16 and 40 rows), with and without the vertex cache, in f32 and in
+/// `Fx`. Within a numeric type every path
 /// gives the same image or the same error; `Fx` fails only with
 /// `CoordinateOutOfRange` (16.16 cannot hold a value) or where f32 fails, and
 /// otherwise draws what f32 draws to within a pixel. That comparison is made
