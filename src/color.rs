@@ -16,7 +16,7 @@ use embedded_graphics_core::prelude::PixelColor;
 /// for [`BinaryColor`]. Unused channels are 0 with a maximum of 0.
 ///
 /// ```
-/// use embedded_graphics_core::pixelcolor::Rgb565;
+/// use embedded_graphics::pixelcolor::Rgb565;
 /// use microraster::Interpolate;
 /// let c = Rgb565::new(31, 10, 3);
 /// assert_eq!(c.to_channels(), [31, 10, 3]);

@@ -130,7 +130,7 @@ impl<E> From<Error> for RenderError<E> {
 /// ```
 /// # extern crate std;
 /// use embedded_graphics::mock_display::MockDisplay;
-/// use embedded_graphics_core::pixelcolor::BinaryColor;
+/// use embedded_graphics::pixelcolor::BinaryColor;
 /// use microraster::{Band, Renderer};
 /// fn frame() -> Result<(), std::boxed::Box<dyn core::error::Error>> {
 ///     let mut band = Band::<BinaryColor, 8, 4>::new(BinaryColor::Off);

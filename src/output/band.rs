@@ -17,7 +17,7 @@ use embedded_graphics_core::prelude::PixelColor;
 /// user's choice of cell or mutex) or on the stack.
 ///
 /// ```
-/// use embedded_graphics_core::pixelcolor::Rgb565;
+/// use embedded_graphics::pixelcolor::Rgb565;
 /// use microraster::Band;
 /// static BAND: Band<Rgb565, 320, 16> = Band::new(Rgb565::new(0, 0, 0));
 /// assert_eq!(Band::<Rgb565, 320, 16>::BYTES, 320 * 16 * 2);
@@ -72,7 +72,7 @@ impl<C: PixelColor, const W: usize, const H: usize> Band<C, W, H> {
 
 /// Some rows of a [`Band`] placed at frame row `y0`: a [`Blitter`] whose clip
 /// is exactly those rows, and an `embedded-graphics`
-/// [`DrawTarget`](embedded_graphics_core::draw_target::DrawTarget) in frame
+/// [`DrawTarget`](embedded_graphics::draw_target::DrawTarget) in frame
 /// coordinates (any e-g drawable draws into it; pixels outside its rows are
 /// dropped).
 pub struct BandView<'a, C, const W: usize> {

@@ -52,7 +52,7 @@ fn span_columns(span: Span) -> impl Iterator<Item = i32> {
 ///
 /// ```
 /// use embedded_graphics::mock_display::MockDisplay;
-/// use embedded_graphics_core::pixelcolor::BinaryColor;
+/// use embedded_graphics::pixelcolor::BinaryColor;
 /// use microraster::{blit::TargetBlitter, edge::Cull, SubPoint, Triangle};
 /// let p = |x, y| SubPoint::<4>::from_pixels(x, y).unwrap();
 /// let mut display = MockDisplay::<BinaryColor>::new();

@@ -37,7 +37,7 @@ pub use spi_panel::{SpiPanel, SpiPanelError};
 ///
 /// ```
 /// use embedded_graphics::mock_display::MockDisplay;
-/// use embedded_graphics_core::pixelcolor::BinaryColor;
+/// use embedded_graphics::pixelcolor::BinaryColor;
 /// use microraster::{Band, Primitive, Renderer, SubPoint, Triangle};
 /// let p = |x, y| SubPoint::<4>::from_pixels(x, y).unwrap();
 /// let scene = [Primitive::from(Triangle::flat([p(0, 0), p(4, 0), p(0, 4)], BinaryColor::On))];

@@ -55,7 +55,7 @@
 //! blitter:
 //!
 //! ```
-//! use embedded_graphics_core::pixelcolor::Gray8;
+//! use embedded_graphics::pixelcolor::Gray8;
 //! use microraster::blend::{BlendBlitter, Mix};
 //! use microraster::{edge::Cull, Band, SubPoint, Triangle};
 //! let p = |x, y| SubPoint::<4>::from_pixels(x, y).unwrap();
@@ -108,7 +108,7 @@ const fn div_round(num: u32, den: u32) -> u32 {
 /// [module docs](self) for the exact equations.
 ///
 /// ```
-/// use embedded_graphics_core::pixelcolor::Rgb565;
+/// use embedded_graphics::pixelcolor::Rgb565;
 /// use microraster::blend::{Blend, ColorAdd, Mix};
 /// let (s, d) = (Rgb565::new(31, 0, 10), Rgb565::new(0, 63, 30));
 /// assert_eq!(Mix.blend(s, d, 255), s);
@@ -173,7 +173,7 @@ mode!(
     /// `s`: the source replaces the destination; alpha is ignored.
     ///
     /// ```
-    /// use embedded_graphics_core::pixelcolor::Gray4;
+    /// use embedded_graphics::pixelcolor::Gray4;
     /// use microraster::blend::{Blend, Replace};
     /// assert_eq!(Replace.blend(Gray4::new(3), Gray4::new(9), 0), Gray4::new(3));
     /// ```
@@ -189,7 +189,7 @@ mode!(
     /// d)·α/255)`.
     ///
     /// ```
-    /// use embedded_graphics_core::pixelcolor::Gray8;
+    /// use embedded_graphics::pixelcolor::Gray8;
     /// use microraster::blend::{Blend, Mix};
     /// // (10·155 + 250·100)/255 = 104.1 → 104
     /// assert_eq!(Mix.blend(Gray8::new(250), Gray8::new(10), 100), Gray8::new(104));
@@ -206,7 +206,7 @@ mode!(
     /// with α = 255 that is `round(s·d/m)`, with α = 0 it is `d`.
     ///
     /// ```
-    /// use embedded_graphics_core::pixelcolor::Rgb565;
+    /// use embedded_graphics::pixelcolor::Rgb565;
     /// use microraster::blend::{Blend, Multiply};
     /// let d = Rgb565::new(20, 40, 31);
     /// // 20·15/31 = 9.68 → 10, 40·63/63 = 40, 31·0/31 = 0
@@ -224,7 +224,7 @@ mode!(
     /// Alpha-weighted additive: `min(m, d + round(s·α/255))`.
     ///
     /// ```
-    /// use embedded_graphics_core::pixelcolor::Gray8;
+    /// use embedded_graphics::pixelcolor::Gray8;
     /// use microraster::blend::{Additive, Blend};
     /// // 100 + round(200·128/255) = 100 + round(100.39) = 200
     /// assert_eq!(Additive.blend(Gray8::new(200), Gray8::new(100), 128), Gray8::new(200));
@@ -238,7 +238,7 @@ mode!(
     /// Saturating colour add: `min(m, d + s)`; alpha is ignored.
     ///
     /// ```
-    /// use embedded_graphics_core::pixelcolor::Gray2;
+    /// use embedded_graphics::pixelcolor::Gray2;
     /// use microraster::blend::{Blend, ColorAdd};
     /// assert_eq!(ColorAdd.blend(Gray2::new(2), Gray2::new(2), 0), Gray2::new(3));
     /// ```
@@ -250,7 +250,7 @@ mode!(
     /// Colour subtract saturating at 0: `max(0, d − s)`; alpha is ignored.
     ///
     /// ```
-    /// use embedded_graphics_core::pixelcolor::Gray2;
+    /// use embedded_graphics::pixelcolor::Gray2;
     /// use microraster::blend::{Blend, ColorSubtract};
     /// assert_eq!(ColorSubtract.blend(Gray2::new(3), Gray2::new(2), 0), Gray2::new(0));
     /// assert_eq!(ColorSubtract.blend(Gray2::new(1), Gray2::new(2), 0), Gray2::new(1));
@@ -266,7 +266,7 @@ mode!(
 /// [`Blend::blend_fill`] dispatch once per call to the per-mode loops.
 ///
 /// ```
-/// use embedded_graphics_core::pixelcolor::Gray8;
+/// use embedded_graphics::pixelcolor::Gray8;
 /// use microraster::blend::{Blend, BlendMode, Mix};
 /// let (s, d) = (Gray8::new(250), Gray8::new(10));
 /// assert_eq!(BlendMode::Mix.blend(s, d, 77), Mix.blend(s, d, 77));
@@ -356,7 +356,7 @@ impl Blend for BlendMode {
 /// either runs out): the span-level entry point for shading stages.
 ///
 /// ```
-/// use embedded_graphics_core::pixelcolor::Gray8;
+/// use embedded_graphics::pixelcolor::Gray8;
 /// use microraster::blend::{blend_span, Additive};
 /// let mut row = [Gray8::new(10), Gray8::new(250)];
 /// blend_span(Additive, &mut row, [Gray8::new(20), Gray8::new(20)], 255);

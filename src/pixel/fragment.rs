@@ -159,7 +159,7 @@ impl Output<crate::blend::Mix> {
 /// [`MAX_VARYING`](crate::varyings::MAX_VARYING) (nothing is drawn).
 ///
 /// ```
-/// use embedded_graphics_core::pixelcolor::{Gray8, GrayColor};
+/// use embedded_graphics::pixelcolor::{Gray8, GrayColor};
 /// use microraster::depth::{Depth16, DepthBand};
 /// use microraster::fragment::{FragTriangle, Fragment, Output, draw_fragment_triangle};
 /// use microraster::raster3d::{PerspectiveCorrect, ScreenTriangle, ScreenVertex};
@@ -216,7 +216,7 @@ where
 ///
 /// ```
 /// use embedded_graphics::mock_display::MockDisplay;
-/// use embedded_graphics_core::pixelcolor::{Gray8, GrayColor};
+/// use embedded_graphics::pixelcolor::{Gray8, GrayColor};
 /// use microraster::depth::{Depth16, DepthBand};
 /// use microraster::fragment::{FragTriangle, Fragment, Output, draw_fragment_band};
 /// use microraster::raster3d::{Affine, ScreenTriangle, ScreenVertex};
@@ -233,7 +233,7 @@ where
 ///     result = result.and(draw_fragment_band(&tris, view, &mut rows, &shader, Output::OPAQUE, Affine));
 /// })?;
 /// result?;
-/// assert_eq!(display.get_pixel(embedded_graphics_core::prelude::Point::new(0, 6)), Some(Gray8::new(90)));
+/// assert_eq!(display.get_pixel(embedded_graphics::prelude::Point::new(0, 6)), Some(Gray8::new(90)));
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 #[allow(clippy::too_many_arguments)]

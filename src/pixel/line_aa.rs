@@ -65,7 +65,7 @@
 //! any other sink.
 //!
 //! ```
-//! use embedded_graphics_core::pixelcolor::Gray8;
+//! use embedded_graphics::pixelcolor::Gray8;
 //! use microraster::line_aa::{line_aa_pixels, LineAa};
 //! use microraster::{Band, ClipRect, SubPoint};
 //! let p = |x: f32, y: f32| SubPoint::<4>::from_f32(x, y).unwrap();
@@ -381,7 +381,7 @@ fn build(a: (i32, i32), b: (i32, i32), s: u32, clip: ClipRect, alpha: u8) -> Opt
 /// An anti-aliased line segment (see the [module docs](self)).
 ///
 /// ```
-/// use embedded_graphics_core::pixelcolor::Rgb565;
+/// use embedded_graphics::pixelcolor::Rgb565;
 /// use microraster::line_aa::LineAa;
 /// use microraster::{Band, SubPoint};
 /// let p = |x, y| SubPoint::<4>::from_pixels(x, y).unwrap();

@@ -22,7 +22,7 @@ pub enum Shading<C> {
 /// A triangle with snapped vertices.
 ///
 /// ```
-/// use embedded_graphics_core::pixelcolor::Rgb565;
+/// use embedded_graphics::pixelcolor::Rgb565;
 /// use microraster::{SubPoint, Triangle};
 /// let t = Triangle::<_, 4>::from_f32([(0.0, 0.0), (10.5, 2.0), (3.0, 8.25)], Rgb565::new(31, 0, 0))?;
 /// assert_eq!(t.rows(), (0, 7)); // centres y + 0.5 for y in 0..=7 lie within 0..=8.25

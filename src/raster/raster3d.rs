@@ -161,7 +161,7 @@ impl Interpolation for PerspectiveCorrect {
 /// [`DepthRows::none`]). Every parameter is inferred from the arguments.
 ///
 /// ```
-/// use embedded_graphics_core::pixelcolor::{Gray8, GrayColor};
+/// use embedded_graphics::pixelcolor::{Gray8, GrayColor};
 /// use microraster::depth::{Depth16, DepthBand, DepthState};
 /// use microraster::raster3d::{Affine, ScreenTriangle, ScreenVertex, draw_triangle};
 /// use microraster::{Band, SubPoint};

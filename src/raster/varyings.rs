@@ -132,7 +132,7 @@ fn round_shift(v: i64, s: u32) -> i64 {
 /// parameter is inferred from the arguments.
 ///
 /// ```
-/// use embedded_graphics_core::pixelcolor::{Gray8, GrayColor};
+/// use embedded_graphics::pixelcolor::{Gray8, GrayColor};
 /// use microraster::depth::{DepthRows, DepthState};
 /// use microraster::raster3d::{ScreenTriangle, ScreenVertex};
 /// use microraster::varyings::draw_fragments;

@@ -224,7 +224,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     /// vertex stage alone. Same errors as [`Pipeline::draw_meshlets`].
     ///
     /// ```
-    /// use embedded_graphics_core::pixelcolor::Rgb565;
+    /// use embedded_graphics::pixelcolor::Rgb565;
     /// use microraster::math::{Vec3, transform};
     /// use microraster::mesh::*;
     /// use microraster::pipeline::{ClusterCache, Pipeline};

@@ -42,7 +42,7 @@ impl<C: PixelColor, const W: usize> Dimensions for BandView<'_, C, W> {
     /// `y0 .. y0 + height`.
     ///
     /// ```
-    /// use embedded_graphics_core::{pixelcolor::BinaryColor, prelude::*, primitives::Rectangle};
+    /// use embedded_graphics::{pixelcolor::BinaryColor, prelude::*, primitives::Rectangle};
     /// use microraster::Band;
     /// let mut band = Band::<BinaryColor, 8, 4>::new(BinaryColor::Off);
     /// let view = band.view(12, 3, BinaryColor::Off); // frame rows 12..15
@@ -59,7 +59,7 @@ impl<C: PixelColor, const W: usize> Dimensions for BandView<'_, C, W> {
 /// ```
 /// use embedded_graphics::mono_font::{MonoTextStyle, ascii::FONT_6X10};
 /// use embedded_graphics::text::Text;
-/// use embedded_graphics_core::{pixelcolor::BinaryColor, prelude::*};
+/// use embedded_graphics::{pixelcolor::BinaryColor, prelude::*};
 /// use microraster::Band;
 /// let mut band = Band::<BinaryColor, 32, 4>::new(BinaryColor::Off);
 /// let mut view = band.view(4, 4, BinaryColor::Off); // frame rows 4..8

@@ -56,7 +56,7 @@ where
     /// [`BlendBlitter`](crate::blend::BlendBlitter)). Depth is untouched.
     ///
     /// ```
-    /// use embedded_graphics_core::pixelcolor::{Rgb565, RgbColor};
+    /// use embedded_graphics::pixelcolor::{Rgb565, RgbColor};
     /// use microraster::depth::{Depth16, DepthBand, DepthState};
     /// use microraster::raster3d::Affine;
     /// use microraster::{Band, Renderer};
@@ -110,7 +110,7 @@ where
 /// use embedded_graphics::text::Text;
 /// use embedded_graphics::mock_display::MockDisplay;
 /// use embedded_graphics::primitives::Rectangle;
-/// use embedded_graphics_core::{pixelcolor::Rgb565, prelude::*};
+/// use embedded_graphics::{pixelcolor::Rgb565, prelude::*};
 /// use microraster::depth::{DepthBand, DepthState, Depth16};
 /// use microraster::raster3d::Affine;
 /// use microraster::{Band, Renderer};

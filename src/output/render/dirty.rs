@@ -27,7 +27,7 @@ use crate::{Error, Interpolate};
 /// frame with a full render and have never seen a wrong skip.
 ///
 /// ```
-/// use embedded_graphics_core::pixelcolor::Gray8;
+/// use embedded_graphics::pixelcolor::Gray8;
 /// use microraster::render::DirtyBands;
 /// use microraster::{Band, Renderer};
 /// let mut bands = [const { Band::<Gray8, 8, 4>::new(Gray8::new(0)) }; 2];
@@ -135,7 +135,7 @@ where
 /// state (a shorter last band is also told apart by [`DirtyBands`]' frame check).
 ///
 /// ```
-/// use embedded_graphics_core::pixelcolor::Rgb565;
+/// use embedded_graphics::pixelcolor::Rgb565;
 /// use microraster::render::signature;
 /// let a = [Rgb565::new(1, 2, 3); 64];
 /// let mut b = a;

@@ -29,7 +29,7 @@ use crate::{Error, Interpolate, MAX_FRAME_DIM, Primitive, RenderError};
 ///
 /// ```
 /// use core::convert::Infallible;
-/// use embedded_graphics_core::{pixelcolor::Gray8, prelude::*, primitives::Rectangle};
+/// use embedded_graphics::{pixelcolor::Gray8, prelude::*, primitives::Rectangle};
 /// use microraster::render::{BandSink, FrameBands, Lent};
 /// /// Records the frame and where each band goes.
 /// struct Log { areas: [Rectangle; 3], frame: Option<FrameBands> }
@@ -119,7 +119,7 @@ impl FrameBands {
 /// `render_*` returns every band is back and every transfer finished.
 ///
 /// ```
-/// use embedded_graphics_core::pixelcolor::Gray8;
+/// use embedded_graphics::pixelcolor::Gray8;
 /// use microraster::render::{BandSink, Lent};
 /// /// Keeps the last band "on the wire" until the renderer needs it back.
 /// struct Dma<'a> { wire: Option<Lent<'a, Gray8, 8>>, sent: usize }
@@ -169,7 +169,7 @@ pub trait BandSink<'a, C, const W: usize> {
 ///
 /// ```
 /// use embedded_graphics::mock_display::MockDisplay;
-/// use embedded_graphics_core::pixelcolor::BinaryColor;
+/// use embedded_graphics::pixelcolor::BinaryColor;
 /// use microraster::render::Blocking;
 /// use microraster::{Band, Renderer};
 /// let mut bands = [const { Band::<BinaryColor, 4, 2>::new(BinaryColor::Off) }; 2];
@@ -212,7 +212,7 @@ impl<C: Interpolate> Renderer<C> {
     ///
     /// ```
     /// use embedded_graphics::mock_display::MockDisplay;
-    /// use embedded_graphics_core::pixelcolor::BinaryColor;
+    /// use embedded_graphics::pixelcolor::BinaryColor;
     /// use microraster::render::Blocking;
     /// use microraster::{Band, Primitive, Renderer, SubPoint, Triangle};
     /// let p = |x, y| SubPoint::<4>::from_pixels(x, y).unwrap();
@@ -242,7 +242,7 @@ impl<C: Interpolate> Renderer<C> {
     /// which only the band being drawn uses, so one depth band serves both).
     ///
     /// ```
-    /// use embedded_graphics_core::pixelcolor::Gray8;
+    /// use embedded_graphics::pixelcolor::Gray8;
     /// use microraster::{Band, Renderer};
     /// let mut bands = [const { Band::<Gray8, 8, 4>::new(Gray8::new(0)) }; 2];
     /// let mut rows = 0;
@@ -270,7 +270,7 @@ impl<C: Interpolate> Renderer<C> {
     /// the band being drawn uses it. Same pixels as [`Renderer::render_3d`].
     ///
     /// ```
-    /// use embedded_graphics_core::pixelcolor::Gray8;
+    /// use embedded_graphics::pixelcolor::Gray8;
     /// use microraster::depth::{Depth16, DepthBand, DepthState};
     /// use microraster::raster3d::Affine;
     /// use microraster::render::DirtyBands;

@@ -35,8 +35,8 @@ use crate::{Error, Interpolate, Primitive, RenderError};
 ///
 /// ```
 /// use core::future::Future;
-/// use embedded_graphics_core::pixelcolor::Gray8;
-/// use embedded_graphics_core::primitives::Rectangle;
+/// use embedded_graphics::pixelcolor::Gray8;
+/// use embedded_graphics::primitives::Rectangle;
 /// use microraster::render::AsyncBandSink;
 /// use microraster::{Band, Renderer};
 /// struct Count(usize);
@@ -94,13 +94,13 @@ impl<C: Interpolate> Renderer<C> {
     /// bands (see [`Renderer::render_linked_async`]).
     ///
     /// ```
-    /// use embedded_graphics_core::pixelcolor::Gray8;
+    /// use embedded_graphics::pixelcolor::Gray8;
     /// use microraster::render::poll_ready;
     /// use microraster::{Band, Renderer};
     /// # struct Null;
     /// # impl microraster::render::AsyncBandSink<Gray8> for Null {
     /// #     type Error = ();
-    /// #     async fn send(&mut self, _: embedded_graphics_core::primitives::Rectangle, _: &[Gray8]) -> Result<(), ()> { Ok(()) }
+    /// #     async fn send(&mut self, _: embedded_graphics::primitives::Rectangle, _: &[Gray8]) -> Result<(), ()> { Ok(()) }
     /// # }
     /// let mut bands = [const { Band::<Gray8, 8, 4>::new(Gray8::new(0)) }; 2];
     /// let mut rows = 0;

@@ -10,7 +10,7 @@
 //! band height. The cost is the drawables' set-up once per band (e-g clips
 //! by pixel, so a drawable's pixels outside the band are generated and
 //! dropped; skip drawables whose bounding box misses
-//! [`BandView::bounding_box`](embedded_graphics_core::geometry::Dimensions::bounding_box)
+//! [`BandView::bounding_box`](embedded_graphics::geometry::Dimensions::bounding_box)
 //! to avoid that).
 
 use super::Renderer;
@@ -35,7 +35,7 @@ impl<C: Interpolate> Renderer<C> {
     /// use embedded_graphics::mock_display::MockDisplay;
     /// use embedded_graphics::prelude::*;
     /// use embedded_graphics::primitives::{Circle, PrimitiveStyle};
-    /// use embedded_graphics_core::pixelcolor::BinaryColor;
+    /// use embedded_graphics::pixelcolor::BinaryColor;
     /// use microraster::{edge::Cull, Band, Renderer, SubPoint, Triangle};
     /// let p = |x, y| SubPoint::<4>::from_pixels(x, y).unwrap();
     /// let mut band = Band::<BinaryColor, 8, 3>::new(BinaryColor::Off); // 3-row bands
@@ -89,7 +89,7 @@ impl<C: Interpolate> Renderer<C> {
     /// use embedded_graphics::mock_display::MockDisplay;
     /// use embedded_graphics::prelude::*;
     /// use embedded_graphics::primitives::{PrimitiveStyle, Rectangle};
-    /// use embedded_graphics_core::pixelcolor::Rgb565;
+    /// use embedded_graphics::pixelcolor::Rgb565;
     /// use microraster::depth::{Depth16, DepthBand, DepthState};
     /// use microraster::raster3d::{Affine, ScreenTriangle, ScreenVertex};
     /// use microraster::{Band, Renderer, SubPoint};

@@ -61,7 +61,7 @@ pub enum SpiPanelError<S, P> {
 /// #     fn set_low(&mut self) -> Result<(), Infallible> { Ok(()) }
 /// #     fn set_high(&mut self) -> Result<(), Infallible> { Ok(()) }
 /// # }
-/// use embedded_graphics_core::pixelcolor::Rgb565;
+/// use embedded_graphics::pixelcolor::Rgb565;
 /// use microraster::render::{SpiPanel, poll_ready};
 /// use microraster::{Band, Renderer};
 /// let mut bands = [const { Band::<Rgb565, 8, 4>::new(Rgb565::new(0, 0, 0)) }; 2];

@@ -29,7 +29,7 @@ impl<C: Interpolate + Send + Sync> Renderer<C> {
     ///
     /// ```
     /// use embedded_graphics::mock_display::MockDisplay;
-    /// use embedded_graphics_core::pixelcolor::BinaryColor;
+    /// use embedded_graphics::pixelcolor::BinaryColor;
     /// use microraster::blit::Blitter;
     /// use microraster::{Band, Renderer};
     /// let mut bands = [const { Band::<BinaryColor, 4, 1>::new(BinaryColor::Off) }; 2];
@@ -105,7 +105,7 @@ impl<C: Interpolate + Send + Sync> Renderer<C> {
     ///
     /// ```
     /// use embedded_graphics::mock_display::MockDisplay;
-    /// use embedded_graphics_core::pixelcolor::BinaryColor;
+    /// use embedded_graphics::pixelcolor::BinaryColor;
     /// use microraster::depth::{Depth16, DepthBand, DepthState};
     /// use microraster::raster3d::Affine;
     /// use microraster::{Band, Renderer};

@@ -95,7 +95,7 @@
 //! 174,080 at `N = 4`.
 //!
 //! ```
-//! use embedded_graphics_core::pixelcolor::Rgb565;
+//! use embedded_graphics::pixelcolor::Rgb565;
 //! use microraster::Band;
 //! use microraster::depth::{Depth16, DepthBand};
 //! type Px = Band<Rgb565, 320, 16>;

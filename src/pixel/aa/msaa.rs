@@ -45,8 +45,8 @@ use crate::{ClipRect, Error, Interpolate};
 /// leave the [`SubPoint`](crate::SubPoint) range; nothing is drawn then.
 ///
 /// ```
-/// use embedded_graphics_core::pixelcolor::Gray8;
-/// use embedded_graphics_core::prelude::*;
+/// use embedded_graphics::pixelcolor::Gray8;
+/// use embedded_graphics::prelude::*;
 /// use microraster::aa::{Msaa, msaa};
 /// use microraster::depth::{DepthRows, DepthState};
 /// use microraster::raster3d::{Affine, ScreenTriangle, ScreenVertex};
@@ -97,8 +97,8 @@ where
 /// pixel.
 ///
 /// ```
-/// use embedded_graphics_core::pixelcolor::Gray8;
-/// use embedded_graphics_core::prelude::*;
+/// use embedded_graphics::pixelcolor::Gray8;
+/// use embedded_graphics::prelude::*;
 /// use microraster::aa::{Msaa, msaa};
 /// use microraster::depth::{DepthRows, DepthState};
 /// use microraster::raster3d::{ScreenTriangle, ScreenVertex};

@@ -31,8 +31,8 @@ impl<C: Interpolate> Renderer<C> {
     ///
     /// ```
     /// use embedded_graphics::mock_display::MockDisplay;
-    /// use embedded_graphics_core::pixelcolor::Gray8;
-    /// use embedded_graphics_core::prelude::*;
+    /// use embedded_graphics::pixelcolor::Gray8;
+    /// use embedded_graphics::prelude::*;
     /// use microraster::aa::Ssaa;
     /// use microraster::{Band, Primitive, Renderer, SubPoint, Triangle};
     /// let p = |x, y| SubPoint::<4>::from_pixels(x, y).unwrap();
@@ -154,8 +154,8 @@ impl<C: Interpolate> Renderer<C> {
     ///
     /// ```
     /// use embedded_graphics::mock_display::MockDisplay;
-    /// use embedded_graphics_core::pixelcolor::Gray8;
-    /// use embedded_graphics_core::prelude::*;
+    /// use embedded_graphics::pixelcolor::Gray8;
+    /// use embedded_graphics::prelude::*;
     /// use microraster::aa::Msaa;
     /// use microraster::depth::{Depth16, DepthBand, DepthState};
     /// use microraster::raster3d::{Affine, ScreenTriangle, ScreenVertex};

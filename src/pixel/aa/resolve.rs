@@ -23,8 +23,8 @@ use crate::band::BandView;
 /// to mix anti-aliased and custom drawing.
 ///
 /// ```
-/// use embedded_graphics_core::pixelcolor::Gray8;
-/// use embedded_graphics_core::prelude::*;
+/// use embedded_graphics::pixelcolor::Gray8;
+/// use embedded_graphics::prelude::*;
 /// use microraster::aa::{Ssaa, resolve::resolve};
 /// use microraster::blit::Blitter;
 /// use microraster::Band;

@@ -58,7 +58,7 @@ impl<C: Interpolate, F: TexelFormat, Fi: Filter> FragmentShader<C, 5> for Textur
 /// `cutoff` 1 it blends them smoothly. Same varyings as [`Textured`].
 ///
 /// ```
-/// use embedded_graphics_core::pixelcolor::{Rgb888, RgbColor};
+/// use embedded_graphics::pixelcolor::{Rgb888, RgbColor};
 /// use microraster::fragment::{Fragment, FragmentShader, TexturedAlpha};
 /// use microraster::texture::{A8, Sampler, Texture, UV_ONE};
 /// static MASK: Texture<'static, A8> = Texture::from_rows(&[[0, 200]]);

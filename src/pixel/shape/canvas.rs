@@ -17,7 +17,7 @@ use embedded_graphics_core::prelude::DrawTarget;
 /// [`Blitter`] and [`BlendTarget`]).
 ///
 /// ```
-/// use embedded_graphics_core::pixelcolor::{Gray8, GrayColor};
+/// use embedded_graphics::pixelcolor::{Gray8, GrayColor};
 /// use microraster::shape::{Canvas, Rect, Shape, ShapeStyle};
 /// use microraster::{ClipRect, edge::Span};
 /// // A canvas that only measures: the covered area, in 1/255 pixels.
@@ -104,14 +104,14 @@ impl<C: Interpolate, const W: usize> Canvas<C> for BandView<'_, C, W> {
 ///
 /// ```
 /// use embedded_graphics::mock_display::MockDisplay;
-/// use embedded_graphics_core::pixelcolor::{Gray8, GrayColor};
+/// use embedded_graphics::pixelcolor::{Gray8, GrayColor};
 /// use microraster::shape::{Circle, Shape, ShapeStyle, TargetCanvas};
 /// let disc = Circle::new((4.0, 4.0), 3.0)?.styled(ShapeStyle::fill(Gray8::WHITE).antialiased())?;
 /// let mut display = MockDisplay::<Gray8>::new();
 /// let mut canvas = TargetCanvas::new(&mut display).over(Gray8::BLACK);
 /// disc.draw_on(&mut canvas);
 /// canvas.finish().unwrap();
-/// let edge = display.get_pixel(embedded_graphics_core::prelude::Point::new(1, 4)).unwrap();
+/// let edge = display.get_pixel(embedded_graphics::prelude::Point::new(1, 4)).unwrap();
 /// assert!(edge.luma() > 0 && edge.luma() < 255);
 /// # Ok::<(), microraster::Error>(())
 /// ```
@@ -145,7 +145,7 @@ where
     ///
     /// ```
     /// use embedded_graphics::{mock_display::MockDisplay, prelude::*};
-    /// use embedded_graphics_core::pixelcolor::{Gray8, GrayColor};
+    /// use embedded_graphics::pixelcolor::{Gray8, GrayColor};
     /// use microraster::shape::{Rect, Shape, ShapeStyle, TargetCanvas};
     /// // Pixel 1 is a quarter covered: skipped plain, grey over black.
     /// let bar = Rect::new(0.0, 0.0, 1.25, 1.0)?.styled(ShapeStyle::fill(Gray8::WHITE).antialiased())?;
@@ -164,7 +164,7 @@ where
     /// The first error the target reported, if any.
     ///
     /// ```
-    /// use embedded_graphics_core::{pixelcolor::BinaryColor, prelude::*};
+    /// use embedded_graphics::{pixelcolor::BinaryColor, prelude::*};
     /// use microraster::shape::{Rect, Shape, ShapeStyle, TargetCanvas};
     /// # struct Broken;
     /// # impl OriginDimensions for Broken {

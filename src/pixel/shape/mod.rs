@@ -27,14 +27,14 @@
 //! # Drawing
 //! [`Styled`] pairs a shape with a [`ShapeStyle`] and is checked once when
 //! built (NaN, negative sizes, capacity: a typed [`Error`](crate::Error)).
-//! It implements `embedded-graphics`' [`Drawable`](embedded_graphics_core::Drawable)
+//! It implements `embedded-graphics`' [`Drawable`](embedded_graphics::Drawable)
 //! for any `DrawTarget`, and [`Styled::draw_on`] draws on any [`Canvas`] — a
 //! band ([`BandView`](crate::band::BandView)) or your own readable
 //! framebuffer — with exact blending of partial pixels.
 //!
 //! ```
 //! use embedded_graphics::mock_display::MockDisplay;
-//! use embedded_graphics_core::{Drawable, pixelcolor::BinaryColor};
+//! use embedded_graphics::{Drawable, pixelcolor::BinaryColor};
 //! use microraster::shape::{Circle, Shape, ShapeStyle};
 //! let mut display = MockDisplay::<BinaryColor>::new();
 //! Circle::new((3.0, 3.0), 2.5)?.styled(ShapeStyle::fill(BinaryColor::On))?.draw(&mut display).unwrap();
@@ -90,7 +90,7 @@ pub const MAX_EDGES: usize = 256;
 ///
 /// ```
 /// use embedded_graphics::{mock_display::MockDisplay, prelude::*};
-/// use embedded_graphics_core::pixelcolor::BinaryColor;
+/// use embedded_graphics::pixelcolor::BinaryColor;
 /// use microraster::shape::{FillRule, Polygon, Shape, ShapeStyle};
 /// // A pentagram: its centre has winding number 2.
 /// let star = [(5.0, 0.0), (8.0, 9.0), (0.0, 3.5), (10.0, 3.5), (2.0, 9.0)];
@@ -138,7 +138,7 @@ mod sealed {
 /// kinds; code generic over either names the bound.
 ///
 /// ```
-/// use embedded_graphics_core::pixelcolor::{Gray8, GrayColor};
+/// use embedded_graphics::pixelcolor::{Gray8, GrayColor};
 /// use microraster::shape::{Circle, Coverage, Shape, ShapeStyle, Styled};
 /// // One disc builder for both kinds of coverage.
 /// fn disc<A: Coverage>(style: ShapeStyle<Gray8, A>) -> Result<Styled<Circle, Gray8, A>, microraster::Error> {
@@ -168,7 +168,7 @@ pub struct Aliased;
 /// Exact area coverage as alpha.
 ///
 /// ```
-/// use embedded_graphics_core::pixelcolor::{Gray8, GrayColor};
+/// use embedded_graphics::pixelcolor::{Gray8, GrayColor};
 /// use microraster::shape::{AntiAliased, ShapeStyle};
 /// let s: ShapeStyle<Gray8, AntiAliased> = ShapeStyle::fill(Gray8::WHITE).antialiased();
 /// # let _ = s;

@@ -14,7 +14,7 @@ use crate::edge::Span;
 /// What a shape is filled or stroked with.
 ///
 /// ```
-/// use embedded_graphics_core::pixelcolor::{Rgb565, RgbColor};
+/// use embedded_graphics::pixelcolor::{Rgb565, RgbColor};
 /// use microraster::shape::{LinearGradient, Paint};
 /// let solid: Paint<Rgb565> = Rgb565::new(31, 0, 0).into();
 /// let ramp = Paint::Linear(LinearGradient::new((0.0, 0.0), (10.0, 0.0), [Rgb565::BLACK, Rgb565::WHITE])?);
@@ -52,7 +52,7 @@ impl<C> From<RadialGradient<C>> for Paint<C> {
 ///
 /// ```
 /// use embedded_graphics::{mock_display::MockDisplay, prelude::*};
-/// use embedded_graphics_core::pixelcolor::{Gray8, GrayColor};
+/// use embedded_graphics::pixelcolor::{Gray8, GrayColor};
 /// use microraster::shape::{LinearGradient, Rect, Shape, ShapeStyle};
 /// // Black at x = 0 to white at x = 16, as the fill of a bar.
 /// let ramp = LinearGradient::new((0.0, 0.0), (16.0, 0.0), [Gray8::BLACK, Gray8::WHITE])?;
@@ -75,7 +75,7 @@ impl<C> LinearGradient<C> {
     /// ([`Error::InvalidParameter`]).
     ///
     /// ```
-    /// use embedded_graphics_core::pixelcolor::{Gray8, GrayColor};
+    /// use embedded_graphics::pixelcolor::{Gray8, GrayColor};
     /// use microraster::shape::LinearGradient;
     /// let g = LinearGradient::new((0.0, 0.0), (0.0, 0.0), [Gray8::BLACK, Gray8::WHITE]);
     /// assert_eq!(g, Err(microraster::Error::InvalidParameter));
@@ -97,7 +97,7 @@ impl<C> LinearGradient<C> {
 ///
 /// ```
 /// use embedded_graphics::{mock_display::MockDisplay, prelude::*};
-/// use embedded_graphics_core::pixelcolor::{Gray8, GrayColor};
+/// use embedded_graphics::pixelcolor::{Gray8, GrayColor};
 /// use microraster::shape::{Circle, RadialGradient, Shape, ShapeStyle};
 /// // A lit ball: white in the middle, black at the rim.
 /// let glow = RadialGradient::new((8.0, 8.0), 8.0, [Gray8::WHITE, Gray8::BLACK])?;
@@ -119,7 +119,7 @@ impl<C> RadialGradient<C> {
     /// positive ([`Error::InvalidParameter`]).
     ///
     /// ```
-    /// use embedded_graphics_core::pixelcolor::{Gray8, GrayColor};
+    /// use embedded_graphics::pixelcolor::{Gray8, GrayColor};
     /// use microraster::shape::RadialGradient;
     /// assert!(RadialGradient::new((5.0, 5.0), 4.0, [Gray8::WHITE, Gray8::BLACK]).is_ok());
     /// ```
@@ -144,7 +144,7 @@ impl<C: Interpolate> Paint<C> {
     /// The colour at pixel `(x, y)` (its centre).
     ///
     /// ```
-    /// use embedded_graphics_core::pixelcolor::{Gray8, GrayColor};
+    /// use embedded_graphics::pixelcolor::{Gray8, GrayColor};
     /// use microraster::shape::{LinearGradient, Paint};
     /// let p = Paint::Linear(LinearGradient::new((0.0, 0.0), (10.0, 0.0), [Gray8::BLACK, Gray8::WHITE])?);
     /// assert_eq!(p.color_at(4, 0), Gray8::new(115)); // t = 0.45: round(114.75)

@@ -15,7 +15,7 @@ use embedded_graphics_core::prelude::DrawTarget;
 ///
 /// ```
 /// use embedded_graphics::{mock_display::MockDisplay, prelude::*};
-/// use embedded_graphics_core::pixelcolor::BinaryColor;
+/// use embedded_graphics::pixelcolor::BinaryColor;
 /// use microraster::shape::{Join, Polyline, Shape, ShapeStyle};
 /// // A right angle at (4, 4), 4 px wide: the miter fills the outer corner
 /// // square, the bevel cuts it off.
@@ -46,7 +46,7 @@ pub enum Join {
 ///
 /// ```
 /// use embedded_graphics::{mock_display::MockDisplay, prelude::*};
-/// use embedded_graphics_core::pixelcolor::BinaryColor;
+/// use embedded_graphics::pixelcolor::BinaryColor;
 /// use microraster::shape::{Cap, Polyline, Shape, ShapeStyle};
 /// // A 4 px wide line ending at x = 10: a butt cap stops there, a square
 /// // cap reaches 2 px (half the width) beyond.
@@ -76,7 +76,7 @@ pub enum Cap {
 /// the coverage code at compile time.
 ///
 /// ```
-/// use embedded_graphics_core::pixelcolor::{Rgb565, RgbColor};
+/// use embedded_graphics::pixelcolor::{Rgb565, RgbColor};
 /// use microraster::shape::{Cap, Join, ShapeStyle};
 /// let style = ShapeStyle::stroke(Rgb565::new(31, 0, 0), 3.0).with_join(Join::Round).with_cap(Cap::Round).antialiased();
 /// assert_eq!(style.stroke_width, 3.0);
@@ -108,7 +108,7 @@ impl<C> ShapeStyle<C, Aliased> {
     /// Nothing drawn (add a fill or a stroke).
     ///
     /// ```
-    /// use embedded_graphics_core::pixelcolor::BinaryColor;
+    /// use embedded_graphics::pixelcolor::BinaryColor;
     /// use microraster::shape::{FillRule, ShapeStyle};
     /// let style = ShapeStyle::<BinaryColor>::new();
     /// assert!(style.fill.is_none() && style.stroke.is_none());
@@ -131,7 +131,7 @@ impl<C> ShapeStyle<C, Aliased> {
     /// A solid or gradient fill.
     ///
     /// ```
-    /// use embedded_graphics_core::pixelcolor::BinaryColor;
+    /// use embedded_graphics::pixelcolor::BinaryColor;
     /// use microraster::shape::{Paint, ShapeStyle};
     /// let style = ShapeStyle::fill(BinaryColor::On);
     /// assert_eq!(style.fill, Some(Paint::Solid(BinaryColor::On)));
@@ -144,7 +144,7 @@ impl<C> ShapeStyle<C, Aliased> {
     /// A solid or gradient outline `width` px wide.
     ///
     /// ```
-    /// use embedded_graphics_core::pixelcolor::BinaryColor;
+    /// use embedded_graphics::pixelcolor::BinaryColor;
     /// use microraster::shape::{Paint, ShapeStyle};
     /// let style = ShapeStyle::stroke(BinaryColor::On, 2.0);
     /// assert_eq!((style.stroke, style.stroke_width), (Some(Paint::Solid(BinaryColor::On)), 2.0));
@@ -165,7 +165,7 @@ impl<C, A: Coverage> ShapeStyle<C, A> {
     /// With this fill.
     ///
     /// ```
-    /// use embedded_graphics_core::pixelcolor::BinaryColor;
+    /// use embedded_graphics::pixelcolor::BinaryColor;
     /// use microraster::shape::{Paint, ShapeStyle};
     /// let style = ShapeStyle::stroke(BinaryColor::On, 1.0).with_fill(BinaryColor::Off);
     /// assert_eq!(style.fill, Some(Paint::Solid(BinaryColor::Off)));
@@ -177,7 +177,7 @@ impl<C, A: Coverage> ShapeStyle<C, A> {
     /// With this outline.
     ///
     /// ```
-    /// use embedded_graphics_core::pixelcolor::BinaryColor;
+    /// use embedded_graphics::pixelcolor::BinaryColor;
     /// use microraster::shape::{Paint, ShapeStyle};
     /// let style = ShapeStyle::fill(BinaryColor::Off).with_stroke(BinaryColor::On, 3.0);
     /// assert_eq!((style.stroke, style.stroke_width), (Some(Paint::Solid(BinaryColor::On)), 3.0));
@@ -189,7 +189,7 @@ impl<C, A: Coverage> ShapeStyle<C, A> {
     /// With this join.
     ///
     /// ```
-    /// use embedded_graphics_core::pixelcolor::BinaryColor;
+    /// use embedded_graphics::pixelcolor::BinaryColor;
     /// use microraster::shape::{Join, ShapeStyle};
     /// assert_eq!(ShapeStyle::stroke(BinaryColor::On, 2.0).join, Join::Miter);
     /// assert_eq!(ShapeStyle::stroke(BinaryColor::On, 2.0).with_join(Join::Round).join, Join::Round);
@@ -200,7 +200,7 @@ impl<C, A: Coverage> ShapeStyle<C, A> {
     /// With this cap.
     ///
     /// ```
-    /// use embedded_graphics_core::pixelcolor::BinaryColor;
+    /// use embedded_graphics::pixelcolor::BinaryColor;
     /// use microraster::shape::{Cap, ShapeStyle};
     /// assert_eq!(ShapeStyle::stroke(BinaryColor::On, 2.0).cap, Cap::Butt);
     /// assert_eq!(ShapeStyle::stroke(BinaryColor::On, 2.0).with_cap(Cap::Square).cap, Cap::Square);
@@ -211,7 +211,7 @@ impl<C, A: Coverage> ShapeStyle<C, A> {
     /// With this fill rule.
     ///
     /// ```
-    /// use embedded_graphics_core::pixelcolor::BinaryColor;
+    /// use embedded_graphics::pixelcolor::BinaryColor;
     /// use microraster::shape::{FillRule, ShapeStyle};
     /// let style = ShapeStyle::fill(BinaryColor::On).with_fill_rule(FillRule::EvenOdd);
     /// assert_eq!(style.fill_rule, FillRule::EvenOdd);
@@ -223,7 +223,7 @@ impl<C, A: Coverage> ShapeStyle<C, A> {
     /// `DrawTarget` a partial pixel follows [`TargetCanvas`]'s rule.
     ///
     /// ```
-    /// use embedded_graphics_core::pixelcolor::{Gray8, GrayColor};
+    /// use embedded_graphics::pixelcolor::{Gray8, GrayColor};
     /// use microraster::shape::{Rect, Shape, ShapeStyle};
     /// use microraster::{Band, Renderer};
     /// use embedded_graphics::mock_display::MockDisplay;
@@ -231,7 +231,7 @@ impl<C, A: Coverage> ShapeStyle<C, A> {
     /// let mut band = Band::<Gray8, 2, 1>::new(Gray8::BLACK);
     /// let mut display = MockDisplay::new();
     /// Renderer::new(1, Gray8::BLACK).render_with(&mut band, &mut display, |view, _, _| veil.draw_on(view)).unwrap();
-    /// assert_eq!(display.get_pixel(embedded_graphics_core::prelude::Point::new(0, 0)), Some(Gray8::new(128)));
+    /// assert_eq!(display.get_pixel(embedded_graphics::prelude::Point::new(0, 0)), Some(Gray8::new(128)));
     /// # Ok::<(), microraster::Error>(())
     /// ```
     pub fn with_opacity(self, opacity: u8) -> Self {
@@ -240,7 +240,7 @@ impl<C, A: Coverage> ShapeStyle<C, A> {
     /// The same style, anti-aliased.
     ///
     /// ```
-    /// use embedded_graphics_core::pixelcolor::{Gray8, GrayColor};
+    /// use embedded_graphics::pixelcolor::{Gray8, GrayColor};
     /// use microraster::{Band, shape::{Rect, Shape, ShapeStyle}};
     /// let bar = Rect::new(0.0, 0.0, 1.25, 1.0)?.styled(ShapeStyle::fill(Gray8::WHITE).antialiased())?;
     /// let mut band = Band::<Gray8, 2, 1>::new(Gray8::BLACK);
@@ -255,7 +255,7 @@ impl<C, A: Coverage> ShapeStyle<C, A> {
     /// The same style, aliased.
     ///
     /// ```
-    /// use embedded_graphics_core::pixelcolor::{Gray8, GrayColor};
+    /// use embedded_graphics::pixelcolor::{Gray8, GrayColor};
     /// use microraster::{Band, shape::{Rect, Shape, ShapeStyle}};
     /// let style = ShapeStyle::fill(Gray8::WHITE).antialiased().aliased();
     /// let bar = Rect::new(0.0, 0.0, 1.25, 1.0)?.styled(style)?;
@@ -286,7 +286,7 @@ impl<C, A: Coverage> ShapeStyle<C, A> {
 /// A shape with its style: checked once, then drawn with one call.
 ///
 /// ```
-/// use embedded_graphics_core::pixelcolor::{Gray8, GrayColor};
+/// use embedded_graphics::pixelcolor::{Gray8, GrayColor};
 /// use microraster::shape::{Rect, Shape, ShapeStyle};
 /// use microraster::{Band, Renderer};
 /// use embedded_graphics::mock_display::MockDisplay;
@@ -294,7 +294,7 @@ impl<C, A: Coverage> ShapeStyle<C, A> {
 /// let mut band = Band::<Gray8, 4, 1>::new(Gray8::BLACK);
 /// let mut display = MockDisplay::new();
 /// Renderer::new(2, Gray8::BLACK).render_with(&mut band, &mut display, |view, _, _| bar.draw_on(view)).unwrap();
-/// assert_eq!(display.get_pixel(embedded_graphics_core::prelude::Point::new(2, 1)), Some(Gray8::WHITE));
+/// assert_eq!(display.get_pixel(embedded_graphics::prelude::Point::new(2, 1)), Some(Gray8::WHITE));
 /// # Ok::<(), microraster::Error>(())
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -316,7 +316,7 @@ impl<S: Shape, C: Copy, A: Coverage> Styled<S, C, A> {
     /// ([`Error::BufferTooSmall`]).
     ///
     /// ```
-    /// use embedded_graphics_core::pixelcolor::BinaryColor;
+    /// use embedded_graphics::pixelcolor::BinaryColor;
     /// use microraster::{Error, shape::{Rect, ShapeStyle, Styled}};
     /// let rect = Rect::new(0.0, 0.0, 4.0, 4.0)?;
     /// assert!(Styled::new(rect, ShapeStyle::stroke(BinaryColor::On, 1.0)).is_ok());
@@ -340,7 +340,7 @@ impl<S: Shape, C: Copy, A: Coverage> Styled<S, C, A> {
     /// The shape.
     ///
     /// ```
-    /// use embedded_graphics_core::pixelcolor::BinaryColor;
+    /// use embedded_graphics::pixelcolor::BinaryColor;
     /// use microraster::shape::{Circle, Shape, ShapeStyle};
     /// let disc = Circle::new((4.0, 4.0), 3.0)?;
     /// assert_eq!(disc.styled(ShapeStyle::fill(BinaryColor::On))?.shape(), &disc);
@@ -353,7 +353,7 @@ impl<S: Shape, C: Copy, A: Coverage> Styled<S, C, A> {
     /// The style.
     ///
     /// ```
-    /// use embedded_graphics_core::pixelcolor::BinaryColor;
+    /// use embedded_graphics::pixelcolor::BinaryColor;
     /// use microraster::shape::{Circle, Shape, ShapeStyle};
     /// let ring = Circle::new((4.0, 4.0), 3.0)?.styled(ShapeStyle::stroke(BinaryColor::On, 2.0))?;
     /// assert_eq!(ring.style().stroke_width, 2.0);
@@ -370,7 +370,7 @@ impl<S: Shape, C: Copy, A: Coverage> Styled<S, C, A> {
     /// cover (an edge exactly on a row boundary); it never misses one.
     ///
     /// ```
-    /// use embedded_graphics_core::pixelcolor::{Gray8, GrayColor};
+    /// use embedded_graphics::pixelcolor::{Gray8, GrayColor};
     /// use microraster::shape::{Rect, ShapeStyle, Styled};
     ///
     /// // y 2.25 .. 4.75 covers the pixel centres 2.5, 3.5 and 4.5: rows 2, 3, 4.
@@ -425,7 +425,7 @@ impl<S: Shape, C: Interpolate, A: Coverage> Styled<S, C, A> {
     /// first, then stroke; partial pixels are blended exactly.
     ///
     /// ```
-    /// use embedded_graphics_core::pixelcolor::{Gray8, GrayColor};
+    /// use embedded_graphics::pixelcolor::{Gray8, GrayColor};
     /// use microraster::{Band, shape::{Rect, Shape, ShapeStyle}};
     /// // White inside x 1 .. 4, then a 2 px black outline on top (x 0 .. 2 and 3 .. 5).
     /// let style = ShapeStyle::fill(Gray8::WHITE).with_stroke(Gray8::BLACK, 2.0);

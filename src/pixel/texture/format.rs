@@ -18,7 +18,7 @@ mod sealed {
 /// [`A8`](crate::texture::A8) and [`Argb4444`](crate::texture::Argb4444).
 ///
 /// ```
-/// use embedded_graphics_core::pixelcolor::{Gray8, Rgb565};
+/// use embedded_graphics::pixelcolor::{Gray8, Rgb565};
 /// use microraster::texture::TexelFormat;
 /// // 5/6/5 bits expanded to 8 by bit replication: full scale stays full scale.
 /// assert_eq!(Rgb565::expand(0xFFFF), [255, 255, 255]);

@@ -1,8 +1,8 @@
 //! Read-only textures in `&'static` data (flash), sampled per fragment.
 //!
 //! A [`Texture<'a, F>`](Texture) is a row-major slice of texels in format
-//! `F` ([`Rgb565`](embedded_graphics_core::pixelcolor::Rgb565): `u16` raw
-//! bits; [`Gray8`](embedded_graphics_core::pixelcolor::Gray8): `u8`; with
+//! `F` ([`Rgb565`](embedded_graphics::pixelcolor::Rgb565): `u16` raw
+//! bits; [`Gray8`](embedded_graphics::pixelcolor::Gray8): `u8`; with
 //! alpha, [`A8`] and [`Argb4444`]; see [`TexelFormat`]) and its size, 1 to [`MAX_TEXTURE_DIM`] texels each way
 //! (any size; powers of two index with shifts instead of multiplies).
 //! `cargo run -p microraster-tools --bin png2rs` (or
@@ -47,7 +47,7 @@
 //!
 //! # Example: a textured, tinted, perspective-correct triangle
 //! ```
-//! use embedded_graphics_core::pixelcolor::{Rgb565, Rgb888, RgbColor};
+//! use embedded_graphics::pixelcolor::{Rgb565, Rgb888, RgbColor};
 //! use microraster::depth::{DepthBand, DepthState, NoDepth};
 //! use microraster::raster3d::{PerspectiveCorrect, ScreenTriangle, ScreenVertex};
 //! use microraster::texture::{from_rgb8, modulate, Sampler, Texture, UV_ONE};
@@ -112,7 +112,7 @@ pub const MAX_TEXTURE_DIM: u32 = 4096;
 /// from the top left, borrowed (typically `&'static`, from flash).
 ///
 /// ```
-/// use embedded_graphics_core::pixelcolor::Gray8;
+/// use embedded_graphics::pixelcolor::Gray8;
 /// use microraster::texture::{Sampler, Texture, UV_ONE};
 /// let ramp = [0u8, 85, 170, 255, 10, 20, 30, 40]; // 4 × 2 (not a power of two in area: fine)
 /// let tex = Texture::<Gray8>::new(&ramp, 4, 2)?;
@@ -159,7 +159,7 @@ impl<'a, F: TexelFormat> Texture<'a, F> {
     /// in `1..=`[`MAX_TEXTURE_DIM`]), so this cannot fail at run time.
     ///
     /// ```
-    /// use embedded_graphics_core::pixelcolor::Gray8;
+    /// use embedded_graphics::pixelcolor::Gray8;
     /// use microraster::texture::Texture;
     /// static TEXELS: [[u8; 3]; 2] = [[0, 128, 255], [255, 128, 0]];
     /// static TEX: Texture<'static, Gray8> = Texture::from_rows(&TEXELS);
@@ -168,7 +168,7 @@ impl<'a, F: TexelFormat> Texture<'a, F> {
     ///
     /// A zero-sized texture does not compile:
     /// ```compile_fail
-    /// use embedded_graphics_core::pixelcolor::Gray8;
+    /// use embedded_graphics::pixelcolor::Gray8;
     /// use microraster::texture::Texture;
     /// static EMPTY: Texture<'static, Gray8> = Texture::from_rows(&[[0u8; 0]; 2]);
     /// ```

@@ -23,7 +23,7 @@ use core::fmt::Debug;
 /// How a coordinate outside `[0, 1)` is brought back onto the texture.
 ///
 /// ```
-/// use embedded_graphics_core::pixelcolor::Gray8;
+/// use embedded_graphics::pixelcolor::Gray8;
 /// use microraster::texture::{Address, Sampler, Texture, UV_ONE};
 /// let tex = Texture::<Gray8>::new(&[10, 20, 30, 40], 4, 1)?;
 /// // u = 1.125 is a quarter texel into the second period: texel 0 when
@@ -55,7 +55,7 @@ mod sealed {
 /// [`Sampler`], so only the filters a program samples with are compiled.
 ///
 /// ```
-/// use embedded_graphics_core::pixelcolor::Gray8;
+/// use embedded_graphics::pixelcolor::Gray8;
 /// use microraster::texture::{Address, Bilinear, Filter, Nearest, Sampler, Texture, UV_ONE};
 /// let tex = Texture::<Gray8>::new(&[0, 200], 2, 1)?;
 /// // Code generic over the filter; half-way between the two texel centres.
@@ -80,7 +80,7 @@ pub trait Filter: sealed::Sealed + Copy + Default + Debug {
 /// Nearest texel: the texel containing the sample point. Exact.
 ///
 /// ```
-/// use embedded_graphics_core::pixelcolor::Gray8;
+/// use embedded_graphics::pixelcolor::Gray8;
 /// use microraster::texture::{Nearest, Sampler, Texture, UV_ONE};
 /// let tex = Texture::<Gray8>::new(&[0, 200], 2, 1)?;
 /// // u = 3/8 is in texel 0 (u < 1/2), a quarter texel right of its centre.
@@ -95,7 +95,7 @@ pub struct Nearest;
 /// (texel centres at `(i + ½)/n`).
 ///
 /// ```
-/// use embedded_graphics_core::pixelcolor::Gray8;
+/// use embedded_graphics::pixelcolor::Gray8;
 /// use microraster::texture::{Bilinear, Sampler, Texture, UV_ONE};
 /// let tex = Texture::<Gray8>::new(&[0, 200], 2, 1)?;
 /// // u = 3/8: a quarter of the way from texel 0's centre to texel 1's.
@@ -192,7 +192,7 @@ impl<Fi: Filter> Sampler<Fi> {
     /// The same filter with addressing `u` across and `v` down.
     ///
     /// ```
-    /// use embedded_graphics_core::pixelcolor::Gray8;
+    /// use embedded_graphics::pixelcolor::Gray8;
     /// use microraster::texture::{Address, Sampler, Texture, UV_ONE};
     /// let tex = Texture::<Gray8>::new(&[10, 20, 30, 40], 4, 1)?;
     /// let uv = [-UV_ONE / 8, UV_ONE / 2]; // left of the texture

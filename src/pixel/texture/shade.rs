@@ -76,7 +76,7 @@ const fn is_grey<C: Interpolate>() -> bool {
 /// they modulate colour texels as a light intensity.
 ///
 /// ```
-/// use embedded_graphics_core::pixelcolor::{Gray4, Rgb565};
+/// use embedded_graphics::pixelcolor::{Gray4, Rgb565};
 /// use microraster::texture::to_rgb8;
 /// assert_eq!(to_rgb8::<Rgb565>([31, 32, 0]), [255, 130, 0]); // 32·255/63 = 129.5…
 /// assert_eq!(to_rgb8::<Gray4>([5, 0, 0]), [85; 3]);
@@ -95,7 +95,7 @@ pub fn to_rgb8<C: Interpolate>(native: [u8; 3]) -> [u8; 3] {
 /// native units.
 ///
 /// ```
-/// use embedded_graphics_core::pixelcolor::{BinaryColor, Gray8, Rgb565};
+/// use embedded_graphics::pixelcolor::{BinaryColor, Gray8, Rgb565};
 /// use microraster::texture::from_rgb8;
 /// assert_eq!(from_rgb8::<Rgb565>([255, 130, 4]), Rgb565::new(31, 32, 0));
 /// assert_eq!(from_rgb8::<Gray8>([90, 90, 90]), Gray8::new(90));

@@ -62,7 +62,7 @@ pub const SPRITE_SCALE_RANGE: (f32, f32) = (1.0 / 256.0, 256.0);
 ///   `Result`, so a bad scale or angle is a typed error there too.
 ///
 /// ```
-/// use embedded_graphics_core::{pixelcolor::Rgb565, prelude::*};
+/// use embedded_graphics::{pixelcolor::Rgb565, prelude::*};
 /// use microraster::blend::{Blend, Mix};
 /// use microraster::texture::{Argb4444, Bilinear, Sprite, Texture};
 /// use microraster::{Band, Renderer};
@@ -97,7 +97,7 @@ impl<'t, F: TexelFormat, C> Sprite<'t, F, C, Nearest> {
     /// (white), opaque.
     ///
     /// ```
-    /// use embedded_graphics_core::pixelcolor::{Gray8, GrayColor};
+    /// use embedded_graphics::pixelcolor::{Gray8, GrayColor};
     /// use microraster::{Band, texture::{A8, Sprite, Texture}};
     /// static TEX: Texture<'static, A8> = Texture::from_rows(&[[255, 255]]);
     /// let mut band = Band::<Gray8, 3, 1>::new(Gray8::BLACK);
@@ -123,7 +123,7 @@ impl<'t, F: TexelFormat, C, Fi: Filter> Sprite<'t, F, C, Fi> {
     /// The top-left corner of the unrotated box, in pixels.
     ///
     /// ```
-    /// use embedded_graphics_core::{pixelcolor::{Gray8, GrayColor}, prelude::Point};
+    /// use embedded_graphics::{pixelcolor::{Gray8, GrayColor}, prelude::Point};
     /// use microraster::{Band, texture::{A8, Sprite, Texture}};
     /// static DOT: Texture<'static, A8> = Texture::from_rows(&[[255]]);
     /// let mut band = Band::<Gray8, 3, 1>::new(Gray8::BLACK);
@@ -138,7 +138,7 @@ impl<'t, F: TexelFormat, C, Fi: Filter> Sprite<'t, F, C, Fi> {
     /// Pixels per texel, in [`SPRITE_SCALE_RANGE`] (checked when drawn).
     ///
     /// ```
-    /// use embedded_graphics_core::pixelcolor::{Gray8, GrayColor};
+    /// use embedded_graphics::pixelcolor::{Gray8, GrayColor};
     /// use microraster::{Band, Error, texture::{A8, Sprite, Texture}};
     /// static DOT: Texture<'static, A8> = Texture::from_rows(&[[255]]);
     /// let mut band = Band::<Gray8, 3, 1>::new(Gray8::BLACK);
@@ -157,7 +157,7 @@ impl<'t, F: TexelFormat, C, Fi: Filter> Sprite<'t, F, C, Fi> {
     ///
     /// ```
     /// use core::f32::consts::PI;
-    /// use embedded_graphics_core::pixelcolor::{Gray8, GrayColor};
+    /// use embedded_graphics::pixelcolor::{Gray8, GrayColor};
     /// use microraster::{Band, texture::{A8, Sprite, Texture}};
     /// static HALF: Texture<'static, A8> = Texture::from_rows(&[[255, 0]]); // opaque, clear
     /// let mut band = Band::<Gray8, 2, 1>::new(Gray8::BLACK);
@@ -173,7 +173,7 @@ impl<'t, F: TexelFormat, C, Fi: Filter> Sprite<'t, F, C, Fi> {
     /// [`Bilinear`](super::Bilinear)).
     ///
     /// ```
-    /// use embedded_graphics_core::pixelcolor::{Gray8, GrayColor};
+    /// use embedded_graphics::pixelcolor::{Gray8, GrayColor};
     /// use microraster::{Band, texture::{A8, Bilinear, Sprite, Texture}};
     /// static RAMP: Texture<'static, A8> = Texture::from_rows(&[[0, 255]]);
     /// let mut band = Band::<Gray8, 4, 1>::new(Gray8::BLACK);
@@ -193,7 +193,7 @@ impl<'t, F: TexelFormat, C, Fi: Filter> Sprite<'t, F, C, Fi> {
     /// them unchanged): the colour of an [`A8`](super::A8) mask.
     ///
     /// ```
-    /// use embedded_graphics_core::pixelcolor::{Rgb565, RgbColor};
+    /// use embedded_graphics::pixelcolor::{Rgb565, RgbColor};
     /// use microraster::{Band, texture::{A8, Sprite, Texture}};
     /// static DOT: Texture<'static, A8> = Texture::from_rows(&[[255]]);
     /// let mut band = Band::<Rgb565, 1, 1>::new(Rgb565::BLACK);
@@ -208,7 +208,7 @@ impl<'t, F: TexelFormat, C, Fi: Filter> Sprite<'t, F, C, Fi> {
     /// Multiplies the texels' alpha by `opacity / 255`.
     ///
     /// ```
-    /// use embedded_graphics_core::pixelcolor::{Gray8, GrayColor};
+    /// use embedded_graphics::pixelcolor::{Gray8, GrayColor};
     /// use microraster::{Band, blend::{Blend, Mix}, texture::{A8, Sprite, Texture}};
     /// static DOT: Texture<'static, A8> = Texture::from_rows(&[[255]]);
     /// let mut band = Band::<Gray8, 1, 1>::new(Gray8::BLACK);
@@ -301,7 +301,7 @@ impl<'t, F: TexelFormat, C, Fi: Filter> Sprite<'t, F, C, Fi> {
     /// infinite scale or angle; nothing is drawn then.
     ///
     /// ```
-    /// use embedded_graphics_core::{pixelcolor::Rgb565, prelude::*};
+    /// use embedded_graphics::{pixelcolor::Rgb565, prelude::*};
     /// use microraster::blend::{Blend, Mix};
     /// use microraster::texture::{Sprite, Texture, A8};
     /// use microraster::{Band, Error};
