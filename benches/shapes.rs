@@ -23,6 +23,7 @@ use embedded_graphics::primitives::{self as eg, PrimitiveStyle};
 use embedded_graphics_core::pixelcolor::Rgb565;
 use microraster::Band;
 use microraster::Renderer;
+use microraster::render::from_fn;
 use microraster::shape::{self as sh, Shape, ShapeStyle};
 use std::hint::black_box;
 use std::time::Duration;
@@ -252,7 +253,16 @@ fn bench_shape(c: &mut Criterion, name: &str) {
         black_box(&fb.px);
     });
     let mut banded = |set: &[Box<dyn MrDraw>], fb: &mut SliceFb| {
-        renderer.render_with(&mut band, fb, |v, _, _| set.iter().for_each(|s| s.band(v))).unwrap();
+        renderer
+            .render(
+                from_fn(|v| {
+                    set.iter().for_each(|s| s.band(v));
+                    Ok(())
+                }),
+                &mut band,
+                fb,
+            )
+            .unwrap();
         black_box(&fb.px);
     };
     run(&mut g, "mr_band16", || banded(&aliased, &mut fb));
@@ -297,7 +307,7 @@ fn bench_dashboard(c: &mut Criterion) {
     let renderer = Renderer::new(H as u32, dashboard::NIGHT);
     let mut g = c.benchmark_group("dashboard");
     run(&mut g, "mr_band16", || {
-        renderer.render_drawables(&mut band, &mut fb, dashboard::dashboard).unwrap();
+        renderer.render(from_fn(dashboard::dashboard), &mut band, &mut fb).unwrap();
         black_box(&fb.px);
     });
     run(&mut g, "eg", || {

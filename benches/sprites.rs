@@ -24,6 +24,7 @@ use embedded_graphics::image::{Image, ImageRaw};
 use embedded_graphics::prelude::*;
 use embedded_graphics_core::pixelcolor::Rgb565;
 use embedded_graphics_core::pixelcolor::raw::RawU16;
+use microraster::render::from_fn;
 use microraster::texture::{A8, Bilinear, Sprite, Texture};
 use microraster::{Band, Renderer};
 use std::hint::black_box;
@@ -94,9 +95,13 @@ fn main() {
     g.bench_function("mr_nearest", |b| {
         b.iter(|| {
             renderer
-                .render_drawables(&mut band, &mut fb, |v| {
-                    (0..24).try_for_each(|k| Sprite::new(&tex).at(place(k)).tint(TINT).blend_into(v))
-                })
+                .render(
+                    from_fn(|v| {
+                        (0..24).try_for_each(|k| Sprite::new(&tex).at(place(k)).tint(TINT).blend_into(v))
+                    }),
+                    &mut band,
+                    &mut fb,
+                )
                 .unwrap();
             black_box(&fb.px);
         })
@@ -111,12 +116,16 @@ fn main() {
     g.bench_function("mr_bilinear", |b| {
         b.iter(|| {
             renderer
-                .render_drawables(&mut band, &mut fb, |v| {
-                    (0..24).try_for_each(|k| {
-                        let s = Sprite::new(&tex).at(place(k)).scale(SCALE).rotate(ANGLE);
-                        s.filter(Bilinear).tint(TINT).blend_into(v)
-                    })
-                })
+                .render(
+                    from_fn(|v| {
+                        (0..24).try_for_each(|k| {
+                            let s = Sprite::new(&tex).at(place(k)).scale(SCALE).rotate(ANGLE);
+                            s.filter(Bilinear).tint(TINT).blend_into(v)
+                        })
+                    }),
+                    &mut band,
+                    &mut fb,
+                )
                 .unwrap();
             black_box(&fb.px);
         })

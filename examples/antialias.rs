@@ -12,8 +12,10 @@ use embedded_graphics::prelude::*;
 use embedded_graphics::primitives::Rectangle;
 use embedded_graphics_core::pixelcolor::{Rgb565, Rgb888};
 use microraster::aa::{Antialias, Msaa, MsaaSparse, Ssaa};
+use microraster::aa::{Antialiased, Antialiased3d};
 use microraster::depth::{Depth16, DepthBand, DepthState};
 use microraster::raster3d::{PerspectiveCorrect, ScreenTriangle};
+use microraster::render::Triangles3d;
 use microraster::{Band, Primitive, Renderer};
 use microraster_scenes::scenes;
 use microraster_scenes::scenes3d::{BINS, Scene3d};
@@ -106,12 +108,16 @@ fn run<A: Antialias, const SW: usize, const SH: usize>(
     let mut depth = DepthBand::<Depth16, SW, SH>::new();
     let mut out = Band::<Rgb565, W, H>::new(BG);
     let f2 = timed(|f| {
-        Ok(r.render_antialiased(mode, prims, &mut samples, &mut out, f).map_err(|e| e.to_string())?)
+        Ok(r.render(Antialiased::new(mode, prims, &mut samples), &mut out, f).map_err(|e| e.to_string())?)
     })?;
     let f3 = timed(|f| {
         let state = DepthState::LESS_WRITE;
-        r.render_3d_antialiased(mode, PerspectiveCorrect, tris, &mut samples, &mut depth, state, &mut out, f)
-            .map_err(|e| e.to_string())?;
+        r.render(
+            Antialiased3d::new(mode, tris, &mut samples, &mut depth, state, PerspectiveCorrect),
+            &mut out,
+            f,
+        )
+        .map_err(|e| e.to_string())?;
         Ok(())
     })?;
     let bytes_2d = Band::<Rgb565, SW, SH>::BYTES + Band::<Rgb565, W, H>::BYTES;
@@ -147,8 +153,12 @@ fn main() -> Result<()> {
     let mut depth = DepthBand::<Depth16, W, H>::new();
     let a2 = timed(|f| Ok(r.render(&prims, &mut band, f).map_err(|e| e.to_string())?))?;
     let a3 = timed(|f| {
-        r.render_3d(&tris, &mut band, &mut depth, DepthState::LESS_WRITE, PerspectiveCorrect, f)
-            .map_err(|e| e.to_string())?;
+        r.render(
+            Triangles3d::new(&tris, &mut depth, DepthState::LESS_WRITE, PerspectiveCorrect),
+            &mut band,
+            f,
+        )
+        .map_err(|e| e.to_string())?;
         Ok(())
     })?;
     let aliased = (

@@ -10,7 +10,7 @@
 //!
 //! Arguments: the scene (`scatter`, `large`, `tiny`, `lines`, or `empty`, a
 //! frame with no primitive; or `scene3d` / `scene3d_persp`, the standard 3D
-//! scene through the `f32` vertex stage and `render_3d` with 16-bit depth,
+//! scene through the `f32` vertex stage and `Triangles3d` with 16-bit depth,
 //! affine or perspective-correct colour, vertex stage included); a frame count (default 10), or `time` to print
 //! the median thread CPU time per frame and the scene's fill rate against the
 //! slice-fill ceiling (the report's timing loop, `examples/report/timing.rs`);

@@ -6,7 +6,7 @@
 //! counts instructions: `examples/fw_bench/clock.rs`, calibrated first) and
 //! writes its records to `docs/data/link-m4f.tsv`. For each of [`ANGLES`]
 //! the 320 × 240 scene (f32 vertex stage, 16-bit depth, perspective-correct,
-//! 16-row bands, 4 subpixel bits) is drawn by `render_3d_linked` into a sink
+//! 16-row bands, 4 subpixel bits) is drawn by `render_linked` into a sink
 //! that reads the timer at every band it is handed: the instructions from
 //! one band's hand-over to the next are that band's rendering.
 //! Records: `vertex FRAME INSTR` and `band FRAME INDEX INSTR`.
@@ -30,7 +30,7 @@ mod firmware {
     use embedded_graphics_core::pixelcolor::{Rgb565, RgbColor};
     use microraster::depth::{Depth16, DepthBand, DepthState};
     use microraster::raster3d::{PerspectiveCorrect, ScreenTriangle};
-    use microraster::render::{BandSink, Lent};
+    use microraster::render::{BandSink, Lent, Triangles3d};
     use microraster::{Band, Renderer};
     use microraster_scenes::scenes3d::{BINS, Scene3d};
     use panic_semihosting as _;
@@ -88,7 +88,11 @@ mod firmware {
             hprintln!("vertex {} {}", frame, vertex);
             let mut sink = Stopwatch { span: Some(Span::start()), instr: [None; BANDS] };
             renderer
-                .render_3d_linked(bins, bands, depth, DepthState::LESS_WRITE, PerspectiveCorrect, &mut sink)
+                .render_linked(
+                    Triangles3d::new(bins, depth, DepthState::LESS_WRITE, PerspectiveCorrect),
+                    bands,
+                    &mut sink,
+                )
                 .ok()?;
             for (band, instr) in sink.instr.iter().enumerate() {
                 hprintln!("band {} {} {}", frame, band, (*instr)?);

@@ -18,8 +18,8 @@
 //!   the vertex stage and each band apart, come from `docs/data/link-m4f.tsv`
 //!   (QEMU, `bash scripts/firmware.sh link`, examples/fw_link.rs); one
 //!   instruction per cycle at 168 MHz (STM32F405).
-//! * Speed-up: wall time of the 60 frames drawn by `render_3d` on one thread
-//!   and by `render_3d_threads` on two, best of 5 runs each, in the same run.
+//! * Speed-up: wall time of the 60 frames drawn by `Triangles3d` on one thread
+//!   and by `render_threads` on two, best of 5 runs each, in the same run.
 
 use std::time::Instant;
 
@@ -29,6 +29,7 @@ use embedded_graphics_core::primitives::Rectangle;
 use microraster::depth::{Depth16, DepthBand, DepthState};
 use microraster::raster3d::{PerspectiveCorrect, ScreenTriangle};
 use microraster::render::{Blocking, DirtyBands};
+use microraster::render::{Triangles3d, from_fn};
 use microraster::{Band, Renderer};
 use microraster_scenes::scenes3d::{BINS, Scene3d};
 
@@ -133,23 +134,17 @@ fn scene3d_sent(frames: &[heapless::Vec<ScreenTriangle<4>, BINS>]) -> Sent {
     sent(
         frames.len(),
         |f, screen| {
-            r.render_3d(
-                &frames[f],
+            r.render(
+                Triangles3d::new(&frames[f], &mut depth, DepthState::LESS_WRITE, PerspectiveCorrect),
                 &mut band,
-                &mut depth,
-                DepthState::LESS_WRITE,
-                PerspectiveCorrect,
                 screen,
             )
             .expect("frame");
         },
         |f, sink| {
-            r.render_3d_linked(
-                &frames[f],
+            r.render_linked(
+                Triangles3d::new(&frames[f], &mut depth2, DepthState::LESS_WRITE, PerspectiveCorrect),
                 &mut bands,
-                &mut depth2,
-                DepthState::LESS_WRITE,
-                PerspectiveCorrect,
                 sink,
             )
             .expect("frame");
@@ -165,16 +160,21 @@ fn dashboard_sent() -> Sent {
     sent(
         live::FRAMES,
         |f, screen| {
-            r.render_drawables(&mut band, screen, |view| live::dashboard_at(view, live::speed(f)))
+            r.render(from_fn(|view| live::dashboard_at(view, live::speed(f))), &mut band, screen)
                 .expect("frame");
         },
         |f, sink| {
             let mut failed = Ok(());
-            r.render_with_linked(&mut bands, sink, |view, _, _| {
-                if failed.is_ok() {
-                    failed = live::dashboard_at(view, live::speed(f));
-                }
-            })
+            r.render_linked(
+                from_fn(|view| {
+                    if failed.is_ok() {
+                        failed = live::dashboard_at(view, live::speed(f));
+                    };
+                    Ok(())
+                }),
+                &mut bands,
+                sink,
+            )
             .expect("frame");
             failed.expect("dashboard");
         },
@@ -328,20 +328,23 @@ fn speedup_table(frames: &[heapless::Vec<ScreenTriangle<4>, BINS>]) -> String {
     let one = best(&mut || {
         let (mut band, mut depth) = (Band::<Rgb565, W, BAND>::new(BG), DepthBand::<Depth16, W, BAND>::new());
         for tris in frames {
-            r.render_3d(tris, &mut band, &mut depth, DepthState::LESS_WRITE, PerspectiveCorrect, &mut Null)
-                .expect("frame");
+            r.render(
+                Triangles3d::new(tris, &mut depth, DepthState::LESS_WRITE, PerspectiveCorrect),
+                &mut band,
+                &mut Null,
+            )
+            .expect("frame");
         }
     });
     let two = best(&mut || {
         let mut bands = [const { Band::<Rgb565, W, BAND>::new(BG) }; 2];
         let mut depth = [const { DepthBand::<Depth16, W, BAND>::zeroed() }; 2];
         for tris in frames {
-            r.render_3d_threads(
-                tris,
+            r.render_threads(
+                depth
+                    .each_mut()
+                    .map(|d| Triangles3d::new(tris, d, DepthState::LESS_WRITE, PerspectiveCorrect)),
                 &mut bands,
-                &mut depth,
-                DepthState::LESS_WRITE,
-                PerspectiveCorrect,
                 &mut Null,
             )
             .expect("frame");
@@ -349,7 +352,7 @@ fn speedup_table(frames: &[heapless::Vec<ScreenTriangle<4>, BINS>]) -> String {
     });
     let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
     format!(
-        "| host, {cores} cores reported, load average {load} (1 min, before the run), 60 frames (bins ready) | one thread `render_3d` (ms) | two threads `render_3d_threads` (ms) | speed-up |\n|---|---|---|---|\n\
+        "| host, {cores} cores reported, load average {load} (1 min, before the run), 60 frames (bins ready) | one thread `render` (ms) | two threads `render_threads` (ms) | speed-up |\n|---|---|---|---|\n\
          | best of 5 | {:.1} | {:.1} | {:.2}× |\n",
         one * 1e3,
         two * 1e3,

@@ -73,7 +73,7 @@ done
 # `DirtyBands` itself inlines into its caller; its `signature` stays out of
 # line (`#[inline(never)]`) so that this grep sees it, and the threads' entry
 # closures are always out of line. Checked once by hand: size_3d drawing
-# through `render_3d_linked` into `DirtyBands` links
+# through `render_linked` into `DirtyBands` links
 # `microraster::output::render::dirty::signature` and fails here.
 # Not checked, because it is shared on purpose: the blocking `Renderer::render`
 # (and every older entry point) *is* the linked band loop (`render::link::run`)

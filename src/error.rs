@@ -28,15 +28,17 @@ pub enum Error {
     /// or the bounding sphere does not contain the mesh.
     InvalidMesh,
     /// A caller-provided buffer is smaller than the operation needs (a
-    /// texture's data, a shape's edge list, meshlet builder output, a band
-    /// signature list or a panel's wire buffer; frame bins and vertex caches
-    /// report [`CapacityExceeded`](Error::CapacityExceeded) instead).
+    /// texture's data, a shape's edge list, a mesh generator's arrays, a band
+    /// signature list or a panel's wire buffer; frame bins, vertex caches
+    /// and the meshlet builder's buffers report
+    /// [`CapacityExceeded`](Error::CapacityExceeded) instead).
     BufferTooSmall,
-    /// The frame's bins or a vertex cache hold fewer entries than one call
-    /// needed: `needed` is the length that would have sufficed (for bins,
-    /// the triangles already in them plus all that the mesh emits),
-    /// `capacity` the buffer's. The bins are left as they were before the
-    /// call: no partial mesh is drawn.
+    /// The frame's bins, a vertex cache or a buffer of the meshlet builder
+    /// ([`build_meshlets`](crate::mesh::build_meshlets)) hold fewer entries
+    /// than one call needed: `needed` is the length that would have
+    /// sufficed (for bins, the triangles already in them plus all that the
+    /// mesh emits), `capacity` the buffer's. The bins are left as they were
+    /// before the call: no partial mesh is drawn.
     ///
     /// ```
     /// let e = microraster::Error::CapacityExceeded { needed: 300, capacity: 256 };
@@ -94,7 +96,7 @@ impl core::error::Error for Error {}
 /// Drawing into a band cannot fail (its `DrawTarget::Error` is
 /// [`Infallible`](core::convert::Infallible)); this lets `?` pass an
 /// `embedded-graphics` draw result up from the closures of
-/// [`Renderer::render_drawables`](crate::Renderer::render_drawables) and
+/// [`from_fn`](crate::render::from_fn) and
 /// friends, which return `Result<(), Error>`.
 ///
 /// ```
@@ -108,7 +110,23 @@ impl From<core::convert::Infallible> for Error {
     }
 }
 
-/// Error returned by [`Renderer::render`](crate::Renderer::render).
+/// Error returned by [`Renderer::render`](crate::Renderer::render) and the
+/// other band loops: the input's [`Error`] (a bad configuration or scene,
+/// found before anything is sent, or the first error of the frame's pass)
+/// or the display's own error type `E`.
+///
+/// ```
+/// use embedded_graphics::mock_display::MockDisplay;
+/// use embedded_graphics::pixelcolor::BinaryColor;
+/// use microraster::{Band, Error, RenderError, Renderer};
+/// let mut band = Band::<BinaryColor, 4, 2>::new(BinaryColor::Off);
+/// // A frame of 0 rows is refused before any band is sent.
+/// let r = Renderer::new(0, BinaryColor::Off).render((), &mut band, &mut MockDisplay::new());
+/// match r {
+///     Err(RenderError::Input(Error::InvalidFrameSize)) => {}
+///     other => panic!("{other:?}"),
+/// }
+/// ```
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum RenderError<E> {
     /// The renderer's configuration or the scene was invalid.
@@ -135,7 +153,7 @@ impl<E> From<Error> for RenderError<E> {
 /// fn frame() -> Result<(), std::boxed::Box<dyn core::error::Error>> {
 ///     let mut band = Band::<BinaryColor, 8, 4>::new(BinaryColor::Off);
 ///     let mut display = MockDisplay::<BinaryColor>::new();
-///     Renderer::new(0, BinaryColor::Off).render::<_, 4, 8, 4>(&[], &mut band, &mut display)?;
+///     Renderer::new(0, BinaryColor::Off).render((), &mut band, &mut display)?;
 ///     Ok(())
 /// }
 /// assert_eq!(frame().unwrap_err().to_string(), "invalid input: frame size is zero or too large");

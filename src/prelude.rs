@@ -1,14 +1,16 @@
 //! The names most programs need, in one `use microraster::prelude::*;`
-//! (28 with the default `fragment` feature, 20 without):
+//! (31 with the default `fragment` feature, 23 without):
 //!
 //! - the 3D front: [`View3d`] (and [`View240x240`] for the common ST7789
 //!   display), [`Camera`], [`Object`], the built-in [`CUBE`];
-//! - the band renderer and its 2D scene: [`Band`], [`Renderer`],
-//!   [`Primitive`], [`Triangle`], [`Line`], [`SubPoint`], [`Cull`];
+//! - the band renderer, what a frame draws ([`Pass`]: a slice of 2D
+//!   primitives, [`Triangles3d`], [`from_fn`] for any e-g drawable) and the
+//!   2D scene: [`Band`], [`Renderer`], [`Primitive`], [`Triangle`],
+//!   [`Line`], [`SubPoint`], [`Cull`];
 //! - errors: [`Error`], [`RenderError`];
 //! - the explicit 3D API's usual choices: [`Pipeline`], [`DepthBand`],
 //!   [`DepthState`], [`Depth16`], and the interpolations [`Affine`] and
-//!   [`PerspectiveCorrect`] (values handed to the render calls);
+//!   [`PerspectiveCorrect`] (values handed to [`Triangles3d::new`]);
 //! - with the `fragment` feature, 2D shapes ([`Shape`], [`ShapeStyle`],
 //!   [`Rect`], [`RoundedRect`], [`Circle`], [`Polyline`]) and sprites
 //!   ([`Sprite`], [`Texture`]).
@@ -32,6 +34,7 @@
 pub use crate::depth::{Depth16, DepthBand, DepthState};
 pub use crate::pipeline::Pipeline;
 pub use crate::raster3d::{Affine, PerspectiveCorrect};
+pub use crate::render::{Pass, Triangles3d, from_fn};
 #[cfg(feature = "fragment")]
 pub use crate::shape::{Circle, Polyline, Rect, RoundedRect, Shape, ShapeStyle};
 #[cfg(feature = "fragment")]

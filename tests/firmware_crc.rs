@@ -11,7 +11,7 @@
 //!   band height into a framebuffer;
 //! * the Cortex-M0's streamed rendering (2D scene generated again per band,
 //!   vertex stage run per band) gives exactly the pixels of the per-frame
-//!   path ([`Renderer::render`]; [`Scene3d::draw`] + [`Renderer::render_3d`]).
+//!   path ([`Renderer::render`]; [`Scene3d::draw`] + `Triangles3d`).
 
 #[allow(dead_code)]
 #[path = "../examples/firmware/workload.rs"]
@@ -22,6 +22,7 @@ use embedded_graphics_core::prelude::*;
 use microraster::depth::{Depth16, DepthBand};
 use microraster::math::Fx;
 use microraster::raster3d::{Affine, PerspectiveCorrect, ScreenTriangle};
+use microraster::render::Triangles3d;
 use microraster::{Band, Primitive, Renderer};
 use microraster_scenes::scenes;
 use microraster_scenes::scenes3d::{BINS, Scene3d};
@@ -147,7 +148,11 @@ fn band_crcs_match_a_framebuffer() {
         let mut band = Box::new(Band::<Rgb565, W, B>::new(workload::BACKGROUND));
         let mut depth = Box::new(DepthBand::<Depth16, W, B>::new());
         Renderer::new(h, workload::BACKGROUND)
-            .render_3d(&bins, &mut band, &mut depth, workload::DEPTH_STATE, M::default(), &mut frame)
+            .render(
+                Triangles3d::new(&bins, &mut depth, workload::DEPTH_STATE, M::default()),
+                &mut band,
+                &mut frame,
+            )
             .unwrap();
         frame
     }

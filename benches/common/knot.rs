@@ -3,7 +3,7 @@
 //! meshlet stage against the `euc` crate (0.5, a software renderer written
 //! for the host), same frame, same camera, same light.
 //!
-//! * microraster ([`mr_knot`]): `Renderer::render_3d_direct` with
+//! * microraster ([`mr_knot`]): `Direct3d` with
 //!   `Pipeline::draw_meshlets` per 16-row band, 16-bit depth, Gouraud with
 //!   the standard scene's light (ambient, Lambert, Blinn–Phong), back faces
 //!   culled: what `examples/fw_bench` counts on the Cortex-M4F.
@@ -40,6 +40,7 @@ use microraster::pipeline::ClusterCache;
 use microraster::pipeline::Pipeline;
 use microraster::raster3d::Interpolation;
 use microraster::raster3d::ScreenTriangle;
+use microraster::render::Direct3d;
 use microraster::{Band, Renderer};
 
 /// The knot's colour (`examples/fw_bench`'s and `examples/fw_sweep`'s).
@@ -66,9 +67,13 @@ pub fn mr_knot<T: Scalar, M: Interpolation + Default>(
 ) {
     let model = knot_model::<T>();
     Renderer::new(H as u32, BG3)
-        .render_3d_direct(band, depth, DepthState::LESS_WRITE, M::default(), target, |band| {
-            pipeline.draw_meshlets(&VALID_KNOT, &model, KNOT_COLOR, cache, band).map(|_| ())
-        })
+        .render(
+            Direct3d::new(depth, DepthState::LESS_WRITE, M::default(), |band| {
+                pipeline.draw_meshlets(&VALID_KNOT, &model, KNOT_COLOR, cache, band).map(|_| ())
+            }),
+            band,
+            target,
+        )
         .unwrap();
 }
 

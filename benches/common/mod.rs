@@ -6,7 +6,7 @@
 //!
 //! * microraster: the band renderer ([`mr_band`]) and direct drawing through
 //!   `TargetBlitter` ([`mr_direct`]); the 3D scene through the vertex stage and
-//!   `render_3d` ([`mr3d`]);
+//!   `Triangles3d` ([`mr3d`]);
 //! * embedded-graphics 0.8: `Triangle` / `Line` styled primitives ([`eg`]);
 //! * tiny-skia 0.12: `fill_path` without anti-aliasing, hairline
 //!   `stroke_path` for lines ([`skia`]);
@@ -41,6 +41,7 @@ use microraster::math::{Fx, Mat4, Scalar, Vec3, transform};
 use microraster::mesh::Mesh;
 use microraster::pipeline::Pipeline;
 use microraster::raster3d::{Interpolation, ScreenTriangle};
+use microraster::render::Triangles3d;
 use microraster::{Band, Interpolate, Primitive, Renderer, SubPoint};
 use microraster_scenes::scenes;
 use microraster_scenes::scenes3d::{BINS, Scene3d};
@@ -288,7 +289,7 @@ pub fn mr_band<const S: u32, const BH: usize>(
     band: &mut Band<Rgb565, W, BH>,
     target: &mut impl Frame,
 ) {
-    Renderer::new(H as u32, BG).render(&scene.prims, band, target).unwrap();
+    Renderer::new(H as u32, BG).render(&scene.prims[..], band, target).unwrap();
 }
 
 /// microraster drawing straight into `target` (no band): the target is
@@ -401,7 +402,7 @@ pub type Bins<const S: u32> = heapless::Vec<ScreenTriangle<S>, BINS>;
 pub const BG3: Rgb565 = Rgb565::BLACK;
 
 /// The standard 3D scene at [`ANGLE`]: the vertex stage on path `T` into
-/// `bins`, then `render_3d` with `BH`-row bands, depth format `F` and colour
+/// `bins`, then `Triangles3d` with `BH`-row bands, depth format `F` and colour
 /// interpolation `M` into `target`. Returns the number of screen triangles.
 pub fn mr3d<T: Scalar, F: DepthFormat, M: Interpolation, const S: u32, const BH: usize>(
     pipeline: &Pipeline<T, S>,
@@ -413,7 +414,7 @@ pub fn mr3d<T: Scalar, F: DepthFormat, M: Interpolation, const S: u32, const BH:
     bins.clear();
     Scene3d.draw::<T, Rgb565, S, BINS>(pipeline, ANGLE, bins).unwrap();
     Renderer::new(H as u32, BG3)
-        .render_3d(bins, band, depth, DepthState::LESS_WRITE, M::default(), target)
+        .render(Triangles3d::new(bins, depth, DepthState::LESS_WRITE, M::default()), band, target)
         .unwrap();
     bins.len()
 }

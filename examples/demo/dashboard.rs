@@ -5,6 +5,7 @@
 use super::{Canvas, Result, save};
 use embedded_graphics::prelude::*;
 use embedded_graphics_core::pixelcolor::Rgb565;
+use microraster::render::from_fn;
 use microraster::{Band, Renderer};
 use std::path::Path;
 
@@ -16,7 +17,7 @@ pub fn run(out: &Path) -> Result<()> {
     let mut canvas = Canvas::new(scene::W as u32, scene::H);
     let mut band = Band::<Rgb565, { scene::W }, 16>::new(scene::NIGHT);
     let r = Renderer::new(scene::H, scene::NIGHT);
-    r.render_drawables(&mut band, &mut canvas.color_converted(), scene::dashboard)
+    r.render(from_fn(scene::dashboard), &mut band, &mut canvas.color_converted())
         .map_err(|e| e.to_string())?;
     save(&canvas, &out.join("dashboard.png"))?;
     let mut plain = Canvas::new(scene::W as u32, scene::H);

@@ -6,8 +6,10 @@
 use super::{Canvas, Result, save, with_caption};
 use embedded_graphics_core::pixelcolor::Rgb888;
 use microraster::aa::Ssaa;
+use microraster::aa::Supersampled;
 use microraster::depth::{Depth16, DepthBand};
 use microraster::raster3d::PerspectiveCorrect;
+use microraster::render::from_fn;
 use microraster::{Band, Renderer};
 use std::path::Path;
 
@@ -29,13 +31,19 @@ fn render(b: &Bins) -> Result<Canvas> {
     let mut depth = Box::new(DepthBand::<Z, W, BAND_ROWS>::new());
     let mut result = Ok(());
     Renderer::new(H, BACKGROUND)
-        .render_with(&mut band, &mut canvas, |view, y0, y1| {
-            if result.is_ok() {
-                result = draw_passes::<_, Z, P, S, W, BAND_ROWS, 1024, 1024, 64, 2048>(
-                    b, view, &mut depth, y0, y1,
-                );
-            }
-        })
+        .render(
+            from_fn(|view| {
+                let (y0, y1) = (view.y0(), view.y0() + view.height() as i32);
+                if result.is_ok() {
+                    result = draw_passes::<_, Z, P, S, W, BAND_ROWS, 1024, 1024, 64, 2048>(
+                        b, view, &mut depth, y0, y1,
+                    );
+                };
+                Ok(())
+            }),
+            &mut band,
+            &mut canvas,
+        )
         .map_err(|e| format!("{e:?}"))?;
     result?;
     Ok(canvas)
@@ -52,13 +60,19 @@ fn render_ssaa2(b: &Bins) -> Result<Canvas> {
     let mut out = Box::new(Band::<Rgb888, W, BAND_ROWS>::new(BACKGROUND));
     let mut result = Ok(());
     Renderer::new(H, BACKGROUND)
-        .render_supersampled_with(Ssaa::<2>, &mut samples, &mut out, &mut canvas, |view, sy0, sy1| {
-            if result.is_ok() {
-                result = draw_passes::<_, Z, P, S, { 2 * W }, { 2 * BAND_ROWS }, 1024, 1024, 64, 2048>(
-                    &b2, view, &mut depth, sy0, sy1,
-                );
-            }
-        })
+        .render(
+            Supersampled::new(Ssaa::<2>, &mut samples, |view| {
+                let (sy0, sy1) = (view.y0(), view.y0() + view.height() as i32);
+                if result.is_ok() {
+                    result = draw_passes::<_, Z, P, S, { 2 * W }, { 2 * BAND_ROWS }, 1024, 1024, 64, 2048>(
+                        &b2, view, &mut depth, sy0, sy1,
+                    );
+                };
+                Ok(())
+            }),
+            &mut out,
+            &mut canvas,
+        )
         .map_err(|e| format!("{e:?}"))?;
     result?;
     Ok(canvas)

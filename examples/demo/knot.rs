@@ -1,8 +1,8 @@
 //! The 20k-triangle benchmark knot (`examples/common/knot_mesh.rs`) at
-//! 320×240 through the meshlet stage: `Renderer::render_3d_direct` with
+//! 320×240 through the meshlet stage: `Direct3d` with
 //! `Pipeline::draw_meshlets` per band, no bins. The frame must equal the
 //! binned path's (the same triangles in cluster order through
-//! `draw_valid_mesh` and `render_3d`), which the demo checks.
+//! `draw_valid_mesh` and `Triangles3d`), which the demo checks.
 
 use super::{Canvas, Result, save};
 use embedded_graphics_core::pixelcolor::Rgb888;
@@ -11,6 +11,7 @@ use microraster::math::{Mat4, transform};
 use microraster::mesh::ValidMesh;
 use microraster::pipeline::{ClusterCache, MeshStats};
 use microraster::raster3d::{Affine, ScreenTriangle};
+use microraster::render::{Direct3d, Triangles3d};
 use microraster::{Band, Renderer};
 use microraster_scenes::scenes3d::Scene3d;
 use std::path::Path;
@@ -35,13 +36,17 @@ pub fn run(out: &Path) -> Result<()> {
     let mut cache = ClusterCache::<f32, S>::new();
     let mut total = MeshStats::default();
     Renderer::new(HEIGHT, BACKGROUND)
-        .render_3d_direct(&mut band, &mut depth, DepthState::LESS_WRITE, Affine, &mut canvas, |band| {
-            let s = pipeline.draw_meshlets(&knot_mesh::VALID_KNOT, &model(), COLOR, &mut cache, band)?;
-            total.emitted += s.emitted;
-            total.clusters_outside += s.clusters_outside;
-            total.clusters_back_facing += s.clusters_back_facing;
-            Ok(())
-        })
+        .render(
+            Direct3d::new(&mut depth, DepthState::LESS_WRITE, Affine, |band| {
+                let s = pipeline.draw_meshlets(&knot_mesh::VALID_KNOT, &model(), COLOR, &mut cache, band)?;
+                total.emitted += s.emitted;
+                total.clusters_outside += s.clusters_outside;
+                total.clusters_back_facing += s.clusters_back_facing;
+                Ok(())
+            }),
+            &mut band,
+            &mut canvas,
+        )
         .map_err(|e| e.to_string())?;
 
     // The binned path, same triangles in cluster order: the same frame.
@@ -50,7 +55,7 @@ pub fn run(out: &Path) -> Result<()> {
     pipeline.draw_valid_mesh(&mesh, &model(), COLOR, &mut bins)?;
     let mut binned = Canvas::new(W as u32, HEIGHT);
     Renderer::new(HEIGHT, BACKGROUND)
-        .render_3d(&bins, &mut band, &mut depth, DepthState::LESS_WRITE, Affine, &mut binned)
+        .render(Triangles3d::new(&bins, &mut depth, DepthState::LESS_WRITE, Affine), &mut band, &mut binned)
         .map_err(|e| e.to_string())?;
     if binned.px != canvas.px {
         return Err("the meshlet stage and the binned path drew different knots".into());

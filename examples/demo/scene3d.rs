@@ -9,6 +9,7 @@ use embedded_graphics_core::pixelcolor::{Rgb565, Rgb888};
 use microraster::depth::{Depth16, DepthBand, DepthFormat, DepthState};
 use microraster::math::{Fx, Scalar};
 use microraster::raster3d::{Affine, Interpolation, PerspectiveCorrect, ScreenTriangle, draw_triangle};
+use microraster::render::{Triangles3d, from_fn};
 use microraster::{Band, Renderer};
 use microraster_scenes::scenes3d::{BINS, Scene3d, Stats, TRIANGLES};
 use std::path::Path;
@@ -35,9 +36,9 @@ pub fn run(out: &Path) -> Result<()> {
 
     // The frame, drawn with our own depth rows so the depth buffer can be kept.
     let (frame, depth) = render_keeping_depth::<PerspectiveCorrect, BAND_ROWS>(&bins)?;
-    // The same frame through the library's render_3d must be identical ...
+    // The same frame through the library's Triangles3d must be identical ...
     if render_3d::<PerspectiveCorrect, BAND_ROWS>(&bins)?.px != frame.px {
-        return Err("render_3d and render_with + draw_triangle drew different frames".into());
+        return Err("Triangles3d and from_fn + draw_triangle drew different frames".into());
     }
     // ... and so must every band height, colour and depth alike.
     check_bands::<1>(&bins, &frame, &depth)?;
@@ -46,7 +47,7 @@ pub fn run(out: &Path) -> Result<()> {
 
     save(&frame, &out.join("scene3d.png"))?;
     print_stats("f32", &stats);
-    println!("  identical for bands of 1, 7, 16 and 240 rows (colour and depth), and via render_3d");
+    println!("  identical for bands of 1, 7, 16 and 240 rows (colour and depth), and via Triangles3d");
 
     let (grey, lo, hi) = depth_image(&depth)?;
     let grey = with_caption(
@@ -84,18 +85,22 @@ fn vertex_stage<T: Scalar>() -> Result<(Bins, Stats)> {
     Ok((bins, stats))
 }
 
-/// The frame through [`Renderer::render_3d`] with `H`-row bands.
+/// The frame through `Triangles3d` with `H`-row bands.
 fn render_3d<M: Interpolation, const H: usize>(tris: &[ScreenTriangle<S>]) -> Result<Canvas> {
     let mut canvas = Canvas::new(W as u32, HEIGHT);
     let mut band = Band::<Rgb888, W, H>::new(BACKGROUND);
     let mut depth = DepthBand::<Z, W, H>::new();
     Renderer::new(HEIGHT, BACKGROUND)
-        .render_3d(tris, &mut band, &mut depth, DepthState::LESS_WRITE, M::default(), &mut canvas)
+        .render(
+            Triangles3d::new(tris, &mut depth, DepthState::LESS_WRITE, M::default()),
+            &mut band,
+            &mut canvas,
+        )
         .map_err(|e| e.to_string())?;
     Ok(canvas)
 }
 
-/// The frame through the public band loop, [`Renderer::render_with`], with
+/// The frame through the public band loop, `render::from_fn`, with
 /// one [`draw_triangle`] call per triangle that touches the band; each band's
 /// depth rows are copied out before the next band reuses them. Returns the
 /// frame and its depth buffer, row by row.
@@ -107,25 +112,31 @@ fn render_keeping_depth<M: Interpolation, const H: usize>(
     let mut zband = DepthBand::<Z, W, H>::new();
     let mut depth = vec![Z::FAR; W * HEIGHT as usize];
     Renderer::new(HEIGHT, BACKGROUND)
-        .render_with(&mut band, &mut canvas, |view, y0, y1| {
-            zband.clear(H);
-            let mut rows = zband.rows_mut((y1 - y0) as usize);
-            for tri in tris {
-                let (lo, hi) = tri.rows();
-                if lo < y1 && hi >= y0 {
-                    draw_triangle(tri, view, &mut rows, DepthState::LESS_WRITE, M::default());
+        .render(
+            from_fn(|view| {
+                let (y0, y1) = (view.y0(), view.y0() + view.height() as i32);
+                zband.clear(H);
+                let mut rows = zband.rows_mut((y1 - y0) as usize);
+                for tri in tris {
+                    let (lo, hi) = tri.rows();
+                    if lo < y1 && hi >= y0 {
+                        draw_triangle(tri, view, &mut rows, DepthState::LESS_WRITE, M::default());
+                    }
                 }
-            }
-            for (dst, src) in depth.chunks_exact_mut(W).skip(y0 as usize).zip(rows.iter()) {
-                dst.copy_from_slice(src);
-            }
-        })
+                for (dst, src) in depth.chunks_exact_mut(W).skip(y0 as usize).zip(rows.iter()) {
+                    dst.copy_from_slice(src);
+                }
+                Ok(())
+            }),
+            &mut band,
+            &mut canvas,
+        )
         .map_err(|e| e.to_string())?;
     Ok((canvas, depth))
 }
 
 /// Errors unless `H`-row bands give the same colour and depth as `frame`,
-/// `depth`, both through `render_with` and through `render_3d`.
+/// `depth`, both through `from_fn` and through `Triangles3d`.
 fn check_bands<const H: usize>(tris: &[ScreenTriangle<S>], frame: &Canvas, depth: &[u16]) -> Result<()> {
     let (c, d) = render_keeping_depth::<PerspectiveCorrect, H>(tris)?;
     let lib = render_3d::<PerspectiveCorrect, H>(tris)?;

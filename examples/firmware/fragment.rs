@@ -7,6 +7,7 @@
 
 use embedded_graphics_core::pixelcolor::Rgb565;
 use microraster::aa::Ssaa;
+use microraster::aa::Supersampled;
 use microraster::depth::{Depth16, DepthBand};
 use microraster::raster3d::PerspectiveCorrect;
 use microraster::texture::from_rgb8;
@@ -68,11 +69,17 @@ pub fn fragment(name: &'static str, b: FragBuffers<'_>, out: Out<'_>) -> Result<
     let mut target = CrcTarget::new(name, W as u32, H, out);
     let mut result = Ok(());
     Renderer::new(H, background)
-        .render_supersampled_with(Ssaa::<N>, samples, band, &mut target, |view, sy0, sy1| {
-            if result.is_ok() {
-                result = band_pass(&mut scene, bins, view, depth, sy0, sy1);
-            }
-        })
+        .render(
+            Supersampled::new(Ssaa::<N>, samples, |view| {
+                let (sy0, sy1) = (view.y0(), view.y0() + view.height() as i32);
+                if result.is_ok() {
+                    result = band_pass(&mut scene, bins, view, depth, sy0, sy1);
+                };
+                Ok(())
+            }),
+            band,
+            &mut target,
+        )
         .map_err(|e| match e {
             microraster::RenderError::Input(e) => e,
             microraster::RenderError::Target(never) => match never {},

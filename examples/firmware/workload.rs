@@ -11,14 +11,14 @@
 //! * [`m4f`] (Cortex-M4F, STM32F405 class, 128 KB RAM): the standard 2D scene
 //!   through [`Renderer::render`], and the standard 3D scene ([`Scene3d`],
 //!   meshes in flash) with the vertex stage run once per frame (every visible
-//!   triangle binned, then [`Renderer::render_3d`]), once on the `f32` vertex
+//!   triangle binned, then `Triangles3d`), once on the `f32` vertex
 //!   path and once on the fixed-point [`Fx`] path; 320 × 240 `Rgb565`, 16-row
 //!   bands, 16-bit depth, perspective-correct colour.
 //! * [`m0`] (Cortex-M0, nRF51822, 16 KB RAM): 160 × 128 `Rgb565` in 4-row
 //!   bands, nothing per frame kept in RAM: for each band the 2D scene is
 //!   generated again and drawn straight into the band, and the 3D scene's
 //!   vertex stage runs again on the [`Fx`] path keeping only the triangles
-//!   that touch the band ([`Renderer::render_3d_per_band`]); meshes in flash,
+//!   that touch the band (`PerBand3d`); meshes in flash,
 //!   16-bit depth, affine colour (no per-pixel division on a core without a
 //!   divider).
 
@@ -32,6 +32,7 @@ use microraster::depth::{Depth16, DepthBand, DepthState};
 use microraster::edge::Cull;
 use microraster::math::{Fx, Scalar};
 use microraster::raster3d::{Affine, Interpolation, PerspectiveCorrect, ScreenTriangle};
+use microraster::render::{PerBand3d, Triangles3d, from_fn};
 use microraster::{Band, Error, Primitive, RenderError, Renderer};
 use microraster_scenes::scenes;
 use microraster_scenes::scenes3d::{BINS, Scene3d};
@@ -243,7 +244,7 @@ pub fn mixed<const W: usize, const H: usize>(
         return Err(Error::BufferTooSmall);
     }
     let mut target = CrcTarget::new(name, W as u32, height, out);
-    Renderer::new(height, BACKGROUND).render(prims, band, &mut target).map_err(render_error)?;
+    Renderer::new(height, BACKGROUND).render(&prims[..], band, &mut target).map_err(render_error)?;
     target.finish();
     Ok(())
 }
@@ -260,17 +261,23 @@ pub fn mixed_streamed<const W: usize, const H: usize>(
     let mut target = CrcTarget::new(name, W as u32, height, out);
     let mut result = Ok(());
     Renderer::new(height, BACKGROUND)
-        .render_with(band, &mut target, |view, y0, y1| {
-            let scene = scenes::mixed::<Rgb565, S>(W as u32, height, &mut |p| {
-                let (lo, hi) = p.rows();
-                if lo < y1 && hi >= y0 {
-                    p.draw(view, Cull::None);
-                }
-            });
-            if result.is_ok() {
-                result = scene;
-            }
-        })
+        .render(
+            from_fn(|view| {
+                let (y0, y1) = (view.y0(), view.y0() + view.height() as i32);
+                let scene = scenes::mixed::<Rgb565, S>(W as u32, height, &mut |p| {
+                    let (lo, hi) = p.rows();
+                    if lo < y1 && hi >= y0 {
+                        p.draw(view, Cull::None);
+                    }
+                });
+                if result.is_ok() {
+                    result = scene;
+                };
+                Ok(())
+            }),
+            band,
+            &mut target,
+        )
         .map_err(render_error)?;
     result?;
     target.finish();
@@ -279,7 +286,7 @@ pub fn mixed_streamed<const W: usize, const H: usize>(
 
 /// The standard 3D scene ([`Scene3d`], meshes in flash) with the vertex
 /// stage run once per frame: every visible triangle binned, then
-/// [`Renderer::render_3d`] with `M` colour interpolation.
+/// `Triangles3d` with `M` colour interpolation.
 pub fn scene3d<T: Scalar, M: Interpolation, const W: usize, const H: usize, const N: usize>(
     name: &'static str,
     height: u32,
@@ -293,7 +300,7 @@ pub fn scene3d<T: Scalar, M: Interpolation, const W: usize, const H: usize, cons
     Scene3d.draw::<T, Rgb565, S, N>(&pipeline, ANGLE, bins)?;
     let mut target = CrcTarget::new(name, W as u32, height, out);
     Renderer::new(height, BACKGROUND)
-        .render_3d(bins, band, depth, DEPTH_STATE, M::default(), &mut target)
+        .render(Triangles3d::new(bins, depth, DEPTH_STATE, M::default()), band, &mut target)
         .map_err(render_error)?;
     target.finish();
     Ok(())
@@ -305,7 +312,7 @@ pub fn scene3d<T: Scalar, M: Interpolation, const W: usize, const H: usize, cons
 pub const BAND_BINS: usize = 128;
 
 /// The standard 3D scene with the vertex stage run once per band
-/// ([`Renderer::render_3d_per_band`]): `bins` holds one band's triangles.
+/// (`PerBand3d`): `bins` holds one band's triangles.
 #[allow(clippy::too_many_arguments)]
 pub fn scene3d_per_band<T: Scalar, M: Interpolation, const W: usize, const H: usize, const N: usize>(
     name: &'static str,
@@ -322,7 +329,7 @@ pub fn scene3d_per_band<T: Scalar, M: Interpolation, const W: usize, const H: us
         Scene3d.draw::<T, Rgb565, S, N>(&pipeline, ANGLE, bins).map(|_| ())
     };
     Renderer::new(height, BACKGROUND)
-        .render_3d_per_band(bins, geometry, band, depth, DEPTH_STATE, M::default(), &mut target)
+        .render(PerBand3d::new(bins, depth, DEPTH_STATE, M::default(), geometry), band, &mut target)
         .map_err(render_error)?;
     target.finish();
     Ok(())

@@ -23,6 +23,7 @@ use core::hint::black_box;
 
 use embedded_graphics_core::pixelcolor::Rgb565;
 use microraster::depth::{Depth16, DepthBand};
+use microraster::render::{Direct3d, PerBand3d, Triangles3d, from_fn};
 
 // The shape kit does not fit the micro:bit's flash beside the rest: Cortex-M4F only.
 #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
@@ -89,12 +90,12 @@ pub enum Work {
     /// The vertex stage once per band, keeping the band's triangles, nothing
     /// rasterized.
     VertexPerBand3d(Vertex),
-    /// The vertex stage once per frame, then [`Renderer::render_3d`].
+    /// The vertex stage once per frame, then `Triangles3d`.
     Frame3d(Vertex, Interp),
-    /// [`Renderer::render_3d_per_band`]: the vertex stage once per band.
+    /// `PerBand3d`: the vertex stage once per band.
     PerBand3d(Vertex, Interp),
     /// The 20k-triangle knot ([`knot_mesh::KNOT`]) through the meshlet stage:
-    /// [`Renderer::render_3d_direct`] with [`Pipeline::draw_meshlets`] per
+    /// `Direct3d` with [`Pipeline::draw_meshlets`] per
     /// band, no bins. Its triangle count is the mesh's (instructions per
     /// mesh triangle).
     Meshlets(Vertex, Interp),
@@ -104,7 +105,7 @@ pub enum Work {
     KnotStage(Vertex, Stage),
     /// The 2D kit's dashboard ([`dashboard::dashboard`]: shapes with
     /// gradients, anti-aliasing and translucency, an alpha sprite, text),
-    /// built and drawn in every band by [`Renderer::render_drawables`].
+    /// built and drawn in every band by `render::from_fn`.
     Dashboard,
 }
 
@@ -306,25 +307,31 @@ pub fn frame<const W: usize, const H: usize, const N: usize, const P: usize>(
 ) -> Result<(), Error> {
     let r = Renderer::new(height, bg);
     match work {
-        Work::Clear => r.render_with(b.band, sink, |_, _, _| {}).map_err(input),
-        Work::Frame2d(_) => r.render(b.prims, b.band, sink).map_err(input),
+        Work::Clear => r.render((), b.band, sink).map_err(input),
+        Work::Frame2d(_) => r.render(&b.prims[..], b.band, sink).map_err(input),
         #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
-        Work::Dashboard => r.render_drawables(b.band, sink, dashboard::dashboard).map_err(input),
+        Work::Dashboard => r.render(from_fn(dashboard::dashboard), b.band, sink).map_err(input),
         #[cfg(not(any(not(target_os = "none"), target_abi = "eabihf")))]
         Work::Dashboard => Err(Error::InvalidParameter),
         Work::Streamed2d(scene) => {
             let mut result = Ok(());
-            r.render_with(b.band, sink, |view, y0, y1| {
-                let s = scene(W as u32, height, &mut |p| {
-                    let (lo, hi) = p.rows();
-                    if lo < y1 && hi >= y0 {
-                        p.draw(view, Cull::None);
-                    }
-                });
-                if result.is_ok() {
-                    result = s;
-                }
-            })
+            r.render(
+                from_fn(|view| {
+                    let (y0, y1) = (view.y0(), view.y0() + view.height() as i32);
+                    let s = scene(W as u32, height, &mut |p| {
+                        let (lo, hi) = p.rows();
+                        if lo < y1 && hi >= y0 {
+                            p.draw(view, Cull::None);
+                        }
+                    });
+                    if result.is_ok() {
+                        result = s;
+                    };
+                    Ok(())
+                }),
+                b.band,
+                sink,
+            )
             .map_err(input)?;
             result
         }
@@ -385,31 +392,43 @@ fn knot_stage<T: Scalar, const W: usize, const H: usize>(
     let coverage = matches!(stage, Stage::Coverage);
     let mut result = Ok(());
     match stage {
-        Stage::Vertex | Stage::Coverage => r.render_with(band, sink, |_, y0, y1| {
-            let clip = ClipRect::new(0, y0, W as i32, y1);
-            let mut n = 0u32;
-            let s = pipeline.meshlet_triangles(
-                &knot_mesh::VALID_KNOT,
-                &model,
-                KNOT_COLOR,
-                cache,
-                (y0, y1 - 1),
-                |t| {
-                    n += if coverage {
-                        TriangleSpans::new(t.v.map(|v| v.pos), clip, Cull::None).map(|s| s.len).sum::<u32>()
-                    } else {
-                        black_box(t).v[0].depth >> 16
-                    };
-                },
-            );
-            black_box(n);
-            if result.is_ok() {
-                result = s.map(|_| ());
-            }
-        }),
-        Stage::NoWrites => r.render_3d_direct(band, depth, never, Affine, sink, |band| {
-            pipeline.draw_meshlets(&knot_mesh::VALID_KNOT, &model, KNOT_COLOR, cache, band).map(|_| ())
-        }),
+        Stage::Vertex | Stage::Coverage => r.render(
+            from_fn(|view| {
+                let (y0, y1) = (view.y0(), view.y0() + view.height() as i32);
+                let clip = ClipRect::new(0, y0, W as i32, y1);
+                let mut n = 0u32;
+                let s = pipeline.meshlet_triangles(
+                    &knot_mesh::VALID_KNOT,
+                    &model,
+                    KNOT_COLOR,
+                    cache,
+                    (y0, y1 - 1),
+                    |t| {
+                        n += if coverage {
+                            TriangleSpans::new(t.v.map(|v| v.pos), clip, Cull::None)
+                                .map(|s| s.len)
+                                .sum::<u32>()
+                        } else {
+                            black_box(t).v[0].depth >> 16
+                        };
+                    },
+                );
+                black_box(n);
+                if result.is_ok() {
+                    result = s.map(|_| ());
+                };
+                Ok(())
+            }),
+            band,
+            sink,
+        ),
+        Stage::NoWrites => r.render(
+            Direct3d::new(depth, never, Affine, |band| {
+                pipeline.draw_meshlets(&knot_mesh::VALID_KNOT, &model, KNOT_COLOR, cache, band).map(|_| ())
+            }),
+            band,
+            sink,
+        ),
     }
     .map_err(input)?;
     result
@@ -427,9 +446,13 @@ fn meshlets<T: Scalar, M: Interpolation, const W: usize, const H: usize>(
 ) -> Result<(), Error> {
     let pipeline = Scene3d::pipeline::<T, S>(W as u32, r.height())?;
     let model = knot_model::<T>();
-    r.render_3d_direct(band, depth, DEPTH_STATE, interp, sink, |band| {
-        pipeline.draw_meshlets(&knot_mesh::VALID_KNOT, &model, KNOT_COLOR, cache, band).map(|_| ())
-    })
+    r.render(
+        Direct3d::new(depth, DEPTH_STATE, interp, |band| {
+            pipeline.draw_meshlets(&knot_mesh::VALID_KNOT, &model, KNOT_COLOR, cache, band).map(|_| ())
+        }),
+        band,
+        sink,
+    )
     .map_err(input)
 }
 
@@ -480,7 +503,7 @@ fn frame3d<T: Scalar, M: Interpolation, const W: usize, const H: usize, const N:
     let pipeline = Scene3d::pipeline::<T, S>(W as u32, height)?;
     b.bins.clear();
     Scene3d.draw::<T, Rgb565, S, N>(&pipeline, ANGLE, b.bins)?;
-    r.render_3d(b.bins, b.band, b.depth, DEPTH_STATE, M::default(), sink).map_err(input)
+    r.render(Triangles3d::new(b.bins, b.depth, DEPTH_STATE, M::default()), b.band, sink).map_err(input)
 }
 
 fn per_band3d<T: Scalar, M: Interpolation, const W: usize, const H: usize, const N: usize, const P: usize>(
@@ -493,7 +516,8 @@ fn per_band3d<T: Scalar, M: Interpolation, const W: usize, const H: usize, const
         pipeline.rows = Some((y0, y1 - 1));
         Scene3d.draw::<T, Rgb565, S, N>(&pipeline, ANGLE, bins).map(|_| ())
     };
-    r.render_3d_per_band(b.bins, geometry, b.band, b.depth, DEPTH_STATE, M::default(), sink).map_err(input)
+    r.render(PerBand3d::new(b.bins, b.depth, DEPTH_STATE, M::default(), geometry), b.band, sink)
+        .map_err(input)
 }
 
 /// Triangles and lines of one frame of `work` (each triangle counted once,

@@ -9,10 +9,10 @@
 //! size: a 2D scene is collected into RAM first (untimed), then rendered in
 //! bands into the framebuffer or drawn straight into it (`direct`,
 //! [`TargetBlitter`]); the 3D scene runs its vertex stage into bins, then
-//! [`Renderer::render_3d`] (both timed), or the vertex stage alone
+//! `Triangles3d` (both timed), or the vertex stage alone
 //! (`mesh3d/vertex/*`); the 20k-triangle knot (`knot20k/*`,
 //! `examples/common/knot_mesh.rs`) goes through the meshlet stage per band
-//! ([`Renderer::render_3d_direct`] with [`Pipeline::draw_meshlets`], no
+//! (`Direct3d` with [`Pipeline::draw_meshlets`], no
 //! bins), as `examples/fw_bench` times it. Adding a configuration is one line
 //! in [`LIST`].
 
@@ -24,6 +24,7 @@ use microraster::edge::Cull;
 use microraster::math::{Fx, Scalar, transform};
 use microraster::pipeline::{ClusterCache, Pipeline};
 use microraster::raster3d::{Affine, Interpolation, PerspectiveCorrect, ScreenTriangle};
+use microraster::render::{Direct3d, Triangles3d};
 use microraster::{Band, Error, Primitive, RenderError, Renderer, SubPoint, Triangle, blit::TargetBlitter};
 use microraster_scenes::scenes::{self, FineTriangle, Scene};
 use microraster_scenes::scenes3d::{BINS, Scene3d};
@@ -207,7 +208,7 @@ fn fine2d<const S: u32, const BH: usize>(m: &mut dyn Meter, fb: &mut FrameBuffer
     render2d::<S, BH>(&prims, m, fb)
 }
 
-/// The standard 3D scene: vertex stage into bins, then `render_3d` with
+/// The standard 3D scene: vertex stage into bins, then `Triangles3d` with
 /// `BH`-row bands, depth format `F` and colour interpolation `M` (both timed).
 fn mesh3d<T: Scalar, F: DepthFormat, M: Interpolation, const S: u32, const BH: usize>(
     m: &mut dyn Meter,
@@ -220,7 +221,7 @@ fn mesh3d<T: Scalar, F: DepthFormat, M: Interpolation, const S: u32, const BH: u
     m.start();
     let r = Scene3d.draw::<T, Rgb565, S, BINS>(&pipeline, ANGLE, &mut bins).and_then(|_| {
         Renderer::new(H as u32, BG)
-            .render_3d(&bins, &mut band, &mut depth, DepthState::LESS_WRITE, M::default(), fb)
+            .render(Triangles3d::new(&bins, &mut depth, DepthState::LESS_WRITE, M::default()), &mut band, fb)
             .map_err(input)
     });
     m.stop();
@@ -239,7 +240,7 @@ fn vertex3d<T: Scalar>(m: &mut dyn Meter, fb: &mut FrameBuffer) -> Result<(), Er
     let mut band = Band::<Rgb565, W, 16>::new(BG);
     let mut depth = DepthBand::<Depth16, W, 16>::zeroed();
     Renderer::new(H as u32, BG)
-        .render_3d(&bins, &mut band, &mut depth, DepthState::LESS_WRITE, Affine, fb)
+        .render(Triangles3d::new(&bins, &mut depth, DepthState::LESS_WRITE, Affine), &mut band, fb)
         .map_err(input)
 }
 
@@ -257,11 +258,15 @@ fn knot<T: Scalar, M: Interpolation + Default>(m: &mut dyn Meter, fb: &mut Frame
     let mut depth = DepthBand::<Depth16, W, 16>::zeroed();
     m.start();
     let r = Renderer::new(H as u32, BG)
-        .render_3d_direct(&mut band, &mut depth, DepthState::LESS_WRITE, M::default(), fb, |band| {
-            pipeline
-                .draw_meshlets(&crate::knot_mesh::VALID_KNOT, &model, KNOT_COLOR, &mut cache, band)
-                .map(|_| ())
-        })
+        .render(
+            Direct3d::new(&mut depth, DepthState::LESS_WRITE, M::default(), |band| {
+                pipeline
+                    .draw_meshlets(&crate::knot_mesh::VALID_KNOT, &model, KNOT_COLOR, &mut cache, band)
+                    .map(|_| ())
+            }),
+            &mut band,
+            fb,
+        )
         .map_err(input);
     m.stop();
     r

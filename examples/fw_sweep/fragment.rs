@@ -5,6 +5,7 @@
 //! Shared by the Cortex-M counts and the host report (`examples/report`).
 
 use embedded_graphics_core::pixelcolor::Rgb565;
+use microraster::aa::Antialiased3d;
 use microraster::aa::{Msaa, MsaaSparse, Ssaa};
 use microraster::blend::Mix;
 use microraster::depth::{Depth16, DepthBand, DepthFormat, DepthState};
@@ -16,6 +17,7 @@ use microraster::line_aa::LineAa;
 use microraster::math::{Mat4, Vec3, transform};
 use microraster::pipeline::VertexInput;
 use microraster::raster3d::{Affine, Interpolation, PerspectiveCorrect, ScreenTriangle};
+use microraster::render::from_fn;
 use microraster::texture::{Filter, Sampler, Texture, from_rgb8};
 use microraster::{Band, Error, Primitive, Renderer};
 use microraster_scenes::scenes;
@@ -123,15 +125,21 @@ fn frag3d_with<const A: usize, M: Interpolation, Sh: FragmentShader<Rgb565, A>>(
     let r = result.and_then(|()| {
         let mut inner = Ok(());
         Renderer::new(H as u32, BG)
-            .render_with(&mut band, fb, |view, y0, y1| {
-                let mut rows = depth.rows_mut((y1 - y0) as usize);
-                for r in rows.iter_mut() {
-                    r.fill(Depth16::FAR);
-                }
-                if inner.is_ok() {
-                    inner = draw_fragment_band(&bins, view, &mut rows, shader, out, M::default());
-                }
-            })
+            .render(
+                from_fn(|view| {
+                    let (y0, y1) = (view.y0(), view.y0() + view.height() as i32);
+                    let mut rows = depth.rows_mut((y1 - y0) as usize);
+                    for r in rows.iter_mut() {
+                        r.fill(Depth16::FAR);
+                    }
+                    if inner.is_ok() {
+                        inner = draw_fragment_band(&bins, view, &mut rows, shader, out, M::default());
+                    };
+                    Ok(())
+                }),
+                &mut band,
+                fb,
+            )
             .map_err(input)?;
         inner
     });
@@ -178,13 +186,15 @@ fn aa3d<A: microraster::aa::Antialias, const SW: usize, const SH: usize>(
     m.start();
     let r = Scene3d.draw::<f32, Rgb565, 4, BINS>(&pipeline, ANGLE, &mut bins).and_then(|_| {
         Renderer::new(H as u32, BG)
-            .render_3d_antialiased(
-                mode,
-                P::default(),
-                &bins,
-                &mut samples,
-                &mut depth,
-                DepthState::LESS_WRITE,
+            .render(
+                Antialiased3d::new(
+                    mode,
+                    &bins,
+                    &mut samples,
+                    &mut depth,
+                    DepthState::LESS_WRITE,
+                    P::default(),
+                ),
                 &mut out,
                 fb,
             )
@@ -203,16 +213,22 @@ fn lines_aa(m: &mut dyn Meter, fb: &mut FrameBuffer) -> Result<(), Error> {
     let mut band = Band::<Rgb565, W, 16>::new(BG);
     m.start();
     let r = Renderer::new(H as u32, BG)
-        .render_with(&mut band, fb, |view, y0, y1| {
-            for p in &prims {
-                if let Primitive::Line(l) = p {
-                    let (lo, hi) = l.rows();
-                    if lo < y1 && hi >= y0 {
-                        LineAa::new(l.start(), l.end(), l.color()).draw(view);
+        .render(
+            from_fn(|view| {
+                let (y0, y1) = (view.y0(), view.y0() + view.height() as i32);
+                for p in &prims {
+                    if let Primitive::Line(l) = p {
+                        let (lo, hi) = l.rows();
+                        if lo < y1 && hi >= y0 {
+                            LineAa::new(l.start(), l.end(), l.color()).draw(view);
+                        }
                     }
                 }
-            }
-        })
+                Ok(())
+            }),
+            &mut band,
+            fb,
+        )
         .map_err(input);
     m.stop();
     r

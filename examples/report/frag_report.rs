@@ -9,6 +9,7 @@ use std::hint::black_box;
 
 use embedded_graphics_core::pixelcolor::{Gray8, GrayColor, Rgb565, Rgb888, RgbColor};
 use embedded_graphics_core::prelude::{DrawTarget, OriginDimensions, Pixel, Size};
+use microraster::aa::Antialiased;
 use microraster::aa::{Antialias, Msaa, MsaaSparse, Ssaa};
 use microraster::depth::{DepthBand, DepthState, NoDepth};
 use microraster::fragment::{FragTriangle, Output, Textured, draw_fragment_triangle};
@@ -217,7 +218,7 @@ fn coverage<A: Antialias, const SW: usize, const SH: usize>() -> (f64, f64) {
         let mut out = Box::new(Band::<Gray8, W, W>::new(Gray8::BLACK));
         let mut frame = GrayFrame::<W>::default();
         Renderer::new(W as u32, Gray8::BLACK)
-            .render_antialiased(A::default(), &prim, &mut samples, &mut out, &mut frame)
+            .render(Antialiased::new(A::default(), &prim, &mut samples), &mut out, &mut frame)
             .unwrap();
         let t = v.map(|q| (q.x() as f64 / 16.0, q.y() as f64 / 16.0));
         for y in 0..W {

@@ -6,6 +6,7 @@ use embedded_graphics_core::pixelcolor::Rgb565;
 use embedded_graphics_core::prelude::RgbColor;
 use microraster::depth::{Depth16, DepthBand, DepthState};
 use microraster::raster3d::PerspectiveCorrect;
+use microraster::render::Triangles3d;
 use microraster::{Band, Renderer};
 use microraster_scenes::scenes3d::{BINS, Scene3d};
 
@@ -21,12 +22,9 @@ fn main() {
     let mut band = Band::<Rgb565, 320, 16>::new(Rgb565::BLACK);
     let mut depth = DepthBand::<Depth16, 320, 16>::new();
     let mut sink = Sink(0);
-    let _ = Renderer::new(240, Rgb565::BLACK).render_3d(
-        black_box(&bins),
+    let _ = Renderer::new(240, Rgb565::BLACK).render(
+        Triangles3d::new(black_box(&bins), &mut depth, DepthState::LESS_WRITE, PerspectiveCorrect),
         &mut band,
-        &mut depth,
-        DepthState::LESS_WRITE,
-        PerspectiveCorrect,
         &mut sink,
     );
     println!("{:08x}", black_box(sink.0));

@@ -7,6 +7,7 @@ use core::hint::black_box;
 use embedded_graphics_core::pixelcolor::Rgb565;
 use embedded_graphics_core::prelude::RgbColor;
 use microraster::aa::Ssaa;
+use microraster::aa::Supersampled;
 use microraster::depth::{Depth16, DepthBand};
 use microraster::raster3d::PerspectiveCorrect;
 use microraster::{Band, Renderer};
@@ -37,12 +38,9 @@ fn main() {
     let mut depth = Box::new(DepthBand::<Depth16, 640, 32>::new());
     let mut out = Box::new(Band::<Rgb565, 320, 16>::new(Rgb565::BLACK));
     let mut sink = Sink(0);
-    let _ = Renderer::new(240, Rgb565::BLACK).render_supersampled_with(
-        Ssaa::<2>,
-        &mut samples,
-        &mut out,
-        &mut sink,
-        |view, sy0, sy1| {
+    let _ = Renderer::new(240, Rgb565::BLACK).render(
+        Supersampled::new(Ssaa::<2>, &mut samples, |view| {
+            let (sy0, sy1) = (view.y0(), view.y0() + view.height() as i32);
             let _ = draw_passes::<_, Depth16, PerspectiveCorrect, 4, 640, 32, 1024, 1024, 64, 2048>(
                 black_box(&b2),
                 view,
@@ -50,7 +48,10 @@ fn main() {
                 sy0,
                 sy1,
             );
-        },
+            Ok(())
+        }),
+        &mut out,
+        &mut sink,
     );
     println!("{:08x}", black_box(sink.0));
 }

@@ -1,6 +1,6 @@
 //! The 3D pipeline end to end: matrices, vertices and settings from the
 //! fuzzer (NaN, ±inf, ±f32::MAX, subnormals, huge and tiny values among
-//! them) → `Pipeline` → bins → `Renderer::render_3d`, on the `f32` and `Fx`
+//! them) → `Pipeline` → bins → `Triangles3d`, on the `f32` and `Fx`
 //! paths, `S ∈ {0, 4, 8}`, every depth format, both interpolations and band
 //! heights 1 and 64. Checks:
 //! * no panic and no arithmetic overflow (overflow checks are on);
@@ -20,6 +20,7 @@ use embedded_graphics_core::pixelcolor::Rgb565;
 use embedded_graphics_core::prelude::*;
 use embedded_graphics_core::primitives::Rectangle;
 use libfuzzer_sys::fuzz_target;
+use microraster::render::{Triangles3d, from_fn};
 use microraster::clip3d::ClipPlanes;
 use microraster::depth::{
     Depth8, Depth16, Depth24, Depth32, DepthBand, DepthFormat, DepthState, DepthTest, NoDepth,
@@ -450,7 +451,7 @@ fn render<F: DepthFormat, M: Interpolation, const S: u32, const H: usize>(
     let mut depth = Box::new(DepthBand::<F, FW, H>::new());
     let mut fb = Frame { h: fh, px: vec![None; FW * fh] };
     Renderer::new(fh as u32, bg)
-        .render_3d(bins, &mut band, &mut depth, state, M::default(), &mut fb)
+        .render(Triangles3d::new(bins, &mut depth, state, M::default()), &mut band, &mut fb)
         .unwrap();
     fb.px.into_iter().map(|p| p.expect("a frame pixel was never sent")).collect()
 }

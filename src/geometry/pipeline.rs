@@ -8,7 +8,7 @@
 //! into snapped [`SubPoint`]s, and back-face culling from the signed area
 //! *after* snapping, so culling and coverage always agree (as in D3D11).
 //! The result goes into a caller-owned `heapless::Vec` of [`ScreenTriangle`]s
-//! (the frame's bins), which [`Renderer::render_3d`](crate::Renderer::render_3d)
+//! (the frame's bins), which [`Triangles3d`](crate::render::Triangles3d)
 //! draws band by band.
 //!
 //! `T` is the numeric path: `f32` (FPU parts) or [`Fx`](crate::math::Fx)
@@ -111,7 +111,7 @@ pub struct Pipeline<T: Scalar, const S: u32> {
     pub shade: Shade,
     /// Keep only triangles that touch these frame rows (inclusive); `None`
     /// keeps all. Set per band when the vertex stage runs once per band
-    /// ([`Renderer::render_3d_per_band`](crate::Renderer::render_3d_per_band))
+    /// ([`PerBand3d`](crate::render::PerBand3d))
     /// so the bins only need to hold one band's triangles.
     pub rows: Option<(i32, i32)>,
 }

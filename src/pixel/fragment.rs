@@ -209,7 +209,7 @@ where
 
 /// Draws every triangle of `tris` that touches the band (rows `y0..y1` of
 /// `color`), in order: the body of a
-/// [`Renderer::render_with`](crate::Renderer::render_with) pass. Arguments
+/// [`from_fn`](crate::render::from_fn) pass. Arguments
 /// as for [`draw_fragment_triangle`].
 ///
 /// Errors: as [`draw_fragment_triangle`]; the first error stops the pass.
@@ -220,19 +220,19 @@ where
 /// use microraster::depth::{Depth16, DepthBand};
 /// use microraster::fragment::{FragTriangle, Fragment, Output, draw_fragment_band};
 /// use microraster::raster3d::{Affine, ScreenTriangle, ScreenVertex};
+/// use microraster::render::from_fn;
 /// use microraster::{Band, Renderer, SubPoint};
 /// let v = |x, y| ScreenVertex { pos: SubPoint::<4>::from_pixels(x, y).unwrap(), inv_w: 1 << 30, ..Default::default() };
 /// let tris = [FragTriangle { tri: ScreenTriangle { v: [v(0, 0), v(8, 0), v(0, 8)], flat: false }, varyings: [[90]; 3] }];
 /// let shader = |f: &Fragment<1>| Gray8::new(f.varyings[0] as u8);
 /// let (mut band, mut depth) = (Band::<Gray8, 8, 4>::new(Gray8::BLACK), DepthBand::<Depth16, 8, 4>::new());
 /// let mut display = MockDisplay::new();
-/// let mut result = Ok(());
-/// Renderer::new(8, Gray8::BLACK).render_with(&mut band, &mut display, |view, y0, y1| {
-///     depth.clear((y1 - y0) as usize); // far, each band
-///     let mut rows = depth.rows_mut((y1 - y0) as usize);
-///     result = result.and(draw_fragment_band(&tris, view, &mut rows, &shader, Output::OPAQUE, Affine));
-/// })?;
-/// result?;
+/// let frame = from_fn(|view| {
+///     depth.clear(view.height()); // far, each band
+///     let mut rows = depth.rows_mut(view.height());
+///     draw_fragment_band(&tris, view, &mut rows, &shader, Output::OPAQUE, Affine)
+/// });
+/// Renderer::new(8, Gray8::BLACK).render(frame, &mut band, &mut display)?;
 /// assert_eq!(display.get_pixel(embedded_graphics::prelude::Point::new(0, 6)), Some(Gray8::new(90)));
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```

@@ -59,7 +59,7 @@
 //! arithmetic: a flaw would draw nothing, never panic).
 //!
 //! In the band loop, draw anti-aliased lines from
-//! [`Renderer::render_with`](crate::Renderer::render_with)'s closure, after the
+//! [`from_fn`](crate::render::from_fn)'s closure, after the
 //! geometry they lie on ([`Primitive`](crate::Primitive) holds no blended
 //! primitives). [`line_aa_pixels`] gives the raw `(x, y, alpha)` pixels for
 //! any other sink.

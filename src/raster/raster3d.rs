@@ -121,10 +121,11 @@ pub trait Interpolation: sealed::Sealed + Copy + Default {
 /// assert!(!Affine::PERSPECTIVE && PerspectiveCorrect::PERSPECTIVE);
 /// # use embedded_graphics::{mock_display::MockDisplay, pixelcolor::Gray8};
 /// # use microraster::{Band, Renderer, depth::{Depth16, DepthBand, DepthState}};
+/// use microraster::render::Triangles3d;
 /// # let (mut band, mut depth) = (Band::<Gray8, 8, 4>::new(Gray8::new(0)), DepthBand::<Depth16, 8, 4>::new());
 /// # let tris: [microraster::raster3d::ScreenTriangle<4>; 0] = [];
 /// # let mut display = MockDisplay::new();
-/// Renderer::new(8, Gray8::new(0)).render_3d(&tris, &mut band, &mut depth, DepthState::LESS_WRITE, Affine, &mut display)?;
+/// Renderer::new(8, Gray8::new(0)).render(Triangles3d::new(&tris, &mut depth, DepthState::LESS_WRITE, Affine), &mut band, &mut display)?;
 /// # Ok::<(), microraster::RenderError<core::convert::Infallible>>(())
 /// ```
 #[derive(Debug, Clone, Copy, Default)]
@@ -137,9 +138,10 @@ pub struct Affine;
 /// use microraster::raster3d::{Interpolation, PerspectiveCorrect};
 /// # use embedded_graphics::{mock_display::MockDisplay, pixelcolor::Gray8};
 /// # use microraster::{Band, Renderer, depth::{Depth16, DepthBand, DepthState}};
+/// use microraster::render::Direct3d;
 /// # let (mut band, mut depth) = (Band::<Gray8, 8, 4>::new(Gray8::new(0)), DepthBand::<Depth16, 8, 4>::new());
 /// # let mut display = MockDisplay::new();
-/// Renderer::new(8, Gray8::new(0)).render_3d_direct(&mut band, &mut depth, DepthState::LESS_WRITE, PerspectiveCorrect, &mut display, |_band| Ok(()))?;
+/// Renderer::new(8, Gray8::new(0)).render(Direct3d::new(&mut depth, DepthState::LESS_WRITE, PerspectiveCorrect, |_band| Ok(())), &mut band, &mut display)?;
 /// assert!(PerspectiveCorrect::PERSPECTIVE);
 /// # Ok::<(), microraster::RenderError<core::convert::Infallible>>(())
 /// ```

@@ -4,7 +4,7 @@
 //!
 //! [`draw_triangle`](crate::raster3d::draw_triangle) shades with per-vertex
 //! colour only; [`Varyings`] and [`draw_fragments`] are for custom passes
-//! (inside [`Renderer::render_with`](crate::Renderer::render_with)), and cost
+//! (inside [`from_fn`](crate::render::from_fn)), and cost
 //! nothing when unused.
 //!
 //! # Range and error

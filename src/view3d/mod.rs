@@ -8,7 +8,7 @@
 //! wound the wrong way is an error, not a dark inside), Gouraud shading,
 //! 16-bit depth, perspective-correct colour, 4 subpixel bits, the `f32`
 //! vertex path. Everything here is built on the explicit API
-//! ([`Pipeline`], [`Renderer::render_3d_direct`]) and draws the same pixels
+//! ([`Pipeline`], [`Direct3d`]) and draws the same pixels
 //! (`tests/integration/view3d.rs`); use that API for other depth formats,
 //! the `Fx` path, fragment shaders or anti-aliasing.
 //!
@@ -50,7 +50,7 @@ use crate::math::Vec3;
 use crate::mesh::ValidMesh;
 use crate::pipeline::{ClusterCache, Material, PerFace, PerVertex, Pipeline, Shade, Uniform};
 use crate::raster3d::PerspectiveCorrect;
-use crate::render::Band3d;
+use crate::render::{Band3d, Direct3d};
 use crate::{Error, Interpolate, MAX_FRAME_DIM, RenderError, Renderer};
 
 /// The front's lighting unless told otherwise: ambient 0.25 and a light of
@@ -232,7 +232,7 @@ impl<C: Interpolate, const W: usize, const H: usize> View3d<C, W, H> {
     /// The vertex stage and renderer this view draws a `W × rows` frame
     /// with: the explicit-API equivalent of a [`View3d::draw`] call, for
     /// drawing more into the same frame through
-    /// [`Renderer::render_3d_direct`], or for comparing.
+    /// [`Direct3d`], or for comparing.
     ///
     /// Errors: [`Error::InvalidFrameSize`] for 0 or more than
     /// [`MAX_FRAME_DIM`] rows, then those of the camera ([`Camera::view`]
@@ -315,26 +315,20 @@ impl<C: Interpolate, const W: usize, const H: usize> View3d<C, W, H> {
             o.check_colors()?;
         }
         let cache = &mut self.cache;
-        renderer.render_3d_direct(
-            &mut self.band,
-            &mut self.depth,
-            DepthState::LESS_WRITE,
-            PerspectiveCorrect,
-            display,
-            |band| {
-                let mut banded = pipe;
-                banded.rows = Some(band.rows());
-                for o in objects {
-                    // The colour source is a type, chosen once per object.
-                    match o.colors() {
-                        Colors::Material => draw_object(&banded, o, &Uniform, cache, band)?,
-                        Colors::PerVertex(c) => draw_object(&banded, o, &PerVertex(c), cache, band)?,
-                        Colors::PerFace(c) => draw_object(&banded, o, &PerFace(c), cache, band)?,
-                    }
+        let frame = Direct3d::new(&mut self.depth, DepthState::LESS_WRITE, PerspectiveCorrect, |band| {
+            let mut banded = pipe;
+            banded.rows = Some(band.rows());
+            for o in objects {
+                // The colour source is a type, chosen once per object.
+                match o.colors() {
+                    Colors::Material => draw_object(&banded, o, &Uniform, cache, band)?,
+                    Colors::PerVertex(c) => draw_object(&banded, o, &PerVertex(c), cache, band)?,
+                    Colors::PerFace(c) => draw_object(&banded, o, &PerFace(c), cache, band)?,
                 }
-                Ok(())
-            },
-        )
+            }
+            Ok(())
+        });
+        renderer.render(frame, &mut self.band, display)
     }
 }
 

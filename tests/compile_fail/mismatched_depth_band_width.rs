@@ -1,6 +1,7 @@
 // error: mismatched types
 use embedded_graphics::mock_display::MockDisplay;
 use embedded_graphics_core::pixelcolor::Gray8;
+use microraster::render::Triangles3d;
 use microraster::depth::{Depth8, DepthBand, DepthState};
 use microraster::raster3d::{PerspectiveCorrect, ScreenTriangle};
 use microraster::{Band, Renderer};
@@ -10,12 +11,5 @@ fn main() {
     let mut depth = DepthBand::<Depth8, 64, 16>::new();
     let mut display = MockDisplay::<Gray8>::new();
     let tris: [ScreenTriangle<4>; 0] = [];
-    let _ = Renderer::new(16, Gray8::new(0)).render_3d(
-        &tris,
-        &mut band,
-        &mut depth,
-        DepthState::LESS_WRITE,
-        PerspectiveCorrect,
-        &mut display,
-    );
+    let _ = Renderer::new(16, Gray8::new(0)).render(Triangles3d::new(&tris, &mut depth, DepthState::LESS_WRITE, PerspectiveCorrect), &mut band, &mut display);
 }

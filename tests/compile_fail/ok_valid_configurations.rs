@@ -2,6 +2,8 @@
 // The control case: the valid neighbours of every error above compile.
 use embedded_graphics::mock_display::MockDisplay;
 use embedded_graphics_core::pixelcolor::{BinaryColor, Gray8};
+use microraster::aa::Antialiased;
+use microraster::render::Triangles3d;
 use microraster::depth::{Depth16, DepthBand, DepthState};
 use microraster::math::Mat4;
 use microraster::mesh::Mesh;
@@ -25,32 +27,13 @@ fn main() {
     let mut band = Band::<Gray8, 32, 16>::new(Gray8::new(0));
     let mut depth = DepthBand::<Depth16, 32, 16>::new();
     let mut display = MockDisplay::<Gray8>::new();
-    let _ = Renderer::new(16, Gray8::new(0)).render_3d(
-        &bins,
-        &mut band,
-        &mut depth,
-        DepthState::LESS_WRITE,
-        Affine,
-        &mut display,
-    );
+    let _ = Renderer::new(16, Gray8::new(0)).render(Triangles3d::new(&bins, &mut depth, DepthState::LESS_WRITE, Affine), &mut band, &mut display);
     // Anti-aliasing: the sample bands of the two aa_* cases, made consistent.
     let scene: [microraster::Primitive<Gray8, 4>; 0] = [];
     let mut samples = Band::<Gray8, 64, 16>::new(Gray8::new(0));
     let mut out = Band::<Gray8, 16, 4>::new(Gray8::new(0));
-    let _ = Renderer::new(16, Gray8::new(0)).render_antialiased(
-        microraster::aa::Ssaa::<4>,
-        &scene,
-        &mut samples,
-        &mut out,
-        &mut display,
-    );
+    let _ = Renderer::new(16, Gray8::new(0)).render(Antialiased::new(microraster::aa::Ssaa::<4>, &scene, &mut samples), &mut out, &mut display);
     let mut samples = Band::<Gray8, 32, 16>::new(Gray8::new(0));
     let mut out = Band::<Gray8, 4, 2>::new(Gray8::new(0));
-    let _ = Renderer::new(4, Gray8::new(0)).render_antialiased(
-        microraster::aa::Msaa::<8>,
-        &scene,
-        &mut samples,
-        &mut out,
-        &mut display,
-    );
+    let _ = Renderer::new(4, Gray8::new(0)).render(Antialiased::new(microraster::aa::Msaa::<8>, &scene, &mut samples), &mut out, &mut display);
 }

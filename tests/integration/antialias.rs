@@ -19,6 +19,7 @@ use crate::framebuffer::Framebuffer;
 use crate::reference::Rng;
 use embedded_graphics_core::pixelcolor::Gray8;
 use embedded_graphics_core::prelude::*;
+use microraster::aa::Antialiased;
 use microraster::aa::{Antialias, Msaa, MsaaSparse, Ssaa, msaa};
 use microraster::depth::{Depth16, DepthBand, DepthFormat, DepthState, NoDepth};
 use microraster::raster3d::{ScreenTriangle, ScreenVertex};
@@ -43,7 +44,7 @@ pub fn render_aa<
     let mut fb = Framebuffer::new(FW as u32, FH, bg);
     let mut samples = Band::<C, SW, SH>::new(bg);
     let mut out = Band::<C, FW, H>::new(bg);
-    Renderer::new(FH, bg).render_antialiased(mode, scene, &mut samples, &mut out, &mut fb).unwrap();
+    Renderer::new(FH, bg).render(Antialiased::new(mode, scene, &mut samples), &mut out, &mut fb).unwrap();
     assert!(fb.writes.iter().all(|&w| w == 1), "each pixel sent once");
     fb.pixels
 }

@@ -10,8 +10,10 @@ use crate::reference::{Rng, random_triangle};
 use embedded_graphics_core::pixelcolor::{Gray8, Rgb565};
 use embedded_graphics_core::prelude::*;
 use microraster::aa::{Antialias, Msaa, MsaaSparse, Ssaa};
+use microraster::aa::{Antialiased, Antialiased3d};
 use microraster::depth::{Depth16, DepthBand, DepthFormat, DepthState, NoDepth};
 use microraster::raster3d::{Affine, Interpolation, PerspectiveCorrect, ScreenTriangle, ScreenVertex};
+use microraster::render::Triangles3d;
 use microraster::{Band, Error, Interpolate, Line, Primitive, RenderError, Renderer, SubPoint, Triangle};
 
 const BG: Rgb565 = Rgb565::new(0, 0, 0);
@@ -33,13 +35,8 @@ fn render_3d<
     let mut depth = DepthBand::<F, SW, SH>::new();
     let mut out = Band::<Rgb565, FW, H>::new(BG);
     Renderer::new(FH, BG)
-        .render_3d_antialiased(
-            mode,
-            M::default(),
-            tris,
-            &mut samples,
-            &mut depth,
-            DepthState::LESS_WRITE,
+        .render(
+            Antialiased3d::new(mode, tris, &mut samples, &mut depth, DepthState::LESS_WRITE, M::default()),
             &mut out,
             &mut fb,
         )
@@ -224,14 +221,14 @@ fn ssaa_and_msaa_agree_on_flat_fills_and_n1_is_the_aliased_renderer() {
         // N = 1: one sample at the pixel centre, exactly the aliased renderer.
         let scene = random_scene(&mut rng, 15, true, true);
         let mut fb = Framebuffer::new(FW as u32, FH, BG);
-        Renderer::new(FH, BG).render(&scene, &mut Band::<_, FW, 4>::new(BG), &mut fb).unwrap();
+        Renderer::new(FH, BG).render(&scene[..], &mut Band::<_, FW, 4>::new(BG), &mut fb).unwrap();
         assert_eq!(render_aa::<Ssaa<1>, _, 4, FW, 4>(Ssaa, &scene, BG), fb.pixels);
         assert_eq!(render_aa::<Msaa<1>, _, 4, FW, 4>(Msaa, &scene, BG), fb.pixels);
         let tris = random_3d(&mut rng, 12, false);
         let mut fb = Framebuffer::new(FW as u32, FH, BG);
         let (mut band, mut depth) = (Band::<_, FW, 4>::new(BG), DepthBand::<Depth16, FW, 4>::new());
         Renderer::new(FH, BG)
-            .render_3d(&tris, &mut band, &mut depth, DepthState::LESS_WRITE, Affine, &mut fb)
+            .render(Triangles3d::new(&tris, &mut depth, DepthState::LESS_WRITE, Affine), &mut band, &mut fb)
             .unwrap();
         assert_eq!(render_3d::<Ssaa<1>, Affine, Depth16, 4, FW, 4>(Ssaa, &tris), fb.pixels);
     }
@@ -268,8 +265,11 @@ fn range_errors_are_typed_and_extremes_do_not_panic() {
         let mut fb = Framebuffer::new(FW as u32, height.clamp(1, 1024), bg);
         let mut samples = Band::<Gray8, { FW * 4 }, 16>::new(bg);
         let mut out = Band::<Gray8, FW, 4>::new(bg);
-        let r =
-            Renderer::new(height, bg).render_antialiased(Msaa::<4>, scene, &mut samples, &mut out, &mut fb);
+        let r = Renderer::new(height, bg).render(
+            Antialiased::new(Msaa::<4>, scene, &mut samples),
+            &mut out,
+            &mut fb,
+        );
         (r, fb)
     };
     let limit = (1 << 28) / 4; // subpixels, for N = 4
@@ -317,10 +317,10 @@ fn cull_mode_and_offset_apply_as_in_the_aliased_renderer() {
         for cull in [Cull::None, Cull::Clockwise, Cull::CounterClockwise] {
             let r = Renderer::new(FH, BG).with_cull(cull).with_offset(Point::new(3, 2));
             let mut fb = Framebuffer::new(FW as u32 + 3, FH + 2, FILL);
-            r.render(&scene, &mut Band::<_, FW, 4>::new(BG), &mut fb).unwrap();
+            r.render(&scene[..], &mut Band::<_, FW, 4>::new(BG), &mut fb).unwrap();
             let mut aa = Framebuffer::new(FW as u32 + 3, FH + 2, FILL);
             let (mut samples, mut out) = (Band::<_, FW, 4>::new(BG), Band::<_, FW, 4>::new(BG));
-            r.render_antialiased(Msaa::<1>, &scene, &mut samples, &mut out, &mut aa).unwrap();
+            r.render(Antialiased::new(Msaa::<1>, &scene, &mut samples), &mut out, &mut aa).unwrap();
             assert_eq!(aa.pixels, fb.pixels, "{cull:?}");
             // With N = 2 the culled windings still vanish: only one winding's triangles.
             let keep = |t: &Triangle<Rgb565, 4>| {
@@ -345,7 +345,7 @@ fn cull_mode_and_offset_apply_as_in_the_aliased_renderer() {
                 let (mut s, mut o) = (Band::<_, { FW * 2 }, 8>::new(BG), Band::<_, FW, 4>::new(BG));
                 Renderer::new(FH, BG)
                     .with_cull(cull)
-                    .render_antialiased(Ssaa::<2>, &scene, &mut s, &mut o, &mut fb)
+                    .render(Antialiased::new(Ssaa::<2>, &scene, &mut s), &mut o, &mut fb)
                     .unwrap();
                 fb.pixels
             };

@@ -100,7 +100,7 @@ fn frame_offset_and_bad_height() {
     let bg = Rgb565::new(1, 2, 3);
     let mut band = Band::<Rgb565, W, 8>::new(bg);
     let mut fb = Framebuffer::new(W as u32 + 5, HEIGHT + 9, Rgb565::new(31, 63, 31));
-    Renderer::new(HEIGHT, bg).with_offset(Point::new(5, 9)).render(&scene, &mut band, &mut fb).unwrap();
+    Renderer::new(HEIGHT, bg).with_offset(Point::new(5, 9)).render(&scene[..], &mut band, &mut fb).unwrap();
     let reference = render_banded::<Rgb565, 8>(&scene, bg, Cull::None).pixels;
     for y in 0..HEIGHT {
         for x in 0..W as u32 {
@@ -109,7 +109,7 @@ fn frame_offset_and_bad_height() {
         }
     }
     for bad in [0, microraster::MAX_FRAME_DIM + 1] {
-        let r = Renderer::new(bad, bg).render(&scene, &mut band, &mut fb);
+        let r = Renderer::new(bad, bg).render(&scene[..], &mut band, &mut fb);
         assert_eq!(r, Err(microraster::RenderError::Input(microraster::Error::InvalidFrameSize)));
     }
 }

@@ -15,6 +15,7 @@ use microraster::edge::Cull;
 use microraster::math::transform::{look_at, translation};
 use microraster::math::{Fx, Mat4, Vec3};
 use microraster::mesh::Mesh;
+use microraster::render::from_fn;
 use microraster::{Band, Interpolate, Line, Renderer, SubPoint, Triangle};
 
 /// Rounds `x` to nearest, asserting it is not (numerically) a tie: the
@@ -171,10 +172,15 @@ fn translucent_triangle_over_opaque_in_bands() {
     let mut band = Band::<Gray4, 8, 3>::new(Gray4::new(0));
     let mut display = MockDisplay::<Gray4>::new();
     Renderer::new(7, Gray4::new(0))
-        .render_with(&mut band, &mut display, |view, _, _| {
-            opaque.draw(view, Cull::None);
-            glass.draw(&mut BlendBlitter::new(view, Mix, 128), Cull::None);
-        })
+        .render(
+            from_fn(|view| {
+                opaque.draw(view, Cull::None);
+                glass.draw(&mut BlendBlitter::new(view, Mix, 128), Cull::None);
+                Ok(())
+            }),
+            &mut band,
+            &mut display,
+        )
         .unwrap();
     // Over 0: round(15·128/255) = round(7.53) = 8.
     // Over 12: round((12·127 + 15·128)/255) = round(13.51) = 14 = E.

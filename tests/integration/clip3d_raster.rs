@@ -28,6 +28,7 @@ use microraster::math::{Mat4, transform};
 use microraster::mesh::{Mesh, bounding_sphere};
 use microraster::pipeline::{Pipeline, Shade};
 use microraster::raster3d::{Affine, ScreenTriangle};
+use microraster::render::Triangles3d;
 use microraster::{Band, Renderer};
 
 const W: usize = 96;
@@ -82,7 +83,7 @@ fn check(s: &Setup, tri: [[f32; 3]; 3], loose: bool, expect_empty: bool, st: &mu
     let mut band = Box::new(Band::<Gray8, W, 16>::new(BG));
     let mut depth = Box::new(DepthBand::<Depth16, W, 16>::new());
     Renderer::new(H as u32, BG)
-        .render_3d(&bins, &mut band, &mut depth, DepthState::LESS_WRITE, Affine, &mut fb)
+        .render(Triangles3d::new(&bins, &mut depth, DepthState::LESS_WRITE, Affine), &mut band, &mut fb)
         .unwrap();
 
     let poly = s.r.clip(tri.map(|p| s.r.vertex(p)));

@@ -7,6 +7,7 @@
 
 use crate::framebuffer::Framebuffer;
 use embedded_graphics_core::pixelcolor::Rgb565;
+use microraster::render::from_fn;
 use microraster::{Band, Renderer};
 
 #[path = "../../examples/common/dashboard_live.rs"]
@@ -20,7 +21,7 @@ use scene::{H, NIGHT, TEXT, W};
 fn render<const BH: usize>() -> Vec<Rgb565> {
     let mut band = Box::new(Band::<Rgb565, W, BH>::new(NIGHT));
     let mut fb = Framebuffer::new(W as u32, H, Rgb565::new(31, 0, 31));
-    Renderer::new(H, NIGHT).render_drawables(&mut band, &mut fb, scene::dashboard).unwrap();
+    Renderer::new(H, NIGHT).render(from_fn(scene::dashboard), &mut band, &mut fb).unwrap();
     assert!(fb.writes.iter().all(|&n| n == 1), "every pixel sent exactly once");
     fb.pixels
 }
@@ -79,7 +80,7 @@ fn driving_dashboard_at_its_speed_is_the_dashboard() {
     let mut band = Box::new(Band::<Rgb565, W, 16>::new(NIGHT));
     let mut fb = Framebuffer::new(W as u32, H, Rgb565::new(31, 0, 31));
     Renderer::new(H, NIGHT)
-        .render_drawables(&mut band, &mut fb, |v| live::dashboard_at(v, scene::SPEED))
+        .render(from_fn(|v| live::dashboard_at(v, scene::SPEED)), &mut band, &mut fb)
         .unwrap();
     assert!(fb.pixels == render::<16>(), "dashboard_at(SPEED) differs from dashboard");
 }
@@ -97,13 +98,18 @@ fn drive<const BH: usize, const N: usize>() -> (u64, u64) {
     for f in 0..live::FRAMES {
         let kmh = live::speed(f);
         let mut plain = Framebuffer::new(W as u32, H, Rgb565::new(31, 0, 31));
-        r.render_drawables(&mut band, &mut plain, |v| live::dashboard_at(v, kmh)).unwrap();
+        r.render(from_fn(|v| live::dashboard_at(v, kmh)), &mut band, &mut plain).unwrap();
         let mut failed = Ok(());
-        r.render_with_linked(&mut bands, &mut sink, |view, _, _| {
-            if failed.is_ok() {
-                failed = live::dashboard_at(view, kmh);
-            }
-        })
+        r.render_linked(
+            from_fn(|view| {
+                if failed.is_ok() {
+                    failed = live::dashboard_at(view, kmh);
+                }
+                Ok(())
+            }),
+            &mut bands,
+            &mut sink,
+        )
         .unwrap();
         failed.unwrap();
         assert!(sink.inner().0.pixels == plain.pixels, "wrong skip: {BH}-row bands, frame {f}");

@@ -1,5 +1,5 @@
 //! embedded-graphics drawables drawn into bands (`BandView` and `Band3d` as
-//! `DrawTarget`s; `Renderer::render_drawables`, `render_3d_overlay`) give
+//! `DrawTarget`s; `render::from_fn`, `Pass::then`) give
 //! the pixels e-g gives drawing the same drawables into a framebuffer of the
 //! frame's size, for band heights 1, 3, 16 and the full frame.
 //!
@@ -20,6 +20,7 @@ use embedded_graphics_core::pixelcolor::Rgb565;
 use microraster::depth::{Depth16, DepthBand, DepthState};
 use microraster::edge::Cull;
 use microraster::raster3d::PerspectiveCorrect;
+use microraster::render::{Direct3d, Pass, Triangles3d, from_fn};
 use microraster::{Band, Error, Renderer, SubPoint, Triangle};
 use microraster_scenes::scenes3d::{BINS, Scene3d};
 
@@ -171,7 +172,7 @@ fn reference<S: Scene>(k: usize) -> Vec<Rgb565> {
 fn banded<S: Scene, const H: usize>(k: usize) -> Vec<Rgb565> {
     let mut band = Band::<Rgb565, W, H>::new(Rgb565::BLACK);
     let mut fb = Framebuffer::new(W as u32, FH, Rgb565::BLACK);
-    Renderer::new(FH, BG).render_drawables(&mut band, &mut fb, |view| Ok(S::draw(view, k)?)).unwrap();
+    Renderer::new(FH, BG).render(from_fn(|view| Ok(S::draw(view, k)?)), &mut band, &mut fb).unwrap();
     assert!(fb.writes.iter().all(|&n| n == 1));
     fb.pixels
 }
@@ -222,12 +223,16 @@ fn triangles_and_text_in_one_pass() {
 
         let mut fb = Framebuffer::new(W as u32, FH, Rgb565::BLACK);
         Renderer::new(FH, BG)
-            .render_drawables(&mut band, &mut fb, |view| {
-                for t in &tris {
-                    t.draw(view, Cull::None);
-                }
-                Ok(text(view, k)?)
-            })
+            .render(
+                from_fn(|view| {
+                    for t in &tris {
+                        t.draw(view, Cull::None);
+                    }
+                    Ok(text(view, k)?)
+                }),
+                &mut band,
+                &mut fb,
+            )
             .unwrap();
         assert_eq!(fb.pixels, want.pixels, "font {k}");
     }
@@ -241,7 +246,7 @@ fn drawables_follow_the_frame_offset() {
     let mut band = Band::<Rgb565, W, 5>::new(BG);
     Renderer::new(FH, BG)
         .with_offset(Point::new(ox as i32, oy as i32))
-        .render_drawables(&mut band, &mut fb, |view| Ok(all(view, 1)?))
+        .render(from_fn(|view| Ok(all(view, 1)?)), &mut band, &mut fb)
         .unwrap();
     let want = reference::<AllScene>(1);
     for y in 0..FH as usize {
@@ -255,15 +260,19 @@ fn closure_errors_are_returned_and_bands_still_sent() {
     let mut band = Band::<Rgb565, W, 16>::new(BG);
     let mut fb = Framebuffer::new(W as u32, FH, Rgb565::BLACK);
     let mut calls = 0;
-    let r = Renderer::new(FH, BG).render_drawables(&mut band, &mut fb, |_| {
-        calls += 1;
-        Err(Error::InvalidParameter)
-    });
+    let r = Renderer::new(FH, BG).render(
+        from_fn(|_| {
+            calls += 1;
+            Err(Error::InvalidParameter)
+        }),
+        &mut band,
+        &mut fb,
+    );
     assert_eq!(r, Err(microraster::RenderError::Input(Error::InvalidParameter)));
     assert_eq!(calls, 1, "no call after the first error");
     assert!(fb.writes.iter().all(|&n| n == 1) && fb.pixels.iter().all(|&c| c == BG));
     // A bad frame height is an error before anything is drawn.
-    let r = Renderer::new(0, BG).render_drawables(&mut band, &mut fb, |_| Ok(()));
+    let r = Renderer::new(0, BG).render(from_fn(|_| Ok(())), &mut band, &mut fb);
     assert_eq!(r, Err(microraster::RenderError::Input(Error::InvalidFrameSize)));
 }
 
@@ -293,7 +302,7 @@ fn extreme_rectangles_are_clipped_without_overflow() {
 }
 
 /// The standard 3D scene's triangles at `angle`, and its frame through
-/// `render_3d` alone.
+/// `Triangles3d` alone.
 fn scene3d(angle: f32) -> (heapless::Vec<microraster::raster3d::ScreenTriangle<4>, BINS>, Vec<Rgb565>) {
     let pipeline = Scene3d::pipeline::<f32, 4>(W as u32, FH).unwrap();
     let mut bins = heapless::Vec::new();
@@ -301,13 +310,17 @@ fn scene3d(angle: f32) -> (heapless::Vec<microraster::raster3d::ScreenTriangle<4
     let mut fb = Framebuffer::new(W as u32, FH, Rgb565::BLACK);
     let (mut band, mut depth) = (Band::<Rgb565, W, 8>::new(BG), DepthBand::<Depth16, W, 8>::new());
     Renderer::new(FH, BG)
-        .render_3d(&bins, &mut band, &mut depth, DepthState::LESS_WRITE, PerspectiveCorrect, &mut fb)
+        .render(
+            Triangles3d::new(&bins, &mut depth, DepthState::LESS_WRITE, PerspectiveCorrect),
+            &mut band,
+            &mut fb,
+        )
         .unwrap();
     (bins, fb.pixels)
 }
 
-/// The HUD over the 3D frame (reference) against `render_3d_overlay` and
-/// `render_3d_direct` with the HUD drawn into its `Band3d`, for `H`-row bands.
+/// The HUD over the 3D frame (reference) against `Pass::then` and
+/// `Direct3d` with the HUD drawn into its `Band3d`, for `H`-row bands.
 /// The depth band starts full of garbage: the renderer must clear it.
 fn hud_over_3d<const H: usize>(angle: f32, k: usize) {
     let (bins, frame) = scene3d(angle);
@@ -323,27 +336,28 @@ fn hud_over_3d<const H: usize>(angle: f32, k: usize) {
     let mut band = Band::<Rgb565, W, H>::new(Rgb565::BLACK);
     let (mut fb, mut depth) = (Framebuffer::new(W as u32, FH, Rgb565::BLACK), garbage());
     Renderer::new(FH, BG)
-        .render_3d_overlay(
-            &bins,
+        .render(
+            Triangles3d::new(&bins, &mut depth, DepthState::LESS_WRITE, PerspectiveCorrect)
+                .then(|hud| Ok(all(hud, k)?)),
             &mut band,
-            &mut depth,
-            DepthState::LESS_WRITE,
-            PerspectiveCorrect,
             &mut fb,
-            |hud| Ok(all(hud, k)?),
         )
         .unwrap();
     assert!(fb.writes.iter().all(|&n| n == 1));
-    assert_eq!(fb.pixels, want.pixels, "render_3d_overlay, {H}-row bands, angle {angle}");
+    assert_eq!(fb.pixels, want.pixels, "Triangles3d.then(HUD), {H}-row bands, angle {angle}");
 
     let (mut fb, mut depth) = (Framebuffer::new(W as u32, FH, Rgb565::BLACK), garbage());
     Renderer::new(FH, BG)
-        .render_3d_direct(&mut band, &mut depth, DepthState::LESS_WRITE, PerspectiveCorrect, &mut fb, |b| {
-            b.draw_all(&bins);
-            Ok(all(b, k)?)
-        })
+        .render(
+            Direct3d::new(&mut depth, DepthState::LESS_WRITE, PerspectiveCorrect, |b| {
+                b.draw_all(&bins);
+                Ok(all(b, k)?)
+            }),
+            &mut band,
+            &mut fb,
+        )
         .unwrap();
-    assert_eq!(fb.pixels, want.pixels, "render_3d_direct + Band3d HUD, {H}-row bands, angle {angle}");
+    assert_eq!(fb.pixels, want.pixels, "Direct3d + Band3d HUD, {H}-row bands, angle {angle}");
 }
 
 #[test]
@@ -367,11 +381,15 @@ fn drawables_under_3d_are_covered_by_it() {
     let (mut fb, mut depth) =
         (Framebuffer::new(W as u32, FH, Rgb565::BLACK), DepthBand::<Depth16, W, 16>::new());
     Renderer::new(FH, BG)
-        .render_3d_direct(&mut band, &mut depth, DepthState::LESS_WRITE, PerspectiveCorrect, &mut fb, |b| {
-            b.clear(backdrop)?;
-            b.draw_all(&bins);
-            Ok(())
-        })
+        .render(
+            Direct3d::new(&mut depth, DepthState::LESS_WRITE, PerspectiveCorrect, |b| {
+                b.clear(backdrop)?;
+                b.draw_all(&bins);
+                Ok(())
+            }),
+            &mut band,
+            &mut fb,
+        )
         .unwrap();
     for (got, want) in fb.pixels.iter().zip(&frame) {
         assert_eq!(*got, if *want == BG { backdrop } else { *want });

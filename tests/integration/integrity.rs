@@ -15,6 +15,7 @@ use microraster::math::{Fx, Mat4, Scalar, Vec3, transform};
 use microraster::mesh::{Mesh, ValidMesh, bounding_sphere};
 use microraster::pipeline::{Pipeline, VertexCache};
 use microraster::raster3d::{Affine, ScreenTriangle};
+use microraster::render::{PerBand3d, Triangles3d};
 use microraster::{Band, ClipRect, Error, RenderError, Renderer};
 use proptest::prelude::*;
 
@@ -22,8 +23,8 @@ const W: usize = 64;
 const H: usize = 48;
 
 /// The image of `mesh` drawn by `p`: the whole frame's bins at once
-/// (`render_3d`), and the vertex stage once per 8-row band
-/// (`render_3d_per_band`); `Err` is the first error of either.
+/// (`Triangles3d`), and the vertex stage once per 8-row band
+/// (`PerBand3d`); `Err` is the first error of either.
 fn both_ways<T: Scalar>(
     p: &Pipeline<T, 4>,
     mesh: &Mesh<'_>,
@@ -36,22 +37,18 @@ fn both_ways<T: Scalar>(
     let mut band = Band::<Gray8, W, 8>::new(bg);
     let mut depth = DepthBand::<Depth16, W, 8>::new();
     Renderer::new(H as u32, bg)
-        .render_3d(&bins, &mut band, &mut depth, DepthState::LESS_WRITE, Affine, &mut fb)
+        .render(Triangles3d::new(&bins, &mut depth, DepthState::LESS_WRITE, Affine), &mut band, &mut fb)
         .unwrap();
     let whole = fb.pixels;
     let mut fb = Framebuffer::new(W as u32, H as u32, bg);
     let mut pb = *p;
     let mut failed = None;
-    let r = Renderer::new(H as u32, bg).render_3d_per_band(
-        &mut bins,
-        |y0, y1, bins| {
+    let r = Renderer::new(H as u32, bg).render(
+        PerBand3d::new(&mut bins, &mut depth, DepthState::LESS_WRITE, Affine, |y0, y1, bins| {
             pb.rows = Some((y0, y1 - 1));
             pb.draw_mesh(mesh, model, Gray8::new(255), bins).map(|_| ()).inspect_err(|e| failed = Some(*e))
-        },
+        }),
         &mut band,
-        &mut depth,
-        DepthState::LESS_WRITE,
-        Affine,
         &mut fb,
     );
     if let Some(e) = failed {
@@ -426,7 +423,7 @@ fn binned<const BH: usize>(bins: &[ScreenTriangle<4>]) -> Img {
         let mut band = Box::new(Band::<Gray8, PW, BH>::new(Gray8::new(0)));
         let mut depth = Box::new(DepthBand::<Depth16, PW, BH>::new());
         Renderer::new(PH as u32, Gray8::new(0))
-            .render_3d(bins, &mut band, &mut depth, DepthState::LESS_WRITE, Affine, fb)
+            .render(Triangles3d::new(bins, &mut depth, DepthState::LESS_WRITE, Affine), &mut band, fb)
             .map_err(|_| Error::InvalidParameter)
     })
 }
@@ -443,20 +440,16 @@ fn per_band<T: Scalar, const BH: usize>(
         let mut bins = heapless::Vec::<ScreenTriangle<4>, PBINS>::new();
         let mut cache = Box::new(VertexCache::<T, 4, 8>::new());
         let mut pb = *p;
-        let r = Renderer::new(PH as u32, Gray8::new(0)).render_3d_per_band(
-            &mut bins,
-            |y0, y1, bins| {
+        let r = Renderer::new(PH as u32, Gray8::new(0)).render(
+            PerBand3d::new(&mut bins, &mut depth, DepthState::LESS_WRITE, Affine, |y0, y1, bins| {
                 pb.rows = Some((y0, y1 - 1));
                 if cached {
                     pb.draw_valid_mesh_cached(mesh, model, Gray8::new(200), &mut cache, bins).map(|_| ())
                 } else {
                     pb.draw_valid_mesh(mesh, model, Gray8::new(200), bins).map(|_| ())
                 }
-            },
+            }),
             &mut band,
-            &mut depth,
-            DepthState::LESS_WRITE,
-            Affine,
             fb,
         );
         match r {
@@ -546,7 +539,7 @@ fn every_path<T: Scalar>(
         let mut band = Box::new(Band::<Gray8, PW, 16>::new(Gray8::new(0)));
         let mut depth = Box::new(DepthBand::<Depth16, PW, 16>::new());
         Renderer::new(PH as u32, Gray8::new(0))
-            .render_3d(&bins, &mut band, &mut depth, DepthState::DISABLED, Affine, fb)
+            .render(Triangles3d::new(&bins, &mut depth, DepthState::DISABLED, Affine), &mut band, fb)
             .map_err(|_| Error::InvalidParameter)
     })?;
     Ok((images[0].clone()?, cross))

@@ -1,6 +1,6 @@
 //! Interpenetrating triangles: which one wins each pixel, against the f64
 //! depths at the pixel centre (`ref3d::depth_code`), through
-//! [`Renderer::render_3d`] (bands of 16 rows) with `LESS` and depth writes.
+//! `Triangles3d` (bands of 16 rows) with `LESS` and depth writes.
 //!
 //! Derived window (see `depth3d`): each stored code is `round(exact + e)`
 //! with `|e| ≤ E = 1/8 + 2^-16`. `A` is drawn first, then `B` passes iff
@@ -17,6 +17,7 @@ use embedded_graphics_core::pixelcolor::{Gray8, GrayColor};
 use microraster::depth::{Depth8, Depth16, Depth24, Depth32, DepthBand, DepthFormat, DepthState};
 use microraster::edge::Cull;
 use microraster::raster3d::{PerspectiveCorrect, ScreenTriangle, ScreenVertex};
+use microraster::render::Triangles3d;
 use microraster::{Band, ClipRect, Renderer, SubPoint};
 
 const W: usize = 80;
@@ -92,7 +93,11 @@ fn check_pairs<F: DepthFormat>(rng: &mut Rng, pairs: usize) -> Stats {
         let mut band = Box::new(Band::<Gray8, W, 16>::new(BG));
         let mut depth = Box::new(DepthBand::<F, W, 16>::new());
         Renderer::new(H as u32, BG)
-            .render_3d(&t, &mut band, &mut depth, DepthState::LESS_WRITE, PerspectiveCorrect, &mut fb)
+            .render(
+                Triangles3d::new(&t, &mut depth, DepthState::LESS_WRITE, PerspectiveCorrect),
+                &mut band,
+                &mut fb,
+            )
             .unwrap();
         let mut winners = [false; 2];
         for y in 0..H as i32 {

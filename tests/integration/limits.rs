@@ -265,10 +265,10 @@ fn limit_frame_and_band_sizes() {
     let mut band = Box::new(Band::<BinaryColor, 1, 1>::new(BinaryColor::Off));
     let mut fb = Framebuffer::new(1, 4096, BinaryColor::Off);
     for h in [1, 4096] {
-        assert!(Renderer::new(h, BinaryColor::Off).render::<_, 4, 1, 1>(&[], &mut band, &mut fb).is_ok());
+        assert!(Renderer::new(h, BinaryColor::Off).render((), &mut band, &mut fb).is_ok());
     }
     for h in [0, 4097, u32::MAX] {
-        let r = Renderer::new(h, BinaryColor::Off).render::<_, 4, 1, 1>(&[], &mut band, &mut fb);
+        let r = Renderer::new(h, BinaryColor::Off).render((), &mut band, &mut fb);
         assert_eq!(r, Err(Error::InvalidFrameSize.into()), "height {h}");
     }
     // Pipeline viewports: 1..=4096 in each direction.

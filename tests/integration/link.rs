@@ -12,6 +12,7 @@ use embedded_graphics_core::prelude::*;
 use microraster::depth::{Depth16, DepthBand, DepthState};
 use microraster::raster3d::PerspectiveCorrect;
 use microraster::render::{BandSink, Blocking, DirtyBands, Lent};
+use microraster::render::{Triangles3d, from_fn};
 use microraster::{Band, Error, Primitive, RenderError, Renderer};
 use microraster_scenes::scenes;
 use microraster_scenes::scenes3d::{BINS, Scene3d};
@@ -104,7 +105,11 @@ pub fn plain_3d<const H: usize>(angle: f32) -> Vec<Rgb565> {
     let mut fb = Framebuffer::new(W as u32, HEIGHT, Rgb565::BLACK);
     let (mut band, mut depth) = (Band::<Rgb565, W, H>::new(BG), DepthBand::<Depth16, W, H>::new());
     Renderer::new(HEIGHT, BG)
-        .render_3d(&bins(angle), &mut band, &mut depth, DepthState::LESS_WRITE, PerspectiveCorrect, &mut fb)
+        .render(
+            Triangles3d::new(&bins(angle), &mut depth, DepthState::LESS_WRITE, PerspectiveCorrect),
+            &mut band,
+            &mut fb,
+        )
         .unwrap();
     fb.pixels
 }
@@ -142,7 +147,11 @@ fn linked_3d<'a, S, const H: usize, const N: usize>(
     S::Error: core::fmt::Debug,
 {
     Renderer::new(HEIGHT, BG)
-        .render_3d_linked(&bins(angle), bands, depth, DepthState::LESS_WRITE, PerspectiveCorrect, sink)
+        .render_linked(
+            Triangles3d::new(&bins(angle), depth, DepthState::LESS_WRITE, PerspectiveCorrect),
+            bands,
+            sink,
+        )
         .unwrap();
 }
 
@@ -262,19 +271,24 @@ fn dirty_bands_single_pixel_changes_are_sent() {
     let mut display = Framebuffer::new(8, 8, Rgb565::BLACK);
     let mut sink = DirtyBands::<_, 2>::new(Blocking(&mut display));
     let r = Renderer::new(8, BG);
-    r.render_with_linked(&mut bands, &mut sink, |_, _, _| {}).unwrap();
+    r.render_linked((), &mut bands, &mut sink).unwrap();
     let mut expected = 2;
     for (x, y) in (0..8).flat_map(|y| (0..8).map(move |x| (x, y))) {
         for &c in &palette[1..] {
-            r.render_with_linked(&mut bands, &mut sink, |view, _, _| {
-                use microraster::blit::Blitter;
-                view.set_pixel(x, y, c)
-            })
+            r.render_linked(
+                from_fn(|view| {
+                    use microraster::blit::Blitter;
+                    view.set_pixel(x, y, c);
+                    Ok(())
+                }),
+                &mut bands,
+                &mut sink,
+            )
             .unwrap();
             // The changed band, then the band back to the background.
             expected += 1;
             assert_eq!(sink.sent_bands(), expected, "pixel ({x}, {y})");
-            r.render_with_linked(&mut bands, &mut sink, |_, _, _| {}).unwrap();
+            r.render_linked((), &mut bands, &mut sink).unwrap();
             expected += 1;
             assert_eq!(sink.sent_bands(), expected);
         }
@@ -286,10 +300,7 @@ fn dirty_bands_too_few_signatures_is_a_typed_error() {
     let mut bands = [const { Band::<Rgb565, 8, 4>::new(BG) }; 2];
     let mut sink = DirtyBands::<(), 2>::new(());
     let r = Renderer::new(9, BG); // three bands
-    assert_eq!(
-        r.render_with_linked(&mut bands, &mut sink, |_, _, _| {}),
-        Err(RenderError::Input(Error::BufferTooSmall))
-    );
+    assert_eq!(r.render_linked((), &mut bands, &mut sink), Err(RenderError::Input(Error::BufferTooSmall)));
     assert_eq!(sink.sent_bands(), 0);
 }
 
@@ -309,23 +320,18 @@ fn sink_that_keeps_bands_is_a_typed_error() {
     let mut bands = [const { Band::<Rgb565, 8, 4>::new(BG) }; 2];
     let mut sink = Hoarder(Vec::new());
     let r = Renderer::new(12, BG);
-    assert_eq!(
-        r.render_with_linked(&mut bands, &mut sink, |_, _, _| {}),
-        Err(RenderError::Input(Error::InvalidParameter))
-    );
+    assert_eq!(r.render_linked((), &mut bands, &mut sink), Err(RenderError::Input(Error::InvalidParameter)));
 }
 
 fn threads_3d<const H: usize, const N: usize>(angle: f32) {
     let mut fb = Framebuffer::new(W as u32, HEIGHT, Rgb565::BLACK);
     let mut bands = [const { Band::<Rgb565, W, H>::new(BG) }; N];
     let mut depth = [const { DepthBand::<Depth16, W, H>::zeroed() }; N];
+    let tris = bins(angle);
     Renderer::new(HEIGHT, BG)
-        .render_3d_threads(
-            &bins(angle),
+        .render_threads(
+            depth.each_mut().map(|d| Triangles3d::new(&tris, d, DepthState::LESS_WRITE, PerspectiveCorrect)),
             &mut bands,
-            &mut depth,
-            DepthState::LESS_WRITE,
-            PerspectiveCorrect,
             &mut fb,
         )
         .unwrap();

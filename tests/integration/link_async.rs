@@ -19,6 +19,7 @@ use embedded_graphics_core::primitives::Rectangle;
 use microraster::depth::{Depth16, DepthBand, DepthState};
 use microraster::raster3d::PerspectiveCorrect;
 use microraster::render::{AsyncBandSink, SpiPanel, SpiPanelError};
+use microraster::render::{Triangles3d, from_fn};
 use microraster::{Band, Error, RenderError, Renderer};
 
 /// Polls `future` to the end, waking itself (the scripted futures do).
@@ -107,7 +108,7 @@ fn scripted_2d<const H: usize>(seed: u64) {
     let mut sink = Scripted { rng: Rng::new(seed), fb: Framebuffer::new(W as u32, HEIGHT, BG), log: &log };
     let mut bands = [const { Band::<Rgb565, W, H>::new(BG) }; 2];
     let r = Renderer::new(HEIGHT, BG);
-    block_on(r.render_linked_async(&scene, &mut bands, &mut sink)).unwrap();
+    block_on(r.render_async(&scene, &mut bands, &mut sink)).unwrap();
     assert!(sink.fb.pixels == plain_2d::<H>(&scene), "H = {H}, seed {seed}");
     assert_eq!(log.borrow().len(), 2 * (HEIGHT as usize).div_ceil(H));
 }
@@ -131,12 +132,9 @@ fn async_sink_gets_the_plain_frame_3d() {
         let mut bands = [const { Band::<Rgb565, W, 8>::new(BG) }; 2];
         let mut depth = DepthBand::<Depth16, W, 8>::new();
         let (r, tris) = (Renderer::new(HEIGHT, BG), bins(angle));
-        let frame = r.render_3d_linked_async(
-            &tris,
+        let frame = r.render_async(
+            Triangles3d::new(&tris, &mut depth, DepthState::LESS_WRITE, PerspectiveCorrect),
             &mut bands,
-            &mut depth,
-            DepthState::LESS_WRITE,
-            PerspectiveCorrect,
             &mut sink,
         );
         block_on(frame).unwrap();
@@ -158,14 +156,20 @@ fn next_band_is_drawn_while_the_last_is_in_flight() {
             Scripted { rng: Rng::new(seed), fb: Framebuffer::new(W as u32, HEIGHT, BG), log: &log };
         let mut bands = [const { Band::<Rgb565, W, 7>::new(BG) }; 2];
         let r = Renderer::new(HEIGHT, BG);
-        let frame = r.render_with_linked_async(&mut bands, &mut sink, |view, y0, y1| {
-            log.borrow_mut().push(Event::Draw(y0));
-            for y in y0..y1 {
-                for x in 0..W {
-                    microraster::blit::Blitter::set_pixel(view, x as i32, y, pattern(x, y));
+        let frame = r.render_async(
+            from_fn(|view| {
+                let (y0, y1) = (view.y0(), view.y0() + view.height() as i32);
+                log.borrow_mut().push(Event::Draw(y0));
+                for y in y0..y1 {
+                    for x in 0..W {
+                        microraster::blit::Blitter::set_pixel(view, x as i32, y, pattern(x, y));
+                    }
                 }
-            }
-        });
+                Ok(())
+            }),
+            &mut bands,
+            &mut sink,
+        );
         block_on(frame).unwrap();
         let expected: Vec<_> = (0..HEIGHT as i32).flat_map(|y| (0..W).map(move |x| pattern(x, y))).collect();
         assert!(sink.fb.pixels == expected, "seed {seed}");
@@ -264,7 +268,7 @@ fn spi_panel_2d<const H: usize>(seed: u64) {
         // Twice: the second frame sets its window again.
         state.borrow_mut().fb = Framebuffer::new(W as u32, HEIGHT, Rgb565::BLACK);
         let r = Renderer::new(HEIGHT, BG);
-        block_on(r.render_linked_async(&scene, &mut bands, &mut sink)).unwrap();
+        block_on(r.render_async(&scene, &mut bands, &mut sink)).unwrap();
         let shown = state.borrow();
         assert!(shown.fb.pixels == plain_2d::<H>(&scene), "H = {H}, seed {seed}");
         assert!(shown.fb.writes.iter().all(|&n| n == 1), "each pixel sent once");
@@ -287,13 +291,13 @@ fn spi_panel_bad_configurations_are_typed_errors() {
     let mut small = vec![0u8; 2 * W * 8 - 1];
     let mut sink = SpiPanel::new(Spi(&state), Dc(&state), &mut small);
     let r = Renderer::new(HEIGHT, BG);
-    let frame = r.render_linked_async::<_, 4, W, 8>(&[], &mut bands, &mut sink);
+    let frame = r.render_async((), &mut bands, &mut sink);
     assert_eq!(block_on(frame), Err(RenderError::Input(Error::BufferTooSmall)));
     assert!(state.borrow().command.is_none(), "nothing sent");
     // A frame left of column 0 has no 16-bit panel address.
     let mut wire = vec![0u8; 2 * W * 8];
     let mut sink = SpiPanel::new(Spi(&state), Dc(&state), &mut wire);
     let r = r.with_offset(Point::new(-1, 0));
-    let frame = r.render_linked_async::<_, 4, W, 8>(&[], &mut bands, &mut sink);
+    let frame = r.render_async((), &mut bands, &mut sink);
     assert_eq!(block_on(frame), Err(RenderError::Target(SpiPanelError::Window)));
 }

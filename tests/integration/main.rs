@@ -55,6 +55,7 @@ mod link;
 mod link_async;
 mod meshlets;
 mod mock_display;
+mod passes;
 mod per_band;
 mod perspective;
 mod pipeline3d;

@@ -1,7 +1,7 @@
 //! The meshlet vertex stage (`Pipeline::draw_meshlets` through
-//! `Renderer::render_3d_direct`) draws the image of the binned path: the
+//! `Direct3d`) draws the image of the binned path: the
 //! same mesh, its triangles in cluster order, through `draw_valid_mesh` and
-//! `render_3d`, for both numeric paths, both interpolations and any band
+//! `Triangles3d`, for both numeric paths, both interpolations and any band
 //! height; and the cone test only rejects clusters whose every triangle
 //! faces away.
 
@@ -14,6 +14,7 @@ use microraster::math::{Fx, Mat4, Scalar, Vec3, transform};
 use microraster::mesh::{self, Mesh, Meshlet, MeshletMesh, ValidMesh, ValidMeshletMesh};
 use microraster::pipeline::{ClusterCache, Pipeline};
 use microraster::raster3d::{Affine, Interpolation, PerspectiveCorrect};
+use microraster::render::{Direct3d, Triangles3d};
 use microraster::{Band, Renderer};
 use microraster_scenes::scenes3d::Scene3d;
 
@@ -148,7 +149,7 @@ fn binned<T: Scalar, M: Interpolation, const BH: usize>(
     let mut fb = Framebuffer::new(W as u32, H, BG);
     let (mut band, mut depth) = (Band::<Rgb565, W, BH>::new(BG), DepthBand::<Depth16, W, BH>::new());
     Renderer::new(H, BG)
-        .render_3d(&bins, &mut band, &mut depth, DepthState::LESS_WRITE, M::default(), &mut fb)
+        .render(Triangles3d::new(&bins, &mut depth, DepthState::LESS_WRITE, M::default()), &mut band, &mut fb)
         .unwrap();
     fb.pixels
 }
@@ -176,12 +177,16 @@ fn direct_stats<T: Scalar, M: Interpolation, const BH: usize>(
     let mesh = c.meshlets();
     let model = model::<T>(angle);
     Renderer::new(H, BG)
-        .render_3d_direct(&mut band, &mut depth, DepthState::LESS_WRITE, interp, &mut fb, |band| {
-            let s = p.draw_meshlets(&mesh, &model, Rgb565::new(28, 44, 12), &mut cache, band)?;
-            skipped[0] += s.clusters_outside;
-            skipped[1] += s.clusters_back_facing;
-            Ok(())
-        })
+        .render(
+            Direct3d::new(&mut depth, DepthState::LESS_WRITE, interp, |band| {
+                let s = p.draw_meshlets(&mesh, &model, Rgb565::new(28, 44, 12), &mut cache, band)?;
+                skipped[0] += s.clusters_outside;
+                skipped[1] += s.clusters_back_facing;
+                Ok(())
+            }),
+            &mut band,
+            &mut fb,
+        )
         .unwrap();
     (fb.pixels, skipped)
 }

@@ -102,12 +102,7 @@ fn threaded_frame_outside_the_display_is_an_error() {
     let mut bands = [(); 2].map(|()| Band::<BinaryColor, 8, 4>::new(BinaryColor::Off));
     let mut d = MockDisplay::<BinaryColor>::new();
     d.set_allow_out_of_bounds_drawing(true);
-    let r = Renderer::new(65, BinaryColor::Off).render_with_threads(
-        &mut bands,
-        &mut [(); 2],
-        &mut d,
-        |_, _, _, _| {},
-    );
+    let r = Renderer::new(65, BinaryColor::Off).render_threads([(), ()], &mut bands, &mut d);
     assert_eq!(r, Err(RenderError::Input(Error::FrameOutsideTarget)));
     assert_eq!(d, MockDisplay::new(), "nothing drawn");
 }
@@ -119,7 +114,7 @@ fn render_error_converts_into_a_boxed_std_error() {
     use microraster::{Band, Renderer};
     fn frame() -> Result<(), Box<dyn std::error::Error>> {
         let mut band = Band::<BinaryColor, 65, 4>::new(BinaryColor::Off);
-        Renderer::new(4, BinaryColor::Off).render::<_, 4, 65, 4>(&[], &mut band, &mut MockDisplay::new())?;
+        Renderer::new(4, BinaryColor::Off).render((), &mut band, &mut MockDisplay::new())?;
         Ok(())
     }
     let e = frame().unwrap_err();

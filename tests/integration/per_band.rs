@@ -7,6 +7,7 @@ use embedded_graphics_core::prelude::RgbColor;
 use microraster::depth::{Depth16, DepthBand, DepthState};
 use microraster::math::{Fx, Scalar};
 use microraster::raster3d::{Affine, PerspectiveCorrect};
+use microraster::render::{PerBand3d, Triangles3d};
 use microraster::{Band, Renderer};
 use microraster_scenes::scenes3d::{BINS, Scene3d};
 
@@ -20,7 +21,11 @@ fn per_frame<T: Scalar>(angle: f32) -> Vec<Rgb565> {
     let mut fb = Framebuffer::new(W as u32, H, Rgb565::BLACK);
     let (mut band, mut depth) = (Band::<Rgb565, W, 8>::new(Rgb565::BLACK), DepthBand::<Depth16, W, 8>::new());
     Renderer::new(H, Rgb565::BLACK)
-        .render_3d(&bins, &mut band, &mut depth, DepthState::LESS_WRITE, PerspectiveCorrect, &mut fb)
+        .render(
+            Triangles3d::new(&bins, &mut depth, DepthState::LESS_WRITE, PerspectiveCorrect),
+            &mut band,
+            &mut fb,
+        )
         .unwrap();
     fb.pixels
 }
@@ -32,18 +37,20 @@ fn per_band<T: Scalar, const N: usize>(angle: f32) -> (Vec<Rgb565>, usize) {
     let (mut band, mut depth) = (Band::<Rgb565, W, 8>::new(Rgb565::BLACK), DepthBand::<Depth16, W, 8>::new());
     let mut most = 0;
     Renderer::new(H, Rgb565::BLACK)
-        .render_3d_per_band(
-            &mut bins,
-            |y0, y1, bins| {
-                pipeline.rows = Some((y0, y1 - 1));
-                Scene3d.draw::<T, Rgb565, 4, N>(&pipeline, angle, bins)?;
-                most = most.max(bins.len());
-                Ok(())
-            },
+        .render(
+            PerBand3d::new(
+                &mut bins,
+                &mut depth,
+                DepthState::LESS_WRITE,
+                PerspectiveCorrect,
+                |y0, y1, bins| {
+                    pipeline.rows = Some((y0, y1 - 1));
+                    Scene3d.draw::<T, Rgb565, 4, N>(&pipeline, angle, bins)?;
+                    most = most.max(bins.len());
+                    Ok(())
+                },
+            ),
             &mut band,
-            &mut depth,
-            DepthState::LESS_WRITE,
-            PerspectiveCorrect,
             &mut fb,
         )
         .unwrap();
@@ -71,15 +78,10 @@ fn per_band_reports_full_bins_as_an_error() {
     let mut bins = heapless::Vec::<_, 4>::new();
     let mut fb = Framebuffer::new(W as u32, H, Rgb565::BLACK);
     let (mut band, mut depth) = (Band::<Rgb565, W, 8>::new(Rgb565::BLACK), DepthBand::<Depth16, W, 8>::new());
-    let r = Renderer::new(H, Rgb565::BLACK).render_3d_per_band(
-        &mut bins,
-        |_, _, bins| Scene3d.draw::<f32, Rgb565, 4, 4>(&pipeline, 0.3, bins).map(|_| ()),
-        &mut band,
-        &mut depth,
-        DepthState::LESS_WRITE,
-        Affine,
-        &mut fb,
-    );
+    let frame = PerBand3d::new(&mut bins, &mut depth, DepthState::LESS_WRITE, Affine, |_, _, bins| {
+        Scene3d.draw::<f32, Rgb565, 4, 4>(&pipeline, 0.3, bins).map(|_| ())
+    });
+    let r = Renderer::new(H, Rgb565::BLACK).render(frame, &mut band, &mut fb);
     let Err(microraster::RenderError::Input(microraster::Error::CapacityExceeded { needed, capacity: 4 })) =
         r
     else {

@@ -1,5 +1,5 @@
 //! The vertex stage end to end: the standard 3D scene on the `f32` and `Fx`
-//! paths, band-height invariance of [`Renderer::render_3d`], and `MeshStats`.
+//! paths, band-height invariance of `Triangles3d`, and `MeshStats`.
 
 use crate::framebuffer::Framebuffer;
 use embedded_graphics_core::pixelcolor::Rgb565;
@@ -11,6 +11,7 @@ use microraster::mesh::{
 };
 use microraster::pipeline::{MeshStats, Pipeline};
 use microraster::raster3d::{Affine, Interpolation, PerspectiveCorrect, ScreenTriangle};
+use microraster::render::Triangles3d;
 use microraster::{Band, Interpolate, Renderer};
 use microraster_scenes::scenes3d::{BINS, Scene3d};
 
@@ -32,7 +33,7 @@ fn render<F: DepthFormat, M: Interpolation, const H: usize>(bins: &[ScreenTriang
     let mut band = Box::new(Band::<Rgb565, W, H>::new(BG));
     let mut depth = Box::new(DepthBand::<F, W, H>::new());
     Renderer::new(HEIGHT as u32, BG)
-        .render_3d(bins, &mut band, &mut depth, DepthState::LESS_WRITE, M::default(), &mut fb)
+        .render(Triangles3d::new(bins, &mut depth, DepthState::LESS_WRITE, M::default()), &mut band, &mut fb)
         .unwrap();
     // One fill_contiguous per band, full width, consecutive, the last one short.
     assert_eq!(fb.contiguous.len(), HEIGHT.div_ceil(H), "band count for H = {H}");

@@ -17,6 +17,7 @@ use microraster::math::{Fx, Mat4, Scalar, Vec3, transform};
 use microraster::mesh::{Mesh, bounding_sphere};
 use microraster::pipeline::{Pipeline, Shade};
 use microraster::raster3d::{Affine, PerspectiveCorrect, ScreenTriangle};
+use microraster::render::Triangles3d;
 use microraster::{Band, ClipRect, Error, Renderer};
 use proptest::prelude::*;
 
@@ -155,9 +156,13 @@ fn render<const S: u32, const H: usize>(
     let mut depth = Box::new(DepthBand::<Depth16, FW, H>::new());
     let r = Renderer::new(FH as u32, bg);
     if perspective {
-        r.render_3d(bins, &mut band, &mut depth, DepthState::LESS_WRITE, PerspectiveCorrect, &mut fb)
+        r.render(
+            Triangles3d::new(bins, &mut depth, DepthState::LESS_WRITE, PerspectiveCorrect),
+            &mut band,
+            &mut fb,
+        )
     } else {
-        r.render_3d(bins, &mut band, &mut depth, DepthState::LESS_WRITE, Affine, &mut fb)
+        r.render(Triangles3d::new(bins, &mut depth, DepthState::LESS_WRITE, Affine), &mut band, &mut fb)
     }
     .unwrap();
     assert!(fb.writes.iter().all(|&w| w == 1), "a frame pixel sent {:?} times", fb.writes.iter().max());

@@ -15,9 +15,10 @@ use microraster::math::Mat4;
 use microraster::mesh::{Mesh, bounding_sphere};
 use microraster::pipeline::Pipeline;
 use microraster::raster3d::{Affine, ScreenTriangle};
+use microraster::render::Triangles3d;
 use microraster::{Band, Primitive, Renderer, SubPoint, Triangle};
 
-/// Bug 1: `Renderer::render_with` adds the band's row to the user's offset
+/// Bug 1: `render::from_fn` adds the band's row to the user's offset
 /// with `Point + Point` (`i32 +`): an offset near `i32::MAX` panics with
 /// "attempt to add with overflow" in the second band (debug/test builds) or
 /// wraps (release). Fix: `self.offset.y.checked_add(y0)` and an
@@ -27,8 +28,8 @@ fn render_offset_near_i32_max_does_not_panic() {
     let mut band = Band::<BinaryColor, 4, 2>::new(BinaryColor::Off);
     let mut sink = Sink;
     let r = std::panic::catch_unwind(move || {
-        Renderer::new(4, BinaryColor::Off).with_offset(Point::new(0, i32::MAX - 1)).render::<_, 4, 4, 2>(
-            &[],
+        Renderer::new(4, BinaryColor::Off).with_offset(Point::new(0, i32::MAX - 1)).render(
+            (),
             &mut band,
             &mut sink,
         )
@@ -70,7 +71,7 @@ fn fast_path_extent_px_accepts_any_s() {
 /// (`Pipeline::new(.., w, h)` with `w < W`, or `with_origin`) is overdrawn:
 /// a triangle crossing the viewport's edge is drawn beyond it. Fix: scissor
 /// to the viewport — e.g. `Pipeline::viewport_rect() -> ClipRect` passed to
-/// `render_3d`/`draw_triangle` and intersected with the band's clip (no
+/// `Triangles3d`/`draw_triangle` and intersected with the band's clip (no
 /// per-pixel cost), or clip at `g = 1` when the viewport does not fill the
 /// frame.
 #[test]
@@ -90,7 +91,7 @@ fn viewport_smaller_than_frame_is_not_overdrawn() {
     let mut band = Box::new(Band::<Gray8, W, 16>::new(Gray8::new(0)));
     let mut depth = Box::new(DepthBand::<Depth16, W, 16>::new());
     Renderer::new(H as u32, Gray8::new(0))
-        .render_3d(&bins, &mut band, &mut depth, DepthState::LESS_WRITE, Affine, &mut fb)
+        .render(Triangles3d::new(&bins, &mut depth, DepthState::LESS_WRITE, Affine), &mut band, &mut fb)
         .unwrap();
     let outside: Vec<(usize, usize)> = (0..H)
         .flat_map(|y| (0..W).map(move |x| (x, y)))

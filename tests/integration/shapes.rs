@@ -8,6 +8,7 @@ use crate::reference::{Rng, spans_coverage};
 use embedded_graphics_core::Drawable;
 use embedded_graphics_core::pixelcolor::{Gray8, GrayColor};
 use microraster::edge::{Cull, Span, TriangleSpans};
+use microraster::render::from_fn;
 use microraster::shape::{
     Arc, Canvas, Cap, Circle, Coverage, Ellipse, FillRule, LinearGradient, Polygon, Polyline, RadialGradient,
     Rect, RoundedRect, Sector, Shape, ShapeStyle, Styled, TOLERANCE,
@@ -326,7 +327,16 @@ fn render_banded<const BH: usize>(
 ) -> Vec<Gray8> {
     let mut fb = Framebuffer::new(W as u32, H as u32, Gray8::BLACK);
     let mut band = Band::<Gray8, 64, BH>::new(Gray8::BLACK);
-    Renderer::new(H as u32, Gray8::new(7)).render_with(&mut band, &mut fb, |view, _, _| scene(view)).unwrap();
+    Renderer::new(H as u32, Gray8::new(7))
+        .render(
+            from_fn(|view| {
+                scene(view);
+                Ok(())
+            }),
+            &mut band,
+            &mut fb,
+        )
+        .unwrap();
     fb.pixels
 }
 
@@ -362,7 +372,14 @@ fn every_band_height_draws_the_same_image() {
     a.draw(&mut fb).unwrap();
     let mut banded = Framebuffer::new(W as u32, H as u32, Gray8::BLACK);
     Renderer::new(H as u32, Gray8::new(7))
-        .render_with(&mut band, &mut banded, |v, _, _| a.draw_on(v))
+        .render(
+            from_fn(|v| {
+                a.draw_on(v);
+                Ok(())
+            }),
+            &mut band,
+            &mut banded,
+        )
         .unwrap();
     assert_eq!(fb.pixels, banded.pixels);
 }
@@ -391,7 +408,14 @@ fn gradients_match_the_f64_ramp() {
         let mut fb = Framebuffer::new(W as u32, H as u32, Gray8::BLACK);
         let mut band = Band::<Gray8, 64, 16>::new(Gray8::BLACK);
         Renderer::new(H as u32, Gray8::BLACK)
-            .render_with(&mut band, &mut fb, |v, _, _| full.draw_on(v))
+            .render(
+                from_fn(|v| {
+                    full.draw_on(v);
+                    Ok(())
+                }),
+                &mut band,
+                &mut fb,
+            )
             .unwrap();
         let (ax, ay, bx, by) = (f64::from(a.0), f64::from(a.1), f64::from(b.0), f64::from(b.1));
         for (x, y) in (0..H).flat_map(|y| (0..W).map(move |x| (x, y))) {

@@ -16,6 +16,7 @@ use crate::reference::Rng;
 use embedded_graphics::prelude::*;
 use embedded_graphics_core::pixelcolor::{Rgb565, Rgb888};
 use microraster::blend::{Blend, BlendTarget};
+use microraster::render::from_fn;
 use microraster::texture::{A8, Argb4444, Bilinear, Filter, Sprite, TexelFormat, Texture};
 use microraster::{Band, ClipRect, Error, Renderer};
 use std::collections::HashMap;
@@ -224,17 +225,21 @@ fn sprites_are_band_invariant() {
         let mut band = Band::<Rgb565, 64, H>::new(Rgb565::BLACK);
         let mut fb = crate::framebuffer::Framebuffer::new(64, 48, Rgb565::BLACK);
         Renderer::new(48, Rgb565::new(5, 10, 20))
-            .render_drawables(&mut band, &mut fb, |view| {
-                Sprite::new(tex).at(Point::new(-5, 3)).scale(3.3).rotate(0.4).blend_into(view)?;
-                Sprite::new(tex)
-                    .at(Point::new(30, 10))
-                    .scale(2.0)
-                    .filter(Bilinear)
-                    .opacity(200)
-                    .blend_into(view)?;
-                Sprite::new(tex).at(Point::new(20, 30)).scale(1.5).rotate(-2.0).draw(view)??; // cut-out
-                Ok(())
-            })
+            .render(
+                from_fn(|view| {
+                    Sprite::new(tex).at(Point::new(-5, 3)).scale(3.3).rotate(0.4).blend_into(view)?;
+                    Sprite::new(tex)
+                        .at(Point::new(30, 10))
+                        .scale(2.0)
+                        .filter(Bilinear)
+                        .opacity(200)
+                        .blend_into(view)?;
+                    Sprite::new(tex).at(Point::new(20, 30)).scale(1.5).rotate(-2.0).draw(view)??; // cut-out
+                    Ok(())
+                }),
+                &mut band,
+                &mut fb,
+            )
             .unwrap();
         fb.pixels
     }

@@ -1,5 +1,5 @@
 //! The one-call 3D front (`microraster::view3d`): the same pixels as the
-//! explicit API (vertex stage into bins, then `Renderer::render_3d`), for
+//! explicit API (vertex stage into bins, then `Triangles3d`), for
 //! every band height; its defaults (back faces culled, lighting on, winding
 //! checked); its errors.
 
@@ -12,6 +12,7 @@ use microraster::math::{Vec3, transform};
 use microraster::mesh::{self, Mesh, Meshlet, ValidMeshletMesh};
 use microraster::pipeline::Pipeline;
 use microraster::raster3d::PerspectiveCorrect;
+use microraster::render::Triangles3d;
 use microraster::view3d::{CUBE, Camera, DEFAULT_LIGHTING, Object, View3d};
 use microraster::{Band, Error, RenderError, Renderer};
 
@@ -55,7 +56,7 @@ fn front<const BH: usize>(camera: &Camera, objects: &[Object<'_, Rgb565>]) -> Ve
 
 /// The same scene through the explicit API, written out step by step:
 /// `look_at` + `Pipeline::perspective` with the lighting, every mesh into
-/// one frame's bins, then `render_3d` with 16-bit depth.
+/// one frame's bins, then `Triangles3d` with 16-bit depth.
 fn explicit(
     eye: [f32; 3],
     target: [f32; 3],
@@ -74,7 +75,11 @@ fn explicit(
     let mut fb = Framebuffer::new(W as u32, H, BG);
     let (mut band, mut depth) = (Band::<Rgb565, W, 8>::new(BG), DepthBand::<Depth16, W, 8>::new());
     Renderer::new(H, BG)
-        .render_3d(&bins, &mut band, &mut depth, DepthState::LESS_WRITE, PerspectiveCorrect, &mut fb)
+        .render(
+            Triangles3d::new(&bins, &mut depth, DepthState::LESS_WRITE, PerspectiveCorrect),
+            &mut band,
+            &mut fb,
+        )
         .unwrap();
     fb.pixels
 }

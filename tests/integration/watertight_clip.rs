@@ -21,6 +21,7 @@ use microraster::math::Mat4;
 use microraster::mesh::Mesh;
 use microraster::pipeline::{Pipeline, Shade};
 use microraster::raster3d::{Affine, ScreenTriangle};
+use microraster::render::Triangles3d;
 use microraster::{Band, ClipRect, Renderer, SubPoint};
 use std::f64::consts::TAU;
 
@@ -169,7 +170,7 @@ fn hits_3d(p: &Pipeline<f32, 4>, pos: &[[f32; 3]], idx: &[[u16; 3]]) -> (Vec<u32
     let mut band = Box::new(Band::<Gray8, { W as usize }, 16>::new(Gray8::new(0)));
     let mut depth = Box::new(DepthBand::<NoDepth, { W as usize }, 16>::new());
     Renderer::new(H as u32, Gray8::new(0))
-        .render_3d(&bins, &mut band, &mut depth, DepthState::DISABLED, Affine, &mut fb)
+        .render(Triangles3d::new(&bins, &mut depth, DepthState::DISABLED, Affine), &mut band, &mut fb)
         .unwrap();
     for (i, (&c, &px)) in h.iter().zip(&fb.pixels).enumerate() {
         assert_eq!(c > 0, px == Gray8::new(255), "pixel {i}: spans and renderer disagree");

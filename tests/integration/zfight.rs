@@ -1,5 +1,5 @@
 //! Z-fighting measured against theory, through the real pipeline
-//! ([`Pipeline::perspective`], `f32`) and [`Renderer::render_3d`], and
+//! ([`Pipeline::perspective`], `f32`) and `Triangles3d`, and
 //! through an f64 vertex stage that leaves only the rasterizer's depth
 //! arithmetic.
 //!
@@ -30,6 +30,7 @@ use microraster::math::Mat4;
 use microraster::mesh::{Mesh, bounding_sphere};
 use microraster::pipeline::{Pipeline, Shade};
 use microraster::raster3d::{Affine, ScreenTriangle, ScreenVertex};
+use microraster::render::Triangles3d;
 use microraster::{Band, Interpolate, Renderer, SubPoint};
 
 const W: usize = 80;
@@ -98,7 +99,7 @@ fn near_wins<F: DepthFormat>(stage: &Stage, z: f64, tilt: f64, delta: f64) -> bo
     let mut band = Box::new(Band::<Rgb565, W, H>::new(BG));
     let mut depth = Box::new(DepthBand::<F, W, H>::new());
     Renderer::new(H as u32, BG)
-        .render_3d(&bins, &mut band, &mut depth, DepthState::LESS_WRITE, Affine, &mut fb)
+        .render(Triangles3d::new(&bins, &mut depth, DepthState::LESS_WRITE, Affine), &mut band, &mut fb)
         .unwrap();
     assert!(!fb.pixels.contains(&BG), "a pixel is not covered by the quads");
     fb.pixels.iter().all(|&c| c == NEAR)

@@ -1,6 +1,6 @@
 //! The standard 3D scene on both cores of an RP2040 (Raspberry Pi Pico),
 //! sent to an ST7789 320 × 240 SPI panel. Each core runs the library's
-//! linked band loop (`Renderer::render_with_linked`) over its own two band
+//! linked band loop (`Renderer::render_linked`) over its own two band
 //! buffers, its own depth band and its own bins, and draws only its share
 //! of the bands: even bands on core 0, odd bands on core 1 (the other
 //! core's bands are cleared, not drawn). Its [`BandSink`] sends a band of
@@ -45,7 +45,7 @@ mod firmware {
     use embedded_hal::spi::SpiBus;
     use microraster::depth::{Depth16, DepthBand, DepthState};
     use microraster::raster3d::{PerspectiveCorrect, ScreenTriangle, draw_triangle};
-    use microraster::render::{BandSink, Lent};
+    use microraster::render::{BandSink, Lent, from_fn};
     use microraster_scenes::scenes3d::{BINS, Scene3d};
     use microraster::{Band, Renderer};
     use rp2040_hal::fugit::RateExtU32;
@@ -163,17 +163,17 @@ mod firmware {
             bins.clear();
             Scene3d.draw::<f32, Rgb565, S, BINS>(&pipeline, sink.frame as f32 * 0.05, bins).unwrap();
             renderer
-                .render_with_linked(bands, &mut sink, |view, y0, y1| {
-                    if (y0 as usize / BAND) % 2 != core {
-                        return;
+                .render_linked(from_fn(|view| {
+                    if (view.y0() as usize / BAND) % 2 != core {
+                        return Ok(());
                     }
-                    let rows = (y1 - y0) as usize;
+                    let rows = view.height();
                     depth.clear(rows);
                     let mut z = depth.rows_mut(rows);
                     for tri in bins.iter() {
                         draw_triangle(tri, view, &mut z, DepthState::LESS_WRITE, PerspectiveCorrect);
                     }
-                })
+                    Ok(()) }), bands, &mut sink)
                 .unwrap();
             sink.frame += 1;
         }

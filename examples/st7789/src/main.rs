@@ -73,6 +73,7 @@ mod firmware {
     use embedded_graphics_core::pixelcolor::{Rgb565, RgbColor};
     use embedded_hal_bus::spi::ExclusiveDevice;
     use microraster::Renderer;
+    use microraster::render::Triangles3d;
     use microraster::depth::{Depth16, DepthBand, DepthState};
     use microraster::raster3d::{PerspectiveCorrect, ScreenTriangle};
     use microraster_scenes::scenes3d::{BINS, Scene3d};
@@ -152,14 +153,7 @@ mod firmware {
         let pipeline = Scene3d::pipeline::<f32, S>(W as u32, H)?;
         bins.clear();
         Scene3d.draw::<f32, Rgb565, S, BINS>(&pipeline, angle, bins)?;
-        Renderer::new(H, BACKGROUND).render_3d(
-            bins,
-            band,
-            depth,
-            DepthState::LESS_WRITE,
-            PerspectiveCorrect,
-            display,
-        )
+        Renderer::new(H, BACKGROUND).render(Triangles3d::new(bins, depth, DepthState::LESS_WRITE, PerspectiveCorrect), band, display)
     }
 
     #[panic_handler]

@@ -1,6 +1,6 @@
 //! The ST7789 example's DMA build: the standard 3D scene on an ST7789
 //! 320 × 240 SPI panel, sent by DMA from an STM32F405 through microraster's
-//! async display link. `Renderer::render_3d_linked_async` draws band *k + 1*
+//! async display link. `Renderer::render_async` draws band *k + 1*
 //! while [`SpiPanel`] sends band *k*: the SPI write of embassy-stm32 starts
 //! its DMA transfer at the first poll and the renderer awaits it only when
 //! it needs that band buffer back.
@@ -42,7 +42,7 @@ mod firmware {
     use embedded_hal_bus::spi::ExclusiveDevice;
     use microraster::depth::{Depth16, DepthBand, DepthState};
     use microraster::raster3d::{PerspectiveCorrect, ScreenTriangle};
-    use microraster::render::SpiPanel;
+    use microraster::render::{SpiPanel, Triangles3d};
     use microraster_scenes::scenes3d::{BINS, Scene3d};
     use microraster::{Band, Renderer};
 
@@ -90,14 +90,7 @@ mod firmware {
         loop {
             BINS_BUF.clear();
             Scene3d.draw::<f32, Rgb565, S, BINS>(&pipeline, angle, BINS_BUF).unwrap();
-            let frame = renderer.render_3d_linked_async(
-                BINS_BUF,
-                BANDS,
-                DEPTH,
-                DepthState::LESS_WRITE,
-                PerspectiveCorrect,
-                &mut panel,
-            );
+            let frame = renderer.render_async(Triangles3d::new(BINS_BUF, DEPTH, DepthState::LESS_WRITE, PerspectiveCorrect), BANDS, &mut panel);
             block_on(frame).unwrap();
             angle += 0.05;
         }

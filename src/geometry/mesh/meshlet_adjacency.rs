@@ -66,7 +66,8 @@ impl State<'_> {
 
 /// Splits `scratch` into the [`State`] arrays and fills the adjacency.
 pub(super) fn split_scratch(scratch: &mut [u32], nv: usize, nt: usize) -> Result<State<'_>, Error> {
-    let scratch = scratch.get_mut(..meshlet_scratch_len(nv, nt)).ok_or(Error::BufferTooSmall)?;
+    let (needed, capacity) = (meshlet_scratch_len(nv, nt), scratch.len());
+    let scratch = scratch.get_mut(..needed).ok_or(Error::CapacityExceeded { needed, capacity })?;
     let (start, rest) = scratch.split_at_mut(nv + 1);
     let (live, rest) = rest.split_at_mut(nv);
     let (local, rest) = rest.split_at_mut(nv);

@@ -80,8 +80,13 @@ pub const fn meshlet_vertex_bound(triangles: usize) -> usize {
 ///
 /// # Errors
 ///
-/// The errors of [`Mesh::validate`]; [`Error::BufferTooSmall`] if a buffer is
-/// short (`meshlets` and `vertices` may then be partly written);
+/// The errors of [`Mesh::validate`]; [`Error::CapacityExceeded`] if a
+/// buffer is short, with the length that suffices as `needed`: exactly `t`
+/// for `triangles`, [`meshlet_scratch_len`](super::meshlet_scratch_len) for
+/// `scratch`, the exact cluster count of this mesh for `meshlets` (the
+/// clustering runs to the end to count them), and the bound
+/// [`meshlet_vertex_bound`]`(t)` for `vertices` (clustering cannot go on
+/// without its vertex lists); the buffers may then be partly written;
 /// [`Error::InvalidParameter`] if the mesh has more than `u32::MAX / 3`
 /// triangles; [`Error::CoordinateOutOfRange`] if a cluster's radius squared
 /// overflows `f32` (coordinates near 10¹⁹, which [`Mesh::validate`] accepts).
@@ -112,11 +117,12 @@ pub fn build_meshlets<'a>(
         return Err(Error::InvalidParameter);
     }
     if triangles.len() < nt {
-        return Err(Error::BufferTooSmall);
+        return Err(Error::CapacityExceeded { needed: nt, capacity: triangles.len() });
     }
     let mut st = split_scratch(scratch, nv, nt)?;
+    let vertex_bound = meshlet_vertex_bound(nt);
     fill_adjacency(&mut st, &mesh);
-    let mut out = Output { meshlets, vertices, triangles, clusters: 0, verts: 0, tris: 0 };
+    let mut out = Output { meshlets, vertices, triangles, clusters: 0, verts: 0, tris: 0, last: (0, 0) };
     let reach2 = reach2(&mesh);
     let mut cluster = Open::new(0, 0);
     // Centre of the last closed cluster: where the next one is sought.
@@ -139,12 +145,17 @@ pub fn build_meshlets<'a>(
             cluster = Open::new(out.verts, out.tris);
             continue;
         }
-        cluster.add(&mut st, &mut out, &mesh, t, tri)?;
+        cluster
+            .add(&mut st, &mut out, &mesh, t, tri)
+            .map_err(|_| Error::CapacityExceeded { needed: vertex_bound, capacity: out.vertices.len() })?;
     }
     if cluster.tris > 0 {
         out.close(&mut st, &mesh, &cluster)?;
     }
-    let Output { meshlets, vertices, triangles, clusters, verts, tris } = out;
+    let Output { meshlets, vertices, triangles, clusters, verts, tris, .. } = out;
+    if clusters > meshlets.len() {
+        return Err(Error::CapacityExceeded { needed: clusters, capacity: meshlets.len() });
+    }
     Ok(MeshletMesh {
         mesh,
         meshlets: &meshlets[..clusters],
@@ -161,19 +172,24 @@ struct Output<'a> {
     clusters: usize,
     verts: usize,
     tris: usize,
+    /// The vertex range of the last closed cluster (empty before the first).
+    last: (usize, usize),
 }
 
 impl Output<'_> {
     /// Writes the open cluster's [`Meshlet`] (sphere and cone) and clears its
-    /// vertices' local indices.
+    /// vertices' local indices. Past the end of `meshlets` it only counts
+    /// the cluster, so that the error can say how many are needed.
     fn close(&mut self, st: &mut State<'_>, mesh: &Mesh<'_>, c: &Open) -> Result<(), Error> {
-        let slot = self.meshlets.get_mut(self.clusters).ok_or(Error::BufferTooSmall)?;
+        self.clusters += 1;
+        self.last = (c.vo, c.vo + c.verts);
         let members = &self.vertices[c.vo..c.vo + c.verts];
         let mut points = [[0.0; 3]; MAX_MESHLET_VERTICES];
         for (p, &v) in points.iter_mut().zip(members) {
             *p = mesh.positions[usize::from(v)];
             st.local[usize::from(v)] = 0;
         }
+        let Some(slot) = self.meshlets.get_mut(self.clusters - 1) else { return Ok(()) };
         let corners = |t: &[u8; 3]| t.map(|k| points[usize::from(k)]);
         let tris = &self.triangles[c.to..c.to + c.tris];
         // Counts are at most 64 and 128 (`Open::fits`); offsets below 2³² (the
@@ -198,7 +214,6 @@ impl Output<'_> {
             }
         }
         *slot = m;
-        self.clusters += 1;
         Ok(())
     }
 }
@@ -335,11 +350,7 @@ fn neighbour(st: &State<'_>, mesh: &Mesh<'_>, members: &[u16], centre: [f32; 3])
 /// what is left), nearest `anchor` among equals; else the live triangle
 /// nearest `anchor`.
 fn seed(st: &State<'_>, mesh: &Mesh<'_>, out: &Output<'_>, anchor: [f32; 3]) -> Option<usize> {
-    let last = out.clusters.checked_sub(1).map(|c| out.meshlets[c]);
-    let members = match last {
-        Some(m) => &out.vertices[m.vertex_offset as usize..][..usize::from(m.vertex_count)],
-        None => &[],
-    };
+    let members = &out.vertices[out.last.0..out.last.1];
     let mut best: Option<(usize, u32, f32)> = None;
     for &v in members {
         for &t in st.live_tris(usize::from(v)) {

@@ -373,11 +373,14 @@ fn builder_reports_short_buffers_and_bad_meshes() {
     assert_eq!(run(mb, vb, nt, sl), Ok(clusters));
     // Exactly as many clusters as needed suffice.
     assert_eq!(run(clusters, vb, nt, sl), Ok(clusters));
-    for (m, v, t, s) in
-        [(clusters - 1, vb, nt, sl), (mb, 10, nt, sl), (mb, vb, nt - 1, sl), (mb, vb, nt, sl - 1)]
-    {
-        assert_eq!(run(m, v, t, s), Err(Error::BufferTooSmall), "{m} {v} {t} {s}");
-    }
+    // A short buffer says how much suffices; retrying with that succeeds.
+    let short = |needed, capacity| Err(Error::CapacityExceeded { needed, capacity });
+    assert_eq!(run(clusters - 1, vb, nt, sl), short(clusters, clusters - 1));
+    assert_eq!(run(1, vb, nt, sl), short(clusters, 1));
+    assert_eq!(run(0, vb, nt, sl), short(clusters, 0));
+    assert_eq!(run(mb, 10, nt, sl), short(vb, 10));
+    assert_eq!(run(mb, vb, nt - 1, sl), short(nt, nt - 1));
+    assert_eq!(run(mb, vb, nt, sl - 1), short(sl, sl - 1));
     let bad_idx = [[0, 1, 500]];
     let bad = Mesh { indices: &bad_idx, ..mesh };
     let (mut m, mut v, mut t, mut s) =

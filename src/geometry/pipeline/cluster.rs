@@ -168,7 +168,7 @@ fn eye_point(a: Vec4<f32>, b: Vec4<f32>, zr: Vec4<f32>, c: Vec4<f32>) -> Option<
 impl<T: Scalar, const S: u32> Pipeline<T, S> {
     /// Draws `mesh` placed by `model`, in material colour `color`, into the
     /// band being rendered by
-    /// [`Renderer::render_3d_direct`](crate::Renderer::render_3d_direct),
+    /// [`Direct3d`](crate::render::Direct3d),
     /// cluster by cluster (module docs): clusters outside the band, outside
     /// the view volume or (with [`Cull::Clockwise`], the default) facing away
     /// are skipped before any vertex work. [`Pipeline::rows`] is ignored: the

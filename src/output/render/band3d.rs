@@ -17,7 +17,7 @@ use crate::depth::{DepthFormat, DepthRows, DepthState};
 use crate::raster3d::{Interpolation, ScreenTriangle, draw_triangle};
 
 /// The band being drawn, handed to the closure of
-/// [`Renderer::render_3d_direct`](crate::Renderer::render_3d_direct): frame
+/// [`Direct3d`](crate::render::Direct3d): frame
 /// rows [`Band3d::rows`], colour interpolation `M`, depth format `F`. Its
 /// depth rows were cleared to far by the renderer.
 pub struct Band3d<'a, 'v, C, F: DepthFormat, M, const W: usize> {
@@ -60,14 +60,15 @@ where
     /// use microraster::depth::{Depth16, DepthBand, DepthState};
     /// use microraster::raster3d::Affine;
     /// use microraster::{Band, Renderer};
+    /// use microraster::render::Direct3d;
     /// let mut band = Band::<Rgb565, 8, 4>::new(Rgb565::BLACK);
     /// let mut depth = DepthBand::<Depth16, 8, 4>::new();
     /// # let mut display = embedded_graphics::mock_display::MockDisplay::new();
-    /// Renderer::new(8, Rgb565::BLACK).render_3d_direct(&mut band, &mut depth, DepthState::LESS_WRITE, Affine, &mut display, |b| {
+    /// Renderer::new(8, Rgb565::BLACK).render(Direct3d::new(&mut depth, DepthState::LESS_WRITE, Affine, |b| {
     ///     let (first, _) = b.rows();
     ///     assert_eq!(b.color_view().y0(), first);
     ///     Ok(())
-    /// })?;
+    /// }), &mut band, &mut display)?;
     /// # Ok::<(), microraster::RenderError<core::convert::Infallible>>(())
     /// ```
     pub fn color_view(&mut self) -> &mut BandView<'v, C, W> {
@@ -113,19 +114,18 @@ where
 /// use embedded_graphics::{pixelcolor::Rgb565, prelude::*};
 /// use microraster::depth::{DepthBand, DepthState, Depth16};
 /// use microraster::raster3d::Affine;
+/// use microraster::render::Direct3d;
 /// use microraster::{Band, Renderer};
 /// let mut display = MockDisplay::new();
 /// let mut band = Band::<Rgb565, 48, 8>::new(Rgb565::BLACK);
 /// let mut depth = DepthBand::<Depth16, 48, 8>::new();
 /// let hud = MonoTextStyle::new(&FONT_6X10, Rgb565::WHITE);
-/// Renderer::new(16, Rgb565::BLACK).render_3d_direct(
-///     &mut band, &mut depth, DepthState::LESS_WRITE, Affine, &mut display,
-///     |b| {
-///         // … the meshes first (`pipeline.draw_meshlets(b, …)`), then the HUD:
-///         Text::new("42", Point::new(1, 9), hud).draw(b)?;
-///         Ok(())
-///     },
-/// )?;
+/// let frame = Direct3d::new(&mut depth, DepthState::LESS_WRITE, Affine, |b| {
+///     // … the meshes first (`pipeline.draw_meshlets(b, …)`), then the HUD:
+///     Text::new("42", Point::new(1, 9), hud).draw(b)?;
+///     Ok(())
+/// });
+/// Renderer::new(16, Rgb565::BLACK).render(frame, &mut band, &mut display)?;
 /// // The same as the text drawn by e-g over the (empty) 3D frame:
 /// let mut expected = MockDisplay::new();
 /// expected.set_allow_overdraw(true);

@@ -33,12 +33,12 @@ use crate::{Error, Interpolate};
 /// let mut bands = [const { Band::<Gray8, 8, 4>::new(Gray8::new(0)) }; 2];
 /// let mut sink = DirtyBands::<(), 4>::new(());
 /// let r = Renderer::new(16, Gray8::new(0));
-/// r.render_with_linked(&mut bands, &mut sink, |_, _, _| {}).unwrap();
+/// r.render_linked((), &mut bands, &mut sink).unwrap();
 /// assert_eq!(sink.sent_bands(), 4); // first frame: everything
-/// r.render_with_linked(&mut bands, &mut sink, |_, _, _| {}).unwrap();
+/// r.render_linked((), &mut bands, &mut sink).unwrap();
 /// assert_eq!(sink.sent_bands(), 4); // nothing changed: nothing more sent
 /// sink.force_full_frame();
-/// r.render_with_linked(&mut bands, &mut sink, |_, _, _| {}).unwrap();
+/// r.render_linked((), &mut bands, &mut sink).unwrap();
 /// assert_eq!(sink.sent_bands(), 8);
 /// ```
 pub struct DirtyBands<S, const N: usize> {

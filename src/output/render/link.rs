@@ -17,11 +17,10 @@ use core::convert::Infallible;
 use embedded_graphics_core::prelude::{DrawTarget, Point, Size};
 use embedded_graphics_core::primitives::Rectangle;
 
+use super::Pass;
 use super::Renderer;
 use crate::band::{Band, BandView};
-use crate::depth::{DepthBand, DepthFormat, DepthState};
-use crate::raster3d::{Interpolation, ScreenTriangle};
-use crate::{Error, Interpolate, MAX_FRAME_DIM, Primitive, RenderError};
+use crate::{Error, Interpolate, MAX_FRAME_DIM, RenderError};
 
 /// A finished band lent to a [`BandSink`]: frame rows [`Lent::area`], pixels
 /// row by row in [`Lent::pixels`]. Only the renderer makes one; the sink
@@ -47,7 +46,7 @@ use crate::{Error, Interpolate, MAX_FRAME_DIM, Primitive, RenderError};
 /// }
 /// let mut bands = [const { microraster::Band::<Gray8, 8, 2>::new(Gray8::new(0)) }; 2];
 /// let mut log = Log { areas: [Rectangle::zero(); 3], frame: None };
-/// microraster::Renderer::new(5, Gray8::new(0)).render_linked::<_, 4, 8, 2, 2>(&[], &mut bands, &mut log).unwrap();
+/// microraster::Renderer::new(5, Gray8::new(0)).render_linked((), &mut bands, &mut log).unwrap();
 /// assert_eq!(log.areas[2], Rectangle::new(Point::new(0, 4), Size::new(8, 1))); // the last band: one row
 /// let f = log.frame.unwrap();
 /// assert_eq!((f.offset(), f.size(), f.band_rows(), f.bands()), (Point::zero(), Size::new(8, 5), 2, 3));
@@ -135,7 +134,7 @@ impl FrameBands {
 /// }
 /// let mut bands = [const { microraster::Band::<Gray8, 8, 2>::new(Gray8::new(0)) }; 2];
 /// let mut sink = Dma { wire: None, sent: 0 };
-/// microraster::Renderer::new(5, Gray8::new(0)).render_linked::<_, 4, 8, 2, 2>(&[], &mut bands, &mut sink).unwrap();
+/// microraster::Renderer::new(5, Gray8::new(0)).render_linked((), &mut bands, &mut sink).unwrap();
 /// assert_eq!(sink.sent, 8 * 5);
 /// ```
 pub trait BandSink<'a, C, const W: usize> {
@@ -175,7 +174,7 @@ pub trait BandSink<'a, C, const W: usize> {
 /// let mut bands = [const { Band::<BinaryColor, 4, 2>::new(BinaryColor::Off) }; 2];
 /// let mut display = MockDisplay::new();
 /// Renderer::new(4, BinaryColor::Off)
-///     .render_linked::<_, 4, 4, 2, 2>(&[], &mut bands, &mut Blocking(&mut display))
+///     .render_linked((), &mut bands, &mut Blocking(&mut display))
 ///     .unwrap();
 /// display.assert_pattern(&["....", "....", "....", "...."]);
 /// ```
@@ -203,12 +202,14 @@ impl<'a, C, const W: usize> BandSink<'a, C, W> for () {
 impl<C: Interpolate> Renderer<C> {
     /// [`Renderer::render`] over `N ≥ 2` bands into a [`BandSink`]: band
     /// *k + 1* renders while the sink still sends band *k*. Same pixels as
-    /// [`Renderer::render`] for every band height. One band is a compile
-    /// error (use [`Renderer::render`]).
+    /// [`Renderer::render`] for every pass and band height. One band is a
+    /// compile error (use [`Renderer::render`]). A 3D pass's depth band
+    /// serves every band: only the band being drawn uses it.
     ///
-    /// Errors as for [`Renderer::render`], plus [`RenderError::Input`] with
-    /// what [`BandSink::begin`] refuses, or [`Error::InvalidParameter`] if the
-    /// sink breaks its contract (keeps a band but `reclaim` returns `None`).
+    /// Errors as for [`Renderer::render`] (the sink's instead of the
+    /// target's), plus [`RenderError::Input`] with what [`BandSink::begin`]
+    /// refuses, or [`Error::InvalidParameter`] if the sink breaks its
+    /// contract (keeps a band but `reclaim` returns `None`).
     ///
     /// ```
     /// use embedded_graphics::mock_display::MockDisplay;
@@ -223,86 +224,18 @@ impl<C: Interpolate> Renderer<C> {
     /// r.render_linked(&scene, &mut bands, &mut Blocking(&mut display)).unwrap();
     /// display.assert_pattern(&["###.", "##..", "#...", "...."]);
     /// ```
-    pub fn render_linked<'a, S, const P: u32, const W: usize, const H: usize, const N: usize>(
+    pub fn render_linked<'a, P, S, const W: usize, const H: usize, const N: usize>(
         &self,
-        scene: &[Primitive<C, P>],
+        pass: P,
         bands: &'a mut [Band<C, W, H>; N],
         sink: &mut S,
     ) -> Result<(), RenderError<S::Error>>
     where
+        P: Pass<C, W, H>,
         S: BandSink<'a, C, W>,
     {
         let () = Pool::<N>::TWO_OR_MORE;
-        run(self, bands, sink, false, |view, y0, y1| self.draw_scene::<P, W, H>(scene, view, y0, y1))
-    }
-
-    /// [`Renderer::render_with`] over `N ≥ 2` bands into a [`BandSink`] (see
-    /// [`Renderer::render_linked`]): the custom pass for 3D
-    /// ([`Renderer::render_3d`]'s is `band3d` on a [`DepthBand`],
-    /// which only the band being drawn uses, so one depth band serves both).
-    ///
-    /// ```
-    /// use embedded_graphics::pixelcolor::Gray8;
-    /// use microraster::{Band, Renderer};
-    /// let mut bands = [const { Band::<Gray8, 8, 4>::new(Gray8::new(0)) }; 2];
-    /// let mut rows = 0;
-    /// Renderer::new(10, Gray8::new(0)).render_with_linked(&mut bands, &mut (), |view, y0, y1| {
-    ///     assert_eq!(view.height() as i32, y1 - y0);
-    ///     rows += view.height();
-    /// }).unwrap();
-    /// assert_eq!(rows, 10);
-    /// ```
-    pub fn render_with_linked<'a, S, const W: usize, const H: usize, const N: usize>(
-        &self,
-        bands: &'a mut [Band<C, W, H>; N],
-        sink: &mut S,
-        draw: impl FnMut(&mut BandView<'_, C, W>, i32, i32),
-    ) -> Result<(), RenderError<S::Error>>
-    where
-        S: BandSink<'a, C, W>,
-    {
-        let () = Pool::<N>::TWO_OR_MORE;
-        run(self, bands, sink, true, draw)
-    }
-
-    /// [`Renderer::render_3d`] over `N ≥ 2` bands into a [`BandSink`] (see
-    /// [`Renderer::render_linked`]). One depth band serves every band: only
-    /// the band being drawn uses it. Same pixels as [`Renderer::render_3d`].
-    ///
-    /// ```
-    /// use embedded_graphics::pixelcolor::Gray8;
-    /// use microraster::depth::{Depth16, DepthBand, DepthState};
-    /// use microraster::raster3d::Affine;
-    /// use microraster::render::DirtyBands;
-    /// use microraster::{Band, Renderer};
-    /// let mut bands = [const { Band::<Gray8, 8, 4>::new(Gray8::new(0)) }; 2];
-    /// let mut depth = DepthBand::<Depth16, 8, 4>::zeroed();
-    /// let mut sink = DirtyBands::<(), 2>::new(());
-    /// Renderer::new(8, Gray8::new(0))
-    ///     .render_3d_linked::<_, _, _, 4, 8, 4, 2>(&[], &mut bands, &mut depth, DepthState::LESS_WRITE, Affine, &mut sink)
-    ///     .unwrap();
-    /// assert_eq!(sink.sent_bands(), 2);
-    /// ```
-    #[allow(clippy::too_many_arguments)]
-    pub fn render_3d_linked<'a, S, F, M, const P: u32, const W: usize, const H: usize, const N: usize>(
-        &self,
-        triangles: &[ScreenTriangle<P>],
-        bands: &'a mut [Band<C, W, H>; N],
-        depth: &mut DepthBand<F, W, H>,
-        state: DepthState,
-        interp: M,
-        sink: &mut S,
-    ) -> Result<(), RenderError<S::Error>>
-    where
-        S: BandSink<'a, C, W>,
-        F: DepthFormat,
-        M: Interpolation,
-    {
-        let _ = interp; // a value, so the call needs no turbofish
-        let () = Pool::<N>::TWO_OR_MORE;
-        run(self, bands, sink, true, |view, y0, y1| {
-            super::band3d::<C, F, M, W, H>(view, depth, state, y0, y1).draw_all(triangles)
-        })
+        run(self, pass, bands, sink)
     }
 
     /// The frame's bands, if the renderer's size and offset are valid for
@@ -329,23 +262,22 @@ impl<const N: usize> Pool<N> {
         assert!(N >= 2, "the linked band loop needs at least two bands (one: Renderer::render)");
 }
 
-/// The band loop over a pool of bands (one or more) into `sink`; with
-/// `clear` false the views are not cleared and `draw` must write every
-/// pixel of them.
-pub(crate) fn run<'a, C, S, const W: usize, const H: usize>(
+/// The band loop over a pool of bands (one or more) into `sink`.
+pub(crate) fn run<'a, C, P, S, const W: usize, const H: usize>(
     renderer: &Renderer<C>,
+    mut pass: P,
     bands: &'a mut [Band<C, W, H>],
     sink: &mut S,
-    clear: bool,
-    mut draw: impl FnMut(&mut BandView<'_, C, W>, i32, i32),
 ) -> Result<(), RenderError<S::Error>>
 where
     C: Interpolate,
+    P: Pass<C, W, H>,
     S: BandSink<'a, C, W>,
 {
     let frame = renderer.frame_bands::<W, H>()?;
+    pass.check(renderer)?;
     sink.begin(&frame)?;
-    let background = clear.then_some(renderer.background);
+    let mut pass = Guarded::new(pass);
     let height = frame.size.height as i32;
     let mut fresh = bands.iter_mut();
     // A band the sink handed back from `submit`: the next one to draw into.
@@ -361,21 +293,65 @@ where
             }
         };
         let used = (height - y0).min(H as i32);
-        let y1 = y0 + used;
-        draw(&mut BandView::from_rows(&mut rows[..used as usize], y0, background), y0, y1);
+        pass.draw(&mut rows[..used as usize], y0, renderer);
         let area = Rectangle::new(frame.offset + Point::new(0, y0), Size::new(W as u32, used as u32));
         let band = Lent { rows, used: used as usize, area, index };
         match sink.submit(band).map_err(RenderError::Target)? {
             Some(back) => spare = Some(back.rows),
             None => in_flight += 1,
         }
-        (y0, index) = (y1, index + 1);
+        (y0, index) = (y0 + used, index + 1);
     }
     // Every transfer finishes before the frame returns.
     for _ in 0..in_flight {
         reclaim(sink)?;
     }
-    Ok(())
+    pass.finish()
+}
+
+/// A pass that stops drawing at its first error: later bands are cleared
+/// to the background, and the error is the frame's result.
+pub(crate) struct Guarded<P> {
+    pass: P,
+    /// The first error, with the frame row of the band it came from.
+    failed: Option<(i32, Error)>,
+}
+
+impl<P> Guarded<P> {
+    pub(crate) fn new(pass: P) -> Self {
+        Guarded { pass, failed: None }
+    }
+
+    /// Draws rows `rows` at frame row `y0`, cleared first if the pass asks
+    /// (or after an error, when the pass no longer writes them).
+    pub(crate) fn draw<C: Interpolate, const W: usize, const H: usize>(
+        &mut self,
+        rows: &mut [[C; W]],
+        y0: i32,
+        renderer: &Renderer<C>,
+    ) where
+        P: Pass<C, W, H>,
+    {
+        let clear = P::CLEARS || self.failed.is_some();
+        let mut view = BandView::from_rows(rows, y0, clear.then_some(renderer.background()));
+        if self.failed.is_none() {
+            // The failing band goes out as drawn (a pass that does not
+            // clear writes every pixel even when it fails).
+            if let Err(e) = self.pass.draw(&mut view, renderer) {
+                self.failed = Some((y0, e));
+            }
+        }
+    }
+
+    /// The first error and the frame row of its band, if any.
+    pub(crate) fn into_failure(self) -> Option<(i32, Error)> {
+        self.failed
+    }
+
+    /// The frame's result.
+    pub(crate) fn finish<E>(self) -> Result<(), RenderError<E>> {
+        self.into_failure().map_or(Ok(()), |(_, e)| Err(RenderError::Input(e)))
+    }
 }
 
 /// A band back from the sink, or the typed error of a sink that kept one

@@ -20,11 +20,11 @@ use core::task::Poll;
 use embedded_graphics_core::prelude::{Point, Size};
 use embedded_graphics_core::primitives::Rectangle;
 
+use super::Pass;
+use super::link::Guarded;
 use super::{FrameBands, Renderer};
-use crate::band::{Band, BandView};
-use crate::depth::{DepthBand, DepthFormat, DepthState};
-use crate::raster3d::{Interpolation, ScreenTriangle};
-use crate::{Error, Interpolate, Primitive, RenderError};
+use crate::band::Band;
+use crate::{Error, Interpolate, RenderError};
 
 /// Where finished bands go, asynchronously: a display driver whose
 /// transfer of `pixels` may still run when the next band is drawn.
@@ -50,7 +50,7 @@ use crate::{Error, Interpolate, Primitive, RenderError};
 /// let mut bands = [const { Band::<Gray8, 8, 2>::new(Gray8::new(0)) }; 2];
 /// let mut sink = Count(0);
 /// let renderer = Renderer::new(5, Gray8::new(0));
-/// let frame = renderer.render_linked_async::<_, 4, 8, 2>(&[], &mut bands, &mut sink);
+/// let frame = renderer.render_async((), &mut bands, &mut sink);
 /// let Some(result) = microraster::render::poll_ready(frame) else { unreachable!() };
 /// assert_eq!((result, sink.0), (Ok(()), 8 * 5));
 /// ```
@@ -75,27 +75,12 @@ pub trait AsyncBandSink<C> {
 impl<C: Interpolate> Renderer<C> {
     /// [`Renderer::render_linked`] into an [`AsyncBandSink`] over two bands:
     /// band *k + 1* is drawn while band *k*'s transfer is pending. Same
-    /// pixels as [`Renderer::render`]. Errors as for
-    /// [`Renderer::render_linked`]. (Example: [`AsyncBandSink`].)
-    pub async fn render_linked_async<S, const P: u32, const W: usize, const H: usize>(
-        &self,
-        scene: &[Primitive<C, P>],
-        bands: &mut [Band<C, W, H>; 2],
-        sink: &mut S,
-    ) -> Result<(), RenderError<S::Error>>
-    where
-        S: AsyncBandSink<C>,
-    {
-        run_async(self, bands, sink, false, |view, y0, y1| self.draw_scene::<P, W, H>(scene, view, y0, y1))
-            .await
-    }
-
-    /// [`Renderer::render_with_linked`] into an [`AsyncBandSink`] over two
-    /// bands (see [`Renderer::render_linked_async`]).
+    /// pixels as [`Renderer::render`] for every pass. Errors as for
+    /// [`Renderer::render_linked`].
     ///
     /// ```
     /// use embedded_graphics::pixelcolor::Gray8;
-    /// use microraster::render::poll_ready;
+    /// use microraster::render::{from_fn, poll_ready};
     /// use microraster::{Band, Renderer};
     /// # struct Null;
     /// # impl microraster::render::AsyncBandSink<Gray8> for Null {
@@ -105,70 +90,48 @@ impl<C: Interpolate> Renderer<C> {
     /// let mut bands = [const { Band::<Gray8, 8, 4>::new(Gray8::new(0)) }; 2];
     /// let mut rows = 0;
     /// let (renderer, mut sink) = (Renderer::new(10, Gray8::new(0)), Null);
-    /// let frame = renderer.render_with_linked_async(&mut bands, &mut sink, |view, _, _| {
+    /// let pass = from_fn(|view| {
     ///     rows += view.height();
+    ///     Ok(())
     /// });
-    /// assert_eq!(poll_ready(frame), Some(Ok(())));
+    /// assert_eq!(poll_ready(renderer.render_async(pass, &mut bands, &mut sink)), Some(Ok(())));
     /// assert_eq!(rows, 10);
     /// ```
-    pub async fn render_with_linked_async<S, const W: usize, const H: usize>(
+    pub async fn render_async<P, S, const W: usize, const H: usize>(
         &self,
+        pass: P,
         bands: &mut [Band<C, W, H>; 2],
-        sink: &mut S,
-        draw: impl FnMut(&mut BandView<'_, C, W>, i32, i32),
-    ) -> Result<(), RenderError<S::Error>>
-    where
-        S: AsyncBandSink<C>,
-    {
-        run_async(self, bands, sink, true, draw).await
-    }
-
-    /// [`Renderer::render_3d_linked`] into an [`AsyncBandSink`] over two
-    /// bands (see [`Renderer::render_linked_async`]); one depth band serves
-    /// both. Same pixels as [`Renderer::render_3d`].
-    #[allow(clippy::too_many_arguments)]
-    pub async fn render_3d_linked_async<S, F, M, const P: u32, const W: usize, const H: usize>(
-        &self,
-        triangles: &[ScreenTriangle<P>],
-        bands: &mut [Band<C, W, H>; 2],
-        depth: &mut DepthBand<F, W, H>,
-        state: DepthState,
-        interp: M,
         sink: &mut S,
     ) -> Result<(), RenderError<S::Error>>
     where
+        P: Pass<C, W, H>,
         S: AsyncBandSink<C>,
-        F: DepthFormat,
-        M: Interpolation,
     {
-        let _ = interp; // a value, so the call needs no turbofish
-        run_async(self, bands, sink, true, |view, y0, y1| {
-            super::band3d::<C, F, M, W, H>(view, depth, state, y0, y1).draw_all(triangles)
-        })
-        .await
+        run_async(self, pass, bands, sink).await
     }
 }
 
 /// The two-band loop: draw band 0; then for each band, start its transfer,
 /// draw the next band into the other buffer, await the transfer, swap.
-async fn run_async<C, S, const W: usize, const H: usize>(
+async fn run_async<C, P, S, const W: usize, const H: usize>(
     renderer: &Renderer<C>,
+    mut pass: P,
     bands: &mut [Band<C, W, H>; 2],
     sink: &mut S,
-    clear: bool,
-    mut draw: impl FnMut(&mut BandView<'_, C, W>, i32, i32),
 ) -> Result<(), RenderError<S::Error>>
 where
     C: Interpolate,
+    P: Pass<C, W, H>,
     S: AsyncBandSink<C>,
 {
     let frame = renderer.frame_bands::<W, H>()?;
+    pass.check(renderer)?;
     sink.begin(&frame)?;
-    let background = clear.then_some(renderer.background);
+    let mut pass = Guarded::new(pass);
     let height = frame.size().height as i32;
     let mut band = |rows: &mut [[C; W]], y0: i32| {
         let used = (height - y0).min(H as i32);
-        draw(&mut BandView::from_rows(&mut rows[..used as usize], y0, background), y0, y0 + used);
+        pass.draw(&mut rows[..used as usize], y0, renderer);
         used
     };
     let [a, b] = bands;
@@ -179,13 +142,15 @@ where
         let send = sink.send(area, now[..used as usize].as_flattened());
         let y1 = y0 + used;
         if y1 >= height {
-            return send.await.map_err(RenderError::Target);
+            send.await.map_err(RenderError::Target)?;
+            break;
         }
         let mut next_used = 0;
         overlap(send, || next_used = band(next, y1)).await.map_err(RenderError::Target)?;
         core::mem::swap(&mut now, &mut next);
         (y0, used) = (y1, next_used);
     }
+    pass.finish()
 }
 
 /// Polls `transfer` once (starting it), runs `work`, then awaits `transfer`.

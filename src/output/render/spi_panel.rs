@@ -68,7 +68,7 @@ pub enum SpiPanelError<S, P> {
 /// let mut wire = [0u8; 2 * 8 * 4];
 /// let mut panel = SpiPanel::new(Spi(0), Pin, &mut wire);
 /// let renderer = Renderer::new(8, Rgb565::new(0, 0, 0));
-/// let frame = renderer.render_linked_async::<_, 4, 8, 4>(&[], &mut bands, &mut panel);
+/// let frame = renderer.render_async((), &mut bands, &mut panel);
 /// assert_eq!(poll_ready(frame), Some(Ok(())));
 /// // Window commands (1 + 4 bytes, twice, and 1), then 8 × 8 pixels of 2 bytes.
 /// assert_eq!(panel.release().0.0, 11 + 128);

@@ -135,12 +135,13 @@
 //!
 //! # Cost when unused
 //! Everything here is generic and reached only through
-//! [`Renderer::render_antialiased`](crate::Renderer::render_antialiased) and
-//! [`Renderer::render_3d_antialiased`](crate::Renderer::render_3d_antialiased):
+//! [`Antialiased`](crate::aa::Antialiased) and
+//! [`Antialiased3d`](crate::aa::Antialiased3d):
 //! a program that does not call them compiles none of it.
 
 pub mod msaa;
 mod render;
+pub use render::{Antialiased, Antialiased3d, Supersampled};
 pub mod resolve;
 
 use crate::raster3d::ScreenTriangle;

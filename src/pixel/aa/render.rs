@@ -1,6 +1,8 @@
-//! The anti-aliased band loop: [`Renderer::render_antialiased`] (2D) and
-//! [`Renderer::render_3d_antialiased`] (3D), built on
-//! [`Renderer::render_with`].
+//! The anti-aliased passes: [`Antialiased`] (2D), [`Antialiased3d`] (3D)
+//! and [`Supersampled`] (any pass at sample resolution), each drawn into a
+//! sample band and resolved into the band the renderer sends.
+
+use core::marker::PhantomData;
 
 use super::msaa::{self, PixelShader};
 use super::resolve::resolve;
@@ -10,238 +12,284 @@ use crate::blit::Blitter;
 use crate::depth::{DepthBand, DepthFormat, DepthState, NoDepth};
 use crate::edge::{Cull, Span};
 use crate::raster3d::{Affine, Interpolation, ScreenTriangle, ScreenVertex, draw_triangle};
-use crate::{ClipRect, Interpolate, Primitive, RenderError, Renderer, Shading, Triangle};
-use embedded_graphics_core::prelude::DrawTarget;
+use crate::render::Pass;
+use crate::{ClipRect, Error, Interpolate, Primitive, Renderer, Shading, Triangle};
 
-impl<C: Interpolate> Renderer<C> {
-    /// Renders `scene` anti-aliased as `mode` says ([`Ssaa`](super::Ssaa) or
-    /// [`Msaa`](super::Msaa), with `N × N` samples per pixel, or
-    /// [`MsaaSparse`](super::MsaaSparse) with `N`): each band is drawn into
-    /// `samples` (`SW = W·COLS` by `SH = H·N`, [`Antialias::COLS`] being `N`
-    /// or 1 for sparse patterns; checked at compile time), box-filtered into
-    /// `out` and sent as [`Renderer::render`] sends
-    /// it. Triangles are anti-aliased; lines stay aliased (each lit pixel fills
-    /// its whole block). The image does not depend on `H`. See [`crate::aa`]
-    /// for the accuracy and memory figures.
-    ///
-    /// Errors as for [`Renderer::render`], plus [`Error::InvalidFrameSize`]
-    /// if the height times `N` exceeds [`MAX_FRAME_DIM`] and
-    /// [`Error::CoordinateOutOfRange`] if a vertex times `N` leaves the
-    /// [`SubPoint`](crate::SubPoint) range (both before anything is sent).
-    ///
-    /// ```
-    /// use embedded_graphics::mock_display::MockDisplay;
-    /// use embedded_graphics::pixelcolor::Gray8;
-    /// use embedded_graphics::prelude::*;
-    /// use microraster::aa::Ssaa;
-    /// use microraster::{Band, Primitive, Renderer, SubPoint, Triangle};
-    /// let p = |x, y| SubPoint::<4>::from_pixels(x, y).unwrap();
-    /// // The diagonal of a 2 × 2 square: pixels it crosses are half covered.
-    /// let scene = [Primitive::from(Triangle::flat([p(0, 0), p(2, 0), p(0, 2)], Gray8::WHITE))];
-    /// let mut samples = Band::<Gray8, 8, 4>::new(Gray8::BLACK); // 4 × 4 samples a pixel
-    /// let mut out = Band::<Gray8, 2, 1>::new(Gray8::BLACK);
-    /// let mut display = MockDisplay::new();
-    /// Renderer::new(2, Gray8::BLACK).render_antialiased(Ssaa::<4>, &scene, &mut samples, &mut out, &mut display)?;
-    /// // 6 of 16 samples of the crossed pixels: round(255·6/16) = 96.
-    /// assert_eq!(display.get_pixel(Point::new(0, 0)), Some(Gray8::WHITE));
-    /// assert_eq!(display.get_pixel(Point::new(1, 0)), Some(Gray8::new(96)));
-    /// assert_eq!(display.get_pixel(Point::new(0, 1)), Some(Gray8::new(96)));
-    /// assert_eq!(display.get_pixel(Point::new(1, 1)), Some(Gray8::BLACK));
-    /// # Ok::<(), microraster::RenderError<core::convert::Infallible>>(())
-    /// ```
-    ///
-    /// [`Error::InvalidFrameSize`]: crate::Error::InvalidFrameSize
-    /// [`Error::CoordinateOutOfRange`]: crate::Error::CoordinateOutOfRange
-    /// [`MAX_FRAME_DIM`]: crate::MAX_FRAME_DIM
-    pub fn render_antialiased<
-        A,
-        D,
-        const S: u32,
-        const W: usize,
-        const H: usize,
-        const SW: usize,
-        const SH: usize,
-    >(
-        &self,
-        mode: A,
-        scene: &[Primitive<C, S>],
-        samples: &mut Band<C, SW, SH>,
-        out: &mut Band<C, W, H>,
-        target: &mut D,
-    ) -> Result<(), RenderError<D::Error>>
-    where
-        A: Antialias,
-        D: DrawTarget<Color = C>,
-    {
+/// A 2D scene anti-aliased as `mode` says ([`Ssaa`](super::Ssaa) or
+/// [`Msaa`](super::Msaa), with `N × N` samples per pixel, or
+/// [`MsaaSparse`](super::MsaaSparse) with `N`): a [`Pass`] whose bands are
+/// drawn into `samples` (`SW = W·COLS` by `SH = H·N` for `W × H` bands,
+/// [`Antialias::COLS`] being `N` or 1 for sparse patterns; checked at
+/// compile time), box-filtered into the band and sent. Triangles are
+/// anti-aliased; lines stay aliased (each lit pixel fills its whole block).
+/// The image does not depend on `H`. See [`crate::aa`] for the accuracy and
+/// memory figures.
+///
+/// Errors (from [`Pass::check`], before anything is sent):
+/// [`Error::InvalidFrameSize`] if the height times `N` exceeds
+/// [`MAX_FRAME_DIM`]; [`Error::CoordinateOutOfRange`] if a vertex times `N`
+/// leaves the [`SubPoint`](crate::SubPoint) range.
+///
+/// ```
+/// use embedded_graphics::mock_display::MockDisplay;
+/// use embedded_graphics::pixelcolor::Gray8;
+/// use embedded_graphics::prelude::*;
+/// use microraster::aa::{Antialiased, Ssaa};
+/// use microraster::{Band, Primitive, Renderer, SubPoint, Triangle};
+/// let p = |x, y| SubPoint::<4>::from_pixels(x, y).unwrap();
+/// // The diagonal of a 2 × 2 square: pixels it crosses are half covered.
+/// let scene = [Primitive::from(Triangle::flat([p(0, 0), p(2, 0), p(0, 2)], Gray8::WHITE))];
+/// let mut samples = Band::<Gray8, 8, 4>::new(Gray8::BLACK); // 4 × 4 samples a pixel
+/// let mut out = Band::<Gray8, 2, 1>::new(Gray8::BLACK);
+/// let mut display = MockDisplay::new();
+/// let frame = Antialiased::new(Ssaa::<4>, &scene, &mut samples);
+/// Renderer::new(2, Gray8::BLACK).render(frame, &mut out, &mut display)?;
+/// // 6 of 16 samples of the crossed pixels: round(255·6/16) = 96.
+/// assert_eq!(display.get_pixel(Point::new(0, 0)), Some(Gray8::WHITE));
+/// assert_eq!(display.get_pixel(Point::new(1, 0)), Some(Gray8::new(96)));
+/// assert_eq!(display.get_pixel(Point::new(0, 1)), Some(Gray8::new(96)));
+/// assert_eq!(display.get_pixel(Point::new(1, 1)), Some(Gray8::BLACK));
+/// # Ok::<(), microraster::RenderError<core::convert::Infallible>>(())
+/// ```
+///
+/// [`Error::InvalidFrameSize`]: crate::Error::InvalidFrameSize
+/// [`Error::CoordinateOutOfRange`]: crate::Error::CoordinateOutOfRange
+/// [`MAX_FRAME_DIM`]: crate::MAX_FRAME_DIM
+pub struct Antialiased<'a, A, C, const S: u32, const SW: usize, const SH: usize> {
+    scene: &'a [Primitive<C, S>],
+    samples: &'a mut Band<C, SW, SH>,
+    _a: PhantomData<A>,
+}
+
+impl<'a, A: Antialias, C: Interpolate, const S: u32, const SW: usize, const SH: usize>
+    Antialiased<'a, A, C, S, SW, SH>
+{
+    /// `scene` anti-aliased as `mode` says, through the sample band `samples`.
+    pub fn new(mode: A, scene: &'a [Primitive<C, S>], samples: &'a mut Band<C, SW, SH>) -> Self {
+        let _ = mode; // a value, so the call needs no turbofish
+        Antialiased { scene, samples, _a: PhantomData }
+    }
+}
+
+impl<A, C, const S: u32, const W: usize, const H: usize, const SW: usize, const SH: usize> Pass<C, W, H>
+    for Antialiased<'_, A, C, S, SW, SH>
+where
+    A: Antialias,
+    C: Interpolate,
+{
+    fn check(&mut self, renderer: &Renderer<C>) -> Result<(), Error> {
         let () = Grid::<A, W, H, SW, SH>::CHECK;
-        let _ = mode;
-        check_height(self.height(), A::N)?;
-        for prim in scene {
+        check_height(renderer.height(), A::N)?;
+        for prim in self.scene {
             if let Primitive::Triangle(t) = prim {
                 scale_vertices(t.vertices(), A::N)?;
             }
         }
-        let cull = self.cull();
-        self.render_with(out, target, |view, y0, y1| {
-            let mut sv = sample_view::<A, C, SW, SH>(samples, self.background(), y0, y1);
-            let (sy0, sy1) = (sv.y0(), sv.y0() + sv.height() as i32);
-            for prim in scene {
-                match prim {
-                    Primitive::Triangle(t) => draw_2d::<A, C, S, SW>(t, cull, &mut sv, sy0, sy1),
-                    Primitive::Line(l) => {
-                        let (lo, hi) = l.rows();
-                        if lo < y1 && hi >= y0 {
-                            l.draw(&mut Blocks::<A, C, SW> { view: &mut sv, _a: Default::default() });
-                        }
+        Ok(())
+    }
+
+    fn draw(&mut self, view: &mut BandView<'_, C, W>, renderer: &Renderer<C>) -> Result<(), Error> {
+        let (y0, y1) = (view.y0(), view.y0() + view.height() as i32);
+        let mut sv = sample_view::<A, C, SW, SH>(self.samples, renderer.background(), y0, y1);
+        let (sy0, sy1) = (sv.y0(), sv.y0() + sv.height() as i32);
+        for prim in self.scene {
+            match prim {
+                Primitive::Triangle(t) => draw_2d::<A, C, S, SW>(t, renderer.cull(), &mut sv, sy0, sy1),
+                Primitive::Line(l) => {
+                    let (lo, hi) = l.rows();
+                    if lo < y1 && hi >= y0 {
+                        l.draw(&mut Blocks::<A, C, SW> { view: &mut sv, _a: Default::default() });
                     }
                 }
             }
-            resolve::<A, C, W, SW>(&mut sv, view);
-        })
+        }
+        resolve::<A, C, W, SW>(&mut sv, view);
+        Ok(())
     }
+}
 
-    /// Supersampling of any custom band pass ([`Ssaa<N>`](super::Ssaa)):
-    /// like [`Renderer::render_with`], but `draw(samples, sy0, sy1)` draws
-    /// sample rows `sy0..sy1` (frame rows × `N`) of a sample band cleared to
-    /// the background, which is then box-filtered into `out` and sent. The
-    /// pass draws geometry scaled by `N` ([`ScreenTriangle::scaled`],
-    /// [`FragTriangle::scaled`](crate::fragment::FragTriangle::scaled)), with
-    /// a depth band at sample resolution if it tests depth: the fragment
-    /// stage ([`crate::fragment`]) anti-aliased.
-    ///
-    /// Errors: [`Error::InvalidFrameSize`](crate::Error::InvalidFrameSize) if `height · N` exceeds
-    /// [`MAX_FRAME_DIM`](crate::MAX_FRAME_DIM); the target's errors.
-    pub fn render_supersampled_with<
-        D,
-        const N: usize,
-        const W: usize,
-        const H: usize,
-        const SW: usize,
-        const SH: usize,
-    >(
-        &self,
-        mode: super::Ssaa<N>,
-        samples: &mut Band<C, SW, SH>,
-        out: &mut Band<C, W, H>,
-        target: &mut D,
-        mut draw: impl FnMut(&mut BandView<'_, C, SW>, i32, i32),
-    ) -> Result<(), RenderError<D::Error>>
-    where
-        D: DrawTarget<Color = C>,
-    {
+/// Supersampling of any custom pass ([`Ssaa<N>`](super::Ssaa)): `draw`
+/// draws each band's sample rows (frame rows × `N`, the view's
+/// [`y0`](BandView::y0) and [`height`](BandView::height)) into a sample band
+/// cleared to the background, which is then box-filtered into the band and
+/// sent. The pass draws geometry scaled by `N` ([`ScreenTriangle::scaled`],
+/// [`FragTriangle::scaled`](crate::fragment::FragTriangle::scaled)), with a
+/// depth band at sample resolution if it tests depth: the fragment stage
+/// ([`crate::fragment`]) anti-aliased.
+///
+/// Errors: [`Error::InvalidFrameSize`](crate::Error::InvalidFrameSize) if
+/// `height · N` exceeds [`MAX_FRAME_DIM`](crate::MAX_FRAME_DIM) (before
+/// anything is sent); the first error `draw` returns.
+///
+/// ```
+/// use embedded_graphics::mock_display::MockDisplay;
+/// use embedded_graphics::pixelcolor::Gray8;
+/// use embedded_graphics::prelude::*;
+/// use microraster::aa::{Ssaa, Supersampled};
+/// use microraster::blit::Blitter;
+/// use microraster::{Band, Renderer};
+/// let mut samples = Band::<Gray8, 4, 2>::new(Gray8::BLACK); // 2 × 2 samples a pixel
+/// let mut out = Band::<Gray8, 2, 1>::new(Gray8::BLACK);
+/// let mut display = MockDisplay::new();
+/// // One white sample in the top-left of pixel (0, 0): a quarter grey.
+/// let frame = Supersampled::new(Ssaa::<2>, &mut samples, |sv| Ok(sv.set_pixel(0, 0, Gray8::WHITE)));
+/// Renderer::new(2, Gray8::BLACK).render(frame, &mut out, &mut display)?;
+/// assert_eq!(display.get_pixel(Point::new(0, 0)), Some(Gray8::new(64)));
+/// assert_eq!(display.get_pixel(Point::new(1, 1)), Some(Gray8::BLACK));
+/// # Ok::<(), microraster::RenderError<core::convert::Infallible>>(())
+/// ```
+pub struct Supersampled<'a, C, G, const N: usize, const SW: usize, const SH: usize> {
+    samples: &'a mut Band<C, SW, SH>,
+    draw: G,
+}
+
+impl<'a, C, G, const N: usize, const SW: usize, const SH: usize> Supersampled<'a, C, G, N, SW, SH>
+where
+    C: Interpolate,
+    G: FnMut(&mut BandView<'_, C, SW>) -> Result<(), Error>,
+{
+    /// `draw` at `N × N` samples a pixel, through the sample band `samples`.
+    pub fn new(mode: super::Ssaa<N>, samples: &'a mut Band<C, SW, SH>, draw: G) -> Self {
+        let _ = mode; // a value, so the call needs no turbofish
+        Supersampled { samples, draw }
+    }
+}
+
+impl<C, G, const N: usize, const W: usize, const H: usize, const SW: usize, const SH: usize> Pass<C, W, H>
+    for Supersampled<'_, C, G, N, SW, SH>
+where
+    C: Interpolate,
+    G: FnMut(&mut BandView<'_, C, SW>) -> Result<(), Error>,
+{
+    fn check(&mut self, renderer: &Renderer<C>) -> Result<(), Error> {
         let () = Grid::<super::Ssaa<N>, W, H, SW, SH>::CHECK;
-        let _ = mode;
-        check_height(self.height(), N)?;
-        self.render_with(out, target, |view, y0, y1| {
-            let mut sv = sample_view::<super::Ssaa<N>, C, SW, SH>(samples, self.background(), y0, y1);
-            let (sy0, sy1) = (sv.y0(), sv.y0() + sv.height() as i32);
-            draw(&mut sv, sy0, sy1);
-            resolve::<super::Ssaa<N>, C, W, SW>(&mut sv, view);
-        })
+        check_height(renderer.height(), N)
     }
 
-    /// Renders screen triangles from the vertex stage anti-aliased as `mode`
-    /// says, with colour interpolation `M` ([`Affine`] or
-    /// [`PerspectiveCorrect`](crate::raster3d::PerspectiveCorrect)) and the
-    /// depth buffer `depth` at *sample* resolution (`SW × SH`, cleared to far
-    /// at each band; [`NoDepth`] for none). Depth is
-    /// tested per sample in every mode; [`Msaa`](super::Msaa) and
-    /// [`MsaaSparse`](super::MsaaSparse) evaluate colour once per pixel
-    /// ([`super::msaa`]). The renderer's cull mode does
-    /// not apply: the vertex stage culls.
-    ///
-    /// Errors as for [`Renderer::render_antialiased`].
-    ///
-    /// ```
-    /// use embedded_graphics::mock_display::MockDisplay;
-    /// use embedded_graphics::pixelcolor::Gray8;
-    /// use embedded_graphics::prelude::*;
-    /// use microraster::aa::Msaa;
-    /// use microraster::depth::{Depth16, DepthBand, DepthState};
-    /// use microraster::raster3d::{Affine, ScreenTriangle, ScreenVertex};
-    /// use microraster::{Band, Renderer, SubPoint};
-    /// let v = |x, y| ScreenVertex {
-    ///     pos: SubPoint::<4>::from_pixels(x, y).unwrap(),
-    ///     color: [255, 0, 0],
-    ///     inv_w: 1 << 30,
-    ///     ..Default::default()
-    /// };
-    /// let tris = [ScreenTriangle { v: [v(0, 0), v(2, 0), v(0, 2)], flat: true }];
-    /// let mut samples = Band::<Gray8, 4, 4>::new(Gray8::BLACK); // 2 × 2 samples a pixel
-    /// let mut depth = DepthBand::<Depth16, 4, 4>::new();
-    /// let mut out = Band::<Gray8, 2, 2>::new(Gray8::BLACK);
-    /// let mut display = MockDisplay::new();
-    /// Renderer::new(2, Gray8::BLACK).render_3d_antialiased(
-    ///     Msaa::<2>, Affine, &tris, &mut samples, &mut depth, DepthState::LESS_WRITE, &mut out, &mut display,
-    /// )?;
-    /// // The diagonal pixels have 1 of 4 samples covered: round(255/4) = 64.
-    /// assert_eq!(display.get_pixel(Point::new(1, 0)), Some(Gray8::new(64)));
-    /// assert_eq!(display.get_pixel(Point::new(0, 0)), Some(Gray8::WHITE));
-    /// # Ok::<(), microraster::RenderError<core::convert::Infallible>>(())
-    /// ```
-    #[allow(clippy::too_many_arguments)]
-    pub fn render_3d_antialiased<
-        A,
-        D,
-        F,
-        M,
-        const S: u32,
-        const W: usize,
-        const H: usize,
-        const SW: usize,
-        const SH: usize,
-    >(
-        &self,
+    fn draw(&mut self, view: &mut BandView<'_, C, W>, renderer: &Renderer<C>) -> Result<(), Error> {
+        let (y0, y1) = (view.y0(), view.y0() + view.height() as i32);
+        let mut sv = sample_view::<super::Ssaa<N>, C, SW, SH>(self.samples, renderer.background(), y0, y1);
+        let drawn = (self.draw)(&mut sv);
+        resolve::<super::Ssaa<N>, C, W, SW>(&mut sv, view);
+        drawn
+    }
+}
+
+/// Screen triangles from the vertex stage anti-aliased as `mode` says, with
+/// colour interpolation `interp` ([`Affine`] or
+/// [`PerspectiveCorrect`](crate::raster3d::PerspectiveCorrect)) and the
+/// depth buffer `depth` at *sample* resolution (`SW × SH`, cleared to far
+/// at each band; [`NoDepth`] for none), tested as `state` says. Depth is
+/// tested per sample in every mode; [`Msaa`](super::Msaa) and
+/// [`MsaaSparse`](super::MsaaSparse) evaluate colour once per pixel
+/// ([`super::msaa`]). The renderer's cull mode does not apply: the vertex
+/// stage culls.
+///
+/// Errors as for [`Antialiased`].
+///
+/// ```
+/// use embedded_graphics::mock_display::MockDisplay;
+/// use embedded_graphics::pixelcolor::Gray8;
+/// use embedded_graphics::prelude::*;
+/// use microraster::aa::{Antialiased3d, Msaa};
+/// use microraster::depth::{Depth16, DepthBand, DepthState};
+/// use microraster::raster3d::{Affine, ScreenTriangle, ScreenVertex};
+/// use microraster::{Band, Renderer, SubPoint};
+/// let v = |x, y| ScreenVertex {
+///     pos: SubPoint::<4>::from_pixels(x, y).unwrap(),
+///     color: [255, 0, 0],
+///     inv_w: 1 << 30,
+///     ..Default::default()
+/// };
+/// let tris = [ScreenTriangle { v: [v(0, 0), v(2, 0), v(0, 2)], flat: true }];
+/// let mut samples = Band::<Gray8, 4, 4>::new(Gray8::BLACK); // 2 × 2 samples a pixel
+/// let mut depth = DepthBand::<Depth16, 4, 4>::new();
+/// let mut out = Band::<Gray8, 2, 2>::new(Gray8::BLACK);
+/// let mut display = MockDisplay::new();
+/// let frame = Antialiased3d::new(Msaa::<2>, &tris, &mut samples, &mut depth, DepthState::LESS_WRITE, Affine);
+/// Renderer::new(2, Gray8::BLACK).render(frame, &mut out, &mut display)?;
+/// // The diagonal pixels have 1 of 4 samples covered: round(255/4) = 64.
+/// assert_eq!(display.get_pixel(Point::new(1, 0)), Some(Gray8::new(64)));
+/// assert_eq!(display.get_pixel(Point::new(0, 0)), Some(Gray8::WHITE));
+/// # Ok::<(), microraster::RenderError<core::convert::Infallible>>(())
+/// ```
+pub struct Antialiased3d<'a, A, C, F: DepthFormat, M, const S: u32, const SW: usize, const SH: usize> {
+    triangles: &'a [ScreenTriangle<S>],
+    samples: &'a mut Band<C, SW, SH>,
+    depth: &'a mut DepthBand<F, SW, SH>,
+    state: DepthState,
+    _am: PhantomData<(A, M)>,
+}
+
+impl<'a, A, C, F, M, const S: u32, const SW: usize, const SH: usize> Antialiased3d<'a, A, C, F, M, S, SW, SH>
+where
+    A: Antialias,
+    C: Interpolate,
+    F: DepthFormat,
+    M: Interpolation,
+{
+    /// `triangles` anti-aliased as `mode` says through `samples`, tested
+    /// against `depth` as `state` says, colour interpolated as `interp` says.
+    pub fn new(
         mode: A,
-        interpolation: M,
-        triangles: &[ScreenTriangle<S>],
-        samples: &mut Band<C, SW, SH>,
-        depth: &mut DepthBand<F, SW, SH>,
+        triangles: &'a [ScreenTriangle<S>],
+        samples: &'a mut Band<C, SW, SH>,
+        depth: &'a mut DepthBand<F, SW, SH>,
         state: DepthState,
-        out: &mut Band<C, W, H>,
-        target: &mut D,
-    ) -> Result<(), RenderError<D::Error>>
-    where
-        A: Antialias,
-        D: DrawTarget<Color = C>,
-        F: DepthFormat,
-        M: Interpolation,
-    {
+        interp: M,
+    ) -> Self {
+        let _ = (mode, interp); // values, so the call needs no turbofish
+        Antialiased3d { triangles, samples, depth, state, _am: PhantomData }
+    }
+}
+
+impl<A, C, F, M, const S: u32, const W: usize, const H: usize, const SW: usize, const SH: usize> Pass<C, W, H>
+    for Antialiased3d<'_, A, C, F, M, S, SW, SH>
+where
+    A: Antialias,
+    C: Interpolate,
+    F: DepthFormat,
+    M: Interpolation,
+{
+    fn check(&mut self, renderer: &Renderer<C>) -> Result<(), Error> {
         let () = Grid::<A, W, H, SW, SH>::CHECK;
-        let _ = (mode, interpolation);
-        check_height(self.height(), A::N)?;
-        for tri in triangles {
+        check_height(renderer.height(), A::N)?;
+        for tri in self.triangles {
             scale_triangle(tri, A::N)?;
         }
-        self.render_with(out, target, |view, y0, y1| {
-            let mut sv = sample_view::<A, C, SW, SH>(samples, self.background(), y0, y1);
-            let (sy0, sy1) = (sv.y0(), sv.y0() + sv.height() as i32);
-            let mut rows = depth.rows_mut(sv.height());
-            for r in rows.iter_mut() {
-                r.fill(F::FAR);
-            }
-            for tri in triangles {
-                let Ok(scaled) = scale_triangle(tri, A::N) else { continue };
-                let (lo, hi) = scaled.rows();
-                if lo < sy1 && hi >= sy0 {
-                    if A::SHADE_PER_PIXEL {
-                        let Some(shader) = PixelShader::<C>::new::<M, S>(tri) else { continue };
-                        let shade = |x, y| shader.at(x, y);
-                        msaa::draw_scaled::<A, C, F, S, SW>(
-                            &scaled,
-                            Cull::None,
-                            &mut sv,
-                            &mut rows,
-                            state,
-                            shade,
-                        );
-                    } else {
-                        draw_triangle(&scaled, &mut sv, &mut rows, state, interpolation);
-                    }
+        Ok(())
+    }
+
+    fn draw(&mut self, view: &mut BandView<'_, C, W>, renderer: &Renderer<C>) -> Result<(), Error> {
+        let (y0, y1) = (view.y0(), view.y0() + view.height() as i32);
+        let mut sv = sample_view::<A, C, SW, SH>(self.samples, renderer.background(), y0, y1);
+        let (sy0, sy1) = (sv.y0(), sv.y0() + sv.height() as i32);
+        let mut rows = self.depth.rows_mut(sv.height());
+        for r in rows.iter_mut() {
+            r.fill(F::FAR);
+        }
+        for tri in self.triangles {
+            let Ok(scaled) = scale_triangle(tri, A::N) else { continue };
+            let (lo, hi) = scaled.rows();
+            if lo < sy1 && hi >= sy0 {
+                if A::SHADE_PER_PIXEL {
+                    let Some(shader) = PixelShader::<C>::new::<M, S>(tri) else { continue };
+                    let shade = |x, y| shader.at(x, y);
+                    msaa::draw_scaled::<A, C, F, S, SW>(
+                        &scaled,
+                        Cull::None,
+                        &mut sv,
+                        &mut rows,
+                        self.state,
+                        shade,
+                    );
+                } else {
+                    draw_triangle(&scaled, &mut sv, &mut rows, self.state, M::default());
                 }
             }
-            resolve::<A, C, W, SW>(&mut sv, view);
-        })
+        }
+        resolve::<A, C, W, SW>(&mut sv, view);
+        Ok(())
     }
 }
 

@@ -18,8 +18,8 @@ use crate::band::BandView;
 /// `SW == W·COLS` and a supported `N` are checked at compile time.
 ///
 /// This is the last step of
-/// [`Renderer::render_antialiased`](crate::Renderer::render_antialiased); call
-/// it yourself inside [`Renderer::render_with`](crate::Renderer::render_with)
+/// [`Antialiased`](crate::aa::Antialiased); call
+/// it yourself inside [`from_fn`](crate::render::from_fn)
 /// to mix anti-aliased and custom drawing.
 ///
 /// ```

@@ -10,11 +10,11 @@
 //!
 //! * **aliased** ([`Aliased`]): a pixel is in when the winding number around
 //!   its centre nudged by `(ε, ε²)` passes the [`FillRule`] — the top-left
-//!   rule of the triangle core, generalised ([`mod@scan`]). Two shapes (or a
+//!   rule of the triangle core, generalised (proof in `src/pixel/shape/scan.rs`). Two shapes (or a
 //!   shape and a triangle) sharing an edge never both cover, and never both
 //!   miss, a pixel on it;
 //! * **anti-aliased** ([`AntiAliased`]): each pixel gets the exact area of
-//!   the snapped contours inside it as its alpha ([`mod@area`]). Two shapes
+//!   the snapped contours inside it as its alpha (`src/pixel/shape/area.rs`). Two shapes
 //!   sharing an edge sum to full coverage along it (no dark seam). Where a
 //!   shape overlaps itself inside one pixel (self-intersecting polygons, the
 //!   joins of thick polylines), that pixel's alpha is the integral of the
@@ -49,12 +49,12 @@
 //! each, anti-aliased). More edges than that is [`Error::BufferTooSmall`](crate::Error::BufferTooSmall)
 //! when the [`Styled`] is built.
 
-pub mod area;
+mod area;
 mod canvas;
 pub mod edges;
 pub mod flatten;
 mod paint;
-pub mod scan;
+mod scan;
 mod shapes;
 mod stroke;
 mod style;

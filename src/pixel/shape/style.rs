@@ -226,11 +226,12 @@ impl<C, A: Coverage> ShapeStyle<C, A> {
     /// use embedded_graphics::pixelcolor::{Gray8, GrayColor};
     /// use microraster::shape::{Rect, Shape, ShapeStyle};
     /// use microraster::{Band, Renderer};
+    /// use microraster::render::from_fn;
     /// use embedded_graphics::mock_display::MockDisplay;
     /// let veil = Rect::new(0.0, 0.0, 2.0, 1.0)?.styled(ShapeStyle::fill(Gray8::WHITE).with_opacity(128))?;
     /// let mut band = Band::<Gray8, 2, 1>::new(Gray8::BLACK);
     /// let mut display = MockDisplay::new();
-    /// Renderer::new(1, Gray8::BLACK).render_with(&mut band, &mut display, |view, _, _| veil.draw_on(view)).unwrap();
+    /// Renderer::new(1, Gray8::BLACK).render(from_fn(|view| {  veil.draw_on(view); Ok(()) }), &mut band, &mut display).unwrap();
     /// assert_eq!(display.get_pixel(embedded_graphics::prelude::Point::new(0, 0)), Some(Gray8::new(128)));
     /// # Ok::<(), microraster::Error>(())
     /// ```
@@ -289,11 +290,12 @@ impl<C, A: Coverage> ShapeStyle<C, A> {
 /// use embedded_graphics::pixelcolor::{Gray8, GrayColor};
 /// use microraster::shape::{Rect, Shape, ShapeStyle};
 /// use microraster::{Band, Renderer};
+/// use microraster::render::from_fn;
 /// use embedded_graphics::mock_display::MockDisplay;
 /// let bar = Rect::new(1.0, 0.0, 2.0, 2.0)?.styled(ShapeStyle::fill(Gray8::WHITE))?;
 /// let mut band = Band::<Gray8, 4, 1>::new(Gray8::BLACK);
 /// let mut display = MockDisplay::new();
-/// Renderer::new(2, Gray8::BLACK).render_with(&mut band, &mut display, |view, _, _| bar.draw_on(view)).unwrap();
+/// Renderer::new(2, Gray8::BLACK).render(from_fn(|view| {  bar.draw_on(view); Ok(()) }), &mut band, &mut display).unwrap();
 /// assert_eq!(display.get_pixel(embedded_graphics::prelude::Point::new(2, 1)), Some(Gray8::WHITE));
 /// # Ok::<(), microraster::Error>(())
 /// ```

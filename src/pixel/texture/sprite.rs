@@ -66,14 +66,15 @@ pub const SPRITE_SCALE_RANGE: (f32, f32) = (1.0 / 256.0, 256.0);
 /// use microraster::blend::{Blend, Mix};
 /// use microraster::texture::{Argb4444, Bilinear, Sprite, Texture};
 /// use microraster::{Band, Renderer};
+/// use microraster::render::from_fn;
 /// static ICON: [[u16; 2]; 2] = [[0xFF00, 0x0000], [0x80F0, 0xF00F]]; // red, clear, ½ green, blue
 /// static TEX: Texture<'static, Argb4444> = Texture::from_rows(&ICON);
 /// let mut band = Band::<Rgb565, 16, 4>::new(Rgb565::BLACK);
 /// # let mut display = embedded_graphics::mock_display::MockDisplay::new();
-/// Renderer::new(16, Rgb565::WHITE).render_drawables(&mut band, &mut display, |view| {
+/// Renderer::new(16, Rgb565::WHITE).render(from_fn(|view| {
 ///     Sprite::new(&TEX).at(Point::new(2, 2)).scale(4.0).blend_into(view)?; // 8×8 px
 ///     Sprite::new(&TEX).at(Point::new(8, 8)).scale(3.0).rotate(0.5).filter(Bilinear).blend_into(view)
-/// })?;
+/// }), &mut band, &mut display)?;
 /// assert_eq!(display.get_pixel(Point::new(3, 3)), Some(Rgb565::RED));
 /// assert_eq!(display.get_pixel(Point::new(7, 3)), Some(Rgb565::WHITE)); // clear texel
 /// let half_green = Mix.blend(Rgb565::GREEN, Rgb565::WHITE, 136); // alpha 8/15

@@ -1,0 +1,473 @@
+//! What a frame draws: a [`Pass`] draws the frame's content into one band at
+//! a time, and every band loop ([`Renderer::render`], `render_linked`,
+//! `render_async`, `render_threads`) takes one. Options are values of the
+//! pass (depth state, interpolation, an overlay, anti-aliasing), so there is
+//! one way to render a frame and no turbofish.
+//!
+//! | pass | draws |
+//! |---|---|
+//! | `&[Primitive]`, `&[Primitive; N]`, `&heapless::Vec<Primitive, N>` | 2D triangles and lines |
+//! | `()` | nothing: the background |
+//! | [`Triangles3d`] | screen triangles from the vertex stage, depth-tested |
+//! | [`PerBand3d`] | the vertex stage run per band into small bins (low RAM) |
+//! | [`Direct3d`] | a closure that draws each band as a [`Band3d`] (meshlets) |
+//! | [`from_fn`] | a closure that draws each band as a [`BandView`] (e-g drawables) |
+//! | [`Pass::then`] | one pass, then another closure over it (a HUD) |
+//! | [`Antialiased`](crate::aa::Antialiased), [`Supersampled`](crate::aa::Supersampled) | anti-aliased frames |
+
+use core::marker::PhantomData;
+
+use super::{Band3d, Renderer};
+use crate::band::{BandView, LazyClear};
+use crate::depth::{DepthBand, DepthFormat, DepthState};
+use crate::raster3d::{Interpolation, ScreenTriangle};
+use crate::{Error, Interpolate, Primitive};
+
+/// What a frame draws in each band of `W × H` pixels.
+///
+/// The renderer calls [`Pass::check`] once before anything is sent, then
+/// [`Pass::draw`] for each band in order, top to bottom. A pass draws the
+/// whole frame in frame coordinates; the band keeps its own rows, so the
+/// image does not depend on `H`. After the first error the remaining bands
+/// are not drawn (they go out cleared) and the frame returns
+/// [`RenderError::Input`](crate::RenderError::Input) with it.
+///
+/// A pass of your own: a checkerboard of `size`-pixel squares, refused
+/// before anything is sent if `size` is 0.
+///
+/// ```
+/// use embedded_graphics::mock_display::MockDisplay;
+/// use embedded_graphics::pixelcolor::BinaryColor;
+/// use microraster::band::BandView;
+/// use microraster::blit::Blitter;
+/// use microraster::render::Pass;
+/// use microraster::{Band, Error, Renderer};
+/// struct Checkers(i32);
+/// impl<const W: usize, const H: usize> Pass<BinaryColor, W, H> for Checkers {
+///     fn check(&mut self, _: &Renderer<BinaryColor>) -> Result<(), Error> {
+///         if self.0 > 0 { Ok(()) } else { Err(Error::InvalidParameter) }
+///     }
+///     fn draw(&mut self, band: &mut BandView<'_, BinaryColor, W>, _: &Renderer<BinaryColor>) -> Result<(), Error> {
+///         for y in band.y0()..band.y0() + band.height() as i32 {
+///             for x in (0..W as i32).filter(|x| (x / self.0 + y / self.0) % 2 == 1) {
+///                 band.set_pixel(x, y, BinaryColor::On);
+///             }
+///         }
+///         Ok(())
+///     }
+/// }
+/// let mut band = Band::<BinaryColor, 4, 3>::new(BinaryColor::Off);
+/// let mut display = MockDisplay::new();
+/// let renderer = Renderer::new(4, BinaryColor::Off);
+/// renderer.render(Checkers(2), &mut band, &mut display)?;
+/// display.assert_pattern(&["..##", "..##", "##..", "##.."]);
+/// let refused = renderer.render(Checkers(0), &mut band, &mut MockDisplay::new());
+/// assert_eq!(refused, Err(Error::InvalidParameter.into()));
+/// # Ok::<(), microraster::RenderError<core::convert::Infallible>>(())
+/// ```
+pub trait Pass<C: Interpolate, const W: usize, const H: usize> {
+    /// Whether the renderer clears each band to the background before
+    /// [`Pass::draw`]; a pass that writes every pixel of the band itself,
+    /// even when it returns an error, says `false`.
+    const CLEARS: bool = true;
+
+    /// Checks the pass against the frame before any band is drawn: errors
+    /// here leave the target untouched.
+    fn check(&mut self, renderer: &Renderer<C>) -> Result<(), Error> {
+        let _ = renderer;
+        Ok(())
+    }
+
+    /// Draws frame rows `band.y0()..band.y0() + band.height()` into `band`.
+    fn draw(&mut self, band: &mut BandView<'_, C, W>, renderer: &Renderer<C>) -> Result<(), Error>;
+
+    /// This pass, then `overlay` over it in each band: a HUD over a 3D frame,
+    /// in frame coordinates, with any `embedded-graphics` drawable. The
+    /// overlay ignores depth. After the first error of either, later bands
+    /// are not drawn. (On a pass whose type does not fix the band height,
+    /// such as a slice of primitives, name it: `Pass::<C, W, H>::then(&scene, ..)`;
+    /// or draw the overlay in the same [`from_fn`] pass.)
+    ///
+    /// ```
+    /// use embedded_graphics::mock_display::MockDisplay;
+    /// use embedded_graphics::prelude::*;
+    /// use embedded_graphics::primitives::{PrimitiveStyle, Rectangle};
+    /// use embedded_graphics::pixelcolor::Rgb565;
+    /// use microraster::depth::{Depth16, DepthBand, DepthState};
+    /// use microraster::raster3d::{Affine, ScreenTriangle, ScreenVertex};
+    /// use microraster::render::{Pass, Triangles3d};
+    /// use microraster::{Band, Renderer, SubPoint};
+    /// let v = |x, y| ScreenVertex { pos: SubPoint::<4>::from_pixels(x, y).unwrap(), color: [31, 0, 0], ..Default::default() };
+    /// let red = [ScreenTriangle { v: [v(0, 0), v(8, 0), v(0, 8)], flat: true }];
+    /// let mut band = Band::<Rgb565, 8, 2>::new(Rgb565::BLACK);
+    /// let mut depth = DepthBand::<Depth16, 8, 2>::new();
+    /// let mut display = MockDisplay::new();
+    /// let hud = PrimitiveStyle::with_fill(Rgb565::WHITE);
+    /// let frame = Triangles3d::new(&red, &mut depth, DepthState::LESS_WRITE, Affine)
+    ///     .then(|view| Ok(Rectangle::new(Point::new(0, 0), Size::new(2, 2)).into_styled(hud).draw(view)?));
+    /// Renderer::new(8, Rgb565::BLACK).render(frame, &mut band, &mut display)?;
+    /// assert_eq!(display.get_pixel(Point::new(1, 1)), Some(Rgb565::WHITE)); // the HUD, over
+    /// assert_eq!(display.get_pixel(Point::new(3, 1)), Some(Rgb565::RED)); // the triangle
+    /// # Ok::<(), microraster::RenderError<core::convert::Infallible>>(())
+    /// ```
+    fn then<O>(self, overlay: O) -> Then<Self, O>
+    where
+        Self: Sized,
+        O: FnMut(&mut BandView<'_, C, W>) -> Result<(), Error>,
+    {
+        Then { first: self, overlay }
+    }
+}
+
+/// The empty frame: every band cleared to the background.
+impl<C: Interpolate, const W: usize, const H: usize> Pass<C, W, H> for () {
+    fn draw(&mut self, _: &mut BandView<'_, C, W>, _: &Renderer<C>) -> Result<(), Error> {
+        Ok(())
+    }
+}
+
+/// 2D primitives in order, triangles culled as the renderer's
+/// [`Cull`](crate::edge::Cull) says.
+impl<C: Interpolate, const S: u32, const W: usize, const H: usize> Pass<C, W, H> for &[Primitive<C, S>] {
+    // Rows are cleared as they are first written (`LazyClear`): most rows'
+    // first span then costs one pass over the row, not two.
+    const CLEARS: bool = false;
+
+    fn draw(&mut self, band: &mut BandView<'_, C, W>, renderer: &Renderer<C>) -> Result<(), Error> {
+        let (y0, y1) = (band.y0(), band.y0() + band.height() as i32);
+        let mut view = LazyClear::<C, W, H>::new(band, renderer.background());
+        for prim in self.iter() {
+            let (lo, hi) = prim.rows();
+            if lo < y1 && hi >= y0 {
+                match prim {
+                    Primitive::Triangle(t) => t.draw(&mut view, renderer.cull()),
+                    // Pixel by pixel: clear the line's rows once, then no checks.
+                    Primitive::Line(l) => {
+                        view.clear_rows(lo, hi);
+                        l.draw(view.view());
+                    }
+                }
+            }
+        }
+        view.finish();
+        Ok(())
+    }
+}
+
+/// An array of primitives, as its slice.
+impl<C: Interpolate, const S: u32, const N: usize, const W: usize, const H: usize> Pass<C, W, H>
+    for &[Primitive<C, S>; N]
+{
+    const CLEARS: bool = false;
+
+    fn draw(&mut self, band: &mut BandView<'_, C, W>, renderer: &Renderer<C>) -> Result<(), Error> {
+        Pass::<C, W, H>::draw(&mut &self[..], band, renderer)
+    }
+}
+
+/// A `heapless::Vec` of primitives, as its slice.
+impl<C: Interpolate, const S: u32, const N: usize, const W: usize, const H: usize> Pass<C, W, H>
+    for &heapless::Vec<Primitive<C, S>, N>
+{
+    const CLEARS: bool = false;
+
+    fn draw(&mut self, band: &mut BandView<'_, C, W>, renderer: &Renderer<C>) -> Result<(), Error> {
+        Pass::<C, W, H>::draw(&mut &self[..], band, renderer)
+    }
+}
+
+/// Screen triangles from the vertex stage ([`Pipeline::draw_mesh`](crate::pipeline::Pipeline::draw_mesh)),
+/// tested against `depth` (cleared to far in each band) as `state` says,
+/// colour interpolated as `interp` says ([`Affine`](crate::raster3d::Affine)
+/// or [`PerspectiveCorrect`](crate::raster3d::PerspectiveCorrect); a value, so
+/// the call needs no turbofish). The renderer's cull mode does not apply: the
+/// vertex stage culls.
+///
+/// ```
+/// use embedded_graphics::mock_display::MockDisplay;
+/// use embedded_graphics::pixelcolor::Gray8;
+/// use microraster::depth::{Depth16, DepthBand, DepthState};
+/// use microraster::raster3d::{PerspectiveCorrect, ScreenTriangle};
+/// use microraster::render::Triangles3d;
+/// use microraster::{Band, Renderer};
+/// let tris: [ScreenTriangle<4>; 0] = []; // from Pipeline::draw_mesh
+/// let mut band = Band::<Gray8, 8, 4>::new(Gray8::new(0));
+/// let mut depth = DepthBand::<Depth16, 8, 4>::new();
+/// let mut display = MockDisplay::new();
+/// let frame = Triangles3d::new(&tris, &mut depth, DepthState::LESS_WRITE, PerspectiveCorrect);
+/// Renderer::new(8, Gray8::new(0)).render(frame, &mut band, &mut display).unwrap();
+/// assert_eq!(display.get_pixel(embedded_graphics::prelude::Point::new(3, 3)), Some(Gray8::new(0)));
+/// ```
+pub struct Triangles3d<'a, F: DepthFormat, M, const S: u32, const W: usize, const H: usize> {
+    triangles: &'a [ScreenTriangle<S>],
+    depth: &'a mut DepthBand<F, W, H>,
+    state: DepthState,
+    _m: PhantomData<M>,
+}
+
+impl<'a, F: DepthFormat, M: Interpolation, const S: u32, const W: usize, const H: usize>
+    Triangles3d<'a, F, M, S, W, H>
+{
+    /// `triangles` drawn with `depth` as `state` says, colour interpolated as `interp` says.
+    pub fn new(
+        triangles: &'a [ScreenTriangle<S>],
+        depth: &'a mut DepthBand<F, W, H>,
+        state: DepthState,
+        interp: M,
+    ) -> Self {
+        let _ = interp; // a value, so the call needs no turbofish
+        Triangles3d { triangles, depth, state, _m: PhantomData }
+    }
+}
+
+impl<C, F, M, const S: u32, const W: usize, const H: usize> Pass<C, W, H> for Triangles3d<'_, F, M, S, W, H>
+where
+    C: Interpolate,
+    F: DepthFormat,
+    M: Interpolation,
+{
+    fn draw(&mut self, band: &mut BandView<'_, C, W>, _: &Renderer<C>) -> Result<(), Error> {
+        band3d::<C, F, M, W, H>(band, self.depth, self.state).draw_all(self.triangles);
+        Ok(())
+    }
+}
+
+/// A vertex stage that draws straight into each band, with no bins:
+/// `draw` gets the band as a [`Band3d`] (its depth cleared to far) and
+/// draws into it, typically with
+/// [`Pipeline::draw_meshlets`](crate::pipeline::Pipeline::draw_meshlets)
+/// for each mesh, or collects the band's triangles (rows
+/// [`Band3d::rows`]) and draws them with [`Band3d::draw_all`]. The RAM a
+/// frame needs is the band, its depth rows and what `draw` keeps, whatever
+/// the scene's size. Colour is interpolated as `interp` says.
+///
+/// ```
+/// use embedded_graphics::mock_display::MockDisplay;
+/// use embedded_graphics::pixelcolor::Gray8;
+/// use microraster::depth::{Depth16, DepthBand, DepthState};
+/// use microraster::raster3d::Affine;
+/// use microraster::render::Direct3d;
+/// use microraster::{Band, Renderer};
+/// let mut band = Band::<Gray8, 8, 4>::new(Gray8::new(0));
+/// let mut depth = DepthBand::<Depth16, 8, 4>::new();
+/// let mut bands = 0;
+/// let frame = Direct3d::new(&mut depth, DepthState::LESS_WRITE, Affine, |band| {
+///     bands += 1; // pipeline.draw_meshlets(&mesh, band)? for each mesh
+///     Ok(())
+/// });
+/// Renderer::new(10, Gray8::new(0)).render(frame, &mut band, &mut MockDisplay::new())?;
+/// assert_eq!(bands, 3);
+/// # Ok::<(), microraster::RenderError<core::convert::Infallible>>(())
+/// ```
+pub struct Direct3d<'a, F: DepthFormat, M, G, const W: usize, const H: usize> {
+    depth: &'a mut DepthBand<F, W, H>,
+    state: DepthState,
+    draw: G,
+    _m: PhantomData<M>,
+}
+
+impl<'a, F, M, G, const W: usize, const H: usize> Direct3d<'a, F, M, G, W, H>
+where
+    F: DepthFormat,
+    M: Interpolation,
+{
+    /// `draw` called for each band with `depth` as `state` says, colour
+    /// interpolated as `interp` says.
+    pub fn new<C>(depth: &'a mut DepthBand<F, W, H>, state: DepthState, interp: M, draw: G) -> Self
+    where
+        C: Interpolate,
+        G: FnMut(&mut Band3d<'_, '_, C, F, M, W>) -> Result<(), Error>,
+    {
+        let _ = interp; // a value, so the call needs no turbofish
+        Direct3d { depth, state, draw, _m: PhantomData }
+    }
+}
+
+impl<C, F, M, G, const W: usize, const H: usize> Pass<C, W, H> for Direct3d<'_, F, M, G, W, H>
+where
+    C: Interpolate,
+    F: DepthFormat,
+    M: Interpolation,
+    G: FnMut(&mut Band3d<'_, '_, C, F, M, W>) -> Result<(), Error>,
+{
+    fn draw(&mut self, band: &mut BandView<'_, C, W>, _: &Renderer<C>) -> Result<(), Error> {
+        (self.draw)(&mut band3d::<C, F, M, W, H>(band, self.depth, self.state))
+    }
+}
+
+/// The vertex stage run once per band instead of once per frame, for parts
+/// whose RAM cannot hold a whole frame's bins: for each band
+/// `geometry(y0, y1, bins)` appends the triangles touching rows `y0..y1`
+/// (set [`Pipeline::rows`](crate::pipeline::Pipeline::rows) to
+/// `Some((y0, y1 − 1))` and call `draw_mesh`) to `bins`, cleared before each
+/// band; they are drawn as [`Triangles3d`] draws them. Vertex work grows
+/// with the number of bands; the image is the same as with [`Triangles3d`].
+/// The first error `geometry` returns is the frame's
+/// ([`RenderError::Input`](crate::RenderError::Input)).
+///
+/// ```
+/// use embedded_graphics::mock_display::MockDisplay;
+/// use embedded_graphics::pixelcolor::Gray8;
+/// use microraster::depth::{Depth16, DepthBand, DepthState};
+/// use microraster::raster3d::{Affine, ScreenTriangle};
+/// use microraster::render::PerBand3d;
+/// use microraster::{Band, Renderer};
+/// let mut bins = heapless::Vec::<ScreenTriangle<4>, 64>::new();
+/// let mut band = Band::<Gray8, 8, 4>::new(Gray8::new(0));
+/// let mut depth = DepthBand::<Depth16, 8, 4>::new();
+/// let mut rows = Vec::new();
+/// let frame = PerBand3d::new(&mut bins, &mut depth, DepthState::LESS_WRITE, Affine, |y0, y1, _bins| {
+///     rows.push((y0, y1)); // pipeline.rows = Some((y0, y1 - 1)); pipeline.draw_mesh(.., bins)
+///     Ok(())
+/// });
+/// Renderer::new(10, Gray8::new(0)).render(frame, &mut band, &mut MockDisplay::new())?;
+/// assert_eq!(rows, [(0, 4), (4, 8), (8, 10)]);
+/// # Ok::<(), microraster::RenderError<core::convert::Infallible>>(())
+/// ```
+pub struct PerBand3d<'a, F: DepthFormat, M, G, const S: u32, const N: usize, const W: usize, const H: usize> {
+    bins: &'a mut heapless::Vec<ScreenTriangle<S>, N>,
+    depth: &'a mut DepthBand<F, W, H>,
+    state: DepthState,
+    geometry: G,
+    _m: PhantomData<M>,
+}
+
+impl<'a, F, M, G, const S: u32, const N: usize, const W: usize, const H: usize>
+    PerBand3d<'a, F, M, G, S, N, W, H>
+where
+    F: DepthFormat,
+    M: Interpolation,
+    G: FnMut(i32, i32, &mut heapless::Vec<ScreenTriangle<S>, N>) -> Result<(), Error>,
+{
+    /// `geometry` run for each band into `bins`, drawn with `depth` as
+    /// `state` says, colour interpolated as `interp` says.
+    pub fn new(
+        bins: &'a mut heapless::Vec<ScreenTriangle<S>, N>,
+        depth: &'a mut DepthBand<F, W, H>,
+        state: DepthState,
+        interp: M,
+        geometry: G,
+    ) -> Self {
+        let _ = interp; // a value, so the call needs no turbofish
+        PerBand3d { bins, depth, state, geometry, _m: PhantomData }
+    }
+}
+
+impl<C, F, M, G, const S: u32, const N: usize, const W: usize, const H: usize> Pass<C, W, H>
+    for PerBand3d<'_, F, M, G, S, N, W, H>
+where
+    C: Interpolate,
+    F: DepthFormat,
+    M: Interpolation,
+    G: FnMut(i32, i32, &mut heapless::Vec<ScreenTriangle<S>, N>) -> Result<(), Error>,
+{
+    fn draw(&mut self, band: &mut BandView<'_, C, W>, _: &Renderer<C>) -> Result<(), Error> {
+        let (y0, y1) = (band.y0(), band.y0() + band.height() as i32);
+        self.bins.clear();
+        (self.geometry)(y0, y1, self.bins)?;
+        band3d::<C, F, M, W, H>(band, self.depth, self.state).draw_all(self.bins);
+        Ok(())
+    }
+}
+
+/// A pass from a closure that draws the frame's content into each band, in
+/// frame coordinates: any `embedded-graphics` drawable (the band is a
+/// `DrawTarget`), microraster's primitives through
+/// [`Blitter`](crate::blit::Blitter), [`draw_triangle`](crate::raster3d::draw_triangle)
+/// with your own depth band. The band is cleared to the background first.
+/// e-g's draw errors convert with `?` (a band's is `Infallible`).
+///
+/// The closure draws the whole frame's 2D in each band: e-g clips by pixel,
+/// so a drawable's pixels outside the band are generated and dropped; skip
+/// drawables whose bounding box misses the band's
+/// [`bounding_box`](embedded_graphics_core::geometry::Dimensions::bounding_box)
+/// to avoid that.
+///
+/// ```
+/// use embedded_graphics::mock_display::MockDisplay;
+/// use embedded_graphics::prelude::*;
+/// use embedded_graphics::primitives::{Circle, PrimitiveStyle};
+/// use embedded_graphics::pixelcolor::BinaryColor;
+/// use microraster::render::from_fn;
+/// use microraster::{edge::Cull, Band, Renderer, SubPoint, Triangle};
+/// let p = |x, y| SubPoint::<4>::from_pixels(x, y).unwrap();
+/// let mut band = Band::<BinaryColor, 8, 3>::new(BinaryColor::Off); // 3-row bands
+/// let mut display = MockDisplay::new();
+/// let frame = from_fn(|view| {
+///     Triangle::flat([p(0, 0), p(5, 0), p(0, 5)], BinaryColor::On).draw(view, Cull::None);
+///     Circle::new(Point::new(4, 4), 4).into_styled(PrimitiveStyle::with_fill(BinaryColor::On)).draw(view)?;
+///     Ok(())
+/// });
+/// Renderer::new(8, BinaryColor::Off).render(frame, &mut band, &mut display)?;
+/// display.assert_pattern(&[
+///     "####....", "###.....", "##......", "#.......",
+///     ".....##.", "....####", "....####", ".....##.",
+/// ]);
+/// # Ok::<(), microraster::RenderError<core::convert::Infallible>>(())
+/// ```
+pub fn from_fn<C, const W: usize, G>(draw: G) -> FromFn<C, G, W>
+where
+    C: Interpolate,
+    G: FnMut(&mut BandView<'_, C, W>) -> Result<(), Error>,
+{
+    FromFn { draw, _c: PhantomData }
+}
+
+/// The pass of [`from_fn`].
+pub struct FromFn<C, G, const W: usize> {
+    draw: G,
+    _c: PhantomData<fn(C)>,
+}
+
+impl<C, G, const W: usize, const H: usize> Pass<C, W, H> for FromFn<C, G, W>
+where
+    C: Interpolate,
+    G: FnMut(&mut BandView<'_, C, W>) -> Result<(), Error>,
+{
+    fn draw(&mut self, band: &mut BandView<'_, C, W>, _: &Renderer<C>) -> Result<(), Error> {
+        (self.draw)(band)
+    }
+}
+
+/// The pass of [`Pass::then`]: `first`, then `overlay` in each band.
+pub struct Then<P, O> {
+    first: P,
+    overlay: O,
+}
+
+impl<C, P, O, const W: usize, const H: usize> Pass<C, W, H> for Then<P, O>
+where
+    C: Interpolate,
+    P: Pass<C, W, H>,
+    O: FnMut(&mut BandView<'_, C, W>) -> Result<(), Error>,
+{
+    const CLEARS: bool = P::CLEARS;
+
+    fn check(&mut self, renderer: &Renderer<C>) -> Result<(), Error> {
+        self.first.check(renderer)
+    }
+
+    fn draw(&mut self, band: &mut BandView<'_, C, W>, renderer: &Renderer<C>) -> Result<(), Error> {
+        self.first.draw(band, renderer)?;
+        (self.overlay)(band)
+    }
+}
+
+/// The band's [`Band3d`], its depth rows cleared to far.
+fn band3d<'a, 'v, C, F, M, const W: usize, const H: usize>(
+    view: &'a mut BandView<'v, C, W>,
+    depth: &'a mut DepthBand<F, W, H>,
+    state: DepthState,
+) -> Band3d<'a, 'v, C, F, M, W>
+where
+    C: Interpolate,
+    F: DepthFormat,
+    M: Interpolation,
+{
+    let (y0, y1) = (view.y0(), view.y0() + view.height() as i32);
+    let mut rows = depth.rows_mut(view.height());
+    for r in rows.iter_mut() {
+        r.fill(F::FAR);
+    }
+    Band3d::new(view, rows, state, (y0, y1))
+}
