@@ -16,12 +16,25 @@ use microraster::{Band, Error, Primitive, RenderError, Renderer, SubPoint, Trian
 const ON: BinaryColor = BinaryColor::On;
 const OFF: BinaryColor = BinaryColor::Off;
 
-/// Lights every pixel of each band it draws; fails in the band holding
-/// frame row `fail_at` (after lighting it), refuses the frame in `check`
-/// if `refuse`.
+/// Lights the first `cols` columns of each band it draws; fails with
+/// `error` in the band holding frame row `fail_at` (after lighting it);
+/// refuses the frame in `check` if `refuse`.
 struct Fill {
+    cols: i32,
     fail_at: i32,
+    error: Error,
     refuse: bool,
+}
+
+impl Fill {
+    /// Every column, failing at row `fail_at` with `BufferTooSmall`.
+    fn failing_at(fail_at: i32) -> Self {
+        Fill { cols: i32::MAX, fail_at, error: Error::BufferTooSmall, refuse: false }
+    }
+
+    fn refused() -> Self {
+        Fill { refuse: true, ..Fill::failing_at(-1) }
+    }
 }
 
 impl<const W: usize, const H: usize> Pass<BinaryColor, W, H> for Fill {
@@ -36,11 +49,11 @@ impl<const W: usize, const H: usize> Pass<BinaryColor, W, H> for Fill {
     ) -> Result<(), Error> {
         let rows = band.y0()..band.y0() + band.height() as i32;
         for y in rows.clone() {
-            for x in 0..W as i32 {
+            for x in 0..self.cols.min(W as i32) {
                 band.set_pixel(x, y, ON);
             }
         }
-        if rows.contains(&self.fail_at) { Err(Error::BufferTooSmall) } else { Ok(()) }
+        if rows.contains(&self.fail_at) { Err(self.error) } else { Ok(()) }
     }
 }
 
@@ -55,13 +68,10 @@ fn a_refused_pass_sends_nothing_on_every_loop() {
     let mut band = Band::<BinaryColor, 4, 2>::new(OFF);
     let mut d = MockDisplay::new();
     let refused = Err(RenderError::Input(Error::InvalidParameter));
-    assert_eq!(r.render(Fill { fail_at: -1, refuse: true }, &mut band, &mut d), refused);
+    assert_eq!(r.render(Fill::refused(), &mut band, &mut d), refused);
     let mut bands = [const { Band::<BinaryColor, 4, 2>::new(OFF) }; 2];
-    assert_eq!(
-        r.render_linked(Fill { fail_at: -1, refuse: true }, &mut bands, &mut Blocking(&mut d)),
-        refused
-    );
-    let fills = [(); 2].map(|()| Fill { fail_at: -1, refuse: true });
+    assert_eq!(r.render_linked(Fill::refused(), &mut bands, &mut Blocking(&mut d)), refused);
+    let fills = [(); 2].map(|()| Fill::refused());
     assert_eq!(r.render_threads(fills, &mut bands, &mut d), refused);
     assert_eq!(d, MockDisplay::new(), "nothing sent");
 }
@@ -75,14 +85,11 @@ fn a_draw_error_stops_drawing_and_the_rest_of_the_frame_is_background() {
     let mut band = Band::<BinaryColor, 4, 2>::new(ON);
     let mut d = MockDisplay::new();
     let failed = Err(RenderError::Input(Error::BufferTooSmall));
-    assert_eq!(r.render(Fill { fail_at: 3, refuse: false }, &mut band, &mut d), failed);
+    assert_eq!(r.render(Fill::failing_at(3), &mut band, &mut d), failed);
     d.assert_pattern(&want);
     let mut bands = [const { Band::<BinaryColor, 4, 2>::new(ON) }; 3];
     let mut d = MockDisplay::new();
-    assert_eq!(
-        r.render_linked(Fill { fail_at: 3, refuse: false }, &mut bands, &mut Blocking(&mut d)),
-        failed
-    );
+    assert_eq!(r.render_linked(Fill::failing_at(3), &mut bands, &mut Blocking(&mut d)), failed);
     d.assert_pattern(&want);
 }
 
@@ -94,21 +101,8 @@ fn threads_return_the_topmost_error_and_blank_each_threads_later_bands() {
     let r = Renderer::new(8, OFF);
     let mut bands = [const { Band::<BinaryColor, 4, 2>::new(ON) }; 2];
     let mut d = MockDisplay::new();
-    struct At(i32, Error);
-    impl<const W: usize, const H: usize> Pass<BinaryColor, W, H> for At {
-        fn draw(
-            &mut self,
-            band: &mut BandView<'_, BinaryColor, W>,
-            _: &Renderer<BinaryColor>,
-        ) -> Result<(), Error> {
-            let rows = band.y0()..band.y0() + band.height() as i32;
-            for y in rows.clone() {
-                band.set_pixel(0, y, ON);
-            }
-            if rows.contains(&self.0) { Err(self.1) } else { Ok(()) }
-        }
-    }
-    let passes = [At(4, Error::BufferTooSmall), At(2, Error::InvalidParameter)];
+    let column = |fail_at, error| Fill { cols: 1, fail_at, error, refuse: false };
+    let passes = [column(4, Error::BufferTooSmall), column(2, Error::InvalidParameter)];
     assert_eq!(
         r.render_threads(passes, &mut bands, &mut d),
         Err(RenderError::Input(Error::InvalidParameter))
