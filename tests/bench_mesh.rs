@@ -106,3 +106,48 @@ fn knot_covers_one_to_two_pixels_per_front_facing_triangle() {
     assert!((1.0..=2.0).contains(&ppt), "{ppt} px at scale {SCALE}");
     assert!(front > KNOT_MESH.triangle_count() * 2 / 5);
 }
+
+/// The one-call front draws the knot exactly as the explicit meshlet path
+/// does, given the same camera, lens, light and shading: `View3d::draw`
+/// against `Direct3d` + `Pipeline::draw_meshlets` with the standard scene's
+/// pipeline (the `knot20k` rows of `examples/fw_bench`, where the two frame
+/// CRCs agree on the Cortex-M4F too).
+#[test]
+fn the_front_draws_the_knot_as_the_explicit_meshlet_path() {
+    use embedded_graphics::framebuffer::{Framebuffer, buffer_size};
+    use embedded_graphics::pixelcolor::raw::{LittleEndian, RawU16};
+    use embedded_graphics::pixelcolor::{Rgb565, RgbColor};
+    use microraster::depth::{Depth16, DepthBand, DepthState};
+    use microraster::light::Lighting;
+    use microraster::math::{Vec3, transform};
+    use microraster::pipeline::{ClusterCache, Shade};
+    use microraster::raster3d::PerspectiveCorrect;
+    use microraster::render::Direct3d;
+    use microraster::view3d::{Camera, Object, View3d};
+    use microraster::{Band, Renderer};
+    use microraster_scenes::scenes3d::Scene3d;
+    type Fb = Framebuffer<Rgb565, RawU16, LittleEndian, 320, 240, { buffer_size::<Rgb565>(320, 240) }>;
+    let (angle, color) = (0.6, Rgb565::new(27, 46, 12));
+
+    let mut explicit = Fb::new();
+    let pipeline = Scene3d::pipeline::<f32, 4>(320, 240).unwrap();
+    let model = transform::rotation_y(angle);
+    let mut cache = Box::new(ClusterCache::<f32, 4>::new());
+    let mut band = Box::new(Band::<Rgb565, 320, 16>::new(Rgb565::BLACK));
+    let mut depth = Box::new(DepthBand::<Depth16, 320, 16>::new());
+    let frame = Direct3d::new(&mut *depth, DepthState::LESS_WRITE, PerspectiveCorrect, |band| {
+        pipeline.draw_meshlets(&VALID_KNOT, &model, color, &mut cache, band).map(|_| ())
+    });
+    Renderer::new(240, Rgb565::BLACK).render(frame, &mut *band, &mut explicit).unwrap();
+
+    let mut front = Fb::new();
+    let mut view = Box::new(View3d::<Rgb565, 320, 16>::new(Rgb565::BLACK));
+    view.set_lighting(Some(Lighting::new(0.25, Vec3::new(-0.4, 0.7, 0.6), 0.75).with_specular(0.4, 24)));
+    view.set_shade(Shade::Gouraud);
+    let camera = Camera::look_at([0.0, 1.9, 5.6], [0.0; 3]).perspective(0.9, 1.0, 20.0);
+    view.draw(&camera, &[Object::new(&VALID_KNOT, color).rotate_y(angle)], &mut front).unwrap();
+
+    let lit = explicit.data().chunks(2).filter(|p| p != &[0, 0]).count();
+    assert!(lit > 10_000, "the knot covers {lit} pixels");
+    assert!(front.data() == explicit.data(), "the front's frame differs from the explicit path's");
+}

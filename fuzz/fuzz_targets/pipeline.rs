@@ -20,7 +20,6 @@ use embedded_graphics_core::pixelcolor::Rgb565;
 use embedded_graphics_core::prelude::*;
 use embedded_graphics_core::primitives::Rectangle;
 use libfuzzer_sys::fuzz_target;
-use microraster::render::{Triangles3d, from_fn};
 use microraster::clip3d::ClipPlanes;
 use microraster::depth::{
     Depth8, Depth16, Depth24, Depth32, DepthBand, DepthFormat, DepthState, DepthTest, NoDepth,
@@ -31,6 +30,7 @@ use microraster::math::{Fx, Mat4, Scalar, Vec3, transform};
 use microraster::mesh::{Mesh, bounding_sphere};
 use microraster::pipeline::{Pipeline, Shade};
 use microraster::raster3d::{Affine, Interpolation, PerspectiveCorrect, ScreenTriangle};
+use microraster::render::Triangles3d;
 use microraster::{Band, Error, Renderer};
 use microraster_fuzz::Input;
 

@@ -19,9 +19,8 @@ use embedded_graphics_core::Drawable;
 use embedded_graphics_core::pixelcolor::{Gray8, GrayColor};
 use embedded_graphics_core::prelude::*;
 use libfuzzer_sys::fuzz_target;
-use microraster::render::from_fn;
-use microraster::band::BandView;
 use microraster::edge::Span;
+use microraster::render::from_fn;
 use microraster::shape::{
     Arc, Canvas, Cap, Circle, Coverage, Ellipse, FillRule, Join, LinearGradient, Paint, Polygon, Polyline,
     RadialGradient, Rect, RoundedRect, Sector, Shape, ShapeStyle, Styled,
@@ -206,7 +205,14 @@ fn banded<Sh: Shape, A: Coverage, const BH: usize>(styled: &Styled<Sh, Gray8, A>
     let mut band = Band::<Gray8, 64, BH>::new(Gray8::BLACK);
     let mut fb = OnceFrame::new(W, h);
     Renderer::new(h as u32, BG)
-        .render(from_fn(|v: &mut BandView<'_| {  styled.draw_on(v); Ok(()) }), &mut band, &mut fb)
+        .render(
+            from_fn(|v| {
+                styled.draw_on(v);
+                Ok(())
+            }),
+            &mut band,
+            &mut fb,
+        )
         .unwrap();
     fb.px.into_iter().map(|p| p.expect("a frame pixel was never sent")).collect()
 }

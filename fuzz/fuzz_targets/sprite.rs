@@ -22,8 +22,8 @@ use embedded_graphics_core::Drawable;
 use embedded_graphics_core::pixelcolor::{Gray8, Rgb565, Rgb888, RgbColor};
 use embedded_graphics_core::prelude::*;
 use libfuzzer_sys::fuzz_target;
-use microraster::render::from_fn;
 use microraster::blend::{Blend, BlendTarget};
+use microraster::render::from_fn;
 use microraster::texture::{
     A8, Argb4444, Bilinear, Filter, Nearest, SPRITE_SCALE_RANGE, Sprite, TexelFormat, Texture,
 };
@@ -172,7 +172,14 @@ fn banded<F: TexelFormat, Fi: Filter, const BH: usize>(
     let mut band = Band::<Rgb888, 64, BH>::new(Rgb888::BLACK);
     let mut fb = OnceFrame::new(W, h);
     Renderer::new(h as u32, BG)
-        .render(from_fn(|v| {  assert_eq!(s.blend_into(v), want, "blend_into a band"); Ok(()) }), &mut band, &mut fb)
+        .render(
+            from_fn(|v| {
+                assert_eq!(s.blend_into(v), want, "blend_into a band");
+                Ok(())
+            }),
+            &mut band,
+            &mut fb,
+        )
         .unwrap();
     fb.px.into_iter().map(|p| p.expect("a frame pixel was never sent")).collect()
 }

@@ -214,6 +214,19 @@ impl<C: Interpolate, const W: usize, const H: usize> View3d<C, W, H> {
         self.shade = shade;
     }
 
+    /// The colour the next frames are cleared to.
+    ///
+    /// ```
+    /// use embedded_graphics::pixelcolor::{Rgb565, RgbColor};
+    /// use microraster::view3d::View3d;
+    /// let mut view = View3d::<Rgb565, 64, 8>::new(Rgb565::BLACK);
+    /// view.set_background(Rgb565::BLUE); // night mode
+    /// assert_eq!(view.background(), Rgb565::BLUE);
+    /// ```
+    pub fn set_background(&mut self, background: C) {
+        self.background = background;
+    }
+
     /// The colour frames are cleared to.
     pub fn background(&self) -> C {
         self.background
