@@ -28,11 +28,12 @@ use core::fmt;
 use embedded_graphics_core::pixelcolor::Rgb565;
 use embedded_graphics_core::prelude::*;
 use embedded_graphics_core::primitives::Rectangle;
+use microraster::band::BandView;
 use microraster::depth::{Depth16, DepthBand, DepthState};
 use microraster::edge::Cull;
 use microraster::math::{Fx, Scalar};
 use microraster::raster3d::{Affine, Interpolation, PerspectiveCorrect, ScreenTriangle};
-use microraster::render::{PerBand3d, Triangles3d, from_fn};
+use microraster::render::{FromFn, PerBand3d, Triangles3d, from_fn};
 use microraster::{Band, Error, Primitive, RenderError, Renderer};
 use microraster_scenes::scenes;
 use microraster_scenes::scenes3d::{BINS, Scene3d};
@@ -259,29 +260,28 @@ pub fn mixed_streamed<const W: usize, const H: usize>(
     out: Out<'_>,
 ) -> Result<(), Error> {
     let mut target = CrcTarget::new(name, W as u32, height, out);
-    let mut result = Ok(());
-    Renderer::new(height, BACKGROUND)
-        .render(
-            from_fn(|view| {
-                let (y0, y1) = (view.y0(), view.y0() + view.height() as i32);
-                let scene = scenes::mixed::<Rgb565, S>(W as u32, height, &mut |p| {
-                    let (lo, hi) = p.rows();
-                    if lo < y1 && hi >= y0 {
-                        p.draw(view, Cull::None);
-                    }
-                });
-                if result.is_ok() {
-                    result = scene;
-                };
-                Ok(())
-            }),
-            band,
-            &mut target,
-        )
-        .map_err(render_error)?;
-    result?;
+    let frame = streamed::<W>(scenes::mixed::<Rgb565, S>, height);
+    Renderer::new(height, BACKGROUND).render(frame, band, &mut target).map_err(render_error)?;
     target.finish();
     Ok(())
+}
+
+/// The pass that runs `scene` again for every band and draws the
+/// primitives touching the band straight into it: a 2D frame with no
+/// primitive storage. The scene's first error is the frame's.
+pub fn streamed<const W: usize>(
+    scene: scenes::Scene<Rgb565, S>,
+    height: u32,
+) -> FromFn<Rgb565, impl FnMut(&mut BandView<'_, Rgb565, W>) -> Result<(), Error>, W> {
+    from_fn(move |view| {
+        let (y0, y1) = (view.y0(), view.y0() + view.height() as i32);
+        scene(W as u32, height, &mut |p| {
+            let (lo, hi) = p.rows();
+            if lo < y1 && hi >= y0 {
+                p.draw(view, Cull::None);
+            }
+        })
+    })
 }
 
 /// The standard 3D scene ([`Scene3d`], meshes in flash) with the vertex

@@ -42,7 +42,7 @@ use microraster_scenes::scenes;
 use microraster_scenes::scenes3d::{CACHE_VERTICES, Scene3d};
 
 pub use crate::sink::{Mode, Sink};
-use crate::workload::{ANGLE, DEPTH_STATE, S};
+use crate::workload::{self, ANGLE, DEPTH_STATE, S};
 #[allow(unused_imports)] // each target uses its own
 pub use crate::workload::{BACKGROUND, BAND_BINS, M0_BAND, M0_SIZE, M4F_BAND, M4F_SIZE};
 #[allow(unused_imports)]
@@ -314,26 +314,7 @@ pub fn frame<const W: usize, const H: usize, const N: usize, const P: usize>(
         #[cfg(not(any(not(target_os = "none"), target_abi = "eabihf")))]
         Work::Dashboard => Err(Error::InvalidParameter),
         Work::Streamed2d(scene) => {
-            let mut result = Ok(());
-            r.render(
-                from_fn(|view| {
-                    let (y0, y1) = (view.y0(), view.y0() + view.height() as i32);
-                    let s = scene(W as u32, height, &mut |p| {
-                        let (lo, hi) = p.rows();
-                        if lo < y1 && hi >= y0 {
-                            p.draw(view, Cull::None);
-                        }
-                    });
-                    if result.is_ok() {
-                        result = s;
-                    };
-                    Ok(())
-                }),
-                b.band,
-                sink,
-            )
-            .map_err(input)?;
-            result
+            r.render(workload::streamed::<W>(scene, height), b.band, sink).map_err(input)
         }
         Work::Vertex3d(F32) => vertex3d::<f32, W, N>(height, b.bins),
         Work::Vertex3d(Fix) => vertex3d::<Fx, W, N>(height, b.bins),
