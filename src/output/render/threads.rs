@@ -43,7 +43,7 @@ impl<C: Interpolate + Send + Sync> Renderer<C> {
     /// ```
     pub fn render_threads<P, D, const W: usize, const H: usize, const N: usize>(
         &self,
-        passes: [P; N],
+        mut passes: [P; N],
         bands: &mut [Band<C, W, H>; N],
         target: &mut D,
     ) -> Result<(), RenderError<D::Error>>
@@ -55,7 +55,6 @@ impl<C: Interpolate + Send + Sync> Renderer<C> {
         let () = Threads::<N>::ONE_OR_MORE;
         let frame = self.frame_bands::<W, H>()?;
         self.fits::<W>(target.bounding_box())?;
-        let mut passes = passes;
         for pass in passes.iter_mut() {
             pass.check(self)?;
         }
