@@ -33,7 +33,7 @@ fn render(b: &Bins) -> Result<Canvas> {
     Renderer::new(H, BACKGROUND)
         .render(
             from_fn(|view| {
-                let (y0, y1) = (view.y0(), view.y0() + view.height() as i32);
+                let (y0, y1) = (view.y0(), view.y1());
                 if result.is_ok() {
                     result = draw_passes::<_, Z, P, S, W, BAND_ROWS, 1024, 1024, 64, 2048>(
                         b, view, &mut depth, y0, y1,
@@ -62,7 +62,7 @@ fn render_ssaa2(b: &Bins) -> Result<Canvas> {
     Renderer::new(H, BACKGROUND)
         .render(
             Supersampled::new(Ssaa::<2>, &mut samples, |view| {
-                let (sy0, sy1) = (view.y0(), view.y0() + view.height() as i32);
+                let (sy0, sy1) = (view.y0(), view.y1());
                 if result.is_ok() {
                     result = draw_passes::<_, Z, P, S, { 2 * W }, { 2 * BAND_ROWS }, 1024, 1024, 64, 2048>(
                         &b2, view, &mut depth, sy0, sy1,

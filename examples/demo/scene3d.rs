@@ -114,7 +114,7 @@ fn render_keeping_depth<M: Interpolation, const H: usize>(
     Renderer::new(HEIGHT, BACKGROUND)
         .render(
             from_fn(|view| {
-                let (y0, y1) = (view.y0(), view.y0() + view.height() as i32);
+                let (y0, y1) = (view.y0(), view.y1());
                 zband.clear(H);
                 let mut rows = zband.rows_mut((y1 - y0) as usize);
                 for tri in tris {

@@ -71,7 +71,7 @@ pub fn fragment(name: &'static str, b: FragBuffers<'_>, out: Out<'_>) -> Result<
     Renderer::new(H, background)
         .render(
             Supersampled::new(Ssaa::<N>, samples, |view| {
-                let (sy0, sy1) = (view.y0(), view.y0() + view.height() as i32);
+                let (sy0, sy1) = (view.y0(), view.y1());
                 if result.is_ok() {
                     result = band_pass(&mut scene, bins, view, depth, sy0, sy1);
                 };

@@ -274,7 +274,7 @@ pub fn streamed<const W: usize>(
     height: u32,
 ) -> FromFn<Rgb565, impl FnMut(&mut BandView<'_, Rgb565, W>) -> Result<(), Error>, W> {
     from_fn(move |view| {
-        let (y0, y1) = (view.y0(), view.y0() + view.height() as i32);
+        let (y0, y1) = (view.y0(), view.y1());
         scene(W as u32, height, &mut |p| {
             let (lo, hi) = p.rows();
             if lo < y1 && hi >= y0 {

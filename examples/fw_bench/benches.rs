@@ -375,7 +375,7 @@ fn knot_stage<T: Scalar, const W: usize, const H: usize>(
     match stage {
         Stage::Vertex | Stage::Coverage => r.render(
             from_fn(|view| {
-                let (y0, y1) = (view.y0(), view.y0() + view.height() as i32);
+                let (y0, y1) = (view.y0(), view.y1());
                 let clip = ClipRect::new(0, y0, W as i32, y1);
                 let mut n = 0u32;
                 let s = pipeline.meshlet_triangles(

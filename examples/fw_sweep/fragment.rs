@@ -127,7 +127,7 @@ fn frag3d_with<const A: usize, M: Interpolation, Sh: FragmentShader<Rgb565, A>>(
         Renderer::new(H as u32, BG)
             .render(
                 from_fn(|view| {
-                    let (y0, y1) = (view.y0(), view.y0() + view.height() as i32);
+                    let (y0, y1) = (view.y0(), view.y1());
                     let mut rows = depth.rows_mut((y1 - y0) as usize);
                     for r in rows.iter_mut() {
                         r.fill(Depth16::FAR);
@@ -215,7 +215,7 @@ fn lines_aa(m: &mut dyn Meter, fb: &mut FrameBuffer) -> Result<(), Error> {
     let r = Renderer::new(H as u32, BG)
         .render(
             from_fn(|view| {
-                let (y0, y1) = (view.y0(), view.y0() + view.height() as i32);
+                let (y0, y1) = (view.y0(), view.y1());
                 for p in &prims {
                     if let Primitive::Line(l) = p {
                         let (lo, hi) = l.rows();

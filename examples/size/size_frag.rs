@@ -40,7 +40,7 @@ fn main() {
     let mut sink = Sink(0);
     let _ = Renderer::new(240, Rgb565::BLACK).render(
         Supersampled::new(Ssaa::<2>, &mut samples, |view| {
-            let (sy0, sy1) = (view.y0(), view.y0() + view.height() as i32);
+            let (sy0, sy1) = (view.y0(), view.y1());
             let _ = draw_passes::<_, Depth16, PerspectiveCorrect, 4, 640, 32, 1024, 1024, 64, 2048>(
                 black_box(&b2),
                 view,

@@ -107,6 +107,28 @@ impl<'a, C: PixelColor, const W: usize> BandView<'a, C, W> {
         self.y0
     }
 
+    /// One past the last frame row of the view: its rows are `y0()..y1()`
+    /// (`y0() + height()`).
+    ///
+    /// ```
+    /// use embedded_graphics::mock_display::MockDisplay;
+    /// use embedded_graphics::pixelcolor::BinaryColor;
+    /// use microraster::{Band, Renderer, render::from_fn};
+    /// let mut band = Band::<BinaryColor, 8, 3>::new(BinaryColor::Off); // 3-row bands
+    /// let (mut display, mut rows) = (MockDisplay::new(), Vec::new());
+    /// let frame = from_fn(|view| {
+    ///     rows.push(view.y0()..view.y1());
+    ///     Ok(())
+    /// });
+    /// Renderer::new(8, BinaryColor::Off).render(frame, &mut band, &mut display)?;
+    /// assert_eq!(rows, [0..3, 3..6, 6..8]);
+    /// # Ok::<(), microraster::RenderError<core::convert::Infallible>>(())
+    /// ```
+    pub fn y1(&self) -> i32 {
+        // At most `H` rows: a band of more than `i32::MAX` rows cannot exist.
+        self.y0 + self.rows.len() as i32
+    }
+
     pub(crate) fn row_mut(&mut self, y: i32) -> Option<&mut [C; W]> {
         let i = usize::try_from(y.checked_sub(self.y0)?).ok()?;
         self.rows.get_mut(i)

@@ -252,7 +252,7 @@ where
     B: Blend,
     Sh: FragmentShader<C, A> + ?Sized,
 {
-    let (y0, y1) = (color.y0(), color.y0() + color.height() as i32);
+    let (y0, y1) = (color.y0(), color.y1());
     for t in tris {
         let (lo, hi) = t.rows();
         if lo < y1 && hi >= y0 {

@@ -158,7 +158,7 @@ fn next_band_is_drawn_while_the_last_is_in_flight() {
         let r = Renderer::new(HEIGHT, BG);
         let frame = r.render_async(
             from_fn(|view| {
-                let (y0, y1) = (view.y0(), view.y0() + view.height() as i32);
+                let (y0, y1) = (view.y0(), view.y1());
                 log.borrow_mut().push(Event::Draw(y0));
                 for y in y0..y1 {
                     for x in 0..W {

@@ -47,7 +47,7 @@ impl<const W: usize, const H: usize> Pass<BinaryColor, W, H> for Fill {
         band: &mut BandView<'_, BinaryColor, W>,
         _: &Renderer<BinaryColor>,
     ) -> Result<(), Error> {
-        let rows = band.y0()..band.y0() + band.height() as i32;
+        let rows = band.y0()..band.y1();
         for y in rows.clone() {
             for x in 0..self.cols.min(W as i32) {
                 band.set_pixel(x, y, ON);

@@ -35,13 +35,14 @@ where
     F: DepthFormat,
     M: Interpolation,
 {
-    /// The band of frame rows `y0..y1` with its colour view and depth rows.
+    /// The band of `view`'s frame rows with its depth rows. The rows are
+    /// kept beside the view: the per-triangle row test reads them.
     pub(crate) fn new(
         view: &'a mut BandView<'v, C, W>,
         depth: DepthRows<'a, F, W>,
         state: DepthState,
-        (y0, y1): (i32, i32),
     ) -> Self {
+        let (y0, y1) = (view.y0(), view.y1());
         Band3d { view, depth, state, y0, y1, _m: PhantomData }
     }
 

@@ -48,7 +48,7 @@ use crate::{Error, Interpolate, Primitive};
 ///         if self.0 > 0 { Ok(()) } else { Err(Error::InvalidParameter) }
 ///     }
 ///     fn draw(&mut self, band: &mut BandView<'_, BinaryColor, W>, _: &Renderer<BinaryColor>) -> Result<(), Error> {
-///         for y in band.y0()..band.y0() + band.height() as i32 {
+///         for y in band.y0()..band.y1() {
 ///             for x in (0..W as i32).filter(|x| (x / self.0 + y / self.0) % 2 == 1) {
 ///                 band.set_pixel(x, y, BinaryColor::On);
 ///             }
@@ -134,7 +134,7 @@ impl<C: Interpolate, const S: u32, const W: usize, const H: usize> Pass<C, W, H>
     const CLEARS: bool = false;
 
     fn draw(&mut self, band: &mut BandView<'_, C, W>, renderer: &Renderer<C>) -> Result<(), Error> {
-        let (y0, y1) = (band.y0(), band.y0() + band.height() as i32);
+        let (y0, y1) = (band.y0(), band.y1());
         let mut view = LazyClear::<C, W, H>::new(band, renderer.background());
         for prim in self.iter() {
             let (lo, hi) = prim.rows();
@@ -362,7 +362,7 @@ where
     G: FnMut(i32, i32, &mut heapless::Vec<ScreenTriangle<S>, N>) -> Result<(), Error>,
 {
     fn draw(&mut self, band: &mut BandView<'_, C, W>, _: &Renderer<C>) -> Result<(), Error> {
-        let (y0, y1) = (band.y0(), band.y0() + band.height() as i32);
+        let (y0, y1) = (band.y0(), band.y1());
         self.bins.clear();
         (self.geometry)(y0, y1, self.bins)?;
         band3d::<C, F, M, W, H>(band, self.depth, self.state).draw_all(self.bins);
@@ -464,10 +464,9 @@ where
     F: DepthFormat,
     M: Interpolation,
 {
-    let (y0, y1) = (view.y0(), view.y0() + view.height() as i32);
     let mut rows = depth.rows_mut(view.height());
     for r in rows.iter_mut() {
         r.fill(F::FAR);
     }
-    Band3d::new(view, rows, state, (y0, y1))
+    Band3d::new(view, rows, state)
 }

@@ -89,9 +89,9 @@ where
     }
 
     fn draw(&mut self, view: &mut BandView<'_, C, W>, renderer: &Renderer<C>) -> Result<(), Error> {
-        let (y0, y1) = (view.y0(), view.y0() + view.height() as i32);
+        let (y0, y1) = (view.y0(), view.y1());
         let mut sv = sample_view::<A, C, SW, SH>(self.samples, renderer.background(), y0, y1);
-        let (sy0, sy1) = (sv.y0(), sv.y0() + sv.height() as i32);
+        let (sy0, sy1) = (sv.y0(), sv.y1());
         for prim in self.scene {
             match prim {
                 Primitive::Triangle(t) => draw_2d::<A, C, S, SW>(t, renderer.cull(), &mut sv, sy0, sy1),
@@ -167,7 +167,7 @@ where
     }
 
     fn draw(&mut self, view: &mut BandView<'_, C, W>, renderer: &Renderer<C>) -> Result<(), Error> {
-        let (y0, y1) = (view.y0(), view.y0() + view.height() as i32);
+        let (y0, y1) = (view.y0(), view.y1());
         let mut sv = sample_view::<super::Ssaa<N>, C, SW, SH>(self.samples, renderer.background(), y0, y1);
         let drawn = (self.draw)(&mut sv);
         resolve::<super::Ssaa<N>, C, W, SW>(&mut sv, view);
@@ -261,9 +261,9 @@ where
     }
 
     fn draw(&mut self, view: &mut BandView<'_, C, W>, renderer: &Renderer<C>) -> Result<(), Error> {
-        let (y0, y1) = (view.y0(), view.y0() + view.height() as i32);
+        let (y0, y1) = (view.y0(), view.y1());
         let mut sv = sample_view::<A, C, SW, SH>(self.samples, renderer.background(), y0, y1);
-        let (sy0, sy1) = (sv.y0(), sv.y0() + sv.height() as i32);
+        let (sy0, sy1) = (sv.y0(), sv.y1());
         let mut rows = self.depth.rows_mut(sv.height());
         for r in rows.iter_mut() {
             r.fill(F::FAR);
