@@ -20,6 +20,11 @@
 #                                           (comma-separated indices or scene names,
 #                                           e.g. `table m4f knot20k`: about two minutes);
 #                                           printed only, README and data untouched
+#   bash scripts/firmware.sh profile ROWS [N]
+#                                           where those fw_bench rows (as for `table`)
+#                                           spend their Cortex-M4F instructions: the N
+#                                           (default 30) costliest functions and source
+#                                           lines (examples/fw_profile; about two minutes)
 #   bash scripts/firmware.sh sweep          Cortex-M4F and Cortex-M0 instruction counts of the
 #                                           speed/accuracy report's configurations into
 #                                           docs/data/cortex-m.tsv (examples/fw_sweep); then
@@ -282,6 +287,28 @@ bench_board() {
   esac
 }
 
+# Per-location instruction counts of fw_bench rows on the Cortex-M4F: the
+# benchmark built with line tables in its profile mode (the rows only, one
+# frame each; MICRORASTER_FW_PROFILE), in a target folder of its own, and
+# QEMU's block log (-d in_asm,exec,nochain) read by examples/fw_profile.
+profile() { # profile ROWS [N]
+  local rows=$1 shown=${2:-30} elf fifo tool status=0
+  export MICRORASTER_FW_BENCH=$rows MICRORASTER_FW_PROFILE=1
+  setup
+  elf=$(FW_DIR=$ROOT/target/firmware-profile CARGO_PROFILE_RELEASE_DEBUG=line-tables-only \
+    MICRORASTER_BOARD=mps2-an386 build m4f fw_bench)
+  cargo build --quiet --release --example fw_profile
+  tool=$ROOT/target/release/examples/fw_profile
+  fifo=$(mktemp -u "${TMPDIR:-/tmp}/fw-profile.XXXXXX")
+  mkfifo "$fifo"
+  "$tool" "$elf" "$shown" <"$fifo" &
+  MICRORASTER_BOARD=mps2-an386 MICRORASTER_QEMU_ARGS="-icount shift=0 -d in_asm,exec,nochain -D $fifo" \
+    qemu "$elf" >/dev/null || status=$?
+  wait $! || status=$?
+  rm -f "$fifo"
+  [ "$status" -eq 0 ] || die "profiling rows $rows failed"
+}
+
 # Runs the benchmark on both targets and collects what the table needs into
 # $FW_DIR/table-input.txt (lines `TARGET bench|#|sym|size|fact ...`).
 bench_collect() {
@@ -466,6 +493,7 @@ case ${1:-} in
   build-st7789-dma) build_st7789_dma ;;
   build-rp2040) build_rp2040 ;;
   table) shift && write=1 table "$@" ;;
+  profile) profile "${2:?profile ROWS [N]}" "${3:-30}" ;;
   sweep) sweep ;;
   link) link ;;
   run) run "${2:?run m4f|m0}" ;;

@@ -103,11 +103,21 @@ mod firmware {
         height: u32,
         mut b: Buffers<'_, W, H, N, P>,
     ) -> Result<(), Fail> {
-        clock::calibrate()?;
+        // Profile mode (`firmware.sh profile`): the rows' frames and nothing
+        // else, for an instruction log whose counts are the frames'.
+        let profile = option_env!("MICRORASTER_FW_PROFILE").is_some();
+        if !profile {
+            clock::calibrate()?;
+        }
         let select = option_env!("MICRORASTER_FW_BENCH");
         for (i, bench) in list.iter().enumerate().filter(|(i, b)| benches::selected(select, *i, b)) {
             benches::prepare(bench.work, height, &mut b)?;
             let mut sink = Sink::new(W as u32, height, Mode::Consume);
+            if profile {
+                benches::frame(bench.work, height, BACKGROUND, &mut b, &mut sink)?;
+                hprintln!("bench {} profiled", i);
+                continue;
+            }
             stack::paint();
             let t = clock::Span::start();
             let result = benches::frame(black_box(bench.work), height, BACKGROUND, &mut b, &mut sink);

@@ -1,0 +1,191 @@
+//! Where a firmware benchmark spends its instructions, by source location:
+//! the per-function and per-line counts behind `docs/setup_cost.md`.
+//!
+//! `bash scripts/firmware.sh profile ROWS` builds `examples/fw_bench` for
+//! the Cortex-M4F with line tables and in its profile mode (the selected
+//! rows, one frame each, no clock calibration, stack painting or CRC pass),
+//! runs it on QEMU with `-icount shift=0 -d in_asm,exec,nochain` and pipes
+//! the log into this program:
+//!
+//! ```text
+//! fw_profile ELF [ROWS_SHOWN] < qemu-log
+//! ```
+//!
+//! QEMU lists each translation block's instructions once (`in_asm`) and
+//! logs every execution of a block (`exec`; `nochain` keeps blocks from
+//! jumping to each other unlogged), so a block's instructions times its
+//! executions is what it costs; the total equals the `-icount` count of the
+//! run. Each block is attributed to the source location of its first
+//! instruction (`addr2line -i`: the innermost frame inside the crate's
+//! `src/`, through inlining): blocks are a few instructions long, so a
+//! location's count is exact up to the blocks that straddle two.
+//!
+//! The total includes the start-up (zeroing `.bss`, about 0.1 M
+//! instructions) and the output of the row line.
+
+use std::collections::HashMap;
+use std::io::{BufRead, BufReader};
+use std::process::Command;
+
+fn main() -> Result<(), String> {
+    let mut args = std::env::args().skip(1);
+    let elf = args.next().ok_or("usage: fw_profile ELF [ROWS_SHOWN] < qemu-log")?;
+    let shown: usize = args.next().map_or(Ok(30), |s| s.parse()).map_err(|e| format!("rows shown: {e}"))?;
+    let counts = read_log(BufReader::new(std::io::stdin().lock()))?;
+    let total: u64 = counts.values().sum();
+    let locations = locate(&elf, counts.keys().copied().collect())?;
+    let symbols = symbols(&elf)?;
+    let (mut by_function, mut by_line) = (HashMap::new(), HashMap::new());
+    for (pc, n) in &counts {
+        let (mut function, line) = locations.get(pc).cloned().unwrap_or_default();
+        // No debug information (`$t`, a mapping symbol, or `??`): the
+        // symbol the address lies in.
+        if function.is_empty() || function.starts_with('$') || function.starts_with("??") {
+            function = symbol_of(&symbols, *pc).map_or_else(|| "(unknown)".into(), short_function);
+        }
+        let file = line.split(':').next().unwrap_or_default();
+        *by_function.entry(format!("{function} — {file}")).or_insert(0u64) += n;
+        *by_line.entry(line).or_insert(0u64) += n;
+    }
+    println!("{total} instructions executed ({elf})\n");
+    print_table("function (innermost inside src/) — file", by_function, total, shown);
+    print_table("source line", by_line, total, shown);
+    Ok(())
+}
+
+/// Instructions executed per block start address, from QEMU's log.
+fn read_log(log: impl BufRead) -> Result<HashMap<u32, u64>, String> {
+    let (mut size, mut counts) = (HashMap::<u32, u64>::new(), HashMap::<u32, u64>::new());
+    // The block being listed: its first address and instructions so far.
+    let mut listing: Option<(u32, u64)> = None;
+    for line in log.lines() {
+        let line = line.map_err(|e| format!("reading the log: {e}"))?;
+        if let Some(hex) = line.strip_prefix("0x") {
+            // `0x000012a4:  b580  push {r7, lr}`: one instruction of a listing.
+            let pc = hex.get(..8).and_then(|h| u32::from_str_radix(h, 16).ok());
+            listing = match (listing, pc) {
+                (Some((start, n)), _) => Some((start, n + 1)),
+                (None, Some(pc)) => Some((pc, 1)),
+                (None, None) => None,
+            };
+            continue;
+        }
+        if let Some((start, n)) = listing.take() {
+            size.insert(start, n);
+        }
+        // `Trace 0: 0x7f.. [00800408/000012a4/00000110/ff000200] name`
+        if line.starts_with("Trace") {
+            let pc = line
+                .split_once('[')
+                .and_then(|(_, rest)| rest.split('/').nth(1))
+                .and_then(|h| u32::from_str_radix(h, 16).ok())
+                .ok_or_else(|| format!("unreadable trace line: {line}"))?;
+            let n =
+                size.get(&pc).copied().ok_or_else(|| format!("block {pc:#x} ran before it was listed"))?;
+            *counts.entry(pc).or_insert(0) += n;
+        }
+    }
+    Ok(counts)
+}
+
+/// `(function, file:line)` of each address: its innermost inlined frame
+/// inside `src/`, else its outermost frame.
+fn locate(elf: &str, pcs: Vec<u32>) -> Result<HashMap<u32, (String, String)>, String> {
+    let mut out = HashMap::new();
+    for chunk in pcs.chunks(4096) {
+        let output = Command::new("addr2line")
+            .args(["-a", "-i", "-f", "-C", "-e", elf])
+            .args(chunk.iter().map(|pc| format!("{pc:#x}")))
+            .output()
+            .map_err(|e| format!("addr2line (binutils): {e}"))?;
+        let text = String::from_utf8_lossy(&output.stdout);
+        let mut lines = text.lines().peekable();
+        while let Some(address) = lines.next() {
+            let pc = u32::from_str_radix(address.trim_start_matches("0x"), 16)
+                .map_err(|_| format!("addr2line: unexpected line {address}"))?;
+            let mut frames = Vec::new();
+            while let Some(next) = lines.peek() {
+                if next.starts_with("0x") {
+                    break;
+                }
+                let function = lines.next().unwrap_or_default();
+                let place = lines.next().unwrap_or_default();
+                frames.push((function.to_string(), place.to_string()));
+            }
+            let pick = frames
+                .iter()
+                .find(|(_, place)| place.contains("/src/") && !place.contains("/rustlib/"))
+                .or(frames.last())
+                .cloned()
+                .unwrap_or_default();
+            out.insert(pc, (short_function(&pick.0), short_place(&pick.1)));
+        }
+    }
+    Ok(out)
+}
+
+/// The ELF's function symbols: `(start, size, name)`, sorted (`nm`).
+fn symbols(elf: &str) -> Result<Vec<(u32, u32, String)>, String> {
+    let output = Command::new("nm")
+        .args(["-C", "-S", "--defined-only", elf])
+        .output()
+        .map_err(|e| format!("nm (binutils): {e}"))?;
+    let mut out: Vec<_> = String::from_utf8_lossy(&output.stdout)
+        .lines()
+        .filter_map(|l| {
+            let mut f = l.splitn(4, ' ');
+            let (a, s, kind, name) = (f.next()?, f.next()?, f.next()?, f.next()?);
+            let (a, s) = (u32::from_str_radix(a, 16).ok()?, u32::from_str_radix(s, 16).ok()?);
+            matches!(kind, "t" | "T" | "w" | "W").then(|| (a & !1, s, name.to_string()))
+        })
+        .collect();
+    out.sort();
+    Ok(out)
+}
+
+/// The symbol whose extent holds `pc`.
+fn symbol_of(symbols: &[(u32, u32, String)], pc: u32) -> Option<&str> {
+    let i = symbols.partition_point(|s| s.0 <= pc).checked_sub(1)?;
+    let (start, size, name) = &symbols[i];
+    (pc < start + size.max(&1)).then_some(name.as_str())
+}
+
+/// A function name without its generic arguments' paths.
+fn short_function(f: &str) -> String {
+    let mut out = String::new();
+    let mut depth = 0;
+    for c in f.chars() {
+        match c {
+            '<' => {
+                if depth == 0 {
+                    out.push_str("<…>");
+                }
+                depth += 1;
+            }
+            '>' => depth -= 1,
+            _ if depth == 0 => out.push(c),
+            _ => {}
+        }
+    }
+    out
+}
+
+/// `path/file.rs:line` from the crate's root (`src/...`), else the file name.
+fn short_place(p: &str) -> String {
+    let p = p.split(" (").next().unwrap_or(p);
+    match p.rfind("/src/") {
+        Some(i) if !p.contains("/rustlib/") => p[i + 1..].to_string(),
+        _ => p.rsplit('/').next().unwrap_or(p).to_string(),
+    }
+}
+
+fn print_table(title: &str, counts: HashMap<String, u64>, total: u64, shown: usize) {
+    let mut rows: Vec<_> = counts.into_iter().collect();
+    rows.sort_by(|a, b| b.1.cmp(&a.1).then_with(|| a.0.cmp(&b.0)));
+    println!("| {title} | instructions | share |\n|---|--:|--:|");
+    for (name, n) in rows.iter().take(shown) {
+        let name = if name.is_empty() { "(no line information)" } else { name };
+        println!("| `{name}` | {n} | {:.1} % |", *n as f64 * 100.0 / total.max(1) as f64);
+    }
+    println!();
+}
