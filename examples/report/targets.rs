@@ -24,6 +24,14 @@ const SCENE_BUDGET: u64 = 3_000_000;
 /// The firmware benchmark's knot rows (`docs/data/fw-bench.tsv` keys).
 const FW_AFFINE: &str = "knot20k/meshlets-per-band-f32-affine";
 const FW_PERSP: &str = "knot20k/meshlets-per-band-f32-persp-correct";
+/// The firmware benchmark's band loop alone and the f32 affine knot frame
+/// stopped after each stage (`Work::KnotStage`), in order.
+const FW_BAND_LOOP: &str = "band-loop/clear-send-each-band";
+const FW_STAGES: [&str; 3] = [
+    "knot20k-stages/f32-affine-band-loop-vertex-stage-only",
+    "knot20k-stages/f32-affine-coverage-no-planes",
+    "knot20k-stages/f32-affine-all-but-pixel-writes",
+];
 
 /// Writes the "Targets" section to `w`; returns the table alone (for the README).
 #[allow(clippy::too_many_arguments)]
@@ -221,6 +229,25 @@ fn issue12(peers: &[Peer], breakdown: &[Breakdown], counts: &Counts, fw: &FwBenc
             a.covered,
             (p.instructions - a.instructions) as f64 / a.covered as f64,
         );
+        // The same frame stopped after each stage: what each costs.
+        let stage = |k: &str| fw.get("m4f", k).map(|r| r.instructions);
+        if let (Some(band), [Some(v), Some(c), Some(n)]) = (stage(FW_BAND_LOOP), FW_STAGES.map(stage)) {
+            let d = |hi: u64, lo: u64| per(hi.saturating_sub(lo));
+            let _ = write!(
+                w,
+                "Per mesh triangle, from the firmware table's stage rows (the affine frame stopped after each \
+                 stage): the vertex stage {:.0} (clusters tested and, per band, the vertices of the clusters that \
+                 reach it transformed, clipped, snapped, culled and lit), coverage {:.0}, plane set-up and the \
+                 fragment loop {:.0}, pixel writes with the colour planes of the triangles that pass the depth \
+                 test {:.0}, the band loop {:.0}: the vertex stage alone is {:.1}× the {PER_TRI_AFFINE:.0} budget. ",
+                d(v, band),
+                d(c, v),
+                d(n, c),
+                d(a.instructions, n),
+                per(band),
+                d(v, band) / PER_TRI_AFFINE,
+            );
+        }
         if let Some((s, v)) = scene {
             let raster_px = (s.instructions - v.instructions) as f64 / s.covered as f64;
             let _ = write!(
