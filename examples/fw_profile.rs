@@ -189,3 +189,60 @@ fn print_table(title: &str, counts: HashMap<String, u64>, total: u64, shown: usi
     }
     println!();
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Blocks cost their length times their runs; a block re-listed
+    /// (retranslated) counts with its new length from then on.
+    #[test]
+    fn counts_block_lengths_times_executions() {
+        let log = "\
+----------------
+IN: main
+0x00000400:  f049 ffa5  bl       #0x4a34e
+0x00000404:  480e       ldr      r0, [pc, #0x38]
+
+Trace 0: 0x7f5954000100 [00800408/00000400/00000110/ff000200] main
+----------------
+IN: f
+0x00001000:  b580       push     {r7, lr}
+0x00001002:  466f       mov      r7, sp
+0x00001004:  bd80       pop      {r7, pc}
+
+Trace 0: 0x7f5954000240 [00800408/00001000/00000110/ff000200] f
+Trace 0: 0x7f5954000240 [00800408/00001000/00000110/ff000200] f
+Trace 0: 0x7f5954000100 [00800408/00000400/00000110/ff000200] main
+----------------
+IN: main
+0x00000400:  f049 ffa5  bl       #0x4a34e
+
+Trace 0: 0x7f5954000300 [00800408/00000400/00000110/ff000200] main
+";
+        let counts = read_log(log.as_bytes()).unwrap();
+        assert_eq!(counts.get(&0x1000), Some(&6));
+        assert_eq!(counts.get(&0x400), Some(&(2 + 2 + 1)));
+        assert_eq!(counts.values().sum::<u64>(), 11);
+    }
+
+    #[test]
+    fn a_block_run_before_its_listing_is_an_error() {
+        let log = "Trace 0: 0x7f59 [00800408/00002000/00000110/ff000200] g\n";
+        assert!(read_log(log.as_bytes()).unwrap_err().contains("0x2000"));
+    }
+
+    #[test]
+    fn names_and_places_are_shortened() {
+        assert_eq!(short_function("draw_cached<f32, microraster::X<4>>"), "draw_cached<…>");
+        assert_eq!(
+            short_place("/work/main/src/raster/attr.rs:188 (discriminator 2)"),
+            "src/raster/attr.rs:188"
+        );
+        assert_eq!(short_place("/x/rustlib/src/rust/library/core/src/slice/index.rs:219"), "index.rs:219");
+        let symbols = vec![(0x100, 0x20, "a".to_string()), (0x200, 0x10, "b".to_string())];
+        assert_eq!(symbol_of(&symbols, 0x110), Some("a"));
+        assert_eq!(symbol_of(&symbols, 0x150), None);
+        assert_eq!(symbol_of(&symbols, 0x20f), Some("b"));
+    }
+}
