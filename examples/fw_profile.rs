@@ -48,7 +48,7 @@ fn main() -> Result<(), String> {
         *by_line.entry(line).or_insert(0u64) += n;
     }
     println!("{total} instructions executed ({elf})\n");
-    print_table("function (innermost inside src/) — file", by_function, total, shown);
+    print_table("function (innermost inside the crate's src/) — file", by_function, total, shown);
     print_table("source line", by_line, total, shown);
     Ok(())
 }
@@ -114,7 +114,7 @@ fn locate(elf: &str, pcs: Vec<u32>) -> Result<HashMap<u32, (String, String)>, St
             }
             let pick = frames
                 .iter()
-                .find(|(_, place)| place.contains("/src/") && !place.contains("/rustlib/"))
+                .find(|(_, place)| in_crate(place).is_some())
                 .or(frames.last())
                 .cloned()
                 .unwrap_or_default();
@@ -170,13 +170,19 @@ fn short_function(f: &str) -> String {
     out
 }
 
-/// `path/file.rs:line` from the crate's root (`src/...`), else the file name.
+/// A source place inside this crate's `src/` (the ELF and this program are
+/// built from the same checkout), as `src/path/file.rs:line`; `None` for
+/// the standard library, dependencies (whose registry paths also hold a
+/// `/src/`) and the examples.
+fn in_crate(place: &str) -> Option<&str> {
+    place.strip_prefix(concat!(env!("CARGO_MANIFEST_DIR"), "/")).filter(|p| p.starts_with("src/"))
+}
+
+/// `src/path/file.rs:line` inside this crate ([`in_crate`]), else the file
+/// name and line.
 fn short_place(p: &str) -> String {
     let p = p.split(" (").next().unwrap_or(p);
-    match p.rfind("/src/") {
-        Some(i) if !p.contains("/rustlib/") => p[i + 1..].to_string(),
-        _ => p.rsplit('/').next().unwrap_or(p).to_string(),
-    }
+    in_crate(p).unwrap_or_else(|| p.rsplit('/').next().unwrap_or(p)).to_string()
 }
 
 fn print_table(title: &str, counts: HashMap<String, u64>, total: u64, shown: usize) {
@@ -236,10 +242,13 @@ Trace 0: 0x7f5954000300 [00800408/00000400/00000110/ff000200] main
     fn names_and_places_are_shortened() {
         assert_eq!(short_function("draw_cached<f32, microraster::X<4>>"), "draw_cached<…>");
         assert_eq!(
-            short_place("/work/main/src/raster/attr.rs:188 (discriminator 2)"),
+            short_place(concat!(env!("CARGO_MANIFEST_DIR"), "/src/raster/attr.rs:188 (discriminator 2)")),
             "src/raster/attr.rs:188"
         );
         assert_eq!(short_place("/x/rustlib/src/rust/library/core/src/slice/index.rs:219"), "index.rs:219");
+        // A dependency's `src/` is not the crate's.
+        let dep = "/root/.cargo/registry/src/index/embedded-graphics-core-0.4.0/src/draw_target/mod.rs:52";
+        assert_eq!(short_place(dep), "mod.rs:52");
         let symbols = vec![(0x100, 0x20, "a".to_string()), (0x200, 0x10, "b".to_string())];
         assert_eq!(symbol_of(&symbols, 0x110), Some("a"));
         assert_eq!(symbol_of(&symbols, 0x150), None);
