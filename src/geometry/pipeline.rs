@@ -17,6 +17,7 @@
 mod bins;
 mod cache;
 mod cluster;
+mod inside;
 mod material;
 mod presnap;
 #[cfg(feature = "fragment")]
@@ -336,7 +337,9 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
             };
             let cache = &mut cache.v[..mesh.vertex_count()];
             let triangles = mesh.indices.iter().map(|t| t.map(usize::from));
-            self.draw_cached(&setup, mesh, &Uniform, cache, triangles, &mut stats, |tri, _| {
+            let inside = inside::InsideView::new(&setup.ctx.mvp, setup.planes).contains(mesh.bounding_sphere);
+            let cached = cache::Cluster { slots: cache, inside };
+            self.draw_cached(&setup, mesh, &Uniform, cached, triangles, &mut stats, |tri, _| {
                 bins.push(tri);
                 Ok(())
             })?;

@@ -80,6 +80,13 @@ impl<T: Scalar, const S: u32> Cached<T, S> {
     const EMPTY: Self = Cached { clip: [T::ZERO; 4], state: 0, code: 0, screen: None, q: [0.0; 2] };
 }
 
+/// The cache slots of one call of [`Pipeline::draw_cached`], and whether
+/// their vertices lie inside the clip volume ([`super::inside`]).
+pub(super) struct Cluster<'a, T, const S: u32> {
+    pub(super) slots: &'a mut [Cached<T, S>],
+    pub(super) inside: bool,
+}
+
 /// Where the cached path reads its vertices: model positions and normals by
 /// cache slot (a mesh vertex, or a meshlet's local vertex).
 pub(super) trait VertexSource {
@@ -101,6 +108,8 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     /// `cache` holds one entry per slot of `src` and is overwritten.
     /// `material` colours the vertices ([`super::Uniform`]: the mesh's
     /// colour); it cannot be per face (one lit colour is cached per vertex).
+    /// `cache.inside` says the vertices' bounding sphere lies inside the
+    /// clip volume ([`super::inside`]): their outcodes are 0, not computed.
     ///
     /// Errors: [`Error::InvalidParameter`] for a per-face `material`;
     /// [`Error::InvalidMesh`] for a slot beyond `cache` or `src`
@@ -112,7 +121,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         setup: &MeshSetup<T>,
         src: &Src,
         material: &M,
-        cache: &mut [Cached<T, S>],
+        cache: Cluster<'_, T, S>,
         triangles: impl Iterator<Item = [usize; 3]>,
         stats: &mut MeshStats,
         mut sink: impl FnMut(ScreenTriangle<S>, &mut MeshStats) -> Result<(), Error>,
@@ -120,6 +129,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         if M::PER_FACE {
             return Err(Error::InvalidParameter);
         }
+        let Cluster { slots: cache, inside } = cache;
         let MeshSetup { ctx, planes, band, max } = setup;
         let (planes, max) = (*planes, *max);
         let coder = VertexClass::<T>::new(planes);
@@ -160,7 +170,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
                 let e = &mut cache[j];
                 if e.state & Cached::<T, S>::CLIP == 0 {
                     e.clip = ctx.position(position(j)?, (e.clip[1], e.clip[3]));
-                    e.code = coder.code(&e.clip);
+                    e.code = if inside { 0 } else { coder.code(&e.clip) };
                     e.state |= Cached::<T, S>::CLIP;
                 }
                 codes[k] = e.code;

@@ -1,0 +1,181 @@
+//! Whether a bounding sphere lies inside the clip volume with room to
+//! spare: then every vertex within it has outcode 0, and the cached vertex
+//! path ([`super::cache`]) skips the per-vertex clip codes (on the knot,
+//! about 90 instructions per classified vertex on the Cortex-M4F).
+//!
+//! # Why a vertex in the sphere then has outcode 0
+//! Let `m` bound the magnitude of every clip coordinate over the sphere
+//! (`|row·(c, 1)| + r·|row.xyz|₁`, the largest of the four rows) and `l`
+//! the largest `|row.xyz|₁`. The test asks for `w − w_min`, `z` (near),
+//! `w − z` (far, when clipped) and `w ± x`, `w ± y` (the view volume, guard
+//! band 1) to be at least `margin = (m + l + 1)/2^8` everywhere in the
+//! sphere (the least value of a plane `p` over it is `p·(c, 1) −
+//! r·|p.xyz|`, bounded with `|p.xyz|₁`). A vertex's coordinates
+//! as the pipeline computes them differ from the exact ones by:
+//! * `f32`: three products and three sums, each rounding at 2^-24 relative
+//!   to a partial sum of at most `m`: within `2^-22·m`;
+//! * `Fx`: the position's conversion (2^-17 per coordinate, `2^-17·l` in
+//!   all), three truncated products (2^-16 each) and the matrix's own
+//!   rounding in `f32` here (2^-24 relative): within `2^-17·l + 2^-14 +
+//!   2^-22·m`.
+//!
+//! So each computed distance of [`VertexClass::code`](crate::clip3d) (sums
+//! of two coordinates, `g·w` for the guard band `g ≥ 1`) is positive: two
+//! coordinate errors are below `margin`, `fl(g·w) ≥ w` for `g ≥ 1` and
+//! `w > 0` (rounding is monotonic; `Fx` truncation loses at most 2^-16,
+//! also inside the margin), and a floating sum of a non-negative exact sum
+//! is non-negative. `m ≤ 2^60` keeps every coordinate finite and within the
+//! code's input limit (2^64). The sphere is widened by twice the
+//! containment tolerance validation allows (`SPHERE_TOLERANCE`).
+//! `tests::inside_spheres_have_only_inside_vertices` checks the claim on
+//! random spheres and matrices in both numeric paths.
+
+use crate::clip3d::ClipPlanes;
+use crate::math::{Mat4, Scalar, Vec4};
+use crate::mesh::SPHERE_TOLERANCE;
+
+/// The test of the module docs for one model-view-projection matrix.
+pub(super) struct InsideView {
+    rows: [Vec4<f32>; 4],
+    l1: [f32; 4],
+    far: bool,
+    w_min: f32,
+}
+
+impl InsideView {
+    pub(super) fn new<T: Scalar>(mvp: &Mat4<T>, planes: ClipPlanes) -> Self {
+        let rows = super::rows_f32(mvp);
+        let l1 = rows.map(|r| r.x.abs() + r.y.abs() + r.z.abs());
+        // Fx acts on w_min no smaller than its smallest value, 2^-16.
+        let w_min = planes.w_min().max(ClipPlanes::W_MIN);
+        InsideView { rows, l1, far: planes.far(), w_min }
+    }
+
+    /// True if every point of the sphere `(c, r)` (as validated, within
+    /// its tolerance) has outcode 0 as the vertex stage computes it.
+    pub(super) fn contains(&self, (c, r): ([f32; 3], f32)) -> bool {
+        let r = r * (1.0 + 2.0 * SPHERE_TOLERANCE);
+        let centre = Vec4::new(c[0], c[1], c[2], 1.0);
+        let mut m = 0.0f32;
+        let mut l = 0.0f32;
+        for k in 0..4 {
+            m = m.max(self.rows[k].dot(centre).abs() + r * self.l1[k]);
+            l = l.max(self.l1[k]);
+        }
+        // Also false for NaN and infinity.
+        if m.is_nan() || m > 1.152_921_5e18 {
+            return false;
+        }
+        let margin = (m + l + 1.0) / 256.0;
+        // The least of `p · (q, 1)` over the sphere is `p · (c, 1) − r·|p.xyz|`,
+        // and `|p.xyz|₁` bounds `|p.xyz|`.
+        let least = |p: Vec4<f32>| p.dot(centre) - r * (p.x.abs() + p.y.abs() + p.z.abs());
+        let [x, y, z, w] = self.rows;
+        let w_min = Vec4::new(0.0, 0.0, 0.0, self.w_min);
+        let far_ok = !self.far || least(w - z) >= margin;
+        least(w - w_min) >= margin
+            && least(z) >= margin
+            && far_ok
+            && least(w - x) >= margin
+            && least(w + x) >= margin
+            && least(w - y) >= margin
+            && least(w + y) >= margin
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::clip3d::VertexClass;
+    use crate::math::{Fx, Vec3, transform};
+
+    fn rng(seed: &mut u64) -> f32 {
+        *seed ^= *seed << 13;
+        *seed ^= *seed >> 7;
+        *seed ^= *seed << 17;
+        ((*seed >> 11) as f64 / (1u64 << 52) as f64 - 1.0) as f32
+    }
+
+    /// Clip position of `p` as the vertex stage computes it.
+    fn clip<T: Scalar>(mvp: &Mat4<T>, p: [f32; 3]) -> [T; 4] {
+        let p = Vec3::<T>::from_f32(p);
+        let [a, b, c, d] = &mvp.cols;
+        [0, 1, 2, 3].map(|r| a[r] * p.x + b[r] * p.y + c[r] * p.z + d[r])
+    }
+
+    fn check<T: Scalar>(seed: &mut u64, planes: ClipPlanes, accepted: &mut u32, near_edge: &mut u32) {
+        // A camera looking at the origin from a random direction; spheres
+        // scattered over and beyond the view, some hugging its edges.
+        let dir = Vec3::new(rng(seed), rng(seed), rng(seed) + 2.0);
+        let eye = dir * (2.0 + 3.0 * rng(seed).abs());
+        let Ok(view) = transform::look_at(eye, Vec3::new(0.0, 0.0, 0.0), Vec3::new(0.0, 1.0, 0.0)) else {
+            return;
+        };
+        let fov = 0.5 + rng(seed).abs();
+        let Ok(proj) = transform::perspective(fov, 1.3, 0.5, 12.0) else { return };
+        let mvp_f = proj * view;
+        let mvp = Mat4::<T>::from_f32(mvp_f.to_f32());
+        let test = InsideView::new(&mvp, planes);
+        let coder = VertexClass::<T>::new(planes);
+        for _ in 0..40 {
+            let c = [rng(seed) * 3.0, rng(seed) * 3.0, rng(seed) * 3.0];
+            let r = rng(seed).abs() * 0.6;
+            if !test.contains((c, r)) {
+                continue;
+            }
+            *accepted += 1;
+            for i in 0..64 {
+                // Points on and just inside the sphere (the tolerance).
+                let d = Vec3::new(rng(seed), rng(seed), rng(seed));
+                let len = d.length();
+                if len == 0.0 {
+                    continue;
+                }
+                let s = r * (1.0 + SPHERE_TOLERANCE) / len * if i % 4 == 0 { 1.0 } else { rng(seed).abs() };
+                let p = [c[0] + d.x * s, c[1] + d.y * s, c[2] + d.z * s];
+                let v = clip(&mvp, p);
+                assert_eq!(coder.code(&v), 0, "{c:?} {r} {p:?}");
+                // How close to the view volume's edge the accepted points get.
+                let v = v.map(|x| x.to_f32());
+                let edge = [v[3] - v[0], v[3] + v[0], v[3] - v[1], v[3] + v[1], v[2], v[3] - v[2]];
+                *near_edge += edge.iter().any(|&e| e < 0.05 * v[3]) as u32;
+            }
+        }
+    }
+
+    /// Whenever a sphere is accepted, every point of it (within the
+    /// validation tolerance) has outcode 0, in `f32` and in `Fx`, with and
+    /// without the far plane.
+    #[test]
+    fn inside_spheres_have_only_inside_vertices() {
+        let mut seed = 0x5851_f42d_4c95_7f2du64;
+        let (mut accepted, mut near_edge) = (0, 0);
+        for i in 0..600 {
+            let planes = if i % 2 == 0 { ClipPlanes::DEFAULT } else { ClipPlanes::NO_FAR };
+            let planes = if i % 3 == 0 { planes.with_guard_band(1.0) } else { planes };
+            check::<f32>(&mut seed, planes, &mut accepted, &mut near_edge);
+            check::<Fx>(&mut seed, planes, &mut accepted, &mut near_edge);
+        }
+        // Not vacuous: many spheres pass, and their points reach the edges.
+        assert!(accepted > 2_000 && near_edge > 1_000, "{accepted} {near_edge}");
+    }
+
+    /// Spheres across a plane, behind the eye or beyond the range are not
+    /// inside.
+    #[test]
+    fn spheres_across_the_edges_are_not_inside() {
+        let view =
+            transform::look_at(Vec3::new(0.0, 0.0, 5.0), Vec3::new(0.0, 0.0, 0.0), Vec3::new(0.0, 1.0, 0.0))
+                .unwrap();
+        let mvp = transform::perspective(0.8, 1.0, 1.0, 10.0).unwrap() * view;
+        let test = InsideView::new(&mvp, ClipPlanes::DEFAULT);
+        assert!(test.contains(([0.0; 3], 0.5)));
+        assert!(!test.contains(([0.0; 3], 3.0))); // beyond the sides
+        assert!(!test.contains(([0.0, 0.0, 4.5], 0.2))); // across the near plane
+        assert!(!test.contains(([0.0, 0.0, -5.5], 0.2))); // beyond the far plane
+        assert!(test.contains(([0.0, 0.0, -4.0], 0.2)));
+        assert!(InsideView::new(&mvp, ClipPlanes::NO_FAR).contains(([0.0, 0.0, -5.5], 0.2)));
+        assert!(!test.contains(([0.0; 3], f32::NAN)));
+        assert!(!test.contains(([1e30, 0.0, 0.0], 1.0)));
+    }
+}
