@@ -183,8 +183,10 @@ pub(crate) fn round_even_f32(v: f32) -> i64 {
     let a = if v < 0.0 { -v } else { v };
     let r = if a < TWO23 {
         ((a + TWO23) - TWO23) as i32 as i64
-    } else if a < 2_147_483_648.0 {
-        a as i32 as i64 // an i32 conversion: no 64-bit library call
+    } else if a < 4_294_967_296.0 {
+        // A u32 conversion (one instruction with an FPU), not the 64-bit
+        // library call: depths `z/w·(2^32 − 1)` land here.
+        a as u32 as i64
     } else {
         a as i64
     };
@@ -267,9 +269,10 @@ mod tests {
     fn round_even_matches_the_definition() {
         let mut rng = Rng(5);
         for i in 0..400_000u32 {
-            let v = match i % 3 {
+            let v = match i % 4 {
                 0 => rng.range(-2e7, 2e7),
                 1 => (rng.next() as i32 >> (i % 24)) as f32 * 0.5, // ties
+                2 => rng.range(-4.3e9, 4.3e9),                     // the u32 conversion's range and its ends
                 _ => rng.range(-1.0995e12, 1.0995e12),
             };
             let x = f64::from(v);
@@ -280,6 +283,11 @@ mod tests {
             };
             assert_eq!(round_even_f32(v) as f64, want, "{v}");
         }
+        for v in [2_147_483_648.0f32, 4_294_967_040.0, 4_294_967_296.0, 8_388_608.0] {
+            assert_eq!((round_even_f32(v), round_even_f32(-v)), (v as i64, -(v as i64)));
+        }
+        assert_eq!(round_even_f32(8_388_607.5), 8_388_608); // a tie, to even
+        assert_eq!(round_even_f32(-8_388_606.5), -8_388_606);
     }
 
     /// The prepared forms against `div_scaled` itself (whose rounding the
