@@ -104,6 +104,19 @@ pub enum Work {
     /// stages are in the default table, the `Fx` ones run on request
     /// (select them by their scene, `knot20k-stages`).
     KnotStage(Vertex, Stage),
+    /// What bands of other heights would buy (on request, `knot20k-rows`):
+    /// the `f32` vertex stage of [`Work::Meshlets`] for bands of this many
+    /// rows ([`Pipeline::meshlet_triangles`] per band, triangles only
+    /// counted, no band buffer or band loop). 240 rows: one band, the
+    /// vertex work of a framebuffer renderer on the same meshlets.
+    #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+    KnotVertexRows(u16),
+    /// The whole `f32` affine frame of [`Work::Meshlets`] with bands of
+    /// [`TALL_48`] or [`TALL_240`] rows (on request, `knot20k-rows`): the
+    /// speed a user buys with the RAM of taller bands (240: a whole
+    /// colour and depth frame, as a framebuffer renderer holds).
+    #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+    KnotTall(u16),
     /// The 2D kit's dashboard ([`dashboard::dashboard`]: shapes with
     /// gradients, anti-aliasing and translucency, an alpha sprite, text),
     /// built and drawn in every band by `render::from_fn`.
@@ -182,7 +195,28 @@ pub const M4F: &[Bench] = &[
     probe("knot20k-stages", Work::KnotStage(Fix, Stage::Vertex)),
     probe("knot20k-stages", Work::KnotStage(Fix, Stage::Coverage)),
     probe("knot20k-stages", Work::KnotStage(Fix, Stage::NoWrites)),
+    // Taller bands: what more RAM buys (the report's targets,
+    // docs/setup_cost.md); the other heights with `table m4f knot20k-rows`.
+    #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+    bench("knot20k-rows", Work::KnotVertexRows(240)),
+    #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+    bench("knot20k-rows", Work::KnotTall(TALL_48 as u16)),
+    #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+    bench("knot20k-rows", Work::KnotTall(TALL_240 as u16)),
+    #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+    probe("knot20k-rows", Work::KnotVertexRows(16)),
+    #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+    probe("knot20k-rows", Work::KnotVertexRows(32)),
+    #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+    probe("knot20k-rows", Work::KnotVertexRows(48)),
+    #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+    probe("knot20k-rows", Work::KnotVertexRows(80)),
 ];
+
+/// Rows of the taller bands of [`Work::KnotTall`] (Cortex-M4F only).
+pub const TALL_48: usize = 48;
+/// A band as tall as the frame ([`Work::KnotTall`]).
+pub const TALL_240: usize = 240;
 
 /// Cortex-M0 (160 × 128, 4-row bands, one band's bins): one line per configuration.
 pub const M0: &[Bench] = &[
@@ -228,6 +262,24 @@ impl Work {
             Work::KnotStage(Fix, Stage::Coverage) => "Fx affine: + coverage, no planes",
             Work::KnotStage(Fix, Stage::NoWrites) => "Fx affine: all but pixel writes",
             Work::Dashboard => "2D kit, drawn per band",
+            #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+            Work::KnotVertexRows(16) => "f32 vertex stage only, 16-row bands",
+            #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+            Work::KnotVertexRows(32) => "f32 vertex stage only, 32-row bands",
+            #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+            Work::KnotVertexRows(48) => "f32 vertex stage only, 48-row bands",
+            #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+            Work::KnotVertexRows(80) => "f32 vertex stage only, 80-row bands",
+            #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+            Work::KnotVertexRows(240) => "f32 vertex stage only, one 240-row band",
+            #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+            Work::KnotVertexRows(_) => "f32 vertex stage only, other bands",
+            #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+            Work::KnotTall(48) => "meshlets, f32, affine, 48-row bands",
+            #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+            Work::KnotTall(240) => "meshlets, f32, affine, one 240-row band",
+            #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+            Work::KnotTall(_) => "meshlets, f32, affine, other bands",
         }
     }
 
@@ -241,7 +293,22 @@ impl Work {
             Work::Frame3d(..) | Work::PerBand3d(..) => "BAND,DEPTH,BINS",
             Work::Meshlets(F32, _) | Work::KnotStage(F32, _) => "BAND,DEPTH,CLUSTER",
             Work::Meshlets(Fix, _) | Work::KnotStage(Fix, _) => "BAND,DEPTH,CLUSTER_FX",
+            #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+            Work::KnotVertexRows(_) => "CLUSTER",
+            #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+            Work::KnotTall(48) => "BAND48,DEPTH48,CLUSTER",
+            #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+            Work::KnotTall(_) => "BAND240,DEPTH240,CLUSTER",
         }
+    }
+
+    /// Whether it only counts the vertex stage's triangles ([`Work::KnotVertexRows`]).
+    fn counts_only(&self) -> bool {
+        #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+        if let Work::KnotVertexRows(_) = self {
+            return true;
+        }
+        false
     }
 
     /// Whether it sends pixels (a frame CRC and covered pixels mean something).
@@ -249,7 +316,7 @@ impl Work {
         !matches!(
             self,
             Work::Vertex3d(_) | Work::Vertex3dCached | Work::VertexPerBand3d(_) | Work::KnotStage(..)
-        )
+        ) && !self.counts_only()
     }
 }
 
@@ -270,6 +337,22 @@ pub struct Buffers<'a, const W: usize, const H: usize, const N: usize, const P: 
     /// One meshlet's vertices ([`Work::Meshlets`]), per numeric path.
     /// None on the Cortex-M0 (its 16 KB hold no knot row).
     pub cluster: Option<(&'a mut ClusterCache<f32, S>, &'a mut ClusterCache<Fx, S>)>,
+    /// Taller bands ([`Work::KnotTall`]); not on the Cortex-M0, whose
+    /// stack has no room for even this field's bytes.
+    #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+    pub tall: Option<Tall<'a, W>>,
+}
+
+/// The colour and depth bands of [`Work::KnotTall`].
+pub struct Tall<'a, const W: usize> {
+    /// [`TALL_48`] rows.
+    pub band48: &'a mut Band<Rgb565, W, TALL_48>,
+    /// Depth rows of `band48`.
+    pub depth48: &'a mut DepthBand<Depth16, W, TALL_48>,
+    /// [`TALL_240`] rows.
+    pub band240: &'a mut Band<Rgb565, W, TALL_240>,
+    /// Depth rows of `band240`.
+    pub depth240: &'a mut DepthBand<Depth16, W, TALL_240>,
 }
 
 /// The vertex cache of [`Work::Vertex3dCached`].
@@ -301,6 +384,33 @@ pub fn prepare<const W: usize, const H: usize, const N: usize, const P: usize>(
 /// Renders one frame of `work` (after [`prepare`]) into `sink` with background `bg`:
 /// what the firmware times.
 pub fn frame<const W: usize, const H: usize, const N: usize, const P: usize>(
+    work: Work,
+    height: u32,
+    bg: Rgb565,
+    b: &mut Buffers<'_, W, H, N, P>,
+    sink: &mut Sink,
+) -> Result<(), Error> {
+    // The taller-band rows apart: in the same function their code changed
+    // how the compiler laid out (and how much stack took) every other row.
+    #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+    match work {
+        Work::KnotVertexRows(rows) => {
+            let c = b.cluster.as_mut().ok_or(Error::BufferTooSmall)?;
+            return knot_vertex_rows::<W>(height, rows, c.0);
+        }
+        Work::KnotTall(rows) => {
+            let c = b.cluster.as_mut().ok_or(Error::BufferTooSmall)?;
+            let t = b.tall.as_mut().ok_or(Error::BufferTooSmall)?;
+            return knot_tall::<W>(Renderer::new(height, bg), rows, t, c.0, sink);
+        }
+        _ => {}
+    }
+    frame_other(work, height, bg, b, sink)
+}
+
+/// [`frame`] for every row but the taller-band ones.
+#[inline(never)]
+fn frame_other<const W: usize, const H: usize, const N: usize, const P: usize>(
     work: Work,
     height: u32,
     bg: Rgb565,
@@ -352,9 +462,54 @@ pub fn frame<const W: usize, const H: usize, const N: usize, const P: usize>(
             (F32, c) => knot_stage::<f32, W, H>(r, b.band, b.depth, c.0, stage, sink),
             (Fix, c) => knot_stage::<Fx, W, H>(r, b.band, b.depth, c.1, stage, sink),
         },
+        #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+        Work::KnotVertexRows(_) | Work::KnotTall(_) => Err(Error::InvalidParameter), // in `frame`
         #[cfg(not(any(not(target_os = "none"), target_abi = "eabihf")))]
         Work::Meshlets(..) | Work::KnotStage(..) => Err(Error::InvalidParameter),
     }
+}
+
+/// [`Work::KnotTall`]. Not inlined: its frames' locals would enlarge
+/// [`frame`]'s stack frame, and so every row's stack figure.
+#[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+#[inline(never)]
+fn knot_tall<const W: usize>(
+    r: Renderer<Rgb565>,
+    rows: u16,
+    t: &mut Tall<'_, W>,
+    cache: &mut ClusterCache<f32, S>,
+    sink: &mut Sink,
+) -> Result<(), Error> {
+    match rows as usize {
+        TALL_48 => meshlets::<f32, _, W, TALL_48>(r, t.band48, t.depth48, cache, Affine, sink),
+        TALL_240 => meshlets::<f32, _, W, TALL_240>(r, t.band240, t.depth240, cache, Affine, sink),
+        _ => Err(Error::InvalidParameter),
+    }
+}
+
+/// [`Work::KnotVertexRows`]: the knot's `f32` vertex stage for bands of
+/// `rows` rows, each band's triangles only counted (not inlined, as
+/// [`knot_tall`]).
+#[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+#[inline(never)]
+fn knot_vertex_rows<const W: usize>(
+    height: u32,
+    rows: u16,
+    cache: &mut ClusterCache<f32, S>,
+) -> Result<(), Error> {
+    let pipeline = Scene3d::pipeline::<f32, S>(W as u32, height)?;
+    let model = knot_model::<f32>();
+    let (mut y0, height) = (0, height as i32);
+    while y0 < height {
+        let y1 = (y0 + i32::from(rows.max(1))).min(height);
+        let mut n = 0u32;
+        pipeline.meshlet_triangles(&knot_mesh::VALID_KNOT, &model, KNOT_COLOR, cache, (y0, y1 - 1), |t| {
+            n += black_box(t).v[0].depth >> 16
+        })?;
+        black_box(n);
+        y0 = y1;
+    }
+    Ok(())
 }
 
 /// [`Work::KnotStage`]: the knot's frame up to `stage`.
@@ -533,7 +688,9 @@ pub fn primitives<const W: usize, const H: usize, const N: usize, const P: usize
     match work {
         Work::Clear | Work::Dashboard => Ok((0, 0)),
         #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
-        Work::Meshlets(..) | Work::KnotStage(..) => Ok((knot_mesh::KNOT.triangles.len() as u32, 0)),
+        Work::Meshlets(..) | Work::KnotStage(..) | Work::KnotVertexRows(_) | Work::KnotTall(_) => {
+            Ok((knot_mesh::KNOT.triangles.len() as u32, 0))
+        }
         #[cfg(not(any(not(target_os = "none"), target_abi = "eabihf")))]
         Work::Meshlets(..) | Work::KnotStage(..) => Err(Error::InvalidParameter),
         Work::Frame2d(scene) | Work::Streamed2d(scene) => count_2d(scene),

@@ -79,8 +79,20 @@ mod firmware {
         static mut CACHE: benches::Cache = benches::Cache::new();
         static mut CLUSTER: ClusterCache<f32, S> = ClusterCache::new();
         static mut CLUSTER_FX: ClusterCache<Fx, S> = ClusterCache::new();
+        // Taller bands, for the rows that measure what they buy.
+        static mut BAND48: Band<Rgb565, { benches::M4F_SIZE.0 }, { benches::TALL_48 }> =
+            Band::new(BACKGROUND);
+        static mut DEPTH48: DepthBand<Depth16, { benches::M4F_SIZE.0 }, { benches::TALL_48 }> =
+            DepthBand::zeroed();
+        static mut BAND240: Band<Rgb565, { benches::M4F_SIZE.0 }, { benches::TALL_240 }> =
+            Band::new(BACKGROUND);
+        static mut DEPTH240: DepthBand<Depth16, { benches::M4F_SIZE.0 }, { benches::TALL_240 }> =
+            DepthBand::zeroed();
         let cluster = Some((CLUSTER, CLUSTER_FX));
-        let b = Buffers { prims: PRIMS, band: BAND, depth: DEPTH, bins: BINS, cache: Some(CACHE), cluster };
+        let tall =
+            Some(benches::Tall { band48: BAND48, depth48: DEPTH48, band240: BAND240, depth240: DEPTH240 });
+        let b =
+            Buffers { prims: PRIMS, band: BAND, depth: DEPTH, bins: BINS, cache: Some(CACHE), cluster, tall };
         finish(run(benches::M4F, benches::M4F_SIZE.1, b))
     }
 

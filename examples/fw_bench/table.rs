@@ -63,6 +63,8 @@ fn records<const W: usize, const H: usize, const N: usize, const P: usize>(
     let mut bins = Box::new(heapless::Vec::new());
     let mut cache = Box::new(benches::Cache::new());
     let (mut cluster, mut cluster_fx) = (Box::new(ClusterCache::new()), Box::new(ClusterCache::new()));
+    let (mut band48, mut depth48) = (Box::new(Band::new(BACKGROUND)), Box::new(DepthBand::new()));
+    let (mut band240, mut depth240) = (Box::new(Band::new(BACKGROUND)), Box::new(DepthBand::new()));
     let mut b: Buffers<'_, W, H, N, P> = Buffers {
         prims: &mut prims,
         band: &mut band,
@@ -70,6 +72,12 @@ fn records<const W: usize, const H: usize, const N: usize, const P: usize>(
         bins: &mut bins,
         cache: Some(&mut cache),
         cluster: Some((&mut cluster, &mut cluster_fx)),
+        tall: Some(benches::Tall {
+            band48: &mut band48,
+            depth48: &mut depth48,
+            band240: &mut band240,
+            depth240: &mut depth240,
+        }),
     };
     let mut out = Vec::new();
     let select = std::env::var(benches::SELECT_VAR).ok();
@@ -302,9 +310,15 @@ pub fn table(input: &str) -> Result<(String, String), String> {
     writeln!(w, "|---|---|--:|--:|---|").unwrap();
     for &(t, label) in &targets {
         let run = &runs[t];
-        let buffers =
-            run.symbols.iter().map(|(k, v)| format!("{k} {}", group(*v))).collect::<Vec<_>>().join(", ");
+        // The symbols are fw_bench's; the CRC firmware has the same buffers
+        // but the taller bands (`BAND48`, `BAND240` and their depth rows).
+        let list = |all: bool| {
+            let tall = |k: &str| k.ends_with("48") || k.ends_with("240");
+            let b = run.symbols.iter().filter(|(k, _)| all || !tall(k));
+            b.map(|(k, v)| format!("{k} {}", group(*v))).collect::<Vec<_>>().join(", ")
+        };
         for (name, text, data, bss) in &run.sizes {
+            let buffers = list(name.starts_with("fw_bench"));
             writeln!(w, "| {label} | {name} | {} | {} | {buffers} |", group(text + data), group(data + bss))
                 .unwrap();
         }

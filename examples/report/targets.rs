@@ -27,6 +27,14 @@ const FW_PERSP: &str = "knot20k/meshlets-per-band-f32-persp-correct";
 /// The firmware benchmark's band loop alone and the f32 affine knot frame
 /// stopped after each stage (`Work::KnotStage`), in order.
 const FW_BAND_LOOP: &str = "band-loop/clear-send-each-band";
+/// The same knot with taller bands (`Work::KnotVertexRows`, `Work::KnotTall`):
+/// the vertex stage for one 240-row band, the whole frame with 48-row bands
+/// and with one 240-row band.
+const FW_TALL: [&str; 3] = [
+    "knot20k-rows/f32-vertex-stage-only-one-240-row-band",
+    "knot20k-rows/meshlets-f32-affine-48-row-bands",
+    "knot20k-rows/meshlets-f32-affine-one-240-row-band",
+];
 const FW_STAGES: [&str; 3] = [
     "knot20k-stages/f32-affine-band-loop-vertex-stage-only",
     "knot20k-stages/f32-affine-coverage-no-planes",
@@ -246,6 +254,25 @@ fn issue12(peers: &[Peer], breakdown: &[Breakdown], counts: &Counts, fw: &FwBenc
                 d(a.instructions, n),
                 per(band),
                 d(v, band) / PER_TRI_AFFINE,
+            );
+        }
+        // What RAM would buy: the same frame with taller bands.
+        let tall = FW_TALL.map(|k| fw.get("m4f", k));
+        if let [Some(v240), Some(f48), Some(f240)] = tall {
+            let _ = write!(
+                w,
+                "More RAM does not close the gap: with 48-row bands ({} B of buffers) the frame takes {:.0} \
+                 instructions per mesh triangle, with one 240-row band ({} B, a whole colour and depth frame, \
+                 as a framebuffer renderer holds) {:.0}, {:.2}× the budget; the vertex stage of that one band \
+                 alone is {:.0}. Repeating work in each 16-row band costs {:.0} per triangle; the rest is \
+                 work per vertex and per triangle that a taller band does not remove. ",
+                f48.static_ram,
+                per(f48.instructions),
+                f240.static_ram,
+                per(f240.instructions),
+                per(f240.instructions) / PER_TRI_AFFINE,
+                per(v240.instructions),
+                per(a.instructions.saturating_sub(f240.instructions)),
             );
         }
         if let Some((s, v)) = scene {
