@@ -50,6 +50,8 @@ impl<const S: u32> SubPoint<S> {
     pub const ONE: i32 = 1 << S;
     /// Number of fractional bits, `S`.
     pub const BITS: u32 = S;
+    /// `(0, 0)`, for `const` initialisers (`Default` is not `const`).
+    pub(crate) const ORIGIN: Self = SubPoint { x: 0, y: 0 };
 
     /// A point from raw subpixel units (`x / 2^S` pixels).
     ///

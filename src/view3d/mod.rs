@@ -99,7 +99,7 @@ pub type View160x128 = View3d<Rgb565, 160, 8>;
 /// ([`View3d::set_height`] to use fewer rows); rows, not columns, are
 /// banded, so `W` must not exceed the display's width.
 ///
-/// Size: `W × H × 4` bytes plus about 3.3 KB (the cluster cache).
+/// Size: `W × H × 4` bytes plus about 3 KB (the cluster cache).
 ///
 /// ```
 /// use embedded_graphics::mock_display::MockDisplay;

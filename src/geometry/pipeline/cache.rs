@@ -62,8 +62,10 @@ pub(super) struct Cached<T, const S: u32> {
     state: u8,
     /// Clip outcode (valid with `CLIP`).
     code: u8,
-    /// Snapped vertex (valid with `SNAP`; its colour with `LIT`).
-    screen: Option<ScreenVertex<S>>,
+    /// Snapped vertex (valid with `SNAP` and `SNAPPED`; its colour with
+    /// `LIT`). Not an `Option`: its unwrapping cost loads and branches in
+    /// the triangle loop.
+    screen: ScreenVertex<S>,
     /// What snapping rounds, for the pre-snap back-face test (valid with
     /// `QUO`; NaN where the test cannot use the vertex).
     q: [f32; 2],
@@ -77,7 +79,15 @@ impl<T: Scalar, const S: u32> Cached<T, S> {
     const DEPTH: u8 = 8;
     /// `q` is set.
     const QUO: u8 = 16;
-    const EMPTY: Self = Cached { clip: [T::ZERO; 4], state: 0, code: 0, screen: None, q: [0.0; 2] };
+    /// Snapping succeeded (with `SNAP`): `screen` holds the vertex.
+    const SNAPPED: u8 = 32;
+    const EMPTY: Self = Cached {
+        clip: [T::ZERO; 4],
+        state: 0,
+        code: 0,
+        screen: ScreenVertex { pos: crate::SubPoint::ORIGIN, depth: 0, inv_w: 0, color: [0; 3] },
+        q: [0.0; 2],
+    };
 }
 
 /// The cache slots of one call of [`Pipeline::draw_cached`], and whether
@@ -227,19 +237,24 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
                     if e.state & Cached::<T, S>::SNAP == 0 {
                         // With usable quotients, snapping is their rounding
                         // (`presnap`), its depth deferred as `snap_deferred` does.
-                        e.screen = if cull_sign != 0 && e.state & Cached::<T, S>::QUO != 0 && !e.q[0].is_nan()
-                        {
-                            let pos = presnap.snap(e.q);
-                            pos.map(|pos| ScreenVertex { pos, depth: 0, inv_w: 0, color: [0; 3] })
-                        } else {
-                            self.snap_deferred(e.clip)
-                        };
-                        let depth = e.screen.is_some_and(|s| s.inv_w != 0);
-                        e.state |= Cached::<T, S>::SNAP | if depth { Cached::<T, S>::DEPTH } else { 0 };
+                        let screen =
+                            if cull_sign != 0 && e.state & Cached::<T, S>::QUO != 0 && !e.q[0].is_nan() {
+                                let pos = presnap.snap(e.q);
+                                pos.map(|pos| ScreenVertex { pos, depth: 0, inv_w: 0, color: [0; 3] })
+                            } else {
+                                self.snap_deferred(e.clip)
+                            };
+                        e.state |= Cached::<T, S>::SNAP;
+                        if let Some(s) = screen {
+                            e.screen = s;
+                            e.state |= Cached::<T, S>::SNAPPED
+                                | if s.inv_w != 0 { Cached::<T, S>::DEPTH } else { 0 };
+                        }
                     }
-                    match e.screen {
-                        Some(s) => at[k] = s,
-                        None => ok = false,
+                    if e.state & Cached::<T, S>::SNAPPED != 0 {
+                        at[k] = e.screen;
+                    } else {
+                        ok = false;
                     }
                 }
                 if !ok {
@@ -249,18 +264,18 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
                 if !self.keep(&at, stats) {
                     continue;
                 }
-                // Depth and 1/w, deferred past culling (`snap_deferred`).
+                // Depth and 1/w, deferred past culling (`snap_deferred`);
+                // every vertex here is snapped (`SNAPPED`).
                 for (k, &j) in idx.iter().enumerate() {
                     let e = &mut cache[j];
                     if e.state & Cached::<T, S>::DEPTH == 0 {
                         let d = e.clip[3].divisor().and_then(|w| self.snap_depth(e.clip, w));
-                        if let (Some(s), Some((depth, inv_w))) = (e.screen.as_mut(), d) {
-                            (s.depth, s.inv_w) = (depth, inv_w);
+                        if let Some((depth, inv_w)) = d {
+                            (e.screen.depth, e.screen.inv_w) = (depth, inv_w);
                         }
                         e.state |= Cached::<T, S>::DEPTH;
                     }
-                    let s = e.screen.unwrap_or_default();
-                    (at[k].depth, at[k].inv_w) = (s.depth, s.inv_w);
+                    (at[k].depth, at[k].inv_w) = (e.screen.depth, e.screen.inv_w);
                 }
                 if flat {
                     // Lit with the face normal: per triangle, not per vertex.
@@ -273,13 +288,10 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
                     for (k, &j) in idx.iter().enumerate() {
                         let e = &mut cache[j];
                         if e.state & Cached::<T, S>::LIT == 0 {
-                            let c = channels(light(k, None)?, max);
-                            if let Some(s) = e.screen.as_mut() {
-                                s.color = c;
-                            }
+                            e.screen.color = channels(light(k, None)?, max);
                             e.state |= Cached::<T, S>::LIT;
                         }
-                        at[k].color = e.screen.map_or([0; 3], |s| s.color);
+                        at[k].color = e.screen.color;
                     }
                 }
                 sink(ScreenTriangle { v: at, flat: flat_shade }, stats)?;

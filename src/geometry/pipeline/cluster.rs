@@ -31,7 +31,7 @@ use crate::render::Band3d;
 use crate::{Error, Interpolate};
 
 /// The vertex cache [`Pipeline::draw_meshlets`] needs: one cluster's
-/// vertices (about 3.3 KB for `f32`). It holds
+/// vertices (3,072 bytes for `f32` and `Fx`). It holds
 /// [`MAX_MESHLET_VERTICES`], the most a valid cluster has, so unlike a
 /// [`VertexCache`] of one's own size it is never too small
 /// ([`Error::CapacityExceeded`] cannot come from it).
