@@ -263,23 +263,20 @@ impl Work {
             Work::KnotStage(Fix, Stage::NoWrites) => "Fx affine: all but pixel writes",
             Work::Dashboard => "2D kit, drawn per band",
             #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
-            Work::KnotVertexRows(16) => "f32 vertex stage only, 16-row bands",
+            Work::KnotVertexRows(rows) => match rows {
+                16 => "f32 vertex stage only, 16-row bands",
+                32 => "f32 vertex stage only, 32-row bands",
+                48 => "f32 vertex stage only, 48-row bands",
+                80 => "f32 vertex stage only, 80-row bands",
+                240 => "f32 vertex stage only, one 240-row band",
+                _ => "f32 vertex stage only, other bands",
+            },
             #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
-            Work::KnotVertexRows(32) => "f32 vertex stage only, 32-row bands",
-            #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
-            Work::KnotVertexRows(48) => "f32 vertex stage only, 48-row bands",
-            #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
-            Work::KnotVertexRows(80) => "f32 vertex stage only, 80-row bands",
-            #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
-            Work::KnotVertexRows(240) => "f32 vertex stage only, one 240-row band",
-            #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
-            Work::KnotVertexRows(_) => "f32 vertex stage only, other bands",
-            #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
-            Work::KnotTall(48) => "meshlets, f32, affine, 48-row bands",
-            #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
-            Work::KnotTall(240) => "meshlets, f32, affine, one 240-row band",
-            #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
-            Work::KnotTall(_) => "meshlets, f32, affine, other bands",
+            Work::KnotTall(rows) => match rows {
+                48 => "meshlets, f32, affine, 48-row bands",
+                240 => "meshlets, f32, affine, one 240-row band",
+                _ => "meshlets, f32, affine, other bands",
+            },
         }
     }
 
@@ -296,9 +293,13 @@ impl Work {
             #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
             Work::KnotVertexRows(_) => "CLUSTER",
             #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
-            Work::KnotTall(48) => "BAND48,DEPTH48,CLUSTER",
-            #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
-            Work::KnotTall(_) => "BAND240,DEPTH240,CLUSTER",
+            Work::KnotTall(rows) => {
+                if *rows == 48 {
+                    "BAND48,DEPTH48,CLUSTER"
+                } else {
+                    "BAND240,DEPTH240,CLUSTER"
+                }
+            }
         }
     }
 

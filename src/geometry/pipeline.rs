@@ -338,7 +338,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
             let cache = &mut cache.v[..mesh.vertex_count()];
             let triangles = mesh.indices.iter().map(|t| t.map(usize::from));
             let inside = inside::InsideView::new(&setup.ctx.mvp, setup.planes).contains(mesh.bounding_sphere);
-            let cached = cache::Cluster { slots: cache, inside };
+            let cached = cache::Slots { slots: cache, inside };
             self.draw_cached(&setup, mesh, &Uniform, cached, triangles, &mut stats, |tri, _| {
                 bins.push(tri);
                 Ok(())

@@ -92,7 +92,7 @@ impl<T: Scalar, const S: u32> Cached<T, S> {
 
 /// The cache slots of one call of [`Pipeline::draw_cached`], and whether
 /// their vertices lie inside the clip volume ([`super::inside`]).
-pub(super) struct Cluster<'a, T, const S: u32> {
+pub(super) struct Slots<'a, T, const S: u32> {
     pub(super) slots: &'a mut [Cached<T, S>],
     pub(super) inside: bool,
 }
@@ -131,7 +131,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         setup: &MeshSetup<T>,
         src: &Src,
         material: &M,
-        cache: Cluster<'_, T, S>,
+        cache: Slots<'_, T, S>,
         triangles: impl Iterator<Item = [usize; 3]>,
         stats: &mut MeshStats,
         mut sink: impl FnMut(ScreenTriangle<S>, &mut MeshStats) -> Result<(), Error>,
@@ -139,7 +139,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         if M::PER_FACE {
             return Err(Error::InvalidParameter);
         }
-        let Cluster { slots: cache, inside } = cache;
+        let Slots { slots: cache, inside } = cache;
         let MeshSetup { ctx, planes, band, max } = setup;
         let (planes, max) = (*planes, *max);
         let coder = VertexClass::<T>::new(planes);

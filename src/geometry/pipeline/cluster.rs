@@ -19,7 +19,7 @@
 //! behind the front surface. `tests/integration/meshlets.rs` compares the
 //! images.
 
-use super::cache::{Cluster, VertexCache, VertexSource};
+use super::cache::{Slots, VertexCache, VertexSource};
 use super::inside::InsideView;
 use super::{Band, Material, MeshStats, Pipeline, Uniform, rows_f32, view_planes};
 use crate::depth::DepthFormat;
@@ -290,7 +290,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
             let slots = cache.v.get_mut(..vc).ok_or(Error::InvalidMeshlet)?;
             let src = ClusterSource { mesh: &mesh.mesh, vertices };
             let tris = triangles.iter().map(|t| t.map(usize::from));
-            let slots = Cluster { slots, inside: inside.contains(m.sphere) };
+            let slots = Slots { slots, inside: inside.contains(m.sphere) };
             pipe.draw_cached(&setup, &src, material, slots, tris, &mut stats, |tri, _| {
                 sink(&tri);
                 Ok(())

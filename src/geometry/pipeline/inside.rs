@@ -37,18 +37,28 @@ use crate::mesh::SPHERE_TOLERANCE;
 /// The test of the module docs for one model-view-projection matrix.
 pub(super) struct InsideView {
     rows: [Vec4<f32>; 4],
+    /// `|row.xyz|₁` of each row, and the largest of them (`l`).
     l1: [f32; 4],
-    far: bool,
-    w_min: f32,
+    l1_max: f32,
+    /// The view volume's planes ([`super::view_planes`]) and `w − w_min`,
+    /// each with its `|p.xyz|₁`.
+    planes: [(Vec4<f32>, f32); 7],
+}
+
+/// `|p.xyz|₁`, which bounds `|p.xyz|`.
+fn l1(p: Vec4<f32>) -> f32 {
+    p.x.abs() + p.y.abs() + p.z.abs()
 }
 
 impl InsideView {
     pub(super) fn new<T: Scalar>(mvp: &Mat4<T>, planes: ClipPlanes) -> Self {
         let rows = super::rows_f32(mvp);
-        let l1 = rows.map(|r| r.x.abs() + r.y.abs() + r.z.abs());
+        let l1s = rows.map(l1);
         // Fx acts on w_min no smaller than its smallest value, 2^-16.
-        let w_min = planes.w_min().max(ClipPlanes::W_MIN);
-        InsideView { rows, l1, far: planes.far(), w_min }
+        let w_min = Vec4::new(0.0, 0.0, 0.0, planes.w_min().max(ClipPlanes::W_MIN));
+        let [v0, v1, v2, v3, v4, v5] = super::view_planes(rows, planes.far());
+        let planes = [v0, v1, v2, v3, v4, v5, rows[3] - w_min].map(|p| (p, l1(p)));
+        InsideView { rows, l1: l1s, l1_max: l1s.into_iter().fold(0.0, f32::max), planes }
     }
 
     /// True if every point of the sphere `(c, r)` (as validated, within
@@ -57,29 +67,16 @@ impl InsideView {
         let r = r * (1.0 + 2.0 * SPHERE_TOLERANCE);
         let centre = Vec4::new(c[0], c[1], c[2], 1.0);
         let mut m = 0.0f32;
-        let mut l = 0.0f32;
-        for k in 0..4 {
-            m = m.max(self.rows[k].dot(centre).abs() + r * self.l1[k]);
-            l = l.max(self.l1[k]);
+        for (row, l1) in self.rows.iter().zip(self.l1) {
+            m = m.max(row.dot(centre).abs() + r * l1);
         }
         // Also false for NaN and infinity.
         if m.is_nan() || m > 1.152_921_5e18 {
             return false;
         }
-        let margin = (m + l + 1.0) / 256.0;
-        // The least of `p · (q, 1)` over the sphere is `p · (c, 1) − r·|p.xyz|`,
-        // and `|p.xyz|₁` bounds `|p.xyz|`.
-        let least = |p: Vec4<f32>| p.dot(centre) - r * (p.x.abs() + p.y.abs() + p.z.abs());
-        let [x, y, z, w] = self.rows;
-        let w_min = Vec4::new(0.0, 0.0, 0.0, self.w_min);
-        let far_ok = !self.far || least(w - z) >= margin;
-        least(w - w_min) >= margin
-            && least(z) >= margin
-            && far_ok
-            && least(w - x) >= margin
-            && least(w + x) >= margin
-            && least(w - y) >= margin
-            && least(w + y) >= margin
+        let margin = (m + self.l1_max + 1.0) / 256.0;
+        // The least of `p · (q, 1)` over the sphere is `p · (c, 1) − r·|p.xyz|`.
+        self.planes.iter().all(|&(p, l1)| p.dot(centre) - r * l1 >= margin)
     }
 }
 
