@@ -35,14 +35,15 @@ use crate::math::{Mat4, Scalar, Vec4};
 use crate::mesh::SPHERE_TOLERANCE;
 
 /// The test of the module docs for one model-view-projection matrix.
+/// Small (it lives on the vertex stage's stack): the planes are made from
+/// the rows in each test, a few additions.
 pub(super) struct InsideView {
     rows: [Vec4<f32>; 4],
-    /// `|row.xyz|₁` of each row, and the largest of them (`l`).
+    /// `|row.xyz|₁` of each row ([`l1`]) and the largest of them (`l`).
     l1: [f32; 4],
     l1_max: f32,
-    /// The view volume's planes ([`super::view_planes`]) and `w − w_min`,
-    /// each with its `|p.xyz|₁`.
-    planes: [(Vec4<f32>, f32); 7],
+    far: bool,
+    w_min: f32,
 }
 
 /// `|p.xyz|₁`, which bounds `|p.xyz|`.
@@ -55,10 +56,8 @@ impl InsideView {
         let rows = super::rows_f32(mvp);
         let l1s = rows.map(l1);
         // Fx acts on w_min no smaller than its smallest value, 2^-16.
-        let w_min = Vec4::new(0.0, 0.0, 0.0, planes.w_min().max(ClipPlanes::W_MIN));
-        let [v0, v1, v2, v3, v4, v5] = super::view_planes(rows, planes.far());
-        let planes = [v0, v1, v2, v3, v4, v5, rows[3] - w_min].map(|p| (p, l1(p)));
-        InsideView { rows, l1: l1s, l1_max: l1s.into_iter().fold(0.0, f32::max), planes }
+        let w_min = planes.w_min().max(ClipPlanes::W_MIN);
+        InsideView { rows, l1: l1s, l1_max: l1s.into_iter().fold(0.0, f32::max), far: planes.far(), w_min }
     }
 
     /// True if every point of the sphere `(c, r)` (as validated, within
@@ -76,7 +75,9 @@ impl InsideView {
         }
         let margin = (m + self.l1_max + 1.0) / 256.0;
         // The least of `p · (q, 1)` over the sphere is `p · (c, 1) − r·|p.xyz|`.
-        self.planes.iter().all(|&(p, l1)| p.dot(centre) - r * l1 >= margin)
+        let inside = |p: Vec4<f32>| p.dot(centre) - r * l1(p) >= margin;
+        let w_min = Vec4::new(0.0, 0.0, 0.0, self.w_min);
+        inside(self.rows[3] - w_min) && super::view_planes(self.rows, self.far).into_iter().all(inside)
     }
 }
 
