@@ -38,6 +38,13 @@
 //! (and, for one with a single span in the band, only once its depth test
 //! passes at one of its pixels). Nothing is cached between bands (no RAM
 //! per triangle).
+//!
+//! A tiny triangle (twice its area below 2^16 internal units: under 32 px²
+//! at 4 subpixel bits) with depth of at most 16 bits and flat or affine
+//! colour has no planes: each covered pixel divides its exact barycentric
+//! sums by the area (`tiny`, where its bounds are derived; they lie inside
+//! the ones above, and a value may differ by one unit from the plane's
+//! where the exact value is that close to a rounding tie).
 
 use crate::attr::{COLOR_FRAC, Plane, PlaneFrame, PlaneSetup, channel};
 use crate::band::BandView;
@@ -45,6 +52,8 @@ use crate::depth::{DepthFormat, DepthRows, DepthState, DepthTest};
 use crate::edge::{Cull, Span, SpanRest, TriangleSpans};
 use crate::primitive::{center_rows, reference_pixel};
 use crate::{Interpolate, SubPoint};
+
+mod tiny;
 
 /// Fixed-point units per depth step in the depth plane.
 pub const DEPTH_FRAC: u32 = 16;
@@ -201,6 +210,10 @@ pub fn draw_triangle<C, F, M, const S: u32, const W: usize>(
     // few dozen loads and stores per triangle.
     match crate::edge::small::setup_state(v, color.clip(), Cull::None) {
         Some(Some(mut small)) => {
+            // Most of a dense mesh's: no plane set-up (`tiny`).
+            if (!M::PERSPECTIVE || tri.flat) && tiny::eligible::<F>(&small) {
+                return tiny::draw::<C, F, S, W>(tri, &small, color, depth, state);
+            }
             let Some(first) = small.next_span() else { return };
             let second = small.next_span();
             shade_spans::<C, F, M, S, W, _>(tri, (first, second, &small), color, depth, state);

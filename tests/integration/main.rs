@@ -32,6 +32,7 @@
 //! - `view3d_colors`: the front's per-vertex and per-face colours.
 //! - `framebuffer`: a recording host `DrawTarget` used by the suites above.
 
+mod affine3d;
 mod antialias;
 mod antialias_images;
 mod bands;

@@ -47,6 +47,11 @@ pub(crate) struct Small {
     cols: i32,
     y: i32,
     y_end: i32,
+    /// Twice the area in internal units (`> 0`): the sum of the three
+    /// unbiased edge functions at any point.
+    det: i32,
+    /// The vertices were taken as `[v0, v2, v1]` (to walk them clockwise).
+    flip: bool,
 }
 
 /// The coverage path of a triangle whose bounding box is at most
@@ -99,16 +104,31 @@ pub(crate) fn setup_state<const S: u32>(
     }
     // The first centre, relative to the corner: inside the box, in 0..=limit.
     let (cx, cy) = (col0 * one + half - min_x, row0 * one + half - min_y);
-    let mut s =
-        Small { e: [0; 3], a: [0; 3], b: [0; 3], x0: col0, cols: col1 - col0 + 1, y: row0, y_end: row1 + 1 };
+    let mut s = Small {
+        e: [0; 3],
+        a: [0; 3],
+        b: [0; 3],
+        x0: col0,
+        cols: col1 - col0 + 1,
+        y: row0,
+        y_end: row1 + 1,
+        det: det.abs(),
+        flip: !clockwise,
+    };
     for i in 0..3 {
         let (st, en) = (q[i], q[(i + 1) % 3]);
         let (a, b) = (st.1 - en.1, en.0 - st.0);
-        let bias = if a > 0 || (a == 0 && b > 0) { 0 } else { 1 };
-        s.e[i] = a * (cx - st.0) + b * (cy - st.1) - bias;
+        s.e[i] = a * (cx - st.0) + b * (cy - st.1) - bias(a, b);
         (s.a[i], s.b[i]) = (a << shift, b << shift);
     }
     Some(Some(s))
+}
+
+/// The top-left rule's bias of an edge with function steps `a` per column
+/// and `b` per row (any positive scale): 0 for a top or left edge.
+#[inline(always)]
+fn bias(a: i32, b: i32) -> i32 {
+    if a > 0 || (a == 0 && b > 0) { 0 } else { 1 }
 }
 
 impl Small {
@@ -163,6 +183,45 @@ impl Small {
             }
         }
         None
+    }
+
+    /// Twice the triangle's area in internal units (`0 < det < 2L²`, module
+    /// docs): the sum of the three unbiased edge functions at any point.
+    #[inline(always)]
+    pub(crate) fn det(&self) -> i32 {
+        self.det
+    }
+
+    /// Per edge, the input vertex opposite it and the edge's bias: at a
+    /// point, the edge's biased function (as [`Small::for_each_centre`]
+    /// gives it) plus its bias is [`Small::det`] times that vertex's
+    /// barycentric coordinate.
+    #[inline(always)]
+    pub(crate) fn opposite(&self) -> [(usize, i32); 3] {
+        // Edge i runs from walked vertex i to i + 1; walked = [0, 1, 2] or [0, 2, 1].
+        let opp = if self.flip { [1, 0, 2] } else { [2, 0, 1] };
+        [0, 1, 2].map(|i| (opp[i], bias(self.a[i], self.b[i])))
+    }
+
+    /// `f(x, y, e)` for each covered centre not yet walked, row by row, left
+    /// to right, with the biased edge functions `e` there (each `≥ 0`).
+    #[inline(always)]
+    pub(crate) fn for_each_centre(&self, mut f: impl FnMut(i32, i32, [i32; 3])) {
+        let mut e = self.e;
+        for y in self.y..self.y_end {
+            let (mut ec, mut seen) = (e, false);
+            for c in 0..self.cols {
+                if (ec[0] | ec[1] | ec[2]) >= 0 {
+                    f(self.x0 + c, y, ec);
+                    seen = true;
+                } else if seen {
+                    // Covered centres of a row are contiguous.
+                    break;
+                }
+                ec = [ec[0] + self.a[0], ec[1] + self.a[1], ec[2] + self.a[2]];
+            }
+            e = self.next_row(e);
+        }
     }
 
     /// All remaining spans, in one loop over local state.

@@ -1,0 +1,168 @@
+//! Tiny triangles (most of a dense mesh's): depth and affine colour computed
+//! at each covered centre from its barycentric coordinates, with no plane
+//! set-up.
+//!
+//! # Why
+//! A plane costs a determinant reciprocal and up to three exact divisions
+//! per triangle and band (`attr`), and a span start per row; a triangle of
+//! one or two pixels uses each plane once or twice. Here a value costs one
+//! short division per covered pixel instead.
+//!
+//! # What is computed
+//! A small triangle ([`Small`]) with `det < 2^16` (twice its area in
+//! internal units of `2^-(S+1)` px: below 32 px² at `S = 4`) is drawn here.
+//! At a covered centre its unbiased edge functions `E_i` are integers in
+//! `[0, det]` that sum to `det`, and `E_i / det` is exactly the barycentric
+//! coordinate of the vertex opposite edge `i`. A value is `Σ E_i·v_i / det`:
+//!
+//! * **Depth** (formats of up to 16 bits): `v_i = ⌊d_i / 2^8⌋`, `d_i` the
+//!   vertex depth in `2^-16` steps ([`depth_steps`], itself within
+//!   `2^-15` steps of `depth·MAX/(2^32 − 1)`), so `v_i < 2^24` and the sum
+//!   `< det·2^24 < 2^40` (`u64`); its quotient by `det` is floored (two
+//!   16-bit digits) and the stored code is that rounded half up. Against
+//!   the exact plane through the snapped vertices' depths: vertex values
+//!   `< 2^-8 + 2^-15` low (a convex combination keeps that), the floor
+//!   `< 2^-8`, the rounding `1/2`: `|stored − exact| < 1/2 + 2^-7 + 2^-15`,
+//!   inside the plane path's `1/2 + 1/8 + 2^-16` (`raster3d` module docs).
+//! * **Colour**, affine: `v_i` the channel values (`≤ 255`, exact), the sum
+//!   `< det·2^8 < 2^24` (`u32`), rounded half up exactly: within `1/2` of
+//!   the screen-linear value (the plane path: `1/2 + 2^-7`).
+//!
+//! Both depend on the triangle and the pixel only, so any band height gives
+//! the same pixels. Where the exact value lies within those bounds of a
+//! rounding tie, a code or channel can differ by one from what the plane
+//! path would store.
+//!
+//! Perspective-correct colour and depth formats wider than 16 bits take the
+//! plane path.
+
+use super::{DEPTH_FRAC, DepthRule, LessWrite, ScreenTriangle, depth_steps};
+use crate::Interpolate;
+use crate::band::BandView;
+use crate::depth::{DepthFormat, DepthState};
+use crate::edge::small::Small;
+
+/// Triangles with a determinant below this are drawn here (module docs).
+const DET_LIMIT: i32 = 1 << 16;
+
+/// Fraction bits of the vertex depths here.
+const FRAC: u32 = 8;
+
+/// Whether [`draw`] takes `small`: depth of at most 16 bits, and a
+/// determinant below 2^16.
+#[inline(always)]
+pub(super) fn eligible<F: DepthFormat>(small: &Small) -> bool {
+    F::BITS <= 16 && small.det() < DET_LIMIT
+}
+
+/// Draws `tri`, whose coverage walk is `small` ([`eligible`]), into the
+/// band: each covered centre's depth tested against `depth` with `state`,
+/// then its colour (flat, or affine Gouraud) written where it passes.
+#[inline(always)]
+pub(super) fn draw<C, F, const S: u32, const W: usize>(
+    tri: &ScreenTriangle<S>,
+    small: &Small,
+    color: &mut BandView<'_, C, W>,
+    depth: &mut [[F::Storage; W]],
+    state: DepthState,
+) where
+    C: Interpolate,
+    F: DepthFormat,
+{
+    if F::ENABLED && state == DepthState::LESS_WRITE {
+        draw_with::<C, F, _, S, W>(tri, small, color, depth, LessWrite);
+    } else {
+        draw_with::<C, F, _, S, W>(tri, small, color, depth, state);
+    }
+}
+
+#[inline(always)]
+fn draw_with<C, F, D, const S: u32, const W: usize>(
+    tri: &ScreenTriangle<S>,
+    small: &Small,
+    color: &mut BandView<'_, C, W>,
+    depth: &mut [[F::Storage; W]],
+    state: D,
+) where
+    C: Interpolate,
+    F: DepthFormat,
+    D: DepthRule,
+{
+    let det = small.det() as u32;
+    let opposite = small.opposite();
+    // Per edge: the value of the vertex opposite it; the biases' share of
+    // each sum (the walk's edge functions are biased).
+    let dv = opposite.map(|(k, _)| {
+        if F::ENABLED { (depth_steps(tri.v[k].depth, F::MAX) >> (DEPTH_FRAC - FRAC)) as u32 } else { 0 }
+    });
+    let dk: u64 = (0..3).map(|i| opposite[i].1 as u64 * dv[i] as u64).sum();
+    let max = C::CHANNEL_MAX;
+    let cv = [0, 1, 2].map(|c| opposite.map(|(k, _)| if max[c] > 0 { tri.v[k].color[c] as u32 } else { 0 }));
+    let ck = cv.map(|v| (0..3).map(|i| opposite[i].1 as u32 * v[i]).sum::<u32>());
+    let flat = C::from_channels(tri.v[0].color);
+    let y0 = color.y0();
+    small.for_each_centre(|x, y, e| {
+        let e = e.map(|e| e as u32);
+        let Some(p) = color.row_mut(y).and_then(|r| r.get_mut(x as usize)) else { return };
+        if F::ENABLED {
+            let Some(slot) = depth.get_mut((y - y0) as usize).and_then(|r| r.get_mut(x as usize)) else {
+                return;
+            };
+            let n = e[0] as u64 * dv[0] as u64 + e[1] as u64 * dv[1] as u64 + e[2] as u64 * dv[2] as u64 + dk;
+            let code = (floor_div(n, det) + (1 << (FRAC - 1))) >> FRAC;
+            if !state.test().passes(code, F::to_u32(*slot)) {
+                return;
+            }
+            if state.write() {
+                *slot = F::from_u32(code);
+            }
+        }
+        *p = if tri.flat {
+            flat
+        } else {
+            let channel = |c: usize| -> u8 {
+                if max[c] == 0 {
+                    return 0;
+                }
+                let n = e[0] * cv[c][0] + e[1] * cv[c][1] + e[2] * cv[c][2] + ck[c];
+                ((2 * n + det) / (2 * det)) as u8
+            };
+            C::from_channels([channel(0), channel(1), channel(2)])
+        };
+    });
+}
+
+/// `⌊n / d⌋` for `0 < d < 2^16` and `n / d < 2^24`, by two 16-bit digits
+/// (32-bit divisions: hardware on ARMv7-M, where a 64-bit one is a library
+/// call).
+#[inline(always)]
+fn floor_div(n: u64, d: u32) -> u32 {
+    let hi = (n >> 16) as u32;
+    let (q1, r1) = (hi / d, hi % d);
+    // r1 < d < 2^16, and q1 < 2^8 (the quotient is below 2^24).
+    (q1 << 16) + ((r1 << 16) | (n as u32 & 0xFFFF)) / d
+}
+
+#[cfg(test)]
+mod tests {
+    use super::floor_div;
+
+    #[test]
+    fn floor_div_is_the_u64_division() {
+        let mut seed = 0x2545_F491_4F6C_DD1Du64;
+        for i in 0..200_000u32 {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            let d = ((seed >> 40) as u32 & 0xFFFF).max(1);
+            let d = [d, 1, 0xFFFF, 2][(i % 4) as usize];
+            // Any n with n / d < 2^24, ends included.
+            let n = match i % 3 {
+                0 => seed % (d as u64 * (1 << 24)),
+                1 => d as u64 * (1 << 24) - 1,
+                _ => seed % (d as u64 * 8),
+            };
+            assert_eq!(floor_div(n, d) as u64, n / d as u64, "{n} / {d}");
+        }
+    }
+}
