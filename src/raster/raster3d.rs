@@ -211,8 +211,8 @@ pub fn draw_triangle<C, F, M, const S: u32, const W: usize>(
     match crate::edge::small::setup_state(v, color.clip(), Cull::None) {
         Some(Some(mut small)) => {
             // Most of a dense mesh's: no plane set-up (`tiny`).
-            if (!M::PERSPECTIVE || tri.flat) && tiny::eligible::<F>(&small) {
-                return tiny::draw::<C, F, S, W>(tri, &small, color, depth, state);
+            if tiny::eligible::<F>(&small) {
+                return tiny::draw::<C, F, M, S, W>(tri, &small, color, depth, state);
             }
             let Some(first) = small.next_span() else { return };
             let second = small.next_span();

@@ -159,3 +159,42 @@ fn affine_skews_a_receding_floor_perspective_correct_does_not() {
     assert!(n >= 3 * 2000, "floor covers too few pixels: {n}");
     assert!(af_max >= 20.0 * pc_max && af_mean >= 20.0 * pc_mean, "affine error not clearly larger");
 }
+
+/// Triangles of up to twelve pixels, most of them tiny (twice the area below
+/// 2^16 internal units: colour from per-pixel barycentric sums, no planes,
+/// `raster3d::tiny`), held to the same derived bound.
+#[test]
+fn perspective_correct_colour_of_small_triangles_within_derived_bound() {
+    let mut rng = Rng::new(0x7715_7EE5);
+    let clip = ClipRect::new(0, 0, W as i32, H as i32);
+    let (mut samples, mut tiny, mut worst) = (0usize, 0usize, 0f64);
+    for i in 0..20_000 {
+        let size = [1, 2, 3, 12][i % 4];
+        let (cx, cy) = (rng.range(-2, W as i64) * 16, rng.range(-2, H as i64) * 16);
+        let mut pt = || {
+            SubPoint::<4>::new((cx + rng.range(0, size * 16)) as i32, (cy + rng.range(0, size * 16)) as i32)
+        };
+        let pos = [pt().unwrap(), pt().unwrap(), pt().unwrap()];
+        let r = [2.0, 100.0, 10000.0][i % 3];
+        let inv_w = [0, 1, 2].map(|_| (1073741824.0 / rng.log_uniform(1.0, r)).round() as u32);
+        let colors: [[u8; 3]; 3] = [0, 1, 2].map(|_| [0, 1, 2].map(|_| rng.below(256) as u8));
+        let v = |i: usize| ScreenVertex { pos: pos[i], depth: 0, inv_w: inv_w[i], color: colors[i] };
+        let tri = ScreenTriangle { v: [v(0), v(1), v(2)], flat: false };
+        if exact_coverage(pos, clip, Cull::None).is_empty() {
+            continue;
+        }
+        let (frame, _) =
+            draw_frame::<Rgb888, NoDepth, PerspectiveCorrect, 4, W, H>(&[tri], BG, DepthState::DISABLED);
+        let b = bound(inv_w);
+        let (max, _, n) = errors(&[tri], &frame, |_, e, _| {
+            assert!(e <= b + 1e-9, "error {e} > bound {b} for {tri:?}");
+        });
+        let det = bary(pos, 0, 0).map_or(0, |(_, d)| d.abs());
+        (samples, worst) = (samples + n, worst.max(max));
+        tiny += if det < 1 << 16 { n } else { 0 };
+    }
+    println!(
+        "perspective-correct, small triangles: {samples} channel samples ({tiny} of tiny ones), max error {worst:.4}"
+    );
+    assert!(tiny > 50_000 && samples > tiny, "{tiny} tiny of {samples}");
+}

@@ -36,7 +36,9 @@
 //! Perspective-correct colour and depth formats wider than 16 bits take the
 //! plane path.
 
-use super::{DEPTH_FRAC, DepthRule, LessWrite, ScreenTriangle, depth_steps};
+use super::{
+    DEPTH_FRAC, DepthRule, Interpolation, LessWrite, Q_BITS, ScreenTriangle, depth_steps, normalised_q,
+};
 use crate::Interpolate;
 use crate::band::BandView;
 use crate::depth::{DepthFormat, DepthState};
@@ -59,7 +61,7 @@ pub(super) fn eligible<F: DepthFormat>(small: &Small) -> bool {
 /// band: each covered centre's depth tested against `depth` with `state`,
 /// then its colour (flat, or affine Gouraud) written where it passes.
 #[inline(always)]
-pub(super) fn draw<C, F, const S: u32, const W: usize>(
+pub(super) fn draw<C, F, M, const S: u32, const W: usize>(
     tri: &ScreenTriangle<S>,
     small: &Small,
     color: &mut BandView<'_, C, W>,
@@ -68,16 +70,17 @@ pub(super) fn draw<C, F, const S: u32, const W: usize>(
 ) where
     C: Interpolate,
     F: DepthFormat,
+    M: Interpolation,
 {
     if F::ENABLED && state == DepthState::LESS_WRITE {
-        draw_with::<C, F, _, S, W>(tri, small, color, depth, LessWrite);
+        draw_with::<C, F, M, _, S, W>(tri, small, color, depth, LessWrite);
     } else {
-        draw_with::<C, F, _, S, W>(tri, small, color, depth, state);
+        draw_with::<C, F, M, _, S, W>(tri, small, color, depth, state);
     }
 }
 
 #[inline(always)]
-fn draw_with<C, F, D, const S: u32, const W: usize>(
+fn draw_with<C, F, M, D, const S: u32, const W: usize>(
     tri: &ScreenTriangle<S>,
     small: &Small,
     color: &mut BandView<'_, C, W>,
@@ -86,6 +89,7 @@ fn draw_with<C, F, D, const S: u32, const W: usize>(
 ) where
     C: Interpolate,
     F: DepthFormat,
+    M: Interpolation,
     D: DepthRule,
 {
     let det = small.det() as u32;
@@ -99,6 +103,18 @@ fn draw_with<C, F, D, const S: u32, const W: usize>(
     let max = C::CHANNEL_MAX;
     let cv = [0, 1, 2].map(|c| opposite.map(|(k, _)| if max[c] > 0 { tri.v[k].color[c] as u32 } else { 0 }));
     let ck = cv.map(|v| (0..3).map(|i| opposite[i].1 as u32 * v[i]).sum::<u32>());
+    // Perspective-correct: the weights times q = 1/w (normalised as the
+    // plane path does), and c·q per channel.
+    let (qv, cqv) = if M::PERSPECTIVE && !tri.flat {
+        let q = normalised_q(tri, Q_BITS);
+        let qv = opposite.map(|(k, _)| q[k] as u64);
+        (qv, cv.map(|v| [0, 1, 2].map(|i| v[i] as u64 * qv[i])))
+    } else {
+        ([0; 3], [[0; 3]; 3])
+    };
+    let bias = opposite.map(|(_, b)| b as u64);
+    let qk: u64 = (0..3).map(|i| bias[i] * qv[i]).sum();
+    let cqk = cqv.map(|v| (0..3).map(|i| bias[i] * v[i]).sum::<u64>());
     let flat = C::from_channels(tri.v[0].color);
     let y0 = color.y0();
     small.for_each_centre(|x, y, e| {
@@ -120,12 +136,18 @@ fn draw_with<C, F, D, const S: u32, const W: usize>(
         *p = if tri.flat {
             flat
         } else {
+            let w = e.map(|e| e as u64);
+            let dq = if M::PERSPECTIVE { w[0] * qv[0] + w[1] * qv[1] + w[2] * qv[2] + qk } else { 0 };
             let channel = |c: usize| -> u8 {
                 if max[c] == 0 {
-                    return 0;
+                    0
+                } else if M::PERSPECTIVE {
+                    let n = w[0] * cqv[c][0] + w[1] * cqv[c][1] + w[2] * cqv[c][2] + cqk[c];
+                    small_quotient(2 * n + dq, 2 * dq) as u8
+                } else {
+                    let n = e[0] * cv[c][0] + e[1] * cv[c][1] + e[2] * cv[c][2] + ck[c];
+                    ((2 * n + det) / (2 * det)) as u8
                 }
-                let n = e[0] * cv[c][0] + e[1] * cv[c][1] + e[2] * cv[c][2] + ck[c];
-                ((2 * n + det) / (2 * det)) as u8
             };
             C::from_channels([channel(0), channel(1), channel(2)])
         };
@@ -143,9 +165,43 @@ fn floor_div(n: u64, d: u32) -> u32 {
     (q1 << 16) + ((r1 << 16) | (n as u32 & 0xFFFF)) / d
 }
 
+/// `⌊x / y⌋` for `0 < y < 2^48` and `x / y < 2^9`, exactly, with one 32-bit
+/// division: `y`'s top 16 bits (plus one, so the estimate is not above the
+/// quotient) divide `x` shifted alike, which is within `513 / 2^15` of
+/// `x / y` below it, and one correction step finishes.
+#[inline(always)]
+fn small_quotient(x: u64, y: u64) -> u32 {
+    let s = (64 - y.leading_zeros()).saturating_sub(16);
+    // y >> s < 2^16, and x >> s < 2^9·((y >> s) + 1) ≤ 2^25.
+    let (xh, yh) = ((x >> s) as u32, (y >> s) as u32 + (s > 0) as u32);
+    let q = xh / yh;
+    // q ≤ x / y, so x − q·y ≥ 0, and below 2y.
+    if x - q as u64 * y >= y { q + 1 } else { q }
+}
+
 #[cfg(test)]
 mod tests {
-    use super::floor_div;
+    use super::{floor_div, small_quotient};
+
+    #[test]
+    fn small_quotient_is_the_u64_division() {
+        let mut seed = 0x9E37_79B9_7F4A_7C15u64;
+        for i in 0..300_000u32 {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            // Divisors of every size up to 2^48, quotients up to 2^9 − 1.
+            let y = (seed >> (16 + i % 48)).max(1);
+            let y = [y, 1, (1 << 48) - 1, 1 << 16, (1 << 16) - 1, (1 << 16) + 1][(i % 6) as usize];
+            let q = (seed >> 7) % 512;
+            let x = match i % 3 {
+                0 => q * y + (seed >> 11) % y,
+                1 => q * y + y - 1,
+                _ => q * y,
+            };
+            assert_eq!(small_quotient(x, y) as u64, x / y, "{x} / {y}");
+        }
+    }
 
     #[test]
     fn floor_div_is_the_u64_division() {
