@@ -50,8 +50,6 @@ pub(crate) struct Small {
     /// Twice the area in internal units (`> 0`): the sum of the three
     /// unbiased edge functions at any point.
     det: i32,
-    /// The vertices were taken as `[v0, v2, v1]` (to walk them clockwise).
-    flip: bool,
 }
 
 /// The coverage path of a triangle whose bounding box is at most
@@ -93,7 +91,6 @@ pub(crate) fn setup_state<const S: u32>(
     if det == 0 || culled || clip.is_empty() {
         return Some(None);
     }
-    let q = if clockwise { q } else { [q[0], q[2], q[1]] };
     // Pixels whose centre can lie inside the box (clip in 0..=4096).
     let col0 = ((min_x - half + one - 1) >> shift).max(clip.x0());
     let col1 = ((max_x - half) >> shift).min(clip.x1() - 1);
@@ -113,10 +110,12 @@ pub(crate) fn setup_state<const S: u32>(
         y: row0,
         y_end: row1 + 1,
         det: det.abs(),
-        flip: !clockwise,
     };
+    // Edge i is the one opposite vertex i, directed so that the inside is
+    // on its non-negative side (the vertices clockwise).
     for i in 0..3 {
-        let (st, en) = (q[i], q[(i + 1) % 3]);
+        let (j, k) = ((i + 1) % 3, (i + 2) % 3);
+        let (st, en) = if clockwise { (q[j], q[k]) } else { (q[k], q[j]) };
         let (a, b) = (st.1 - en.1, en.0 - st.0);
         s.e[i] = a * (cx - st.0) + b * (cy - st.1) - bias(a, b);
         (s.a[i], s.b[i]) = (a << shift, b << shift);
@@ -192,15 +191,12 @@ impl Small {
         self.det
     }
 
-    /// Per edge, the input vertex opposite it and the edge's bias: at a
-    /// point, the edge's biased function (as [`Small::for_each_centre`]
-    /// gives it) plus its bias is [`Small::det`] times that vertex's
-    /// barycentric coordinate.
+    /// The edges' biases: edge `i` lies opposite vertex `i`, and at a point
+    /// its biased function (as [`Small::for_each_centre`] gives it) plus its
+    /// bias is [`Small::det`] times the barycentric coordinate of vertex `i`.
     #[inline(always)]
-    pub(crate) fn opposite(&self) -> [(usize, i32); 3] {
-        // Edge i runs from walked vertex i to i + 1; walked = [0, 1, 2] or [0, 2, 1].
-        let opp = if self.flip { [1, 0, 2] } else { [2, 0, 1] };
-        [0, 1, 2].map(|i| (opp[i], bias(self.a[i], self.b[i])))
+    pub(crate) fn biases(&self) -> [i32; 3] {
+        [0, 1, 2].map(|i| bias(self.a[i], self.b[i]))
     }
 
     /// `f(x, y, e)` for each covered centre not yet walked, row by row, left

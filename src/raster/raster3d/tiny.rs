@@ -93,38 +93,20 @@ fn draw_with<C, F, M, D, const S: u32, const W: usize>(
     D: DepthRule,
 {
     let det = small.det() as u32;
-    let opposite = small.opposite();
-    // Per edge: the value of the vertex opposite it; the biases' share of
-    // each sum (the walk's edge functions are biased).
-    let dv = opposite.map(|(k, _)| {
-        if F::ENABLED { (depth_steps(tri.v[k].depth, F::MAX) >> (DEPTH_FRAC - FRAC)) as u32 } else { 0 }
-    });
-    let dk: u64 = (0..3).map(|i| opposite[i].1 as u64 * dv[i] as u64).sum();
-    let max = C::CHANNEL_MAX;
-    let cv = [0, 1, 2].map(|c| opposite.map(|(k, _)| if max[c] > 0 { tri.v[k].color[c] as u32 } else { 0 }));
-    let ck = cv.map(|v| (0..3).map(|i| opposite[i].1 as u32 * v[i]).sum::<u32>());
-    // Perspective-correct: the weights times q = 1/w (normalised as the
-    // plane path does), and c·q per channel.
-    let (qv, cqv) = if M::PERSPECTIVE && !tri.flat {
-        let q = normalised_q(tri, Q_BITS);
-        let qv = opposite.map(|(k, _)| q[k] as u64);
-        (qv, cv.map(|v| [0, 1, 2].map(|i| v[i] as u64 * qv[i])))
-    } else {
-        ([0; 3], [[0; 3]; 3])
-    };
-    let bias = opposite.map(|(_, b)| b as u64);
-    let qk: u64 = (0..3).map(|i| bias[i] * qv[i]).sum();
-    let cqk = cqv.map(|v| (0..3).map(|i| bias[i] * v[i]).sum::<u64>());
-    let flat = C::from_channels(tri.v[0].color);
+    let bias = small.biases().map(|b| b as u32);
+    let dv = tri
+        .v
+        .map(|v| if F::ENABLED { (depth_steps(v.depth, F::MAX) >> (DEPTH_FRAC - FRAC)) as u32 } else { 0 });
     let y0 = color.y0();
     small.for_each_centre(|x, y, e| {
-        let e = e.map(|e| e as u32);
+        // Edge i lies opposite vertex i: w_i / det is its barycentric coordinate.
+        let w = [0, 1, 2].map(|i| e[i] as u32 + bias[i]);
         let Some(p) = color.row_mut(y).and_then(|r| r.get_mut(x as usize)) else { return };
         if F::ENABLED {
             let Some(slot) = depth.get_mut((y - y0) as usize).and_then(|r| r.get_mut(x as usize)) else {
                 return;
             };
-            let n = e[0] as u64 * dv[0] as u64 + e[1] as u64 * dv[1] as u64 + e[2] as u64 * dv[2] as u64 + dk;
+            let n = w[0] as u64 * dv[0] as u64 + w[1] as u64 * dv[1] as u64 + w[2] as u64 * dv[2] as u64;
             let code = (floor_div(n, det) + (1 << (FRAC - 1))) >> FRAC;
             if !state.test().passes(code, F::to_u32(*slot)) {
                 return;
@@ -133,25 +115,47 @@ fn draw_with<C, F, M, D, const S: u32, const W: usize>(
                 *slot = F::from_u32(code);
             }
         }
-        *p = if tri.flat {
-            flat
-        } else {
-            let w = e.map(|e| e as u64);
-            let dq = if M::PERSPECTIVE { w[0] * qv[0] + w[1] * qv[1] + w[2] * qv[2] + qk } else { 0 };
-            let channel = |c: usize| -> u8 {
-                if max[c] == 0 {
-                    0
-                } else if M::PERSPECTIVE {
-                    let n = w[0] * cqv[c][0] + w[1] * cqv[c][1] + w[2] * cqv[c][2] + cqk[c];
-                    small_quotient(2 * n + dq, 2 * dq) as u8
-                } else {
-                    let n = e[0] * cv[c][0] + e[1] * cv[c][1] + e[2] * cv[c][2] + ck[c];
-                    ((2 * n + det) / (2 * det)) as u8
-                }
-            };
-            C::from_channels([channel(0), channel(1), channel(2)])
-        };
+        *p = if tri.flat { C::from_channels(tri.v[0].color) } else { gouraud::<C, M, S>(tri, w, det) };
     });
+}
+
+/// The Gouraud colour of the pixel whose barycentric coordinates are
+/// `w / det` ([`draw`]'s module docs). Out of line: inlined into the pixel
+/// loop, its sums were strength-reduced into per-triangle steps that cost
+/// more than a triangle of one or two pixels uses.
+#[inline(never)]
+fn gouraud<C: Interpolate, M: Interpolation, const S: u32>(
+    tri: &ScreenTriangle<S>,
+    w: [u32; 3],
+    det: u32,
+) -> C {
+    let max = C::CHANNEL_MAX;
+    let c = |k: usize| [0, 1, 2].map(|i| tri.v[i].color[k] as u32);
+    if M::PERSPECTIVE {
+        // The weights times q = 1/w, normalised as the plane path does.
+        let q = normalised_q(tri, Q_BITS).map(|q| q as u64);
+        let w = w.map(|w| w as u64);
+        let d = w[0] * q[0] + w[1] * q[1] + w[2] * q[2];
+        let channel = |k: usize| -> u8 {
+            if max[k] == 0 {
+                return 0;
+            }
+            let c = c(k).map(|c| c as u64);
+            let n = w[0] * c[0] * q[0] + w[1] * c[1] * q[1] + w[2] * c[2] * q[2];
+            small_quotient(2 * n + d, 2 * d) as u8
+        };
+        C::from_channels([channel(0), channel(1), channel(2)])
+    } else {
+        let channel = |k: usize| -> u8 {
+            if max[k] == 0 {
+                return 0;
+            }
+            let c = c(k);
+            let n = w[0] * c[0] + w[1] * c[1] + w[2] * c[2];
+            ((2 * n + det) / (2 * det)) as u8
+        };
+        C::from_channels([channel(0), channel(1), channel(2)])
+    }
 }
 
 /// `⌊n / d⌋` for `0 < d < 2^16` and `n / d < 2^24`, by two 16-bit digits
