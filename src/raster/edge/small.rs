@@ -50,6 +50,8 @@ pub(crate) struct Small {
     /// Twice the area in internal units (`> 0`): the sum of the three
     /// unbiased edge functions at any point.
     det: i32,
+    /// Each edge's top-left bias (0 or 1).
+    bias: [i32; 3],
 }
 
 /// The coverage path of a triangle whose bounding box is at most
@@ -110,14 +112,17 @@ pub(crate) fn setup_state<const S: u32>(
         y: row0,
         y_end: row1 + 1,
         det: det.abs(),
+        bias: [0; 3],
     };
     // Edge i is the one opposite vertex i, directed so that the inside is
     // on its non-negative side (the vertices clockwise).
+    // Reversing an edge negates its function, so the points need no swap.
+    let sign = if clockwise { 1 } else { -1 };
     for i in 0..3 {
-        let (j, k) = ((i + 1) % 3, (i + 2) % 3);
-        let (st, en) = if clockwise { (q[j], q[k]) } else { (q[k], q[j]) };
-        let (a, b) = (st.1 - en.1, en.0 - st.0);
-        s.e[i] = a * (cx - st.0) + b * (cy - st.1) - bias(a, b);
+        let (st, en) = (q[(i + 1) % 3], q[(i + 2) % 3]);
+        let (a, b) = (sign * (st.1 - en.1), sign * (en.0 - st.0));
+        s.bias[i] = bias(a, b);
+        s.e[i] = a * (cx - st.0) + b * (cy - st.1) - s.bias[i];
         (s.a[i], s.b[i]) = (a << shift, b << shift);
     }
     Some(Some(s))
@@ -196,7 +201,7 @@ impl Small {
     /// bias is [`Small::det`] times the barycentric coordinate of vertex `i`.
     #[inline(always)]
     pub(crate) fn biases(&self) -> [i32; 3] {
-        [0, 1, 2].map(|i| bias(self.a[i], self.b[i]))
+        self.bias
     }
 
     /// `f(x, y, e)` for each covered centre not yet walked, row by row, left

@@ -115,20 +115,24 @@ fn draw_with<C, F, M, D, const S: u32, const W: usize>(
                 *slot = F::from_u32(code);
             }
         }
-        *p = if tri.flat { C::from_channels(tri.v[0].color) } else { gouraud::<C, M, S>(tri, w, det) };
+        *p = shade::<C, M, S>(tri, w, det);
     });
 }
 
-/// The Gouraud colour of the pixel whose barycentric coordinates are
-/// `w / det` ([`draw`]'s module docs). Out of line: inlined into the pixel
-/// loop, its sums were strength-reduced into per-triangle steps that cost
-/// more than a triangle of one or two pixels uses.
+/// The colour of `tri` (flat, or Gouraud) at the pixel whose barycentric
+/// coordinates are `w / det` (module docs). Out of line: inlined into the
+/// pixel loop, its work was hoisted into per-triangle set-up (the flat
+/// colour, the sums strength-reduced into steps) that costs more than a
+/// triangle of one or two pixels uses.
 #[inline(never)]
-fn gouraud<C: Interpolate, M: Interpolation, const S: u32>(
+fn shade<C: Interpolate, M: Interpolation, const S: u32>(
     tri: &ScreenTriangle<S>,
     w: [u32; 3],
     det: u32,
 ) -> C {
+    if tri.flat {
+        return C::from_channels(tri.v[0].color);
+    }
     let max = C::CHANNEL_MAX;
     let c = |k: usize| [0, 1, 2].map(|i| tri.v[i].color[k] as u32);
     if M::PERSPECTIVE {
