@@ -129,10 +129,12 @@ pub(crate) fn setup_state<const S: u32>(
 }
 
 /// The top-left rule's bias of an edge with function steps `a` per column
-/// and `b` per row (any positive scale): 0 for a top or left edge.
+/// and `b` per row, not both 0: 0 for a top or left edge (`a > 0`, or
+/// `a = 0 < b`), else 1. With `|a|, |b| ≤ L ≤ 2^13` (module docs),
+/// `a·2^14 + b` has the sign of `a`, or of `b` where `a = 0`: one compare.
 #[inline(always)]
 fn bias(a: i32, b: i32) -> i32 {
-    if a > 0 || (a == 0 && b > 0) { 0 } else { 1 }
+    ((a << 14) + b <= 0) as i32
 }
 
 impl Small {
