@@ -133,7 +133,8 @@ pub enum Stage {
     /// ([`TriangleSpans`]), covered pixels counted.
     Coverage,
     /// The whole frame with a depth test that never passes: coverage,
-    /// plane set-up and the fragment loop, no pixel written.
+    /// each covered pixel's depth (per pixel for tiny triangles, from
+    /// planes for the others) and the fragment loop, no pixel written.
     NoWrites,
 }
 

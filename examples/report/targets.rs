@@ -231,7 +231,7 @@ fn issue12(peers: &[Peer], breakdown: &[Breakdown], counts: &Counts, fw: &FwBenc
             w,
             "The knot on the Cortex-M4F: {:.0} instructions per mesh triangle affine, {:.0} perspective-correct, \
              for {} covered pixels ({px:.2} per mesh triangle). Perspective-correct colour adds {:.0} instructions \
-             per covered pixel (its per-pixel divisions and its extra plane set-up per triangle). ",
+             per covered pixel (its per-pixel divisions and, above the tiny-triangle size, its extra plane set-up). ",
             per(a.instructions),
             per(p.instructions),
             a.covered,
@@ -245,9 +245,9 @@ fn issue12(peers: &[Peer], breakdown: &[Breakdown], counts: &Counts, fw: &FwBenc
                 w,
                 "Per mesh triangle, from the firmware table's stage rows (the affine frame stopped after each \
                  stage): the vertex stage {:.0} (clusters tested and, per band, the vertices of the clusters that \
-                 reach it transformed, clipped, snapped, culled and lit), coverage {:.0}, plane set-up and the \
-                 fragment loop {:.0}, pixel writes with the colour planes of the triangles that pass the depth \
-                 test {:.0}, the band loop {:.0}: the vertex stage alone is {:.1}× the {PER_TRI_AFFINE:.0} budget. ",
+                 reach it transformed, clipped, snapped, culled and lit), coverage {:.0}, the depth of each covered \
+                 pixel (per pixel for tiny triangles, from planes for the others) and the fragment loop {:.0}, \
+                 pixel writes with the colours of the pixels that pass the depth test {:.0}, the band loop {:.0}: the vertex stage alone is {:.1}× the {PER_TRI_AFFINE:.0} budget. ",
                 d(v, band),
                 d(c, v),
                 d(n, c),
