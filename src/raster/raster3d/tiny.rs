@@ -191,13 +191,19 @@ fn small_quotient(x: u64, y: u64) -> u32 {
 mod tests {
     use super::{floor_div, small_quotient};
 
+    /// The next value of a xorshift sequence.
+    fn next(seed: &mut u64) -> u64 {
+        *seed ^= *seed << 13;
+        *seed ^= *seed >> 7;
+        *seed ^= *seed << 17;
+        *seed
+    }
+
     #[test]
     fn small_quotient_is_the_u64_division() {
         let mut seed = 0x9E37_79B9_7F4A_7C15u64;
         for i in 0..300_000u32 {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
+            let seed = next(&mut seed);
             // Divisors of every size up to 2^48, quotients up to 2^9 − 1.
             let y = (seed >> (16 + i % 48)).max(1);
             let y = [y, 1, (1 << 48) - 1, 1 << 16, (1 << 16) - 1, (1 << 16) + 1][(i % 6) as usize];
@@ -215,9 +221,7 @@ mod tests {
     fn floor_div_is_the_u64_division() {
         let mut seed = 0x2545_F491_4F6C_DD1Du64;
         for i in 0..200_000u32 {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
+            let seed = next(&mut seed);
             let d = ((seed >> 40) as u32 & 0xFFFF).max(1);
             let d = [d, 1, 0xFFFF, 2][(i % 4) as usize];
             // Any n with n / d < 2^24, ends included.
