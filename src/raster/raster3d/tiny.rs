@@ -1,6 +1,6 @@
-//! Tiny triangles (most of a dense mesh's): depth and affine colour computed
-//! at each covered centre from its barycentric coordinates, with no plane
-//! set-up.
+//! Tiny triangles (most of a dense mesh's): depth and colour (flat, affine
+//! or perspective-correct) computed at each covered centre from its
+//! barycentric coordinates, with no plane set-up.
 //!
 //! # Why
 //! A plane costs a determinant reciprocal and up to three exact divisions
@@ -11,9 +11,10 @@
 //! # What is computed
 //! A small triangle ([`Small`]) with `det < 2^16` (twice its area in
 //! internal units of `2^-(S+1)` px: below 32 px² at `S = 4`) is drawn here.
-//! At a covered centre its unbiased edge functions `E_i` are integers in
-//! `[0, det]` that sum to `det`, and `E_i / det` is exactly the barycentric
-//! coordinate of the vertex opposite edge `i`. A value is `Σ E_i·v_i / det`:
+//! At a covered centre its unbiased edge functions `E_i` (edge `i` opposite
+//! vertex `i`) are integers in `[0, det]` that sum to `det`, and `E_i / det`
+//! is exactly the barycentric coordinate of vertex `i`. A value is
+//! `Σ E_i·v_i / det`:
 //!
 //! * **Depth** (formats of up to 16 bits): `v_i = ⌊d_i / 2^8⌋`, `d_i` the
 //!   vertex depth in `2^-16` steps ([`depth_steps`], itself within
@@ -27,14 +28,19 @@
 //! * **Colour**, affine: `v_i` the channel values (`≤ 255`, exact), the sum
 //!   `< det·2^8 < 2^24` (`u32`), rounded half up exactly: within `1/2` of
 //!   the screen-linear value (the plane path: `1/2 + 2^-7`).
+//! * **Colour**, perspective-correct: `Σ E_i·c_i·q_i / Σ E_i·q_i` with
+//!   `q_i` the plane path's normalised `1/w` (below 2^23): sums below
+//!   `2^47` and `2^39` (`u64`), rounded half up exactly
+//!   ([`small_quotient`]). The only error is the normalisation's, as on the
+//!   plane path, whose rounding error it does not have: within the derived
+//!   bound of `tests/integration/perspective.rs`.
 //!
 //! Both depend on the triangle and the pixel only, so any band height gives
 //! the same pixels. Where the exact value lies within those bounds of a
 //! rounding tie, a code or channel can differ by one from what the plane
 //! path would store.
 //!
-//! Perspective-correct colour and depth formats wider than 16 bits take the
-//! plane path.
+//! Depth formats wider than 16 bits take the plane path.
 
 use super::{
     DEPTH_FRAC, DepthRule, Interpolation, LessWrite, Q_BITS, ScreenTriangle, depth_steps, normalised_q,
@@ -59,7 +65,7 @@ pub(super) fn eligible<F: DepthFormat>(small: &Small) -> bool {
 
 /// Draws `tri`, whose coverage walk is `small` ([`eligible`]), into the
 /// band: each covered centre's depth tested against `depth` with `state`,
-/// then its colour (flat, or affine Gouraud) written where it passes.
+/// then its colour (flat, or Gouraud as `M` says) written where it passes.
 #[inline(always)]
 pub(super) fn draw<C, F, M, const S: u32, const W: usize>(
     tri: &ScreenTriangle<S>,
