@@ -245,13 +245,15 @@ fn issue12(peers: &[Peer], breakdown: &[Breakdown], counts: &Counts, fw: &FwBenc
                 w,
                 "Per mesh triangle, from the firmware table's stage rows (the affine frame stopped after each \
                  stage): the vertex stage {:.0} (clusters tested and, per band, the vertices of the clusters that \
-                 reach it transformed, clipped, snapped, culled and lit), coverage {:.0}, the depth of each covered \
-                 pixel (per pixel for tiny triangles, from planes for the others) and the fragment loop {:.0}, \
-                 pixel writes with the colours of the pixels that pass the depth test {:.0}, the band loop {:.0}: the vertex stage alone is {:.1}× the {PER_TRI_AFFINE:.0} budget. ",
+                 reach it transformed, clipped, snapped, culled and lit), the rasterization {:.0} (coverage, each \
+                 covered pixel's depth and test, the colours of the pixels that pass and their writes; with a depth \
+                 test that never passes, {:.0}; coverage alone, as the coverage row computes it with \
+                 `TriangleSpans`, {:.0}, more than the frame's tiny-triangle path spends on it), the band loop \
+                 {:.0}: the vertex stage alone is {:.1}× the {PER_TRI_AFFINE:.0} budget. ",
                 d(v, band),
+                d(a.instructions, v),
+                d(n, v),
                 d(c, v),
-                d(n, c),
-                d(a.instructions, n),
                 per(band),
                 d(v, band) / PER_TRI_AFFINE,
             );
