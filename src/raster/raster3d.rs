@@ -40,10 +40,11 @@
 //! per triangle).
 //!
 //! A tiny triangle (twice its area below 2^16 internal units: under 32 px²
-//! at 4 subpixel bits) with depth of at most 16 bits has no planes: each covered pixel divides its exact barycentric
-//! sums by the area (`tiny`, where its bounds are derived; they lie inside
-//! the ones above, and a value may differ by one unit from the plane's
-//! where the exact value is that close to a rounding tie).
+//! at 4 subpixel bits) with depth of at most 16 bits has no planes: each
+//! covered pixel divides its exact barycentric sums by the area (`tiny`,
+//! where its bounds are derived; they lie inside the ones above, and a
+//! value may differ by one unit from the plane's where the exact value is
+//! that close to a rounding tie).
 
 use crate::attr::{COLOR_FRAC, Plane, PlaneFrame, PlaneSetup, channel};
 use crate::band::BandView;
