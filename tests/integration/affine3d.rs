@@ -9,7 +9,7 @@
 //! per-pixel barycentric division of tiny triangles (twice the area below
 //! 2^16 internal units, `raster3d::tiny`), which the test counts.
 
-use crate::ref3d::{bary, draw_frame};
+use crate::ref3d::{bary, draw_frame, is_tiny};
 use crate::reference::{Rng, exact_coverage};
 use embedded_graphics_core::pixelcolor::{Gray8, Rgb565, Rgb888};
 use microraster::band::Band;
@@ -39,11 +39,6 @@ fn triangle<C: Interpolate>(rng: &mut Rng, size: i64) -> ScreenTriangle<4> {
     ScreenTriangle { v: [v(), v(), v()], flat: false }
 }
 
-/// Twice the area in the rasterizer's internal units (`2^-(S+1)` px).
-fn det(t: &ScreenTriangle<4>) -> i128 {
-    bary(t.v.map(|v| v.pos), 0, 0).map_or(0, |(_, d)| d.abs())
-}
-
 /// Every covered channel of `C` within the bound; (samples, tiny samples, max error).
 fn check<C: Interpolate>(seed: u64, triangles: usize) -> (usize, usize, f64) {
     let mut rng = Rng::new(seed);
@@ -54,7 +49,7 @@ fn check<C: Interpolate>(seed: u64, triangles: usize) -> (usize, usize, f64) {
         let t = triangle::<C>(&mut rng, size);
         let (frame, _) =
             draw_frame::<C, NoDepth, Affine, 4, W, H>(&[t], C::from_channels([0; 3]), DepthState::DISABLED);
-        let small = det(&t) < 1 << 16;
+        let small = is_tiny(t.v.map(|v| v.pos));
         for (x, y) in exact_coverage(t.v.map(|v| v.pos), clip, Cull::None).pixels() {
             let (num, d) = bary(t.v.map(|v| v.pos), x, y).unwrap();
             let got = frame[y as usize * W + x as usize].to_channels();
@@ -123,7 +118,7 @@ fn small_depth_tested_triangles_are_band_invariant() {
             t
         })
         .collect();
-    let tiny = tris.iter().filter(|t| det(t) < 1 << 16).count();
+    let tiny = tris.iter().filter(|t| is_tiny(t.v.map(|v| v.pos))).count();
     assert!(tiny > 1500, "{tiny} tiny triangles");
     let full = banded::<Depth16>(&tris, H);
     for bh in [1, 3, 7, 16] {

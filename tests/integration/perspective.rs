@@ -18,7 +18,7 @@
 //!
 //! So `|c − c_ref| ≤ 1/2 + 1/(2(m − 9/8)) + 288/(m − 9/8) + 255ε/(1 − ε)`.
 
-use crate::ref3d::{bary, draw_frame};
+use crate::ref3d::{bary, draw_frame, is_tiny};
 use crate::reference::{Rng, exact_coverage};
 use embedded_graphics_core::pixelcolor::Rgb888;
 use microraster::depth::{DepthState, NoDepth};
@@ -189,9 +189,8 @@ fn perspective_correct_colour_of_small_triangles_within_derived_bound() {
         let (max, _, n) = errors(&[tri], &frame, |_, e, _| {
             assert!(e <= b + 1e-9, "error {e} > bound {b} for {tri:?}");
         });
-        let det = bary(pos, 0, 0).map_or(0, |(_, d)| d.abs());
         (samples, worst) = (samples + n, worst.max(max));
-        tiny += if det < 1 << 16 { n } else { 0 };
+        tiny += if is_tiny(pos) { n } else { 0 };
     }
     println!(
         "perspective-correct, small triangles: {samples} channel samples ({tiny} of tiny ones), max error {worst:.4}"

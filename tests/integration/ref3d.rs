@@ -25,6 +25,13 @@ pub fn bary<const S: u32>(v: [SubPoint<S>; 3], x: i32, y: i32) -> Option<([i128;
     Some(([cross(p[1], p[2], c), cross(p[2], p[0], c), cross(p[0], p[1], c)], det))
 }
 
+/// Whether the snapped triangle `v` is tiny as the `raster3d` docs define
+/// it (twice its area below 2^16 internal units of `2^-(S+1)` px): drawn
+/// with per-pixel barycentric sums instead of planes.
+pub fn is_tiny<const S: u32>(v: [SubPoint<S>; 3]) -> bool {
+    bary(v, 0, 0).is_some_and(|(_, det)| det.abs() < 1 << 16)
+}
+
 /// `Σ λ_i · val_i` at the centre of pixel `(x, y)`, with the sum of products
 /// formed exactly in `i128` (no cancellation), then one division in f64.
 /// `val` must stay below 2^64 in magnitude.
