@@ -17,6 +17,7 @@
 mod bins;
 mod cache;
 mod cluster;
+mod eager;
 mod inside;
 mod material;
 mod presnap;

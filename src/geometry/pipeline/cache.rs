@@ -12,7 +12,7 @@
 //! of [`Pipeline::draw_valid_mesh`], bit for bit, in the same order.
 
 use super::presnap::{PreSnap, orientation};
-use super::{Material, MeshSetup, MeshStats, Pipeline, Shade, channels};
+use super::{Material, MeshSetup, MeshStats, Pipeline, Shade, VertexCtx, channels};
 use crate::Error;
 use crate::clip3d::{Class, ClipVertex, VertexClass};
 use crate::edge::Cull;
@@ -57,30 +57,30 @@ impl<T: Scalar, const S: u32, const V: usize> core::fmt::Debug for VertexCache<T
 #[derive(Clone, Copy)]
 pub(super) struct Cached<T, const S: u32> {
     /// Clip position (only y and w until `CLIP` is set).
-    clip: [T; 4],
+    pub(super) clip: [T; 4],
     /// `Band` side bits and the flags below.
-    state: u8,
+    pub(super) state: u8,
     /// Clip outcode (valid with `CLIP`).
-    code: u8,
+    pub(super) code: u8,
     /// Snapped vertex (valid with `SNAP` and `SNAPPED`; its colour with
     /// `LIT`). Not an `Option`: its unwrapping cost loads and branches in
     /// the triangle loop.
-    screen: ScreenVertex<S>,
+    pub(super) screen: ScreenVertex<S>,
     /// What snapping rounds, for the pre-snap back-face test (valid with
     /// `QUO`; NaN where the test cannot use the vertex).
-    q: [f32; 2],
+    pub(super) q: [f32; 2],
 }
 
 impl<T: Scalar, const S: u32> Cached<T, S> {
-    const CLIP: u8 = 1;
-    const SNAP: u8 = 2;
-    const LIT: u8 = 4;
+    pub(super) const CLIP: u8 = 1;
+    pub(super) const SNAP: u8 = 2;
+    pub(super) const LIT: u8 = 4;
     /// The snapped vertex's depth and `1/w` are set (with `SNAP`).
-    const DEPTH: u8 = 8;
+    pub(super) const DEPTH: u8 = 8;
     /// `q` is set.
-    const QUO: u8 = 16;
+    pub(super) const QUO: u8 = 16;
     /// Snapping succeeded (with `SNAP`): `screen` holds the vertex.
-    const SNAPPED: u8 = 32;
+    pub(super) const SNAPPED: u8 = 32;
     const EMPTY: Self = Cached {
         clip: [T::ZERO; 4],
         state: 0,
@@ -143,7 +143,6 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         let MeshSetup { ctx, planes, band, max } = setup;
         let (planes, max) = (*planes, *max);
         let coder = VertexClass::<T>::new(planes);
-        let flat = self.shade == Shade::Flat || !src.has_normals();
         let flat_shade = self.shade == Shade::Flat;
         let position = |i: usize| src.position(i).map(Vec3::from_f32).ok_or(Error::InvalidMesh);
         let presnap = PreSnap::new::<T>(self.size, self.origin, S);
@@ -189,28 +188,6 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
             if class == Class::Outside {
                 continue;
             }
-            // Positions and normals for lighting are read only for a triangle
-            // that needs colours: most rejected ones (back faces, half of a
-            // closed mesh) never get here.
-            let face_normal = || -> Result<Option<[f32; 3]>, Error> {
-                if !flat {
-                    return Ok(None);
-                }
-                let [Some(ra), Some(rb), Some(rc)] = idx.map(|j| src.position(j)) else {
-                    return Err(Error::InvalidMesh);
-                };
-                // Flat shading, or no normals: the face normal, as `Mesh::face_normal`.
-                Ok(crate::mesh::face_normal_of([ra, rb, rc]))
-            };
-            let light = |k: usize, face_n: Option<[f32; 3]>| -> Result<[T; 3], Error> {
-                let n = if flat { face_n } else { src.normal(idx[k]) };
-                let p = position(idx[k])?;
-                Ok(if M::UNIFORM {
-                    ctx.color(p, n)
-                } else {
-                    ctx.color_of(p, n, material.base(ctx.base, 0, src.vertex(idx[k])))
-                })
-            };
             if class == Class::Inside {
                 // A certain back face (`presnap`) needs no snapping: counted
                 // as the exact test would count it.
@@ -250,42 +227,14 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
                 if !self.keep(&at, stats) {
                     continue;
                 }
-                // Depth and 1/w, deferred past culling (`snap_deferred`);
-                // every vertex here is snapped (`SNAPPED`).
-                for (k, &j) in idx.iter().enumerate() {
-                    let e = &mut cache[j];
-                    if e.state & Cached::<T, S>::DEPTH == 0 {
-                        self.depth_entry(e);
-                    }
-                    (at[k].depth, at[k].inv_w) = (e.screen.depth, e.screen.inv_w);
-                }
-                if flat {
-                    // Lit with the face normal: per triangle, not per vertex.
-                    let face_n = face_normal()?;
-                    let c0 = channels(light(0, face_n)?, max);
-                    for (k, v) in at.iter_mut().enumerate() {
-                        v.color = if flat_shade { c0 } else { channels(light(k, face_n)?, max) };
-                    }
-                } else {
-                    for (k, &j) in idx.iter().enumerate() {
-                        let e = &mut cache[j];
-                        if e.state & Cached::<T, S>::LIT == 0 {
-                            e.screen.color = channels(light(k, None)?, max);
-                            e.state |= Cached::<T, S>::LIT;
-                        }
-                        at[k].color = e.screen.color;
-                    }
-                }
+                self.complete(ctx, src, material, max, cache, idx, &mut at)?;
                 sink(ScreenTriangle { v: at, flat: flat_shade }, stats)?;
                 stats.emitted += 1;
                 continue;
             }
-            let face_n = face_normal()?;
-            let cs = if flat_shade {
-                [light(0, face_n)?; 3]
-            } else {
-                [light(0, face_n)?, light(1, face_n)?, light(2, face_n)?]
-            };
+            let face_n = self.face_normal(src, idx)?;
+            let light = |k: usize| self.vertex_light(ctx, src, material, idx[k], face_n);
+            let cs = if flat_shade { [light(0)?; 3] } else { [light(0)?, light(1)?, light(2)?] };
             let clip = idx.map(|j| cache[j].clip);
             let vs = [0, 1, 2].map(|k| ClipVertex { pos: clip[k], attr: cs[k] });
             self.clip_and_emit(vs, planes, stats, |mut at, attr, stats| {
@@ -302,6 +251,91 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
 }
 
 impl<T: Scalar, const S: u32> Pipeline<T, S> {
+    /// The depth, `1/w` and colours of a triangle that will be drawn
+    /// (snapped, `SNAPPED`, inside the clip volume), into `at`: each
+    /// vertex's depth (deferred past culling, `snap_deferred`) and, with
+    /// vertex normals, its lit colour are computed once and kept in `cache`.
+    #[allow(clippy::too_many_arguments)]
+    #[inline]
+    pub(super) fn complete<Src: VertexSource, M: Material<T>>(
+        &self,
+        ctx: &VertexCtx<T>,
+        src: &Src,
+        material: &M,
+        max: [u8; 3],
+        cache: &mut [Cached<T, S>],
+        idx: [usize; 3],
+        at: &mut [ScreenVertex<S>; 3],
+    ) -> Result<(), Error> {
+        for (k, &j) in idx.iter().enumerate() {
+            let e = cache.get_mut(j).ok_or(Error::InvalidMesh)?;
+            if e.state & Cached::<T, S>::DEPTH == 0 {
+                self.depth_entry(e);
+            }
+            (at[k].depth, at[k].inv_w) = (e.screen.depth, e.screen.inv_w);
+        }
+        if self.shade == Shade::Flat || !src.has_normals() {
+            // Lit with the face normal: per triangle, not per vertex.
+            let face_n = self.face_normal(src, idx)?;
+            let c0 = channels(self.vertex_light(ctx, src, material, idx[0], face_n)?, max);
+            for (k, v) in at.iter_mut().enumerate() {
+                v.color = if self.shade == Shade::Flat {
+                    c0
+                } else {
+                    channels(self.vertex_light(ctx, src, material, idx[k], face_n)?, max)
+                };
+            }
+        } else {
+            for (k, &j) in idx.iter().enumerate() {
+                let e = cache.get_mut(j).ok_or(Error::InvalidMesh)?;
+                if e.state & Cached::<T, S>::LIT == 0 {
+                    e.screen.color = channels(self.vertex_light(ctx, src, material, j, None)?, max);
+                    e.state |= Cached::<T, S>::LIT;
+                }
+                at[k].color = e.screen.color;
+            }
+        }
+        Ok(())
+    }
+
+    /// The face normal of triangle `idx` where it lights the vertices (flat
+    /// shading, or a mesh without normals), as `Mesh::face_normal`; `None`
+    /// otherwise. Positions are read only for a triangle that needs
+    /// colours: most rejected ones (back faces) never get here.
+    #[inline]
+    fn face_normal<Src: VertexSource>(&self, src: &Src, idx: [usize; 3]) -> Result<Option<[f32; 3]>, Error> {
+        if self.shade != Shade::Flat && src.has_normals() {
+            return Ok(None);
+        }
+        let [Some(ra), Some(rb), Some(rc)] = idx.map(|j| src.position(j)) else {
+            return Err(Error::InvalidMesh);
+        };
+        Ok(crate::mesh::face_normal_of([ra, rb, rc]))
+    }
+
+    /// The lit colour of slot `j`: with the face normal `face_n` where
+    /// [`Pipeline::face_normal`] gives one, else with the vertex's normal.
+    #[inline]
+    fn vertex_light<Src: VertexSource, M: Material<T>>(
+        &self,
+        ctx: &VertexCtx<T>,
+        src: &Src,
+        material: &M,
+        j: usize,
+        face_n: Option<[f32; 3]>,
+    ) -> Result<[T; 3], Error> {
+        let flat = self.shade == Shade::Flat || !src.has_normals();
+        let n = if flat { face_n } else { src.normal(j) };
+        let p = src.position(j).map(Vec3::from_f32).ok_or(Error::InvalidMesh)?;
+        Ok(if M::UNIFORM {
+            ctx.color(p, n)
+        } else {
+            ctx.color_of(p, n, material.base(ctx.base, 0, src.vertex(j)))
+        })
+    }
+}
+
+impl<T: Scalar, const S: u32> Pipeline<T, S> {
     /// Snaps cache entry `e` (its `SNAP` step). With usable quotients
     /// (`presnap`, `QUO`), snapping is their rounding, its depth deferred as
     /// [`Pipeline::snap_deferred`] does. Out of line, as
@@ -310,7 +344,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     /// it (measured: Fx knot −2 %, f32 unchanged; the quotients' step out
     /// of line as well cost f32 +1.4 %).
     #[inline(never)]
-    fn snap_entry(&self, e: &mut Cached<T, S>, presnap: &PreSnap, presnapped: bool) {
+    pub(super) fn snap_entry(&self, e: &mut Cached<T, S>, presnap: &PreSnap, presnapped: bool) {
         let screen = if presnapped && e.state & Cached::<T, S>::QUO != 0 && !e.q[0].is_nan() {
             let pos = presnap.snap(e.q);
             pos.map(|pos| ScreenVertex { pos, depth: 0, inv_w: 0, color: [0; 3] })
@@ -358,7 +392,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     /// `c` for later (`f32`, its depth cannot fail): then snapping fails
     /// only where its position does.
     #[inline]
-    fn depth_deferrable(&self, c: [T; 4]) -> bool {
+    pub(super) fn depth_deferrable(&self, c: [T; 4]) -> bool {
         let (z, w) = (c[2], c[3]);
         crate::math::vec::is_float::<T>() && z.is_finite() && z.abs() <= w * T::from_f32(128.0)
     }

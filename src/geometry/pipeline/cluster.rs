@@ -289,12 +289,24 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
             let triangles = mesh.triangles.get(to..to + tc).ok_or(Error::InvalidMeshlet)?;
             let slots = cache.v.get_mut(..vc).ok_or(Error::InvalidMeshlet)?;
             let src = ClusterSource { mesh: &mesh.mesh, vertices };
-            let tris = triangles.iter().map(|t| t.map(usize::from));
-            let slots = Slots { slots, inside: inside.contains(m.sphere) };
-            pipe.draw_cached(&setup, &src, material, slots, tris, &mut stats, |tri, _| {
+            let emit = |tri, _: &mut MeshStats| {
                 sink(&tri);
                 Ok(())
-            })
+            };
+            if inside.contains(m.sphere) {
+                pipe.draw_inside(&setup, &src, material, slots, triangles, &mut stats, emit)
+            } else {
+                let tris = triangles.iter().map(|t| t.map(usize::from));
+                pipe.draw_cached(
+                    &setup,
+                    &src,
+                    material,
+                    Slots { slots, inside: false },
+                    tris,
+                    &mut stats,
+                    emit,
+                )
+            }
             .map_err(|e| if e == Error::InvalidMesh { Error::InvalidMeshlet } else { e })?;
         }
         Ok(stats)

@@ -69,6 +69,33 @@ impl PreSnap {
         crate::SubPoint::new(self.base[0] + r[0], self.base[1] + r[1]).ok()
     }
 
+    /// The snapped position of clip position `c`, bit for bit
+    /// [`Pipeline::snap_xy`](super::Pipeline) of it, for a vertex whose
+    /// depth is deferrable (`z` finite, `|z| ≤ 128·w`, as
+    /// `Pipeline::depth_deferrable`) and whose [`PreSnap::quotients`] are
+    /// usable; `None` otherwise (then the caller snaps the general way).
+    /// The quotients' rounding is one addition and one subtraction of
+    /// `1.5·2^23`: for `|q| ≤ 2^22` the sum lies in `[2^23, 2^24)`, where
+    /// `f32` steps by 1, so the addition rounds `q` to the nearest integer,
+    /// ties to even (`1.5·2^23` is even), and the subtraction is exact: the
+    /// value of [`round_even_f32`], without its sign and range branches.
+    #[inline]
+    pub(super) fn snap_inside<T: Scalar, const S: u32>(&self, c: [T; 4]) -> Option<crate::SubPoint<S>> {
+        let [ax, ay] = self.half?;
+        let (x, y, z, w) = (c[0].to_f32(), c[1].to_f32(), c[2].to_f32(), c[3].to_f32());
+        // `w > 0` finite; `z` finite (NaN fails the comparison) within 128·w.
+        if !(w > 0.0 && w <= f32::MAX && z.abs() <= w * 128.0) {
+            return None;
+        }
+        let q = [x / w * ax, -y / w * ay];
+        if !(q[0].abs() <= Q_MAX && q[1].abs() <= Q_MAX) {
+            return None;
+        }
+        const MAGIC: f32 = 12_582_912.0; // 1.5·2^23
+        let r = q.map(|v| ((v + MAGIC) - MAGIC) as i32);
+        crate::SubPoint::new(self.base[0] + r[0], self.base[1] + r[1]).ok()
+    }
+
     /// Whether the test applies at all.
     pub(super) fn active(&self) -> bool {
         self.half.is_some()
@@ -192,6 +219,43 @@ mod tests {
         }
         // The rounding does flip signs here: the margin is what saves the test.
         assert!(flips > 100, "{flips}");
+    }
+
+    /// The inside snap agrees with the quotients' rounding (ties included)
+    /// and declines exactly the vertices the general path must take.
+    #[test]
+    fn snap_inside_is_the_presnap_rounding() {
+        let p = PreSnap::new::<f32>((320, 240), (3, -5), 4);
+        let mut rng = Rng(0x51A9_0001);
+        let (mut ties, mut n) = (0, 0);
+        for i in 0..400_000u32 {
+            let w = (rng.unit() * 100.0 + 1e-3) as f32;
+            let mut c = [0, 1].map(|_| ((rng.unit() - 0.5) * 2.2) as f32 * w);
+            if i % 3 == 0 {
+                // A quotient on a tie (half-integer) or an integer.
+                let q = ((rng.unit() - 0.5) * 5000.0).floor() as f32 + if i % 2 == 0 { 0.5 } else { 0.0 };
+                c[0] = q / 2560.0 * w;
+            }
+            let z = [0.5 * w, -200.0 * w, f32::NAN, 128.0 * w][i as usize % 4];
+            let clip = [c[0], c[1], z, w];
+            let got = p.snap_inside::<f32, 4>(clip);
+            let usable = z.is_finite() && z.abs() <= w * 128.0;
+            let want = p.quotients(clip).filter(|_| usable).and_then(|q| p.snap::<4>(q));
+            assert_eq!(got, want, "{clip:?}");
+            if let Some(q) = p.quotients(clip) {
+                ties += u32::from(q[0].fract().abs() == 0.5);
+            }
+            n += u32::from(got.is_some());
+        }
+        assert!(ties > 1000 && n > 100_000, "{ties} ties, {n} snapped");
+        for v in [0.5f32, 1.5, 2.5, -0.5, -1.5, -2.5, 4_194_303.5, -4_194_303.5, 4_194_304.0] {
+            assert_eq!(((v + 12_582_912.0) - 12_582_912.0) as i64, round_even_f32(v), "{v}");
+        }
+        assert_eq!(
+            PreSnap::new::<crate::math::Fx>((320, 240), (0, 0), 4)
+                .snap_inside::<crate::math::Fx, 4>([crate::math::Fx::ZERO; 4]),
+            None
+        );
     }
 
     #[test]

@@ -1,0 +1,135 @@
+//! The vertex stage of a cluster inside the view volume, vertex first: when
+//! a meshlet's bounding sphere lies inside the clip volume
+//! ([`super::inside`]), no vertex needs clipping and none can fail to
+//! snap for want of range, so every vertex is transformed and snapped in
+//! one pass and each triangle's band and back-face tests are integer tests
+//! on its snapped corners.
+//!
+//! # Why not lazily, as [`super::cache`] does
+//! The cached path computes a vertex only as far as a triangle needs it,
+//! and pays for that in every triangle: flag tests per corner, outcodes,
+//! the floating pre-snap orientation with its margin. On a real mesh
+//! (about two triangles per vertex, half of them back faces) nearly every
+//! vertex of a cluster that reaches the band is snapped anyway, so the
+//! triangle loop's bookkeeping cost more than the snapping it saved. Depth
+//! and colour stay lazy: only a drawn triangle's vertices need them.
+//!
+//! # Same triangles as the cached path
+//! The snapped position is the same rounding of the same clip position
+//! ([`Pipeline::snap_entry`], [`super::presnap`]), and a triangle is drawn
+//! exactly when the cached path draws it: its snapped rows meet the band
+//! (the cached path's clip-space band test is a conservative early-out
+//! of the same exact test), its vertices snapped, and its snapped area
+//! non-zero and not culled ([`Pipeline::keep`]). Depth, `1/w` and colours
+//! come from [`Pipeline::complete`], as there. What may differ is the
+//! count of back faces and degenerate triangles in [`MeshStats`]: here only
+//! triangles whose rows meet the band are counted.
+
+use super::cache::{Cached, VertexSource};
+use super::presnap::PreSnap;
+use super::{Band, Material, MeshSetup, MeshStats, Pipeline, Shade, VertexCtx};
+use crate::Error;
+use crate::math::{Scalar, Vec3};
+use crate::raster3d::{ScreenTriangle, ScreenVertex};
+
+impl<T: Scalar, const S: u32> Pipeline<T, S> {
+    /// [`Pipeline::draw_cached`] for the slots of one cluster whose vertices
+    /// all lie inside the clip volume (module docs): the same triangles to
+    /// `sink`, in order, with the same vertices and colours. `cache` holds
+    /// one entry per slot of `src` and is overwritten.
+    ///
+    /// Errors: [`Error::InvalidParameter`] for a per-face `material`;
+    /// [`Error::InvalidMesh`] for a slot beyond `cache` or `src`, and
+    /// whatever `sink` returns.
+    #[allow(clippy::too_many_arguments)]
+    pub(super) fn draw_inside<Src: VertexSource, M: Material<T>>(
+        &self,
+        setup: &MeshSetup<T>,
+        src: &Src,
+        material: &M,
+        cache: &mut [Cached<T, S>],
+        triangles: &[[u8; 3]],
+        stats: &mut MeshStats,
+        mut sink: impl FnMut(ScreenTriangle<S>, &mut MeshStats) -> Result<(), Error>,
+    ) -> Result<(), Error> {
+        if M::PER_FACE {
+            return Err(Error::InvalidParameter);
+        }
+        const SIDES: u8 = Band::<f32>::ABOVE | Band::<f32>::BELOW;
+        let MeshSetup { ctx, max, band, .. } = setup;
+        let presnap = PreSnap::new::<T>(self.size, self.origin, S);
+
+        // Clip y and w and the band test of every vertex (as the cached
+        // path); a vertex near the band is snapped now, one beyond its
+        // margin only if a triangle reaching into the band needs it.
+        let mut all_sides = SIDES;
+        for (i, e) in cache.iter_mut().enumerate() {
+            let p = src.position(i).map(Vec3::from_f32).ok_or(Error::InvalidMesh)?;
+            let yw = ctx.yw(p);
+            let side = band.side(yw);
+            e.state = side;
+            all_sides &= side;
+            if side == 0 {
+                self.snap_slot(ctx, &presnap, e, p, yw);
+            } else {
+                e.clip = [T::ZERO, yw.0, T::ZERO, yw.1];
+            }
+        }
+        if all_sides != 0 {
+            return Ok(());
+        }
+        let flat = self.shade == Shade::Flat;
+        for t in triangles {
+            let idx = t.map(usize::from);
+            let state = |j: usize| cache.get(j).map(|e| e.state);
+            let (Some(a), Some(b), Some(c)) = (state(idx[0]), state(idx[1]), state(idx[2])) else {
+                return Err(Error::InvalidMesh);
+            };
+            let mut shared = a & b & c;
+            if shared & SIDES != 0 {
+                continue;
+            }
+            if shared & Cached::<T, S>::SNAP == 0 {
+                // A corner beyond the band's margin, of a triangle across it.
+                for &j in &idx {
+                    let e = &mut cache[j];
+                    if e.state & Cached::<T, S>::SNAP == 0 {
+                        let p = src.position(j).map(Vec3::from_f32).ok_or(Error::InvalidMesh)?;
+                        self.snap_slot(ctx, &presnap, e, p, (e.clip[1], e.clip[3]));
+                    }
+                }
+                shared = cache[idx[0]].state & cache[idx[1]].state & cache[idx[2]].state;
+            }
+            if shared & Cached::<T, S>::SNAPPED == 0 {
+                stats.degenerate += 1;
+                continue;
+            }
+            let mut at = idx.map(|j| cache[j].screen);
+            if !self.keep(&at, stats) {
+                continue;
+            }
+            self.complete(ctx, src, material, *max, cache, idx, &mut at)?;
+            sink(ScreenTriangle { v: at, flat }, stats)?;
+            stats.emitted += 1;
+        }
+        Ok(())
+    }
+
+    /// Transforms and snaps cache entry `e` of model position `p` (clip
+    /// `yw` known): its whole clip position (outcode 0: inside the clip
+    /// volume) and its snapped position, by [`PreSnap::snap_inside`] where
+    /// it applies, else as [`Pipeline::snap_entry`] snaps (the same
+    /// position; depth and `1/w` deferred where they cannot fail).
+    #[inline]
+    fn snap_slot(&self, ctx: &VertexCtx<T>, presnap: &PreSnap, e: &mut Cached<T, S>, p: Vec3<T>, yw: (T, T)) {
+        e.clip = ctx.position(p, yw);
+        e.code = 0;
+        if let Some(pos) = presnap.snap_inside::<T, S>(e.clip) {
+            e.screen = ScreenVertex { pos, depth: 0, inv_w: 0, color: [0; 3] };
+            e.state |= Cached::<T, S>::CLIP | Cached::<T, S>::SNAP | Cached::<T, S>::SNAPPED;
+        } else {
+            e.state |= Cached::<T, S>::CLIP;
+            self.snap_entry(e, presnap, false);
+        }
+    }
+}
