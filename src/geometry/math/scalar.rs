@@ -150,7 +150,9 @@ impl Scalar for f32 {
         } else {
             0.0
         };
-        (c * max as f32 + 0.5) as u8
+        // At most 255.5: `as u32` (one conversion) cannot exceed `u8`, where
+        // a saturating `as u8` adds a clamp.
+        (c * max as f32 + 0.5) as u32 as u8
     }
 }
 

@@ -11,8 +11,8 @@
 //! over each surviving meshlet straight into a band. Both give the triangles
 //! of [`Pipeline::draw_valid_mesh`], bit for bit, in the same order.
 
-use super::presnap::{PreSnap, orientation};
-use super::{Material, MeshSetup, MeshStats, Pipeline, Shade, VertexCtx, channels};
+use super::presnap::{PreSnap, depth_f32, orientation};
+use super::{Material, MeshSetup, MeshStats, Pipeline, Shade, VertexCtx, channels, finite_color};
 use crate::Error;
 use crate::clip3d::{Class, ClipVertex, VertexClass};
 use crate::edge::Cull;
@@ -251,10 +251,10 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
 }
 
 impl<T: Scalar, const S: u32> Pipeline<T, S> {
-    /// The depth, `1/w` and colours of a triangle that will be drawn
-    /// (snapped, `SNAPPED`, inside the clip volume), into `at`: each
-    /// vertex's depth (deferred past culling, `snap_deferred`) and, with
-    /// vertex normals, its lit colour are computed once and kept in `cache`.
+    /// The screen vertices of a triangle that will be drawn (snapped,
+    /// `SNAPPED`, inside the clip volume): each vertex's depth and `1/w`
+    /// (deferred past culling, `snap_deferred`) and, with vertex normals,
+    /// its lit colour are computed once and kept in `cache`.
     #[allow(clippy::too_many_arguments)]
     #[inline]
     pub(super) fn complete<Src: VertexSource, M: Material<T>>(
@@ -267,32 +267,31 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         idx: [usize; 3],
         at: &mut [ScreenVertex<S>; 3],
     ) -> Result<(), Error> {
+        let per_face = self.shade == Shade::Flat || !src.has_normals();
         for (k, &j) in idx.iter().enumerate() {
             let e = cache.get_mut(j).ok_or(Error::InvalidMesh)?;
             if e.state & Cached::<T, S>::DEPTH == 0 {
                 self.depth_entry(e);
             }
-            (at[k].depth, at[k].inv_w) = (e.screen.depth, e.screen.inv_w);
+            if !per_face && e.state & Cached::<T, S>::LIT == 0 {
+                e.screen.color = channels(self.vertex_light_raw(ctx, src, material, j, None)?, max);
+                e.state |= Cached::<T, S>::LIT;
+            }
+            // Field by field: a whole-struct copy here became a `memcpy` call.
+            let v = &mut at[k];
+            (v.pos, v.depth, v.inv_w, v.color) =
+                (e.screen.pos, e.screen.depth, e.screen.inv_w, e.screen.color);
         }
-        if self.shade == Shade::Flat || !src.has_normals() {
+        if per_face {
             // Lit with the face normal: per triangle, not per vertex.
             let face_n = self.face_normal(src, idx)?;
-            let c0 = channels(self.vertex_light(ctx, src, material, idx[0], face_n)?, max);
+            let c0 = channels(self.vertex_light_raw(ctx, src, material, idx[0], face_n)?, max);
             for (k, v) in at.iter_mut().enumerate() {
                 v.color = if self.shade == Shade::Flat {
                     c0
                 } else {
-                    channels(self.vertex_light(ctx, src, material, idx[k], face_n)?, max)
+                    channels(self.vertex_light_raw(ctx, src, material, idx[k], face_n)?, max)
                 };
-            }
-        } else {
-            for (k, &j) in idx.iter().enumerate() {
-                let e = cache.get_mut(j).ok_or(Error::InvalidMesh)?;
-                if e.state & Cached::<T, S>::LIT == 0 {
-                    e.screen.color = channels(self.vertex_light(ctx, src, material, j, None)?, max);
-                    e.state |= Cached::<T, S>::LIT;
-                }
-                at[k].color = e.screen.color;
             }
         }
         Ok(())
@@ -314,9 +313,26 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     }
 
     /// The lit colour of slot `j`: with the face normal `face_n` where
-    /// [`Pipeline::face_normal`] gives one, else with the vertex's normal.
+    /// [`Pipeline::face_normal`] gives one, else with the vertex's normal;
+    /// clamped to finite values as [`VertexCtx::color`] clamps it.
     #[inline]
     fn vertex_light<Src: VertexSource, M: Material<T>>(
+        &self,
+        ctx: &VertexCtx<T>,
+        src: &Src,
+        material: &M,
+        j: usize,
+        face_n: Option<[f32; 3]>,
+    ) -> Result<[T; 3], Error> {
+        self.vertex_light_raw(ctx, src, material, j, face_n).map(finite_color)
+    }
+
+    /// [`Pipeline::vertex_light`] without the clamp to finite values, for a
+    /// colour that goes straight to [`channels`]: `to_channel` maps
+    /// +infinity to full intensity and NaN and −infinity to 0, as the clamp
+    /// does, so the channels are the same.
+    #[inline]
+    fn vertex_light_raw<Src: VertexSource, M: Material<T>>(
         &self,
         ctx: &VertexCtx<T>,
         src: &Src,
@@ -328,9 +344,10 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         let n = if flat { face_n } else { src.normal(j) };
         let p = src.position(j).map(Vec3::from_f32).ok_or(Error::InvalidMesh)?;
         Ok(if M::UNIFORM {
-            ctx.color(p, n)
+            ctx.lit(p, n, |ctx: &VertexCtx<T>| ctx.base)
         } else {
-            ctx.color_of(p, n, material.base(ctx.base, 0, src.vertex(j)))
+            let base = material.base(ctx.base, 0, src.vertex(j));
+            ctx.lit(p, n, move |_: &VertexCtx<T>| base)
         })
     }
 }
@@ -361,7 +378,12 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     /// The deferred depth and `1/w` of snapped entry `e` (its `DEPTH` step).
     #[inline(never)]
     fn depth_entry(&self, e: &mut Cached<T, S>) {
-        let d = e.clip[3].divisor().and_then(|w| self.snap_depth(e.clip, w));
+        let fast = if crate::math::vec::is_float::<T>() {
+            depth_f32(e.clip[2].to_f32(), e.clip[3].to_f32(), self.w_ref.to_f32())
+        } else {
+            None
+        };
+        let d = fast.or_else(|| e.clip[3].divisor().and_then(|w| self.snap_depth(e.clip, w)));
         if let Some((depth, inv_w)) = d {
             (e.screen.depth, e.screen.inv_w) = (depth, inv_w);
         }

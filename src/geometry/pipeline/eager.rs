@@ -29,7 +29,10 @@ use super::cache::{Cached, VertexSource};
 use super::presnap::PreSnap;
 use super::{Band, Material, MeshSetup, MeshStats, Pipeline, Shade, VertexCtx};
 use crate::Error;
+use crate::SubPoint;
+use crate::edge::Cull;
 use crate::math::{Scalar, Vec3};
+use crate::primitive::center_rows;
 use crate::raster3d::{ScreenTriangle, ScreenVertex};
 
 impl<T: Scalar, const S: u32> Pipeline<T, S> {
@@ -104,10 +107,11 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
                 stats.degenerate += 1;
                 continue;
             }
-            let mut at = idx.map(|j| cache[j].screen);
-            if !self.keep(&at, stats) {
+            let pos = idx.map(|j| cache[j].screen.pos);
+            if !self.keep_snapped(pos, stats) {
                 continue;
             }
+            let mut at = [ScreenVertex::default(); 3];
             self.complete(ctx, src, material, *max, cache, idx, &mut at)?;
             sink(ScreenTriangle { v: at, flat }, stats)?;
             stats.emitted += 1;
@@ -131,5 +135,31 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
             e.state |= Cached::<T, S>::CLIP;
             self.snap_entry(e, presnap, false);
         }
+    }
+
+    /// [`Pipeline::keep`] on the snapped positions alone: the same verdict
+    /// and counts, in 32-bit differences (`|coordinate| ≤ 2^28`, so they
+    /// cannot overflow) and 64-bit products.
+    #[inline]
+    fn keep_snapped(&self, p: [SubPoint<S>; 3], stats: &mut MeshStats) -> bool {
+        let (e1x, e1y) = (p[1].x() - p[0].x(), p[1].y() - p[0].y());
+        let (e2x, e2y) = (p[2].x() - p[0].x(), p[2].y() - p[0].y());
+        let det = i64::from(e1x) * i64::from(e2y) - i64::from(e2x) * i64::from(e1y);
+        if det == 0 {
+            stats.degenerate += 1;
+            return false;
+        }
+        let culled = match self.cull {
+            Cull::None => false,
+            Cull::Clockwise => det > 0,
+            Cull::CounterClockwise => det < 0,
+        };
+        if culled {
+            stats.back_faces += 1;
+            return false;
+        }
+        let (y0, y1, y2) = (p[0].y(), p[1].y(), p[2].y());
+        let (lo, hi) = center_rows::<S>(y0.min(y1).min(y2), y0.max(y1).max(y2));
+        self.rows.is_none_or(|(r0, r1)| lo <= r1 && hi >= r0)
     }
 }

@@ -117,6 +117,40 @@ impl PreSnap {
     }
 }
 
+/// The depth and `1/w` of [`Pipeline::snap_depth`](super::Pipeline) for
+/// `f32`, bit for bit, where that depth is deferrable (`w > 0` finite, `|z|
+/// ≤ 128·w`, as `Pipeline::depth_deferrable`) and `w_ref/w·2^30` is within
+/// `2^40`; `None` otherwise (then the caller takes the general path). The
+/// same quotients are rounded as [`round_even_f32`] rounds them (`2^23`
+/// added and taken away below `2^23`, an integer above, where `as u32`
+/// saturates as the clamp to `u32::MAX` does) and clamped as there, without
+/// the 64-bit values.
+#[inline]
+pub(super) fn depth_f32(z: f32, w: f32, w_ref: f32) -> Option<(u32, u32)> {
+    if !(w > 0.0 && w <= f32::MAX && z.abs() <= w * 128.0) {
+        return None;
+    }
+    // `|v| ≤ 2^40`, not NaN: `round_even_f32(v).clamp(lo, u32::MAX)`.
+    let round = |v: f32, lo: u32| -> u32 {
+        const TWO23: f32 = 8_388_608.0;
+        if v >= TWO23 {
+            v as u32
+        } else if v > 0.0 {
+            (((v + TWO23) - TWO23) as u32).max(lo)
+        } else {
+            lo
+        }
+    };
+    // |z/w| ≤ 128: the depth quotient is within 2^39.
+    let depth = round(z / w * 4_294_967_296.0, 0);
+    let r = w_ref / w * 1_073_741_824.0;
+    // Also false for NaN.
+    if !(r.abs() <= 1_099_511_627_776.0) {
+        return None;
+    }
+    Some((depth, round(r, 1)))
+}
+
 /// The sign of the snapped signed area (`signed_area2`) of a triangle with
 /// [`PreSnap::quotients`] `q`: `1` or `-1` when certain (module docs), `0`
 /// when the margin does not decide.
@@ -219,6 +253,38 @@ mod tests {
         }
         // The rounding does flip signs here: the margin is what saves the test.
         assert!(flips > 100, "{flips}");
+    }
+
+    /// The deferred depth agrees with `div_scaled_by`'s rounding and clamps,
+    /// over depths in and beyond the view volume, ties and extreme `w`.
+    #[test]
+    fn depth_f32_is_snap_depth() {
+        let mut rng = Rng(0xDE97_0001);
+        let want = |z: f32, w: f32, w_ref: f32| {
+            let d = z.div_scaled_by(w, u32::MAX as i64)?.clamp(0, u32::MAX as i64) as u32;
+            let r = w_ref.div_scaled_by(w, 1 << 30).unwrap_or(i64::MAX).clamp(1, u32::MAX as i64) as u32;
+            Some((d, r))
+        };
+        let mut n = 0;
+        for i in 0..400_000u32 {
+            let w = [(rng.unit() * 50.0) as f32, (rng.unit() * 1e-6) as f32, (rng.unit() * 1e30) as f32]
+                [i as usize % 3];
+            let z = ((rng.unit() - 0.5) * 300.0) as f32 * w;
+            // A depth quotient on a tie below 2^23.
+            let z = if i % 7 == 0 {
+                (((rng.unit() * 8e6) as f32).floor() + 0.5) / 4_294_967_296.0 * w
+            } else {
+                z
+            };
+            let w_ref = [1.0f32, 1e-9, 3e9, 0.37][i as usize % 4];
+            if let Some(got) = depth_f32(z, w, w_ref) {
+                assert_eq!(Some(got), want(z, w, w_ref), "{z} {w} {w_ref}");
+                n += 1;
+            }
+        }
+        assert!(n > 100_000, "{n}");
+        assert_eq!(depth_f32(1.0, 1.0, f32::INFINITY), None);
+        assert_eq!(depth_f32(129.0, 1.0, 1.0), None);
     }
 
     /// The inside snap agrees with the quotients' rounding (ties included)
