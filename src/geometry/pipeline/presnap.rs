@@ -144,8 +144,8 @@ pub(super) fn depth_f32(z: f32, w: f32, w_ref: f32) -> Option<(u32, u32)> {
     // |z/w| ≤ 128: the depth quotient is within 2^39.
     let depth = round(z / w * 4_294_967_296.0, 0);
     let r = w_ref / w * 1_073_741_824.0;
-    // Also false for NaN.
-    if !(r.abs() <= 1_099_511_627_776.0) {
+    // NaN too.
+    if r.is_nan() || r.abs() > 1_099_511_627_776.0 {
         return None;
     }
     Some((depth, round(r, 1)))
