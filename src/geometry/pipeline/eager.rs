@@ -32,7 +32,7 @@ use crate::Error;
 use crate::SubPoint;
 use crate::edge::Cull;
 use crate::math::{Scalar, Vec3};
-use crate::primitive::center_rows;
+use crate::mesh::MAX_MESHLET_VERTICES;
 use crate::raster3d::{ScreenTriangle, ScreenVertex};
 
 impl<T: Scalar, const S: u32> Pipeline<T, S> {
@@ -65,6 +65,13 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         // Clip y and w and the band test of every vertex (as the cached
         // path); a vertex near the band is snapped now, one beyond its
         // margin only if a triangle reaching into the band needs it.
+        // The vertices' band sides and snap flags again, in a local array
+        // indexed by a masked slot: the triangle loop, which runs over every
+        // triangle of the cluster in every band it reaches, reads three of
+        // them without bounds checks. A slot beyond the cluster reads 0 (no
+        // side, not snapped), so its triangle reaches the snapping below,
+        // which reports it.
+        let mut states = [0u8; MAX_MESHLET_VERTICES];
         let mut all_sides = SIDES;
         for (i, e) in cache.iter_mut().enumerate() {
             let p = src.position(i).map(Vec3::from_f32).ok_or(Error::InvalidMesh)?;
@@ -77,6 +84,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
             } else {
                 e.clip = [T::ZERO, yw.0, T::ZERO, yw.1];
             }
+            states[i % MAX_MESHLET_VERTICES] = e.state;
         }
         if all_sides != 0 {
             return Ok(());
@@ -84,30 +92,28 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         let flat = self.shade == Shade::Flat;
         for t in triangles {
             let idx = t.map(usize::from);
-            let state = |j: usize| cache.get(j).map(|e| e.state);
-            let (Some(a), Some(b), Some(c)) = (state(idx[0]), state(idx[1]), state(idx[2])) else {
-                return Err(Error::InvalidMesh);
-            };
-            let mut shared = a & b & c;
+            let state = |s: &[u8; MAX_MESHLET_VERTICES], j: usize| s[j % MAX_MESHLET_VERTICES];
+            let mut shared = state(&states, idx[0]) & state(&states, idx[1]) & state(&states, idx[2]);
             if shared & SIDES != 0 {
                 continue;
             }
             if shared & Cached::<T, S>::SNAP == 0 {
                 // A corner beyond the band's margin, of a triangle across it.
                 for &j in &idx {
-                    let e = &mut cache[j];
+                    let e = cache.get_mut(j).ok_or(Error::InvalidMesh)?;
                     if e.state & Cached::<T, S>::SNAP == 0 {
                         let p = src.position(j).map(Vec3::from_f32).ok_or(Error::InvalidMesh)?;
                         self.snap_slot(ctx, &presnap, e, p, (e.clip[1], e.clip[3]));
+                        states[j % MAX_MESHLET_VERTICES] = e.state;
                     }
                 }
-                shared = cache[idx[0]].state & cache[idx[1]].state & cache[idx[2]].state;
+                shared = state(&states, idx[0]) & state(&states, idx[1]) & state(&states, idx[2]);
             }
             if shared & Cached::<T, S>::SNAPPED == 0 {
                 stats.degenerate += 1;
                 continue;
             }
-            let pos = idx.map(|j| cache[j].screen.pos);
+            let pos = idx.map(|j| cache.get(j).map_or(SubPoint::ORIGIN, |e| e.screen.pos));
             if !self.keep_snapped(pos, stats) {
                 continue;
             }
@@ -158,8 +164,11 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
             stats.back_faces += 1;
             return false;
         }
+        // `center_rows` in 32 bits (`|2y| ≤ 2^29`).
         let (y0, y1, y2) = (p[0].y(), p[1].y(), p[2].y());
-        let (lo, hi) = center_rows::<S>(y0.min(y1).min(y2), y0.max(y1).max(y2));
+        let (one, half) = (1i32 << (S + 1), 1i32 << S);
+        let lo = (2 * y0.min(y1).min(y2) - half + one - 1) >> (S + 1);
+        let hi = (2 * y0.max(y1).max(y2) - half) >> (S + 1);
         self.rows.is_none_or(|(r0, r1)| lo <= r1 && hi >= r0)
     }
 }
