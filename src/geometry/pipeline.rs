@@ -20,9 +20,12 @@ mod cluster;
 mod eager;
 mod inside;
 mod material;
+mod model_light;
 mod presnap;
 #[cfg(feature = "fragment")]
 mod varying;
+
+use model_light::ModelLight;
 
 pub use cache::VertexCache;
 pub use cluster::ClusterCache;
@@ -423,7 +426,12 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         let planes = self.clip.with_guard_band(self.clip.guard_band().min(range));
         let max = C::CHANNEL_MAX;
         let base = material::base_of(color);
-        let ctx = VertexCtx { mv: model_view, mvp, nm: normal_matrix, base, lighting: self.lighting };
+        let model_light = match &self.lighting {
+            Some(l) if !fx => ModelLight::new(l, &model_view),
+            _ => None,
+        };
+        let ctx =
+            VertexCtx { mv: model_view, mvp, nm: normal_matrix, base, lighting: self.lighting, model_light };
         Ok(Some(MeshSetup { ctx, planes, band, max }))
     }
 
@@ -740,6 +748,8 @@ struct VertexCtx<T: Scalar> {
     nm: Mat3<T>,
     base: [T; 3],
     lighting: Option<Lighting<T>>,
+    /// `lighting` in model space, where it applies (`f32`, a similarity).
+    model_light: Option<ModelLight>,
 }
 
 impl<T: Scalar> VertexCtx<T> {
@@ -782,8 +792,12 @@ impl<T: Scalar> VertexCtx<T> {
     /// path (`|ctx| ctx.base`, zero-sized) passes no argument; a pointer
     /// argument cost 2 Cortex-M4F instructions per lit vertex.
     fn lit(&self, p: Vec3<T>, normal: Option<[f32; 3]>, base: impl FnOnce(&Self) -> [T; 3]) -> [T; 3] {
-        match (self.lighting, normal) {
-            (Some(l), Some(n)) => {
+        match (self.lighting, normal, &self.model_light) {
+            (Some(_), Some(n), Some(m)) => {
+                let p = Vec3::new(p.x.to_f32(), p.y.to_f32(), p.z.to_f32());
+                m.shade(n, p, base(self).map(T::to_f32)).map(T::from_f32)
+            }
+            (Some(l), Some(n), None) => {
                 let n_eye = (self.nm * Vec3::from_f32(n)).normalize_fast();
                 // mv·(p, 1) without its w (the same sums as transform_point).
                 let [a, b, c, d] = &self.mv.cols;
@@ -795,8 +809,8 @@ impl<T: Scalar> VertexCtx<T> {
                 l.shade(n_eye, p_eye, base(self))
             }
             // No light, or a degenerate face without a normal: ambient only.
-            (Some(l), None) => base(self).map(|b| b * l.ambient),
-            (None, _) => base(self),
+            (Some(l), None, _) => base(self).map(|b| b * l.ambient),
+            (None, _, _) => base(self),
         }
     }
 }

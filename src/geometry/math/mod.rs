@@ -4,7 +4,7 @@ pub mod divisor;
 pub mod mat;
 pub mod scalar;
 pub mod transform;
-mod unit;
+pub(crate) mod unit;
 pub mod vec;
 
 pub use mat::{Mat3, Mat4};

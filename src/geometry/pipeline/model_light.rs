@@ -1,0 +1,224 @@
+//! Lighting in model space (`f32`): when the model-view matrix is a
+//! similarity (a rotation times a uniform scale, plus a translation), the
+//! light's direction and the eye are carried into model space once per
+//! mesh, and each vertex is lit with its model normal and position: no
+//! normal matrix, no model-view product, and the Blinn–Phong half vector's
+//! two normalisations become two reciprocal square roots.
+//!
+//! # Same lighting
+//! With `MV = s·R` (`R` a rotation) and translation `t`, the eye-space
+//! normal is `normalize(R·n) = R·n̂` and the eye-space position `s·R·p + t`;
+//! so `n_eye · L = n̂ · L_m` with `L_m = Rᵀ·L`, and the direction to the
+//! viewer is `R` applied to `normalize(E_m − p)` with `E_m = −Rᵀ·t/s`, the
+//! eye in model space. The half vector's dot product is then `n̂ · h =
+//! (n̂·L_m + n̂·v̂)/√(|L_m|² + 2·L_m·v̂ + 1)` with `v̂ = (E_m − p)/|E_m − p|`,
+//! which needs `1/|E_m − p|` and one more reciprocal square root instead of
+//! two normalised vectors. In exact arithmetic this is the eye-space
+//! [`Lighting::shade`]; in `f32` the two differ by rounding: each rounded
+//! value here is within a few units of `2^-24` relative of its exact value
+//! (the reciprocal square roots within `5·2^-24`, as
+//! [`unit_f32`](crate::math::unit)), and the similarity is accepted within
+//! `2^-16` (below), so a lit intensity moves by at most about `2^-15` of
+//! full scale: a channel can differ by one where the exact value lies that
+//! close to a rounding tie. Normals of length within `2^-12` of 1 are used
+//! as they are (a relative error of at most `2^-13`), others normalised.
+//!
+//! The similarity test: the Gram matrix `G = MVᵀ·MV` (3×3) must be `s²·I`
+//! to within `2^-16·s²` per entry. Otherwise (a non-uniform scale, a
+//! shear) lighting stays in eye space.
+
+use crate::light::Lighting;
+use crate::math::unit::unit_f32;
+use crate::math::{Mat4, Scalar, Vec3};
+
+/// Per mesh: the lighting carried into model space (module docs).
+#[derive(Clone, Copy, Debug)]
+pub(super) struct ModelLight {
+    /// The light's direction in model space (`Rᵀ·L`, as long as `L`).
+    l: Vec3<f32>,
+    /// `|l|² + 1`.
+    l2_plus_1: f32,
+    /// The eye in model space.
+    eye: Vec3<f32>,
+    ambient: f32,
+    diffuse: f32,
+    specular: Option<(f32, u32)>,
+}
+
+impl ModelLight {
+    /// The model-space lighting of `lighting` for model-view `mv`, or `None`
+    /// when `mv` is not a similarity (or not finite).
+    pub(super) fn new<T: Scalar>(lighting: &Lighting<T>, mv: &Mat4<T>) -> Option<Self> {
+        let col =
+            |c: usize| Vec3::new(mv.cols[c][0].to_f32(), mv.cols[c][1].to_f32(), mv.cols[c][2].to_f32());
+        let (c0, c1, c2, t) = (col(0), col(1), col(2), col(3));
+        let s2 = (c0.dot(c0) + c1.dot(c1) + c2.dot(c2)) / 3.0;
+        if !(s2 > 1e-30 && s2 < 1e30) {
+            return None;
+        }
+        let tol = s2 * (1.0 / 65536.0);
+        let gram = [c0.dot(c0) - s2, c1.dot(c1) - s2, c2.dot(c2) - s2, c0.dot(c1), c0.dot(c2), c1.dot(c2)];
+        if !gram.iter().all(|g| g.abs() <= tol) || !t.dot(t).is_finite() {
+            return None;
+        }
+        let s = crate::math::scalar::sqrt_f32(s2);
+        let d = lighting.direction;
+        let d = Vec3::new(d.x.to_f32(), d.y.to_f32(), d.z.to_f32());
+        // Mᵀ·v: the dot products of v with the columns.
+        let mt = |v: Vec3<f32>| Vec3::new(c0.dot(v), c1.dot(v), c2.dot(v));
+        let l = mt(d) * (1.0 / s);
+        let eye = mt(t) * (-1.0 / s2);
+        let specular = lighting.specular.map(|(k, e)| (k.to_f32(), e));
+        let light = ModelLight {
+            l,
+            l2_plus_1: l.dot(l) + 1.0,
+            eye,
+            ambient: lighting.ambient.to_f32(),
+            diffuse: lighting.diffuse.to_f32(),
+            specular,
+        };
+        let finite = [light.l2_plus_1, eye.x, eye.y, eye.z, light.ambient, light.diffuse];
+        finite.iter().all(|v| v.is_finite()).then_some(light)
+    }
+
+    /// The colour factors of material `base` at model position `p` with
+    /// model normal `n` (module docs; the eye-space [`Lighting::shade`]).
+    pub(super) fn shade(&self, n: [f32; 3], p: Vec3<f32>, base: [f32; 3]) -> [f32; 3] {
+        let mut n = Vec3::from_f32(n);
+        let nn = n.dot(n);
+        if !((1.0 - 1.0 / 4096.0)..=(1.0 + 1.0 / 4096.0)).contains(&nn) {
+            n = unit_f32(n);
+        }
+        let nl = n.dot(self.l);
+        let lambert = if nl > 0.0 { nl } else { 0.0 };
+        let k = self.ambient + self.diffuse * lambert;
+        let spec = match self.specular {
+            Some((strength, exp)) if lambert > 0.0 => strength * powi(self.half_dot(n, nl, p), exp),
+            _ => 0.0,
+        };
+        base.map(|b| b * k + spec)
+    }
+
+    /// `max(0, n̂ · h)` for the Blinn–Phong half vector `h` at `p`.
+    fn half_dot(&self, n: Vec3<f32>, nl: f32, p: Vec3<f32>) -> f32 {
+        let d = self.eye - p;
+        let dd = d.dot(d);
+        let nh = match rsqrt(dd) {
+            Some(r) => {
+                let (nv, lv) = (n.dot(d) * r, self.l.dot(d) * r);
+                match rsqrt(self.l2_plus_1 + 2.0 * lv) {
+                    Some(rh) => (nl + nv) * rh,
+                    None => 0.0, // h = 0: the viewer exactly against the light
+                }
+            }
+            // The vertex at the eye, or out of range: the vectors themselves.
+            None => n.dot(unit_f32(self.l + unit_f32(d))),
+        };
+        if nh > 0.0 { nh } else { 0.0 }
+    }
+}
+
+/// `1/√x` for `x` in `[2^-100, 2^100]`, within `5·2^-24` relative: the
+/// method of [`unit_f32`] (bit-pattern estimate, three Newton steps);
+/// `None` outside that range, NaN included.
+#[inline]
+fn rsqrt(x: f32) -> Option<f32> {
+    if !(7.9e-31..=1.2e30).contains(&x) {
+        return None;
+    }
+    let mut r = f32::from_bits(0x5F37_59DF - (x.to_bits() >> 1));
+    let half = 0.5 * x;
+    for _ in 0..3 {
+        r = r * (1.5 - half * r * r);
+    }
+    Some(r)
+}
+
+/// `x^e` by repeated squaring, as the eye-space lighting computes it.
+fn powi(mut x: f32, mut e: u32) -> f32 {
+    let mut r = 1.0;
+    while e > 0 {
+        if e & 1 == 1 {
+            r *= x;
+        }
+        x *= x;
+        e >>= 1;
+    }
+    r
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::math::transform;
+
+    /// Model-space lighting agrees with eye-space lighting (both against an
+    /// f64 evaluation) within the bound of the module docs, over random
+    /// rotations, scales, translations, normals and positions; shears are
+    /// refused.
+    #[test]
+    fn model_space_is_eye_space() {
+        let mut seed = 0x0DE1_5EEDu64;
+        let mut rnd = || {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            (seed >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
+        };
+        let light = Lighting::<f32>::new(0.15, Vec3::new(0.3, 0.8, 0.5), 0.7).with_specular(0.6, 24);
+        let mut worst = 0.0f64;
+        let mut n_spec = 0;
+        for _ in 0..2_000 {
+            let (a, b, c) = (rnd() as f32 * 3.0, rnd() as f32 * 3.0, rnd() as f32 * 3.0);
+            let s = (rnd() as f32 + 1.5) * 2.0;
+            let m = transform::translation(Vec3::new(rnd() as f32, rnd() as f32, rnd() as f32 * 2.0 - 6.0))
+                * transform::rotation_x(a)
+                * transform::rotation_y(b)
+                * transform::rotation_z(c)
+                * transform::scaling(Vec3::new(s, s, s));
+            let ml = ModelLight::new(&light, &m).expect("a similarity");
+            for _ in 0..20 {
+                let n = [rnd(), rnd(), rnd()];
+                let len = (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt();
+                let n = n.map(|v| (v / len) as f32);
+                let p = Vec3::new(rnd() as f32 * 0.5, rnd() as f32 * 0.5, rnd() as f32 * 0.5);
+                let got = ml.shade(n, p, [1.0, 0.5, 0.25]);
+                // f64 eye space.
+                let mf = |r: usize, v: [f64; 4]| (0..4).map(|k| f64::from(m.cols[k][r]) * v[k]).sum::<f64>();
+                let pe = [0, 1, 2].map(|r| mf(r, [f64::from(p.x), f64::from(p.y), f64::from(p.z), 1.0]));
+                let ne = [0, 1, 2].map(|r| mf(r, [f64::from(n[0]), f64::from(n[1]), f64::from(n[2]), 0.0]));
+                let unit = |v: [f64; 3]| {
+                    let l = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
+                    v.map(|x| x / l)
+                };
+                let dot = |a: [f64; 3], b: [f64; 3]| a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+                let ne = unit(ne);
+                let l = [light.direction.x, light.direction.y, light.direction.z].map(f64::from);
+                let lam = dot(ne, l).max(0.0);
+                let v = unit(pe.map(|x| -x));
+                let h = unit([0, 1, 2].map(|i| l[i] + v[i]));
+                let spec = if lam > 0.0 { 0.6 * dot(ne, h).max(0.0).powi(24) } else { 0.0 };
+                n_spec += usize::from(spec > 0.01);
+                let want = [1.0, 0.5, 0.25].map(|b: f64| b * (0.15 + 0.7 * lam) + spec);
+                for k in 0..3 {
+                    worst = worst.max((f64::from(got[k]) - want[k]).abs());
+                }
+                let eye = light.shade(
+                    Vec3::new(ne[0] as f32, ne[1] as f32, ne[2] as f32),
+                    Vec3::new(pe[0] as f32, pe[1] as f32, pe[2] as f32),
+                    [1.0, 0.5, 0.25],
+                );
+                for k in 0..3 {
+                    assert!((eye[k] - got[k]).abs() < 2e-5, "{eye:?} vs {got:?}");
+                }
+            }
+        }
+        assert!(worst < 2f64.powi(-15), "{worst:e}");
+        assert!(n_spec > 1000, "{n_spec}");
+        // A shear or a non-uniform scale keeps eye-space lighting.
+        assert!(ModelLight::new(&light, &transform::scaling(Vec3::new(1.0, 1.1, 1.0))).is_none());
+        let mut shear = Mat4::<f32>::IDENTITY;
+        shear.cols[1][0] = 0.01;
+        assert!(ModelLight::new(&light, &shear).is_none());
+    }
+}
