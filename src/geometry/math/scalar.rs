@@ -143,16 +143,13 @@ impl Scalar for f32 {
         super::unit::unit_f32(v)
     }
     fn to_channel(self, max: u8) -> u8 {
-        let c = if self > 1.0 {
-            1.0
-        } else if self > 0.0 {
-            self
-        } else {
-            0.0
-        };
-        // At most 255.5: `as u32` (one conversion) cannot exceed `u8`, where
-        // a saturating `as u8` adds a clamp.
-        (c * max as f32 + 0.5) as u32 as u8
+        // `(clamp(c, 0, 1)·max + 0.5)` truncated, with the clamp after the
+        // conversion: `as u32` saturates (negative and NaN to 0, +∞ to
+        // `u32::MAX`), and for `c` in `[0, 1]` the expression is the same,
+        // so only the top needs `min`: one conversion and one integer
+        // comparison instead of two floating ones (tested against the
+        // clamp-first form).
+        ((self * max as f32 + 0.5) as u32).min(u32::from(max)) as u8
     }
 }
 
@@ -571,6 +568,35 @@ mod tests {
             assert_eq!(v.to_channel(max), want);
             assert_eq!(Fx::from_f32(v).to_channel(max), want);
         }
+    }
+
+    /// `to_channel` equals the clamp-first form `(clamp(c, 0, 1)·max + 0.5)
+    /// as u8` for every channel size, on values in, around and far outside
+    /// `[0, 1]`, rounding ties, NaN and infinities.
+    #[test]
+    fn to_channel_is_the_clamp_first_form() {
+        let clamp_first = |c: f32, max: u8| {
+            let c = if c > 1.0 {
+                1.0
+            } else if c > 0.0 {
+                c
+            } else {
+                0.0
+            };
+            (c * max as f32 + 0.5) as u8
+        };
+        let mut rng = crate::math::vec::tests::Rng(0xC4A7_0001);
+        let mut n = 0;
+        for max in [0u8, 1, 3, 15, 31, 63, 255] {
+            let special = [f32::NAN, f32::INFINITY, f32::NEG_INFINITY, -0.0, 0.0, 1.0, f32::MAX, -f32::MAX, 1e-30];
+            let ties = (0..=u32::from(max)).map(|k| (k as f32 + 0.5) / f32::from(max.max(1)));
+            let random = (0..20_000).map(|_| (rng.next() >> 40) as f32 / (1u64 << 24) as f32 * 3.0 - 1.0);
+            for c in special.into_iter().chain(ties).chain(random) {
+                assert_eq!(c.to_channel(max), clamp_first(c, max), "{c} {max}");
+                n += 1;
+            }
+        }
+        assert!(n > 140_000);
     }
 
     #[test]
