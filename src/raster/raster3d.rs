@@ -500,7 +500,7 @@ pub(crate) fn depth_steps(depth: u32, max: u32) -> i64 {
         // y < 2^64 − 2^48 and y >> 32 < 2^32: the sum fits a u64 and
         // y >> 64 is 0, so this is the u128 series below without its
         // (library-called) 128-bit arithmetic.
-        let y = (depth as u64 * max as u64) << DEPTH_FRAC;
+        let y = crate::math::divisor::mul_wide_u32(depth, max) << DEPTH_FRAC;
         return (((y + (y >> 32)) >> 32) + 1).min((max as u64) << DEPTH_FRAC) as i64;
     }
     depth_steps_wide(depth, max)

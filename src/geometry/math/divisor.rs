@@ -27,6 +27,21 @@ pub(crate) fn mul_wide_u32(a: u32, b: u32) -> u64 {
     if ARMV6M { mul_wide_u32_16(a, b) } else { a as u64 * b as u64 }
 }
 
+/// `a·b` exactly for `a < 2^16`: on the Cortex-M0 from two 32-bit products
+/// (`a·b_hi` and `a·b_lo`, each below `2^32`), elsewhere as
+/// [`mul_wide_u32`].
+#[inline]
+pub(crate) fn mul_u16_u32(a: u32, b: u32) -> u64 {
+    debug_assert!(a < 1 << 16);
+    if ARMV6M { mul_u16_u32_halves(a, b) } else { a as u64 * b as u64 }
+}
+
+/// [`mul_u16_u32`] by halves of `b` (tested on every target).
+#[inline]
+fn mul_u16_u32_halves(a: u32, b: u32) -> u64 {
+    (((a * (b >> 16)) as u64) << 16) + (a * (b & 0xFFFF)) as u64
+}
+
 /// [`mul_wide_u32`] from four 16×16-bit products (tested on every target).
 #[inline]
 fn mul_wide_u32_16(a: u32, b: u32) -> u64 {
@@ -111,6 +126,7 @@ fn div_2by1(u: u64, d: u32, v: u32) -> u32 {
 
 /// True on ARMv7-M (Cortex-M3/M4/M7): a 32-bit division is one
 /// instruction, a 64-bit one a bit-by-bit library loop (about 300).
+const HALVES_ON_ARMV6M: bool = true;
 const ARMV7M: bool = cfg!(all(target_arch = "arm", target_feature = "thumb2"));
 
 /// `⌊(2^64 − 1)/d⌋ − 2^32` for `d ≥ 2^31` (in `[0, 2^32)`): the quotient
@@ -118,9 +134,9 @@ const ARMV7M: bool = cfg!(all(target_arch = "arm", target_feature = "thumb2"));
 /// the hardware divider, 32 restoring steps on the Cortex-M0, one 64-bit
 /// division elsewhere.
 fn reciprocal(d: u32) -> u32 {
-    if ARMV6M {
+    if ARMV6M && !HALVES_ON_ARMV6M {
         reciprocal_by_steps(d)
-    } else if ARMV7M {
+    } else if ARMV7M || ARMV6M {
         reciprocal_by_halves(d)
     } else {
         (u64::MAX / d as u64 - (1 << 32)) as u32
@@ -198,6 +214,18 @@ mod tests {
     use super::*;
     use crate::math::vec::tests::Rng;
     use crate::math::{Fx, Scalar};
+
+    #[test]
+    fn mul_u16_u32_halves_is_the_product() {
+        let mut rng = Rng(0x16_3216);
+        for i in 0..200_000u32 {
+            let r = rng.next();
+            let a = [(r >> 48) as u32, 0, 0xFFFF, 1][(i % 4) as usize];
+            let b = [r as u32, u32::MAX, 0, 1 << 31][(i / 4 % 4) as usize];
+            assert_eq!(mul_u16_u32_halves(a, b), a as u64 * b as u64, "{a} {b}");
+            assert_eq!(mul_u16_u32(a, b), a as u64 * b as u64);
+        }
+    }
 
     #[test]
     fn prepared_division_is_exact() {

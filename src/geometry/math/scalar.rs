@@ -588,7 +588,8 @@ mod tests {
         let mut rng = crate::math::vec::tests::Rng(0xC4A7_0001);
         let mut n = 0;
         for max in [0u8, 1, 3, 15, 31, 63, 255] {
-            let special = [f32::NAN, f32::INFINITY, f32::NEG_INFINITY, -0.0, 0.0, 1.0, f32::MAX, -f32::MAX, 1e-30];
+            let special =
+                [f32::NAN, f32::INFINITY, f32::NEG_INFINITY, -0.0, 0.0, 1.0, f32::MAX, -f32::MAX, 1e-30];
             let ties = (0..=u32::from(max)).map(|k| (k as f32 + 0.5) / f32::from(max.max(1)));
             let random = (0..20_000).map(|_| (rng.next() >> 40) as f32 / (1u64 << 24) as f32 * 3.0 - 1.0);
             for c in special.into_iter().chain(ties).chain(random) {

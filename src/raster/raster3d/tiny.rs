@@ -50,6 +50,7 @@ use crate::Interpolate;
 use crate::band::BandView;
 use crate::depth::{DepthFormat, DepthState};
 use crate::edge::small::Small;
+use crate::math::divisor::mul_u16_u32;
 
 /// Triangles with a determinant below this are drawn here (module docs).
 const DET_LIMIT: i32 = 1 << 16;
@@ -113,7 +114,9 @@ fn draw_with<C, F, M, D, const S: u32, const W: usize>(
             let Some(slot) = depth.get_mut((y - y0) as usize).and_then(|r| r.get_mut(x as usize)) else {
                 return;
             };
-            let n = w[0] as u64 * dv[0] as u64 + w[1] as u64 * dv[1] as u64 + w[2] as u64 * dv[2] as u64;
+            // w_i ≤ det < 2^16: products of a 16- and a 24-bit value (two
+            // 32-bit multiplies each on the Cortex-M0, not a library call).
+            let n = mul_u16_u32(w[0], dv[0]) + mul_u16_u32(w[1], dv[1]) + mul_u16_u32(w[2], dv[2]);
             let code = (floor_div(n, det) + (1 << (FRAC - 1))) >> FRAC;
             if !state.test().passes(code, F::to_u32(*slot)) {
                 return;
