@@ -104,7 +104,9 @@ mod firmware {
 
     fn run(fb: &mut FrameBuffer) -> Result<(), Fail> {
         clock::calibrate().map_err(|e| Fail::Clock("calibration", e))?;
-        for c in all() {
+        // MICRORASTER_FW_SWEEP_ONLY=KEY (at build time): that configuration
+        // alone, to count or profile one row.
+        for c in all().filter(|c| option_env!("MICRORASTER_FW_SWEEP_ONLY").is_none_or(|k| c.key == k)) {
             let mut m = Timed { span: None, ticks: None };
             (c.run)(&mut m, fb).map_err(|e| Fail::Render(c.key, e))?;
             let ticks = m.ticks.ok_or(Fail::Clock(c.key, ClockError::Overflow))?;
