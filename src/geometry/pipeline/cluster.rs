@@ -289,13 +289,17 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
             let triangles = mesh.triangles.get(to..to + tc).ok_or(Error::InvalidMeshlet)?;
             let slots = cache.v.get_mut(..vc).ok_or(Error::InvalidMeshlet)?;
             let src = ClusterSource { mesh: &mesh.mesh, vertices };
-            let emit = |tri, _: &mut MeshStats| {
-                sink(&tri);
-                Ok(())
-            };
             if inside.contains(m.sphere) {
+                let emit = |tri: &ScreenTriangle<S>, _: &mut MeshStats| {
+                    sink(tri);
+                    Ok(())
+                };
                 pipe.draw_inside(&setup, &src, material, slots, triangles, &mut stats, emit)
             } else {
+                let emit = |tri: ScreenTriangle<S>, _: &mut MeshStats| {
+                    sink(&tri);
+                    Ok(())
+                };
                 let tris = triangles.iter().map(|t| t.map(usize::from));
                 pipe.draw_cached(
                     &setup,

@@ -53,7 +53,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         cache: &mut [Cached<T, S>],
         triangles: &[[u8; 3]],
         stats: &mut MeshStats,
-        mut sink: impl FnMut(ScreenTriangle<S>, &mut MeshStats) -> Result<(), Error>,
+        mut sink: impl FnMut(&ScreenTriangle<S>, &mut MeshStats) -> Result<(), Error>,
     ) -> Result<(), Error> {
         if M::PER_FACE {
             return Err(Error::InvalidParameter);
@@ -117,9 +117,10 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
             if !self.keep_snapped(pos, stats) {
                 continue;
             }
-            let mut at = [ScreenVertex::default(); 3];
-            self.complete(ctx, src, material, *max, cache, idx, &mut at)?;
-            sink(ScreenTriangle { v: at, flat }, stats)?;
+            // Filled in place and lent to the sink: no copies of the triangle.
+            let mut tri = ScreenTriangle { v: [ScreenVertex::default(); 3], flat };
+            self.complete(ctx, src, material, *max, cache, idx, &mut tri.v)?;
+            sink(&tri, stats)?;
             stats.emitted += 1;
         }
         Ok(())
