@@ -110,7 +110,7 @@ fn positive<T: Scalar>(v: T) -> T {
 /// `Fx` within `e·2^-16` absolute (each truncation is below
 /// `2^-16` and, `x ≤ 1`, a later product multiplies an earlier error by at
 /// most the power of `x` it meets, `e − 1` in all). Tested against f64.
-fn powi<T: Scalar>(mut x: T, mut e: u32) -> T {
+pub(crate) fn powi<T: Scalar>(mut x: T, mut e: u32) -> T {
     let mut r = T::ONE;
     while e > 0 {
         if e & 1 == 1 {

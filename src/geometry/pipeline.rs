@@ -427,7 +427,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         let max = C::CHANNEL_MAX;
         let base = material::base_of(color);
         let model_light = match &self.lighting {
-            Some(l) if !fx => ModelLight::new(l, &model_view),
+            Some(l) => ModelLight::new(l, &model_view),
             _ => None,
         };
         let ctx =
@@ -749,7 +749,7 @@ struct VertexCtx<T: Scalar> {
     base: [T; 3],
     lighting: Option<Lighting<T>>,
     /// `lighting` in model space, where it applies (`f32`, a similarity).
-    model_light: Option<ModelLight>,
+    model_light: Option<ModelLight<T>>,
 }
 
 impl<T: Scalar> VertexCtx<T> {
@@ -793,10 +793,7 @@ impl<T: Scalar> VertexCtx<T> {
     /// argument cost 2 Cortex-M4F instructions per lit vertex.
     fn lit(&self, p: Vec3<T>, normal: Option<[f32; 3]>, base: impl FnOnce(&Self) -> [T; 3]) -> [T; 3] {
         match (self.lighting, normal, &self.model_light) {
-            (Some(_), Some(n), Some(m)) => {
-                let p = Vec3::new(p.x.to_f32(), p.y.to_f32(), p.z.to_f32());
-                m.shade(n, p, base(self).map(T::to_f32)).map(T::from_f32)
-            }
+            (Some(_), Some(n), Some(m)) => m.shade(n, p, base(self)),
             (Some(l), Some(n), None) => {
                 let n_eye = (self.nm * Vec3::from_f32(n)).normalize_fast();
                 // mv·(p, 1) without its w (the same sums as transform_point).

@@ -1,9 +1,10 @@
-//! Lighting in model space (`f32`): when the model-view matrix is a
+//! Lighting in model space: when the model-view matrix is a
 //! similarity (a rotation times a uniform scale, plus a translation), the
 //! light's direction and the eye are carried into model space once per
 //! mesh, and each vertex is lit with its model normal and position: no
-//! normal matrix, no model-view product, and the Blinn–Phong half vector's
-//! two normalisations become two reciprocal square roots.
+//! normal matrix, no model-view product, no normalised eye-space normal;
+//! for `f32` the Blinn–Phong half vector's two normalisations become two
+//! reciprocal square roots (`Fx` keeps its two table unit vectors).
 //!
 //! # Same lighting
 //! With `MV = s·R` (`R` a rotation) and translation `t`, the eye-space
@@ -23,32 +24,38 @@
 //! close to a rounding tie. Normals of length within `2^-12` of 1 are used
 //! as they are (a relative error of at most `2^-13`), others normalised.
 //!
+//! `Fx`: the same formula in 16.16 (each product rounds at `2^-16`), with
+//! the eye within `2^13` of the model's origin (else eye space); the test
+//! bounds it against `f64` by `(4·e + 8)·2^-16` for exponent `e`.
+//!
 //! The similarity test: the Gram matrix `G = MVᵀ·MV` (3×3) must be `s²·I`
-//! to within `2^-16·s²` per entry. Otherwise (a non-uniform scale, a
-//! shear) lighting stays in eye space.
+//! to within `2^-16·s²` per entry (`Fx`: plus `2^-12·s`, its entries'
+//! rounding). Otherwise (a non-uniform scale, a shear) lighting stays in
+//! eye space.
 
-use crate::light::Lighting;
+use crate::light::{Lighting, powi};
 use crate::math::unit::unit_f32;
 use crate::math::{Mat4, Scalar, Vec3};
 
-/// Per mesh: the lighting carried into model space (module docs).
+/// Per mesh: the lighting carried into model space (module docs), in the
+/// pipeline's numeric type.
 #[derive(Clone, Copy, Debug)]
-pub(super) struct ModelLight {
+pub(super) struct ModelLight<T> {
     /// The light's direction in model space (`Rᵀ·L`, as long as `L`).
-    l: Vec3<f32>,
+    l: Vec3<T>,
     /// `|l|² + 1`.
-    l2_plus_1: f32,
+    l2_plus_1: T,
     /// The eye in model space.
-    eye: Vec3<f32>,
-    ambient: f32,
-    diffuse: f32,
-    specular: Option<(f32, u32)>,
+    eye: Vec3<T>,
+    ambient: T,
+    diffuse: T,
+    specular: Option<(T, u32)>,
 }
 
-impl ModelLight {
+impl<T: Scalar> ModelLight<T> {
     /// The model-space lighting of `lighting` for model-view `mv`, or `None`
     /// when `mv` is not a similarity (or not finite).
-    pub(super) fn new<T: Scalar>(lighting: &Lighting<T>, mv: &Mat4<T>) -> Option<Self> {
+    pub(super) fn new(lighting: &Lighting<T>, mv: &Mat4<T>) -> Option<Self> {
         let col =
             |c: usize| Vec3::new(mv.cols[c][0].to_f32(), mv.cols[c][1].to_f32(), mv.cols[c][2].to_f32());
         let (c0, c1, c2, t) = (col(0), col(1), col(2), col(3));
@@ -56,7 +63,14 @@ impl ModelLight {
         if !(s2 > 1e-30 && s2 < 1e30) {
             return None;
         }
-        let tol = s2 * (1.0 / 65536.0);
+        // Fx entries are rounded to 2^-16 (absolute): the Gram entries of an
+        // exact similarity are then off by about 2^-14·s, which is allowed.
+        let fx_slack = if crate::math::vec::is_float::<T>() {
+            0.0
+        } else {
+            crate::math::scalar::sqrt_f32(s2) * (1.0 / 4096.0)
+        };
+        let tol = s2 * (1.0 / 65536.0) + fx_slack;
         let gram = [c0.dot(c0) - s2, c1.dot(c1) - s2, c2.dot(c2) - s2, c0.dot(c1), c0.dot(c2), c1.dot(c2)];
         if !gram.iter().all(|g| g.abs() <= tol) || !t.dot(t).is_finite() {
             return None;
@@ -68,53 +82,68 @@ impl ModelLight {
         let mt = |v: Vec3<f32>| Vec3::new(c0.dot(v), c1.dot(v), c2.dot(v));
         let l = mt(d) * (1.0 / s);
         let eye = mt(t) * (-1.0 / s2);
-        let specular = lighting.specular.map(|(k, e)| (k.to_f32(), e));
-        let light = ModelLight {
-            l,
-            l2_plus_1: l.dot(l) + 1.0,
-            eye,
-            ambient: lighting.ambient.to_f32(),
-            diffuse: lighting.diffuse.to_f32(),
-            specular,
-        };
-        let finite = [light.l2_plus_1, eye.x, eye.y, eye.z, light.ambient, light.diffuse];
-        finite.iter().all(|v| v.is_finite()).then_some(light)
+        let l2_plus_1 = l.dot(l) + 1.0;
+        let finite = [l2_plus_1, eye.x, eye.y, eye.z];
+        if !finite.iter().all(|v| v.is_finite()) {
+            return None;
+        }
+        // Fx: an eye beyond a quarter of its range would saturate `eye − p`.
+        if !crate::math::vec::is_float::<T>() && [eye.x, eye.y, eye.z].iter().any(|v| v.abs() > 8192.0) {
+            return None;
+        }
+        let t = |v: Vec3<f32>| Vec3::new(T::from_f32(v.x), T::from_f32(v.y), T::from_f32(v.z));
+        Some(ModelLight {
+            l: t(l),
+            l2_plus_1: T::from_f32(l2_plus_1),
+            eye: t(eye),
+            ambient: lighting.ambient,
+            diffuse: lighting.diffuse,
+            specular: lighting.specular,
+        })
     }
 
     /// The colour factors of material `base` at model position `p` with
     /// model normal `n` (module docs; the eye-space [`Lighting::shade`]).
-    pub(super) fn shade(&self, n: [f32; 3], p: Vec3<f32>, base: [f32; 3]) -> [f32; 3] {
-        let mut n = Vec3::from_f32(n);
-        let nn = n.dot(n);
+    pub(super) fn shade(&self, n: [f32; 3], p: Vec3<T>, base: [T; 3]) -> [T; 3] {
+        let mut n = Vec3::<T>::from_f32(n);
+        let nn = n.dot(n).to_f32();
         if !((1.0 - 1.0 / 4096.0)..=(1.0 + 1.0 / 4096.0)).contains(&nn) {
-            n = unit_f32(n);
+            n = n.normalize_fast();
         }
         let nl = n.dot(self.l);
-        let lambert = if nl > 0.0 { nl } else { 0.0 };
+        let lambert = if nl > T::ZERO { nl } else { T::ZERO };
         let k = self.ambient + self.diffuse * lambert;
         let spec = match self.specular {
-            Some((strength, exp)) if lambert > 0.0 => strength * powi(self.half_dot(n, nl, p), exp),
-            _ => 0.0,
+            Some((strength, exp)) if lambert > T::ZERO => strength * powi(self.half_dot(n, nl, p), exp),
+            _ => T::ZERO,
         };
         base.map(|b| b * k + spec)
     }
 
-    /// `max(0, n̂ · h)` for the Blinn–Phong half vector `h` at `p`.
-    fn half_dot(&self, n: Vec3<f32>, nl: f32, p: Vec3<f32>) -> f32 {
+    /// `max(0, n̂ · h)` for the Blinn–Phong half vector `h` at `p`: for
+    /// `f32` by two reciprocal square roots, for `Fx` (whose unit vectors
+    /// come from a table, [`Vec3::normalize_fast`]) by two unit vectors.
+    fn half_dot(&self, n: Vec3<T>, nl: T, p: Vec3<T>) -> T {
         let d = self.eye - p;
-        let dd = d.dot(d);
-        let nh = match rsqrt(dd) {
-            Some(r) => {
-                let (nv, lv) = (n.dot(d) * r, self.l.dot(d) * r);
-                match rsqrt(self.l2_plus_1 + 2.0 * lv) {
-                    Some(rh) => (nl + nv) * rh,
-                    None => 0.0, // h = 0: the viewer exactly against the light
+        let nh = if crate::math::vec::is_float::<T>() {
+            let f = |v: Vec3<T>| Vec3::new(v.x.to_f32(), v.y.to_f32(), v.z.to_f32());
+            let (n, d, l) = (f(n), f(d), f(self.l));
+            let nh = match rsqrt(d.dot(d)) {
+                Some(r) => {
+                    let (nv, lv) = (n.dot(d) * r, l.dot(d) * r);
+                    match rsqrt(self.l2_plus_1.to_f32() + 2.0 * lv) {
+                        Some(rh) => (nl.to_f32() + nv) * rh,
+                        None => 0.0, // h = 0: the viewer exactly against the light
+                    }
                 }
-            }
-            // The vertex at the eye, or out of range: the vectors themselves.
-            None => n.dot(unit_f32(self.l + unit_f32(d))),
+                // The vertex at the eye, or out of range: the vectors themselves.
+                None => n.dot(unit_f32(l + unit_f32(d))),
+            };
+            T::from_f32(nh)
+        } else {
+            n.dot((self.l + d.normalize_fast()).normalize_fast())
         };
-        if nh > 0.0 { nh } else { 0.0 }
+        if nh > T::ZERO { nh } else { T::ZERO }
     }
 }
 
@@ -134,23 +163,10 @@ fn rsqrt(x: f32) -> Option<f32> {
     Some(r)
 }
 
-/// `x^e` by repeated squaring, as the eye-space lighting computes it.
-fn powi(mut x: f32, mut e: u32) -> f32 {
-    let mut r = 1.0;
-    while e > 0 {
-        if e & 1 == 1 {
-            r *= x;
-        }
-        x *= x;
-        e >>= 1;
-    }
-    r
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::math::transform;
+    use crate::math::{Fx, transform};
 
     /// Model-space lighting agrees with eye-space lighting (both against an
     /// f64 evaluation) within the bound of the module docs, over random
@@ -166,7 +182,10 @@ mod tests {
             (seed >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
         };
         let light = Lighting::<f32>::new(0.15, Vec3::new(0.3, 0.8, 0.5), 0.7).with_specular(0.6, 24);
-        let mut worst = 0.0f64;
+        let light_fx =
+            Lighting::<Fx>::new(Fx::from_f32(0.15), Vec3::from_f32([0.3, 0.8, 0.5]), Fx::from_f32(0.7))
+                .with_specular(Fx::from_f32(0.6), 24);
+        let (mut worst, mut worst_fx) = (0.0f64, 0.0f64);
         let mut n_spec = 0;
         for _ in 0..2_000 {
             let (a, b, c) = (rnd() as f32 * 3.0, rnd() as f32 * 3.0, rnd() as f32 * 3.0);
@@ -177,12 +196,19 @@ mod tests {
                 * transform::rotation_z(c)
                 * transform::scaling(Vec3::new(s, s, s));
             let ml = ModelLight::new(&light, &m).expect("a similarity");
+            let m_fx = Mat4 { cols: m.cols.map(|c| c.map(Fx::from_f32)) };
+            let ml_fx = ModelLight::new(&light_fx, &m_fx).expect("a similarity in Fx");
             for _ in 0..20 {
                 let n = [rnd(), rnd(), rnd()];
                 let len = (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt();
                 let n = n.map(|v| (v / len) as f32);
                 let p = Vec3::new(rnd() as f32 * 0.5, rnd() as f32 * 0.5, rnd() as f32 * 0.5);
                 let got = ml.shade(n, p, [1.0, 0.5, 0.25]);
+                let got_fx = ml_fx.shade(
+                    n,
+                    Vec3::from_f32([p.x, p.y, p.z]),
+                    [Fx::ONE, Fx::from_f32(0.5), Fx::from_f32(0.25)],
+                );
                 // f64 eye space.
                 let mf = |r: usize, v: [f64; 4]| (0..4).map(|k| f64::from(m.cols[k][r]) * v[k]).sum::<f64>();
                 let pe = [0, 1, 2].map(|r| mf(r, [f64::from(p.x), f64::from(p.y), f64::from(p.z), 1.0]));
@@ -202,6 +228,7 @@ mod tests {
                 let want = [1.0, 0.5, 0.25].map(|b: f64| b * (0.15 + 0.7 * lam) + spec);
                 for k in 0..3 {
                     worst = worst.max((f64::from(got[k]) - want[k]).abs());
+                    worst_fx = worst_fx.max((f64::from(got_fx[k].to_f32()) - want[k]).abs());
                 }
                 let eye = light.shade(
                     Vec3::new(ne[0] as f32, ne[1] as f32, ne[2] as f32),
@@ -214,7 +241,10 @@ mod tests {
             }
         }
         assert!(worst < 2f64.powi(-15), "{worst:e}");
-        assert!(n_spec > 1000, "{n_spec}");
+        // Fx: the half vector comes from two table unit vectors (within 2^-16
+        // per component, so n·h within 4·2^-16 with its products), and the
+        // exponent (24) multiplies that error: (24·4 + 8)·2^-16 in all.
+        assert!(worst_fx < 104.0 / 65536.0 && worst_fx > 2f64.powi(-16), "{worst_fx:e}");
         // A shear or a non-uniform scale keeps eye-space lighting.
         assert!(ModelLight::new(&light, &transform::scaling(Vec3::new(1.0, 1.1, 1.0))).is_none());
         let mut shear = Mat4::<f32>::IDENTITY;
