@@ -241,6 +241,7 @@ mod tests {
             }
         }
         assert!(worst < 2f64.powi(-15), "{worst:e}");
+        assert!(n_spec > 1000, "{n_spec}");
         // Fx: the half vector comes from two table unit vectors (within 2^-16
         // per component, so n·h within 4·2^-16 with its products), and the
         // exponent (24) multiplies that error: (24·4 + 8)·2^-16 in all.
