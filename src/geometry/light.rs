@@ -2,6 +2,9 @@
 //! Blinn–Phong specular, evaluated per face (flat) or per vertex (Gouraud).
 //!
 //! All vectors are in eye space (the camera at the origin looking down −z).
+//! The vertex stage evaluates the same formula in model space when the
+//! model-view matrix is a similarity (`pipeline/model_light.rs`: fewer
+//! operations per vertex, the same values up to rounding).
 //! Intensities are unitless factors on the material colour; the result is
 //! clamped to `[0, 1]` per channel before it becomes a colour channel.
 

@@ -748,7 +748,8 @@ struct VertexCtx<T: Scalar> {
     nm: Mat3<T>,
     base: [T; 3],
     lighting: Option<Lighting<T>>,
-    /// `lighting` in model space, where it applies (`f32`, a similarity).
+    /// `lighting` in model space, where it applies (a similarity; module
+    /// docs of `model_light`).
     model_light: Option<ModelLight<T>>,
 }
 
