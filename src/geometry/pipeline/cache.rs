@@ -233,7 +233,10 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
                 continue;
             }
             let face_n = self.face_normal(src, idx)?;
-            let light = |k: usize| self.vertex_light(ctx, src, material, idx[k], face_n);
+            // Clamped to finite values as `VertexCtx::color` clamps: the clipper
+            // interpolates these.
+            let light =
+                |k: usize| self.vertex_light_raw(ctx, src, material, idx[k], face_n).map(finite_color);
             let cs = if flat_shade { [light(0)?; 3] } else { [light(0)?, light(1)?, light(2)?] };
             let clip = idx.map(|j| cache[j].clip);
             let vs = [0, 1, 2].map(|k| ClipVertex { pos: clip[k], attr: cs[k] });
@@ -313,24 +316,11 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     }
 
     /// The lit colour of slot `j`: with the face normal `face_n` where
-    /// [`Pipeline::face_normal`] gives one, else with the vertex's normal;
-    /// clamped to finite values as [`VertexCtx::color`] clamps it.
-    #[inline]
-    fn vertex_light<Src: VertexSource, M: Material<T>>(
-        &self,
-        ctx: &VertexCtx<T>,
-        src: &Src,
-        material: &M,
-        j: usize,
-        face_n: Option<[f32; 3]>,
-    ) -> Result<[T; 3], Error> {
-        self.vertex_light_raw(ctx, src, material, j, face_n).map(finite_color)
-    }
-
-    /// [`Pipeline::vertex_light`] without the clamp to finite values, for a
-    /// colour that goes straight to [`channels`]: `to_channel` maps
-    /// +infinity to full intensity and NaN and −infinity to 0, as the clamp
-    /// does, so the channels are the same.
+    /// [`Pipeline::face_normal`] gives one, else with the vertex's normal.
+    /// Not clamped to finite values ([`VertexCtx::color`] clamps): a colour
+    /// that goes straight to [`channels`] needs no clamp, as `to_channel`
+    /// maps +infinity to full intensity and NaN and −infinity to 0, as the
+    /// clamp does.
     #[inline]
     fn vertex_light_raw<Src: VertexSource, M: Material<T>>(
         &self,

@@ -174,13 +174,8 @@ mod tests {
     /// refused.
     #[test]
     fn model_space_is_eye_space() {
-        let mut seed = 0x0DE1_5EEDu64;
-        let mut rnd = || {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            (seed >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
-        };
+        let mut rng = crate::math::vec::tests::Rng(0x0DE1_5EED);
+        let mut rnd = || (rng.next() >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0;
         let light = Lighting::<f32>::new(0.15, Vec3::new(0.3, 0.8, 0.5), 0.7).with_specular(0.6, 24);
         let light_fx =
             Lighting::<Fx>::new(Fx::from_f32(0.15), Vec3::from_f32([0.3, 0.8, 0.5]), Fx::from_f32(0.7))
