@@ -362,6 +362,38 @@ fn div_round_u64_u32(n: u64, d: u32) -> u64 {
 /// 32-bit integer operations only (the `fixed` crate goes through 128-bit
 /// intermediates, slow on Cortex-M).
 pub(crate) fn fx_bits_from_f32(v: f32) -> i32 {
+    if HARD_FLOAT { fx_bits_from_f32_float(v) } else { fx_bits_from_f32_int(v) }
+}
+
+/// True where `f32` arithmetic is in hardware: everywhere but ARM without
+/// the hard-float ABI (the Cortex-M0, M3; there a float operation is a
+/// library call and the integer form below is cheaper).
+const HARD_FLOAT: bool = cfg!(any(not(target_arch = "arm"), target_abi = "eabihf"));
+
+/// [`fx_bits_from_f32`] with floating-point operations (a handful of
+/// instructions with an FPU, against about 50 for the integer form):
+/// `v·2^16` is exact (a power of two; infinite on overflow, which
+/// saturates), below `2^23` in magnitude it is rounded to an integer, ties
+/// to even, by adding and subtracting `2^23` (as [`round_even_f32`]), above
+/// it is an integer already, and `as i32` saturates and maps NaN to 0, as
+/// the fixed crate does (tested against it).
+///
+/// [`round_even_f32`]: super::divisor::round_even_f32
+#[inline]
+fn fx_bits_from_f32_float(v: f32) -> i32 {
+    const TWO23: f32 = 8_388_608.0;
+    let s = v * 65_536.0;
+    let a = if s < 0.0 { -s } else { s };
+    if a < TWO23 {
+        let r = ((a + TWO23) - TWO23) as i32;
+        if s < 0.0 { -r } else { r }
+    } else {
+        s as i32
+    }
+}
+
+/// [`fx_bits_from_f32`] with 32-bit integer operations only.
+fn fx_bits_from_f32_int(v: f32) -> i32 {
     let bits = v.to_bits();
     let neg = bits >> 31 != 0;
     let exp = ((bits >> 23) & 0xFF) as i32;
@@ -634,7 +666,8 @@ mod tests {
             let f = f32::from_bits(r as u32);
             let f = if i % 2 == 0 { f } else { (a as f32) * 2f32.powi(-((i % 40) as i32)) };
             let want = if f.is_nan() { 0 } else { I16F16::saturating_from_num(f).to_bits() };
-            assert_eq!(fx_bits_from_f32(f), want, "{f:e}");
+            assert_eq!(fx_bits_from_f32_int(f), want, "{f:e}");
+            assert_eq!(fx_bits_from_f32_float(f), want, "{f:e}");
             n += 1;
         }
         for i in 0..400_000u32 {
@@ -679,7 +712,8 @@ mod tests {
             f32::MAX,
             f32::MIN,
         ] {
-            assert_eq!(fx_bits_from_f32(f), I16F16::saturating_from_num(f).to_bits(), "{f:e}");
+            let want = I16F16::saturating_from_num(f).to_bits();
+            assert_eq!((fx_bits_from_f32_int(f), fx_bits_from_f32_float(f)), (want, want), "{f:e}");
         }
         assert_eq!(n, 400_000);
     }
