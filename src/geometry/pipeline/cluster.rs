@@ -2,9 +2,10 @@
 //! [`MeshletMesh`](crate::mesh::MeshletMesh) is tested against the band's slab, the view volume and
 //! (when back faces are culled) its normal cone, all from its bounding
 //! sphere and before any vertex work; a surviving cluster's vertices go
-//! through the cached path ([`super::cache`]) into a cache of
-//! [`MAX_MESHLET_VERTICES`] entries and its triangles are drawn straight
-//! into the band. No frame bins: RAM is the band, its depth rows and one
+//! into a cache of [`MAX_MESHLET_VERTICES`] entries, vertex first when the
+//! cluster lies inside the clip volume ([`super::eager`]), else through the
+//! cached path with clipping ([`super::cache`]), and its triangles are
+//! drawn straight into the band. No frame bins: RAM is the band, its depth rows and one
 //! cluster's vertices, whatever the mesh's size.
 //!
 //! # Same image as the binned path

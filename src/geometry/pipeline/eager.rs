@@ -1,29 +1,33 @@
 //! The vertex stage of a cluster inside the view volume, vertex first: when
 //! a meshlet's bounding sphere lies inside the clip volume
 //! ([`super::inside`]), no vertex needs clipping and none can fail to
-//! snap for want of range, so every vertex is transformed and snapped in
-//! one pass and each triangle's band and back-face tests are integer tests
-//! on its snapped corners.
+//! snap for want of range. So the pass that computes each vertex's clip
+//! `y`, `w` and band side also snaps the vertices near the band, and each
+//! triangle's back-face and band tests are integer tests on its snapped
+//! corners. A vertex beyond the band's margin is snapped only if a triangle
+//! across the band needs it.
 //!
 //! # Why not lazily, as [`super::cache`] does
 //! The cached path computes a vertex only as far as a triangle needs it,
 //! and pays for that in every triangle: flag tests per corner, outcodes,
 //! the floating pre-snap orientation with its margin. On a real mesh
 //! (about two triangles per vertex, half of them back faces) nearly every
-//! vertex of a cluster that reaches the band is snapped anyway, so the
-//! triangle loop's bookkeeping cost more than the snapping it saved. Depth
-//! and colour stay lazy: only a drawn triangle's vertices need them.
+//! vertex near the band is snapped anyway, so the triangle loop's
+//! bookkeeping cost more than the snapping it saved (`docs/setup_cost.md`,
+//! sixth pass). Depth and colour stay lazy: only a drawn triangle's
+//! vertices need them.
 //!
 //! # Same triangles as the cached path
 //! The snapped position is the same rounding of the same clip position
-//! ([`Pipeline::snap_entry`], [`super::presnap`]), and a triangle is drawn
-//! exactly when the cached path draws it: its snapped rows meet the band
-//! (the cached path's clip-space band test is a conservative early-out
-//! of the same exact test), its vertices snapped, and its snapped area
-//! non-zero and not culled ([`Pipeline::keep`]). Depth, `1/w` and colours
-//! come from [`Pipeline::complete`], as there. What may differ is the
-//! count of back faces and degenerate triangles in [`MeshStats`]: here only
-//! triangles whose rows meet the band are counted.
+//! ([`PreSnap::snap_inside`], else [`Pipeline::snap_entry`]), the band
+//! sides are the same clip-space test ([`Band`]), and a triangle is drawn
+//! exactly when the cached path draws it: not on one side of the band, its
+//! vertices snapped, its snapped area non-zero and not culled, its snapped
+//! rows meeting the band ([`Pipeline::keep`], here on the positions alone).
+//! The cached path's pre-snap orientation only decides early what the
+//! snapped area decides, so the back faces and degenerate triangles counted
+//! in [`MeshStats`] are the same too. Depth, `1/w` and colours come from
+//! [`Pipeline::complete`], as there.
 
 use super::cache::{Cached, VertexSource};
 use super::presnap::PreSnap;
