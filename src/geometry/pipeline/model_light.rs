@@ -104,6 +104,8 @@ impl<T: Scalar> ModelLight<T> {
 
     /// The colour factors of material `base` at model position `p` with
     /// model normal `n` (module docs; the eye-space [`Lighting::shade`]).
+    /// Inlined into the vertex stage (sixth pass: f32 knot −0.5 %).
+    #[inline(always)]
     pub(super) fn shade(&self, n: [f32; 3], p: Vec3<T>, base: [T; 3]) -> [T; 3] {
         let mut n = Vec3::<T>::from_f32(n);
         let nn = n.dot(n).to_f32();
