@@ -69,12 +69,14 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         // Clip y and w and the band test of every vertex (as the cached
         // path); a vertex near the band is snapped now, one beyond its
         // margin only if a triangle reaching into the band needs it.
+        //
         // The vertices' band sides and snap flags again, in a local array
         // indexed by a masked slot: the triangle loop, which runs over every
         // triangle of the cluster in every band it reaches, reads three of
-        // them without bounds checks. A slot beyond the cluster reads 0 (no
-        // side, not snapped), so its triangle reaches the snapping below,
-        // which reports it.
+        // them without bounds checks. A validated mesh has no slot beyond
+        // its cluster; one would read another slot's flags here (0 below 64,
+        // so its triangle goes on to the snapping), and is reported as
+        // `InvalidMesh` where its triangle is snapped or drawn.
         let mut states = [0u8; MAX_MESHLET_VERTICES];
         let mut all_sides = SIDES;
         for (i, e) in cache.iter_mut().enumerate() {
