@@ -34,7 +34,7 @@
 //! eye space.
 
 use crate::light::{Lighting, powi};
-use crate::math::unit::unit_f32;
+use crate::math::unit::{rsqrt_f32, unit_f32};
 use crate::math::{Mat4, Scalar, Vec3};
 
 /// Per mesh: the lighting carried into model space (module docs), in the
@@ -130,10 +130,10 @@ impl<T: Scalar> ModelLight<T> {
         let nh = if crate::math::vec::is_float::<T>() {
             let f = |v: Vec3<T>| Vec3::new(v.x.to_f32(), v.y.to_f32(), v.z.to_f32());
             let (n, d, l) = (f(n), f(d), f(self.l));
-            let nh = match rsqrt(d.dot(d)) {
+            let nh = match rsqrt_f32(d.dot(d)) {
                 Some(r) => {
                     let (nv, lv) = (n.dot(d) * r, l.dot(d) * r);
-                    match rsqrt(self.l2_plus_1.to_f32() + 2.0 * lv) {
+                    match rsqrt_f32(self.l2_plus_1.to_f32() + 2.0 * lv) {
                         Some(rh) => (nl.to_f32() + nv) * rh,
                         None => 0.0, // h = 0: the viewer exactly against the light
                     }
@@ -147,22 +147,6 @@ impl<T: Scalar> ModelLight<T> {
         };
         if nh > T::ZERO { nh } else { T::ZERO }
     }
-}
-
-/// `1/√x` for `x` in `[2^-100, 2^100]`, within `5·2^-24` relative: the
-/// method of [`unit_f32`] (bit-pattern estimate, three Newton steps);
-/// `None` outside that range, NaN included.
-#[inline]
-fn rsqrt(x: f32) -> Option<f32> {
-    if !(7.9e-31..=1.2e30).contains(&x) {
-        return None;
-    }
-    let mut r = f32::from_bits(0x5F37_59DF - (x.to_bits() >> 1));
-    let half = 0.5 * x;
-    for _ in 0..3 {
-        r = r * (1.5 - half * r * r);
-    }
-    Some(r)
 }
 
 #[cfg(test)]
