@@ -381,11 +381,11 @@ const HARD_FLOAT: bool = cfg!(any(not(target_arch = "arm"), target_abi = "eabihf
 /// [`round_even_f32`]: super::divisor::round_even_f32
 #[inline]
 fn fx_bits_from_f32_float(v: f32) -> i32 {
-    const TWO23: f32 = 8_388_608.0;
+    use super::divisor::{TWO23, round_even_below_2p23};
     let s = v * 65_536.0;
     let a = if s < 0.0 { -s } else { s };
     if a < TWO23 {
-        let r = ((a + TWO23) - TWO23) as i32;
+        let r = round_even_below_2p23(a);
         if s < 0.0 { -r } else { r }
     } else {
         s as i32

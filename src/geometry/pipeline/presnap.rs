@@ -28,7 +28,7 @@
 //! vertices, so the triangle is counted as a back face exactly as before.
 
 use crate::math::Scalar;
-use crate::math::divisor::round_even_f32;
+use crate::math::divisor::{TWO23, round_even_below_2p23, round_even_f32, round_even_signed_below_2p22};
 
 /// The largest `|q|` [`orientation`] accepts.
 const Q_MAX: f32 = 4_194_304.0; // 2^22
@@ -74,11 +74,9 @@ impl PreSnap {
     /// depth is deferrable (`z` finite, `|z| ≤ 128·w`, as
     /// `Pipeline::depth_deferrable`) and whose [`PreSnap::quotients`] are
     /// usable; `None` otherwise (then the caller snaps the general way).
-    /// The quotients' rounding is one addition and one subtraction of
-    /// `1.5·2^23`: for `|q| ≤ 2^22` the sum lies in `[2^23, 2^24)`, where
-    /// `f32` steps by 1, so the addition rounds `q` to the nearest integer,
-    /// ties to even (`1.5·2^23` is even), and the subtraction is exact: the
-    /// value of [`round_even_f32`], without its sign and range branches.
+    /// The quotients (`|q| ≤ 2^22`) are rounded by
+    /// [`round_even_signed_below_2p22`]: the value of [`round_even_f32`],
+    /// without its sign and range branches.
     #[inline]
     pub(super) fn snap_inside<T: Scalar, const S: u32>(&self, c: [T; 4]) -> Option<crate::SubPoint<S>> {
         let [ax, ay] = self.half?;
@@ -91,8 +89,7 @@ impl PreSnap {
         if !(q[0].abs() <= Q_MAX && q[1].abs() <= Q_MAX) {
             return None;
         }
-        const MAGIC: f32 = 12_582_912.0; // 1.5·2^23
-        let r = q.map(|v| ((v + MAGIC) - MAGIC) as i32);
+        let r = q.map(round_even_signed_below_2p22);
         crate::SubPoint::new(self.base[0] + r[0], self.base[1] + r[1]).ok()
     }
 
@@ -132,11 +129,10 @@ pub(super) fn depth_f32(z: f32, w: f32, w_ref: f32) -> Option<(u32, u32)> {
     }
     // `|v| ≤ 2^40`, not NaN: `round_even_f32(v).clamp(lo, u32::MAX)`.
     let round = |v: f32, lo: u32| -> u32 {
-        const TWO23: f32 = 8_388_608.0;
         if v >= TWO23 {
             v as u32
         } else if v > 0.0 {
-            (((v + TWO23) - TWO23) as u32).max(lo)
+            (round_even_below_2p23(v) as u32).max(lo)
         } else {
             lo
         }
@@ -315,7 +311,7 @@ mod tests {
         }
         assert!(ties > 1000 && n > 100_000, "{ties} ties, {n} snapped");
         for v in [0.5f32, 1.5, 2.5, -0.5, -1.5, -2.5, 4_194_303.5, -4_194_303.5, 4_194_304.0] {
-            assert_eq!(((v + 12_582_912.0) - 12_582_912.0) as i64, round_even_f32(v), "{v}");
+            assert_eq!(round_even_signed_below_2p22(v) as i64, round_even_f32(v), "{v}");
         }
         assert_eq!(
             PreSnap::new::<crate::math::Fx>((320, 240), (0, 0), 4)
