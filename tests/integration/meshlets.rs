@@ -2,8 +2,9 @@
 //! `Direct3d`) draws the image of the binned path: the
 //! same mesh, its triangles in cluster order, through `draw_valid_mesh` and
 //! `Triangles3d`, for both numeric paths, both interpolations and any band
-//! height; and the cone test only rejects clusters whose every triangle
-//! faces away.
+//! height; the cone test only rejects clusters whose every triangle faces
+//! away; and in one band the height of the frame, the stage counts the
+//! triangles drawn, degenerate and clipped as the binned path does.
 
 use crate::framebuffer::Framebuffer;
 use embedded_graphics_core::pixelcolor::Rgb565;
@@ -124,6 +125,11 @@ fn model<T: Scalar>(angle: f32) -> Mat4<T> {
 }
 
 fn pipeline<T: Scalar>(cull: Cull, eye: [f32; 3]) -> Pipeline<T, 4> {
+    pipeline_far(cull, eye, 20.0)
+}
+
+/// [`pipeline`] with its far plane at `far`.
+fn pipeline_far<T: Scalar>(cull: Cull, eye: [f32; 3], far: f32) -> Pipeline<T, 4> {
     let f = T::from_f32;
     let view = transform::look_at(
         Vec3::new(f(eye[0]), f(eye[1]), f(eye[2])),
@@ -132,7 +138,7 @@ fn pipeline<T: Scalar>(cull: Cull, eye: [f32; 3]) -> Pipeline<T, 4> {
     )
     .unwrap();
     let light = Scene3d::pipeline::<T, 4>(W as u32, H).unwrap().lighting.unwrap();
-    let p = Pipeline::perspective(view, f(0.9), f(0.5), f(20.0), W as u32, H).unwrap();
+    let p = Pipeline::perspective(view, f(0.9), f(0.5), f(far), W as u32, H).unwrap();
     let mut p = p.with_lighting(light);
     p.cull = cull;
     p
@@ -224,4 +230,68 @@ fn meshlets_draw_the_binned_image() {
         }
     }
     assert_eq!(frames, 96);
+}
+
+/// The meshlet stage's counts in one band the height of the frame (every
+/// triangle drawn exactly once), against the binned path's, without culling
+/// (no cluster skipped as facing away): where no cluster is skipped as
+/// outside the view, the same triangles are drawn, dropped as degenerate and
+/// clipped, whichever of the meshlet stage's paths each cluster takes
+/// (vertex first inside the view volume, cached where a clip plane cuts
+/// it: a far plane grazing the torus's back gives the second without
+/// putting a whole cluster beyond it).
+#[test]
+fn meshlets_count_the_binned_triangles() {
+    let (inside, cut) = count_both::<f32>();
+    assert!(inside >= 4 && cut >= 4, "f32: {inside} views wholly inside, {cut} cut by the far plane");
+    let (inside, cut) = count_both::<Fx>();
+    assert!(inside >= 4 && cut >= 4, "Fx: {inside} views wholly inside, {cut} cut by the far plane");
+}
+
+/// [`meshlets_count_the_binned_triangles`] for one numeric path: the views
+/// compared, wholly inside and cut by the far plane.
+fn count_both<T: Scalar>() -> (u32, u32) {
+    let c = torus();
+    let (mut inside, mut cut) = (0, 0);
+    for k in 0..32 {
+        let (i, depth_in) = (k / 4, [-20.0, 0.05, 0.2, 0.4][k % 4]);
+        let angle = i as f32 * 0.83;
+        let eye = [0.4 * i as f32 - 1.5, 1.2, 3.2 + 0.3 * i as f32];
+        let distance = eye.iter().map(|e| e * e).sum::<f32>().sqrt();
+        // The torus reaches 1.42 from its centre: a far plane `depth_in`
+        // short of that may cut its back.
+        let p = pipeline_far::<T>(Cull::None, eye, distance + 1.42 - depth_in);
+        let mut bins = heapless::Vec::<_, 8192>::new();
+        let mesh = ValidMesh::new(c.mesh()).unwrap();
+        let model = model::<T>(angle);
+        let want = p.draw_valid_mesh(&mesh, &model, Rgb565::new(28, 44, 12), &mut bins).unwrap();
+        let mut got = microraster::pipeline::MeshStats::default();
+        let mut cache = ClusterCache::<T, 4>::new();
+        let (mut band, mut depth) = (Band::<Rgb565, W, 120>::new(BG), DepthBand::<Depth16, W, 120>::new());
+        let mut fb = Framebuffer::new(W as u32, H, BG);
+        let meshlets = c.meshlets();
+        Renderer::new(H, BG)
+            .render(
+                Direct3d::new(&mut depth, DepthState::LESS_WRITE, Affine, |band| {
+                    got = p.draw_meshlets(&meshlets, &model, Rgb565::new(28, 44, 12), &mut cache, band)?;
+                    Ok(())
+                }),
+                &mut band,
+                &mut fb,
+            )
+            .unwrap();
+        // The binned path also bins triangles beyond the frame's rows (in
+        // the clip volume's guard band), which the meshlet stage drops at
+        // its row test, uncounted.
+        let beyond = bins.iter().filter(|t| t.rows().1 < 0 || t.rows().0 >= H as i32).count() as u32;
+        assert!(want.emitted - beyond > 500, "{want:?}");
+        // No cluster is skipped whole (their triangles would go uncounted).
+        assert_eq!((got.clusters_outside, got.clusters_back_facing), (0, 0), "view {k}");
+        let counts =
+            |s: &microraster::pipeline::MeshStats, beyond| (s.emitted - beyond, s.degenerate, s.clipped);
+        assert_eq!(counts(&got, 0), counts(&want, beyond), "view {k}: {got:?} against {want:?}");
+        assert_eq!((got.back_faces, want.back_faces), (0, 0));
+        if got.clipped == 0 { inside += 1 } else { cut += 1 }
+    }
+    (inside, cut)
 }
