@@ -36,7 +36,7 @@ pub(crate) use material::{Material, PerFace, PerVertex, Uniform};
 pub use varying::VertexInput;
 
 use crate::clip3d::{Class, ClipPlanes, ClipVertex, classify, clip_triangle, guard_band_for_range};
-use crate::edge::{Cull, signed_area2};
+use crate::edge::Cull;
 use crate::light::Lighting;
 use crate::math::{Mat3, Mat4, Scalar, Vec3, Vec4, transform};
 use crate::mesh::{Mesh, ValidMesh};
@@ -365,7 +365,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
             stats.degenerate += 1;
             return None;
         };
-        self.keep(&at, stats).then_some(at)
+        self.keep(at.map(|v| v.pos), stats).then_some(at)
     }
 
     /// Clips a triangle that crosses a plane and hands each piece that
@@ -505,25 +505,34 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         ))
     }
 
-    /// The snapped-area tests: zero area and back faces are dropped (and
-    /// counted), as are triangles outside [`Pipeline::rows`].
-    fn keep(&self, v: &[ScreenVertex<S>; 3], stats: &mut MeshStats) -> bool {
-        let det = signed_area2(v.map(|v| (v.pos.x() as i64, v.pos.y() as i64)));
+    /// The snapped-area tests on a triangle's snapped positions: zero area
+    /// and back faces are dropped (and counted), as are triangles outside
+    /// [`Pipeline::rows`]. In 32-bit differences (`|coordinate| ≤ 2^28`, so
+    /// they cannot overflow) and 64-bit products; the rows as
+    /// [`ScreenTriangle::rows`] computes them, in 32 bits (`|2y| ≤ 2^29`).
+    #[inline]
+    fn keep(&self, p: [SubPoint<S>; 3], stats: &mut MeshStats) -> bool {
+        let (e1x, e1y) = (p[1].x() - p[0].x(), p[1].y() - p[0].y());
+        let (e2x, e2y) = (p[2].x() - p[0].x(), p[2].y() - p[0].y());
+        let det = i64::from(e1x) * i64::from(e2y) - i64::from(e2x) * i64::from(e1y);
+        if det == 0 {
+            stats.degenerate += 1;
+            return false;
+        }
         let culled = match self.cull {
             Cull::None => false,
             Cull::Clockwise => det > 0,
             Cull::CounterClockwise => det < 0,
         };
-        if det == 0 {
-            stats.degenerate += 1;
-            return false;
-        }
         if culled {
             stats.back_faces += 1;
             return false;
         }
-        let (lo, hi) = ScreenTriangle { v: *v, flat: false }.rows();
-        self.rows.is_none_or(|(y0, y1)| lo <= y1 && hi >= y0)
+        let (y0, y1, y2) = (p[0].y(), p[1].y(), p[2].y());
+        let (one, half) = (1i32 << (S + 1), 1i32 << S);
+        let lo = (2 * y0.min(y1).min(y2) - half + one - 1) >> (S + 1);
+        let hi = (2 * y0.max(y1).max(y2) - half) >> (S + 1);
+        self.rows.is_none_or(|(r0, r1)| lo <= r1 && hi >= r0)
     }
 
     /// Colours the vertices and hands the triangle to `sink` (counted in

@@ -224,7 +224,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
                     stats.degenerate += 1;
                     continue;
                 }
-                if !self.keep(&at, stats) {
+                if !self.keep(at.map(|v| v.pos), stats) {
                     continue;
                 }
                 self.complete(ctx, src, material, max, cache, idx, &mut at)?;

@@ -23,7 +23,7 @@
 //! sides are the same clip-space test ([`Band`]), and a triangle is drawn
 //! exactly when the cached path draws it: not on one side of the band, its
 //! vertices snapped, its snapped area non-zero and not culled, its snapped
-//! rows meeting the band ([`Pipeline::keep`], here on the positions alone).
+//! rows meeting the band ([`Pipeline::keep`]).
 //! The cached path's pre-snap orientation only decides early what the
 //! snapped area decides, so the back faces and degenerate triangles counted
 //! in [`MeshStats`] are the same too. Depth, `1/w` and colours come from
@@ -34,7 +34,6 @@ use super::presnap::PreSnap;
 use super::{Band, Material, MeshSetup, MeshStats, Pipeline, Shade, VertexCtx};
 use crate::Error;
 use crate::SubPoint;
-use crate::edge::Cull;
 use crate::math::{Scalar, Vec3};
 use crate::mesh::MAX_MESHLET_VERTICES;
 use crate::raster3d::{ScreenTriangle, ScreenVertex};
@@ -120,7 +119,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
                 continue;
             }
             let pos = idx.map(|j| cache.get(j).map_or(SubPoint::ORIGIN, |e| e.screen.pos));
-            if !self.keep_snapped(pos, stats) {
+            if !self.keep(pos, stats) {
                 continue;
             }
             // Filled in place and lent to the sink: no copies of the triangle.
@@ -148,34 +147,5 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
             e.state |= Cached::<T, S>::CLIP;
             self.snap_entry(e, presnap, false);
         }
-    }
-
-    /// [`Pipeline::keep`] on the snapped positions alone: the same verdict
-    /// and counts, in 32-bit differences (`|coordinate| ≤ 2^28`, so they
-    /// cannot overflow) and 64-bit products.
-    #[inline]
-    fn keep_snapped(&self, p: [SubPoint<S>; 3], stats: &mut MeshStats) -> bool {
-        let (e1x, e1y) = (p[1].x() - p[0].x(), p[1].y() - p[0].y());
-        let (e2x, e2y) = (p[2].x() - p[0].x(), p[2].y() - p[0].y());
-        let det = i64::from(e1x) * i64::from(e2y) - i64::from(e2x) * i64::from(e1y);
-        if det == 0 {
-            stats.degenerate += 1;
-            return false;
-        }
-        let culled = match self.cull {
-            Cull::None => false,
-            Cull::Clockwise => det > 0,
-            Cull::CounterClockwise => det < 0,
-        };
-        if culled {
-            stats.back_faces += 1;
-            return false;
-        }
-        // `center_rows` in 32 bits (`|2y| ≤ 2^29`).
-        let (y0, y1, y2) = (p[0].y(), p[1].y(), p[2].y());
-        let (one, half) = (1i32 << (S + 1), 1i32 << S);
-        let lo = (2 * y0.min(y1).min(y2) - half + one - 1) >> (S + 1);
-        let hi = (2 * y0.max(y1).max(y2) - half) >> (S + 1);
-        self.rows.is_none_or(|(r0, r1)| lo <= r1 && hi >= r0)
     }
 }
