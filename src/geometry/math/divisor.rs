@@ -36,6 +36,33 @@ pub(crate) fn mul_u16_u32(a: u32, b: u32) -> u64 {
     if ARMV6M { mul_u16_u32_halves(a, b) } else { a as u64 * b as u64 }
 }
 
+/// `(⌊x / d⌋, x mod d)` for a quotient below `2^BITS`: `0 < d`,
+/// `x < d·2^BITS` and `d·2^(BITS − 1) < 2^32`. On the Cortex-M0, which has
+/// no divider (the library's 32-bit division loop costs about 127
+/// instructions), by `BITS` restoring steps; elsewhere one division.
+#[inline(always)]
+pub(crate) fn divrem_small_quotient<const BITS: u32>(x: u32, d: u32) -> (u32, u32) {
+    if ARMV6M { divrem_by_steps::<BITS>(x, d) } else { (x / d, x % d) }
+}
+
+/// [`divrem_small_quotient`] by restoring steps (tested on every target):
+/// bit `b` of the quotient, from the top, is set where what is left of `x`
+/// reaches `d·2^b`; with the quotient below `2^BITS` what is left at the
+/// end is the remainder.
+#[inline(always)]
+fn divrem_by_steps<const BITS: u32>(mut x: u32, d: u32) -> (u32, u32) {
+    let (mut q, mut t) = (0, d << (BITS - 1));
+    for _ in 0..BITS {
+        // The quotient's bits from the top, shifted in (few registers on
+        // the Cortex-M0: no per-bit constants).
+        let ge = x >= t;
+        x -= if ge { t } else { 0 };
+        q = (q << 1) | ge as u32;
+        t >>= 1;
+    }
+    (q, x)
+}
+
 /// [`mul_u16_u32`] by halves of `b` (tested on every target).
 #[inline]
 fn mul_u16_u32_halves(a: u32, b: u32) -> u64 {
@@ -235,6 +262,37 @@ mod tests {
     use super::*;
     use crate::math::vec::tests::Rng;
     use crate::math::{Fx, Scalar};
+
+    /// The restoring steps against `/` and `%`, over the preconditions'
+    /// whole range: quotients at and next to their bound, divisors from 1 to
+    /// the largest the bound allows.
+    #[test]
+    fn divrem_by_steps_is_the_division() {
+        fn check<const BITS: u32>(rng: &mut Rng, cases: u32) {
+            let d_max = (u32::MAX >> (BITS - 1)) as u64; // d·2^(BITS−1) < 2^32
+            for i in 0..cases {
+                let r = rng.next();
+                let d = match i % 4 {
+                    0 => 1 + (r % d_max) as u32,
+                    1 => 1 + ((r >> 20) % 300) as u32,
+                    2 => d_max as u32,
+                    _ => 1 << (r % (33 - BITS as u64)),
+                };
+                let bound = (d as u64) << BITS; // x < d·2^BITS
+                let x = match i % 3 {
+                    0 => (r >> 7) % bound.min(1 << 32),
+                    1 => bound.min(1 << 32) - 1,
+                    _ => (d as u64 * ((r >> 40) % (1 << BITS))).min(u32::MAX as u64),
+                } as u32;
+                assert_eq!(divrem_by_steps::<BITS>(x, d), (x / d, x % d), "{x} / {d}");
+                assert_eq!(divrem_small_quotient::<BITS>(x, d), (x / d, x % d));
+            }
+        }
+        let mut rng = Rng(0xD1_71DE);
+        check::<8>(&mut rng, 200_000);
+        check::<16>(&mut rng, 200_000);
+        check::<1>(&mut rng, 20_000);
+    }
 
     #[test]
     fn mul_u16_u32_halves_is_the_product() {

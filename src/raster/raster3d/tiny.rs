@@ -19,8 +19,8 @@
 //! * **Depth** (formats of up to 16 bits): `v_i = ⌊d_i / 2^8⌋`, `d_i` the
 //!   vertex depth in `2^-16` steps ([`depth_steps`], itself within
 //!   `2^-15` steps of `depth·MAX/(2^32 − 1)`), so `v_i < 2^24` and the sum
-//!   `< det·2^24 < 2^40` (`u64`); its quotient by `det` is floored (two
-//!   16-bit digits) and the stored code is that rounded half up. Against
+//!   `< det·2^24 < 2^40` (`u64`); its quotient by `det` is floored (an 8-
+//!   and a 16-bit digit) and the stored code is that rounded half up. Against
 //!   the exact plane through the snapped vertices' depths: vertex values
 //!   `< 2^-8 + 2^-15` low (a convex combination keeps that), the floor
 //!   `< 2^-8`, the rounding `1/2`: `|stored − exact| < 1/2 + 2^-7 + 2^-15`,
@@ -50,7 +50,7 @@ use crate::Interpolate;
 use crate::band::BandView;
 use crate::depth::{DepthFormat, DepthState};
 use crate::edge::small::Small;
-use crate::math::divisor::mul_u16_u32;
+use crate::math::divisor::{divrem_small_quotient, mul_u16_u32};
 
 /// Triangles with a determinant below this are drawn here (module docs).
 const DET_LIMIT: i32 = 1 << 16;
@@ -166,21 +166,24 @@ fn shade<C: Interpolate, M: Interpolation, const S: u32>(
             }
             let c = c(k);
             let n = w[0] * c[0] + w[1] * c[1] + w[2] * c[2];
-            ((2 * n + det) / (2 * det)) as u8
+            // n ≤ 255·det: the quotient is below 2^8, and 2·det·2^7 < 2^24.
+            divrem_small_quotient::<8>(2 * n + det, 2 * det).0 as u8
         };
         C::from_channels([channel(0), channel(1), channel(2)])
     }
 }
 
-/// `⌊n / d⌋` for `0 < d < 2^16` and `n / d < 2^24`, by two 16-bit digits
-/// (32-bit divisions: hardware on ARMv7-M, where a 64-bit one is a library
-/// call).
+/// `⌊n / d⌋` for `0 < d < 2^16` and `n / d < 2^24`, by two digits of 8
+/// and 16 bits ([`divrem_small_quotient`]: 32-bit divisions, hardware on
+/// ARMv7-M where a 64-bit one is a library call; restoring steps on the
+/// Cortex-M0).
 #[inline(always)]
 fn floor_div(n: u64, d: u32) -> u32 {
     let hi = (n >> 16) as u32;
-    let (q1, r1) = (hi / d, hi % d);
-    // r1 < d < 2^16, and q1 < 2^8 (the quotient is below 2^24).
-    (q1 << 16) + ((r1 << 16) | (n as u32 & 0xFFFF)) / d
+    // q1 < 2^8 (the quotient is below 2^24), and d·2^7 < 2^23.
+    let (q1, r1) = divrem_small_quotient::<8>(hi, d);
+    // r1 < d < 2^16: the second digit is below 2^16, and d·2^15 < 2^31.
+    (q1 << 16) + divrem_small_quotient::<16>((r1 << 16) | (n as u32 & 0xFFFF), d).0
 }
 
 /// `⌊x / y⌋` for `0 < y < 2^48` and `x / y < 2^9`, exactly, with one 32-bit
