@@ -62,13 +62,18 @@ impl VertexSource for ClusterSource<'_> {
     }
 }
 
+/// The cluster tests' slack, relative to a sphere's reach `r·|p.xyz|`
+/// and absolute: far above their `f32` rounding (`2^-24` relative per
+/// operation) and the vertex stage's own (as in [`super::inside`]).
+const CULL_SLACK: f32 = 1.0 / 256.0;
+
 /// The per-band, per-mesh cluster tests in model space, in `f32` on both
 /// numeric paths: in 16.16 the plane values of a large sphere saturate (the
 /// mesh-level tests are `f32` for the same reason), and a handful of
 /// products per cluster and band is small beside the vertex work it saves.
 struct ClusterCull {
     /// Planes `p` with `p · (x, 1) ≥ 0` inside: the view volume and the
-    /// band's slab, with `|p.xyz|`.
+    /// band's slab, with `|p.xyz|·(1 + CULL_SLACK)`.
     planes: [(Vec4<f32>, f32); 8], // the slab's two, then the view volume's six
     count: usize,
     /// The eye as a homogeneous model-space point `(e, ew)`, `ew ≥ 0`
@@ -84,7 +89,7 @@ impl ClusterCull {
         let mut planes = [(Vec4::new(0.0, 0.0, 0.0, 0.0), 0.0); 8];
         let mut count = 0;
         let mut add = |p: Vec4<f32>| {
-            planes[count] = (p, p.xyz().length());
+            planes[count] = (p, p.xyz().length() * (1.0 + CULL_SLACK));
             count += 1;
         };
         // The slab first: it rejects most clusters of a band.
@@ -106,10 +111,8 @@ impl ClusterCull {
     fn keeps(&self, m: &Meshlet, stats: &mut MeshStats) -> bool {
         let ((c, r), (axis, cutoff)) = (m.sphere, m.cone);
         let centre = Vec4::new(c[0], c[1], c[2], 1.0);
-        const SLACK: f32 = 1.0 / 256.0;
         for (p, len) in &self.planes[..self.count] {
-            let reach = r * *len;
-            if p.dot(centre) < -(reach + reach * SLACK + SLACK) {
+            if p.dot(centre) < -(r * *len + CULL_SLACK) {
                 stats.clusters_outside += 1;
                 return false;
             }

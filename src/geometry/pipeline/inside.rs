@@ -35,13 +35,14 @@ use crate::math::{Mat4, Scalar, Vec4};
 use crate::mesh::SPHERE_TOLERANCE;
 
 /// The test of the module docs for one model-view-projection matrix.
-/// Small (it lives on the vertex stage's stack): the planes are made from
-/// the rows in each test, a few additions.
+/// Small (it lives on the vertex stage's stack).
 pub(super) struct InsideView {
     rows: [Vec4<f32>; 4],
     /// `|row.xyz|₁` of each row ([`l1`]) and the largest of them (`l`).
     l1: [f32; 4],
     l1_max: f32,
+    /// `|p.xyz|₁` of each plane of [`InsideView::contains`], in its order.
+    plane_l1: [f32; 7],
     far: bool,
     w_min: f32,
 }
@@ -57,27 +58,40 @@ impl InsideView {
         let l1s = rows.map(l1);
         // Fx acts on w_min no smaller than its smallest value, 2^-16.
         let w_min = planes.w_min().max(ClipPlanes::W_MIN);
-        InsideView { rows, l1: l1s, l1_max: l1s.into_iter().fold(0.0, f32::max), far: planes.far(), w_min }
+        let view = super::view_planes(rows, planes.far()).map(l1);
+        InsideView {
+            rows,
+            l1: l1s,
+            l1_max: l1s.into_iter().fold(0.0, f32::max),
+            plane_l1: [l1s[3], view[0], view[1], view[2], view[3], view[4], view[5]],
+            far: planes.far(),
+            w_min,
+        }
     }
 
     /// True if every point of the sphere `(c, r)` (as validated, within
-    /// its tolerance) has outcode 0 as the vertex stage computes it.
+    /// its tolerance) has outcode 0 as the vertex stage computes it. The
+    /// planes' values at the centre are sums of the rows' (`(w + x)·c =
+    /// w·c + x·c`): their `f32` rounding differs from the planes' own
+    /// products by a few `2^-24·m`, far inside the margin's `2^-8·m`.
     pub(super) fn contains(&self, (c, r): ([f32; 3], f32)) -> bool {
         let r = r * (1.0 + 2.0 * SPHERE_TOLERANCE);
         let centre = Vec4::new(c[0], c[1], c[2], 1.0);
+        let d = self.rows.map(|row| row.dot(centre));
         let mut m = 0.0f32;
-        for (row, l1) in self.rows.iter().zip(self.l1) {
-            m = m.max(row.dot(centre).abs() + r * l1);
+        for (d, l1) in d.iter().zip(self.l1) {
+            m = m.max(d.abs() + r * l1);
         }
         // Also false for NaN and infinity.
         if m.is_nan() || m > 1.152_921_5e18 {
             return false;
         }
         let margin = (m + self.l1_max + 1.0) / 256.0;
-        // The least of `p · (q, 1)` over the sphere is `p · (c, 1) − r·|p.xyz|`.
-        let inside = |p: Vec4<f32>| p.dot(centre) - r * l1(p) >= margin;
-        let w_min = Vec4::new(0.0, 0.0, 0.0, self.w_min);
-        inside(self.rows[3] - w_min) && super::view_planes(self.rows, self.far).into_iter().all(inside)
+        // The least of `p · (q, 1)` over the sphere is `p · (c, 1) − r·|p.xyz|`:
+        // w − w_min, then the view volume's planes as `view_planes` lists them.
+        let [x, y, z, w] = d;
+        let at_centre = [w - self.w_min, w + x, w - x, w + y, w - y, z, if self.far { w - z } else { z }];
+        at_centre.iter().zip(self.plane_l1).all(|(v, l1)| v - r * l1 >= margin)
     }
 }
 
