@@ -108,8 +108,16 @@ impl<T: Scalar> ModelLight<T> {
     #[inline(always)]
     pub(super) fn shade(&self, n: [f32; 3], p: Vec3<T>, base: [T; 3]) -> [T; 3] {
         let mut n = Vec3::<T>::from_f32(n);
-        let nn = n.dot(n).to_f32();
-        if !((1.0 - 1.0 / 4096.0)..=(1.0 + 1.0 / 4096.0)).contains(&nn) {
+        // |n·n − 1| ≤ 2^-12 (NaN fails it): for `Fx` in 16.16, exactly as
+        // in `f32` (its values below 2^8 convert exactly), without the
+        // conversion and the float compares, library calls on the Cortex-M0.
+        let nn = n.dot(n);
+        let unit = if crate::math::vec::is_float::<T>() {
+            ((1.0 - 1.0 / 4096.0)..=(1.0 + 1.0 / 4096.0)).contains(&nn.to_f32())
+        } else {
+            (nn - T::ONE).abs() <= T::from_f32(1.0 / 4096.0)
+        };
+        if !unit {
             n = n.normalize_fast();
         }
         let nl = n.dot(self.l);
