@@ -565,10 +565,9 @@ fn document(
     if !apart.is_empty() {
         let _ = writeln!(
             w,
-            "\n{}: counting the pixels instead of writing them took longer than writing them. The counting \
-             loop compiles to other machine code than the frame's (under valgrind's cachegrind, the tiny scene's \
-             takes fewer instructions but more, and more often mispredicted, branches), so these parts are not a \
-             split of the frame's time.",
+            "\n{}: counting the pixels instead of writing them took longer than writing them: the counting \
+             loop is other machine code than the frame's, so here these parts are not a split of the frame's \
+             time.",
             apart.join(", ")
         );
     }
