@@ -40,6 +40,7 @@ use crate::edge::Cull;
 use crate::light::Lighting;
 use crate::math::{Mat3, Mat4, Scalar, Vec3, Vec4, transform};
 use crate::mesh::{Mesh, ValidMesh};
+use crate::primitive::center_rows;
 use crate::raster3d::{ScreenTriangle, ScreenVertex};
 use crate::{Error, Interpolate, MAX_FRAME_DIM, SubPoint};
 
@@ -509,7 +510,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     /// and back faces are dropped (and counted), as are triangles outside
     /// [`Pipeline::rows`]. In 32-bit differences (`|coordinate| ≤ 2^28`, so
     /// they cannot overflow) and 64-bit products; the rows as
-    /// [`ScreenTriangle::rows`] computes them, in 32 bits (`|2y| ≤ 2^29`).
+    /// [`ScreenTriangle::rows`] computes them.
     #[inline]
     fn keep(&self, p: [SubPoint<S>; 3], stats: &mut MeshStats) -> bool {
         let (e1x, e1y) = (p[1].x() - p[0].x(), p[1].y() - p[0].y());
@@ -529,9 +530,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
             return false;
         }
         let (y0, y1, y2) = (p[0].y(), p[1].y(), p[2].y());
-        let (one, half) = (1i32 << (S + 1), 1i32 << S);
-        let lo = (2 * y0.min(y1).min(y2) - half + one - 1) >> (S + 1);
-        let hi = (2 * y0.max(y1).max(y2) - half) >> (S + 1);
+        let (lo, hi) = center_rows::<S>(y0.min(y1).min(y2), y0.max(y1).max(y2));
         self.rows.is_none_or(|(r0, r1)| lo <= r1 && hi >= r0)
     }
 
@@ -578,8 +577,12 @@ fn rows_f32<T: Scalar>(m: &Mat4<T>) -> [Vec4<f32>; 4] {
 
 /// The view-volume planes from the rows of a model-view-projection matrix,
 /// `p · (x, 1) ≥ 0` inside: left, right, bottom, top, near, and far (near
-/// again when there is no far plane).
-fn view_planes([x, y, z, w]: [Vec4<f32>; 4], far: bool) -> [Vec4<f32>; 6] {
+/// again when there is no far plane). Also of the rows' values at a point
+/// (`f32`): then the planes' values there.
+fn view_planes<V: Copy + core::ops::Add<Output = V> + core::ops::Sub<Output = V>>(
+    [x, y, z, w]: [V; 4],
+    far: bool,
+) -> [V; 6] {
     [w + x, w - x, w + y, w - y, z, if far { w - z } else { z }]
 }
 

@@ -251,9 +251,12 @@ pub(crate) fn reference_pixel<const S: u32>(v: SubPoint<S>) -> (i32, i32) {
     ((v.x() >> S).clamp(0, max), (v.y() >> S).clamp(0, max))
 }
 
-/// Rows whose centre `y + 0.5` lies in `[lo, hi]` (subpixel units).
+/// Rows whose centre `y + 0.5` lies in `[lo, hi]` (subpixel units), for
+/// [`SubPoint`] coordinates (`|lo|, |hi| ≤ 2^28`): in 32 bits, since
+/// `|2y| ≤ 2^29` and the rounding terms are below `2^(S + 2) ≤ 2^10`.
 pub(crate) const fn center_rows<const S: u32>(lo: i32, hi: i32) -> (i32, i32) {
-    let (lo, hi) = (2 * lo as i64, 2 * hi as i64);
-    let (one, half) = (1i64 << (S + 1), 1i64 << S);
-    (((lo - half + one - 1) >> (S + 1)) as i32, ((hi - half) >> (S + 1)) as i32)
+    debug_assert!(lo.unsigned_abs() <= 1 << 28 && hi.unsigned_abs() <= 1 << 28);
+    let (lo, hi) = (2 * lo, 2 * hi);
+    let (one, half) = (1i32 << (S + 1), 1i32 << S);
+    ((lo - half + one - 1) >> (S + 1), (hi - half) >> (S + 1))
 }

@@ -88,9 +88,9 @@ impl InsideView {
         }
         let margin = (m + self.l1_max + 1.0) / 256.0;
         // The least of `p · (q, 1)` over the sphere is `p · (c, 1) − r·|p.xyz|`:
-        // w − w_min, then the view volume's planes as `view_planes` lists them.
-        let [x, y, z, w] = d;
-        let at_centre = [w - self.w_min, w + x, w - x, w + y, w - y, z, if self.far { w - z } else { z }];
+        // w − w_min, then the view volume's planes.
+        let [v0, v1, v2, v3, v4, v5] = super::view_planes(d, self.far);
+        let at_centre = [d[3] - self.w_min, v0, v1, v2, v3, v4, v5];
         at_centre.iter().zip(self.plane_l1).all(|(v, l1)| v - r * l1 >= margin)
     }
 }
