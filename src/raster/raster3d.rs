@@ -46,7 +46,7 @@
 //! value may differ by one unit from the plane's where the exact value is
 //! that close to a rounding tie).
 
-use crate::attr::{COLOR_FRAC, Plane, PlaneFrame, PlaneSetup, channel};
+use crate::attr::{COLOR_FRAC, COLOR_HALF, Plane, PlaneFrame, PlaneSetup, channel_clamped, channel_in_range};
 use crate::band::BandView;
 use crate::depth::{DepthFormat, DepthRows, DepthState, DepthTest};
 use crate::edge::{Cull, Span, SpanRest, TriangleSpans};
@@ -273,11 +273,36 @@ fn shade_spans<C, F, M, const S: u32, const W: usize, R>(
             &C::from_channels(tri.v[0].color),
         );
     } else {
-        // Made in place: built and returned, its planes were copied twice.
-        let mut shade = Gouraud::<C, M> { planes: [Plane::default(); 4], _m: core::marker::PhantomData };
-        shade.set_up(tri, &setup);
-        draw_with_test::<C, F, _, _, W>(spans, color, depth, state, &zplane, &shade);
+        if !M::PERSPECTIVE && channels_in_range::<C, S>(tri) {
+            // No per-pixel clamp (`channel_in_range`).
+            gouraud_spans::<C, F, M, false, S, W, _>(tri, &setup, spans, color, depth, state, &zplane);
+        } else {
+            gouraud_spans::<C, F, M, true, S, W, _>(tri, &setup, spans, color, depth, state, &zplane);
+        }
     }
+}
+
+/// [`shade_spans`]' Gouraud fragment loop, its pixels clamped or not
+/// ([`Gouraud`]).
+#[inline(always)]
+fn gouraud_spans<C, F, M, const CLAMP: bool, const S: u32, const W: usize, R>(
+    tri: &ScreenTriangle<S>,
+    setup: &PlaneSetup,
+    spans: (Span, Option<Span>, &R),
+    color: &mut BandView<'_, C, W>,
+    depth: &mut [[F::Storage; W]],
+    state: DepthState,
+    zplane: &Plane,
+) where
+    C: Interpolate,
+    F: DepthFormat,
+    M: Interpolation,
+    R: SpanRest,
+{
+    // Made in place: built and returned, its planes were copied twice.
+    let mut shade = Gouraud::<C, M, CLAMP> { planes: [Plane::default(); 4], _m: core::marker::PhantomData };
+    shade.set_up(tri, setup);
+    draw_with_test::<C, F, _, _, W>(spans, color, depth, state, zplane, &shade);
 }
 
 /// Whether the depth test passes at some pixel of `span` (without writing);
@@ -526,21 +551,33 @@ pub(crate) fn normalised_q<const S: u32>(tri: &ScreenTriangle<S>, bits: u32) -> 
     })
 }
 
+/// Whether every vertex channel of `tri` is at most the colour's maximum
+/// (always so for the pipeline's triangles; a hand-made triangle may hold
+/// more, which the pixels clamp).
+#[inline(always)]
+fn channels_in_range<C: Interpolate, const S: u32>(tri: &ScreenTriangle<S>) -> bool {
+    let max = C::CHANNEL_MAX;
+    tri.v.iter().all(|v| v.color[0] <= max[0] && v.color[1] <= max[1] && v.color[2] <= max[2])
+}
+
 /// Gouraud colour set-up for one triangle: per channel a plane of the
 /// colour (affine) or of `c·q`, plus one of `q` (perspective-correct).
-/// Channels the colour type lacks get no plane and stay 0.
-struct Gouraud<C, M> {
+/// Channels the colour type lacks get no plane and stay 0. `CLAMP`: each
+/// pixel's channels are clamped to `0..=max`; without it (affine, vertex
+/// channels in range: [`channels_in_range`]) they are in range already
+/// ([`channel_in_range`]).
+struct Gouraud<C, M, const CLAMP: bool> {
     planes: [Plane; 4],
     _m: core::marker::PhantomData<(C, M)>,
 }
 
 /// [`Gouraud`] along a span. Affine: `i32` accumulators (a sampled value is
-/// within 2^13 units of one in `[0, 255·2^20]`, so the wrapping `i32` sum is
+/// within 2^13 units of one in `[0, 255·2^20]`, so the wrapping `i32` sum (with the rounding's half step added, below 2^28) is
 /// the exact `i64` one). Perspective-correct: accumulators scaled by 2^32 /
 /// 2^[`DEPTH_FRAC`], so the high word is the whole part the division needs
 /// (sampled `c·q` in `[−1, 2^31)` and `q` in `[0, 2^23]` after flooring),
 /// again exact modulo 2^64.
-struct GouraudSpan<C, M> {
+struct GouraudSpan<C, M, const CLAMP: bool> {
     affine: [i32; 3],
     affine_step: [i32; 3],
     persp: [i64; 4],
@@ -548,7 +585,7 @@ struct GouraudSpan<C, M> {
     _m: core::marker::PhantomData<(C, M)>,
 }
 
-impl<C: Interpolate, M: Interpolation> Gouraud<C, M> {
+impl<C: Interpolate, M: Interpolation, const CLAMP: bool> Gouraud<C, M, CLAMP> {
     /// The planes of `tri`, written in place (channels the colour type
     /// lacks keep theirs).
     #[inline(always)]
@@ -575,11 +612,11 @@ impl<C: Interpolate, M: Interpolation> Gouraud<C, M> {
     }
 }
 
-impl<C: Interpolate, M: Interpolation> Shader<C> for Gouraud<C, M> {
-    type Span = GouraudSpan<C, M>;
+impl<C: Interpolate, M: Interpolation, const CLAMP: bool> Shader<C> for Gouraud<C, M, CLAMP> {
+    type Span = GouraudSpan<C, M, CLAMP>;
 
     #[inline(always)]
-    fn start(&self, x: i32, y: i32) -> GouraudSpan<C, M> {
+    fn start(&self, x: i32, y: i32) -> GouraudSpan<C, M, CLAMP> {
         let max = C::CHANNEL_MAX;
         let mut s = GouraudSpan {
             affine: [0; 3],
@@ -596,15 +633,17 @@ impl<C: Interpolate, M: Interpolation> Shader<C> for Gouraud<C, M> {
             if M::PERSPECTIVE {
                 (s.persp[k], s.persp_step[k]) = (p.at(x, y) << (32 - DEPTH_FRAC), d << (32 - DEPTH_FRAC));
             } else {
-                // The `i32` accumulator keeps the low 32 bits only.
-                (s.affine[k], s.affine_step[k]) = (p.at_low32(x, y) as i32, d as i32);
+                // The `i32` accumulator keeps the low 32 bits only, with
+                // the rounding's half step added once (`channel_in_range`).
+                (s.affine[k], s.affine_step[k]) =
+                    ((p.at_low32(x, y) as i32).wrapping_add(COLOR_HALF), d as i32);
             }
         }
         s
     }
 }
 
-impl<C: Interpolate, M: Interpolation> ShadeSpan<C> for GouraudSpan<C, M> {
+impl<C: Interpolate, M: Interpolation, const CLAMP: bool> ShadeSpan<C> for GouraudSpan<C, M, CLAMP> {
     #[inline(always)]
     fn color(&self) -> C {
         let max = C::CHANNEL_MAX;
@@ -619,8 +658,10 @@ impl<C: Interpolate, M: Interpolation> ShadeSpan<C> for GouraudSpan<C, M> {
                 let q = ((self.persp[3] >> 32) as i32).max(1) as u32;
                 let p = ((self.persp[k] >> 32) as i32).max(0) as u32;
                 ((p + q / 2) / q).min(max[k] as u32) as u8
+            } else if CLAMP {
+                channel_clamped(self.affine[k], max[k])
             } else {
-                channel(self.affine[k], max[k])
+                channel_in_range(self.affine[k], max[k])
             }
         };
         C::from_channels([channel_of(0), channel_of(1), channel_of(2)])

@@ -129,3 +129,42 @@ fn small_depth_tested_triangles_are_band_invariant() {
     let drawn = full.0.iter().filter(|&&c| c != bg).count();
     assert!(drawn > W * H / 2, "{drawn} pixels drawn");
 }
+
+/// Vertex channels above the colour's maximum (a hand-made triangle; the
+/// pipeline never makes one) are clamped per pixel, on both of the loop's
+/// ways (planes, tiny triangles), and a triangle whose channels are in range
+/// takes the loop without the clamp: the same channel values as a colour
+/// type wide enough for them, here `Rgb888`, then capped at `Rgb565`'s
+/// maximum (same planes, same sums, so exact).
+#[test]
+fn out_of_range_vertex_channels_are_clamped_per_pixel() {
+    let mut rng = Rng::new(0x000C_1A4B);
+    let clip = ClipRect::new(0, 0, W as i32, H as i32);
+    let max = Rgb565::CHANNEL_MAX;
+    let (mut clamped, mut below, mut samples) = (0, 0, 0);
+    for i in 0..3000 {
+        let mut t = triangle::<Rgb888>(&mut rng, [2, 6, 12, 40][i % 4]);
+        if i % 2 == 0 {
+            // In range for Rgb565: the loop without the clamp.
+            for v in &mut t.v {
+                v.color = [0, 1, 2].map(|k| v.color[k] % (max[k] + 1));
+            }
+        }
+        let (wide, _) =
+            draw_frame::<Rgb888, NoDepth, Affine, 4, W, H>(&[t], Rgb888::new(0, 0, 0), DepthState::DISABLED);
+        let (narrow, _) =
+            draw_frame::<Rgb565, NoDepth, Affine, 4, W, H>(&[t], Rgb565::new(0, 0, 0), DepthState::DISABLED);
+        for (x, y) in exact_coverage(t.v.map(|v| v.pos), clip, Cull::None).pixels() {
+            let p = y as usize * W + x as usize;
+            let (w, n) = (wide[p].to_channels(), narrow[p].to_channels());
+            for k in 0..3 {
+                assert_eq!(n[k], w[k].min(max[k]), "channel {k} at ({x}, {y}) of {t:?}");
+                clamped += (w[k] > max[k]) as usize;
+                below += (w[k] < max[k]) as usize;
+                samples += 1;
+            }
+        }
+    }
+    // Clamped and unclamped channels both occur, in numbers.
+    assert!(clamped > samples / 10 && below > samples / 10, "{clamped} clamped, {below} below, of {samples}");
+}
