@@ -321,7 +321,9 @@ bench_collect() {
     fw=$(build "$t") # first, while it is still built for its own board (as `check` left it)
     elf=$(MICRORASTER_BOARD=$board build "$t" fw_bench)
     log=$FW_DIR/bench-$t.log
-    MICRORASTER_BOARD=$board MICRORASTER_QEMU_ARGS="-icount shift=0" qemu "$elf" >"$log" || {
+    # In a subshell: `qemu` dies on a failed run, and its output (the
+    # firmware's error line) is still to be shown.
+    (MICRORASTER_BOARD=$board MICRORASTER_QEMU_ARGS="-icount shift=0" qemu "$elf") >"$log" || {
       cat "$log" >&2
       die "the benchmark failed on $t"
     }

@@ -93,10 +93,14 @@ mod firmware {
     fn finish(result: Result<(), microraster::Error>) -> ! {
         let (used, room) = stack::high_water();
         hprintln!("# stack: {} of {} bytes used", used, room);
-        let code = match result {
-            Ok(()) => debug::EXIT_SUCCESS,
-            Err(e) => {
+        let code = match (result, stack::check()) {
+            (Ok(()), Ok(())) => debug::EXIT_SUCCESS,
+            (Err(e), _) => {
                 hprintln!("error: {}", e);
+                debug::EXIT_FAILURE
+            }
+            (Ok(()), Err((used, room))) => {
+                hprintln!("error: stack {} of {} bytes used, less than {} to spare", used, room, stack::MARGIN);
                 debug::EXIT_FAILURE
             }
         };

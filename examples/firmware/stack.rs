@@ -5,6 +5,13 @@
 
 const PAINT: u32 = 0x5AA5_C33C;
 
+/// Bytes of stack room that must stay unused. A frame that comes closer to
+/// the statics fails its firmware run: past them it would have overwritten
+/// them silently (on the micro:bit, a corrupted semihosting `RefCell` showed
+/// up as "already borrowed"), and a real application's interrupts need
+/// room below the deepest frame too.
+pub const MARGIN: usize = 512;
+
 unsafe extern "C" {
     /// End of the statics (cortex-m-rt's linker script).
     static __sheap: u32;
@@ -38,4 +45,11 @@ pub fn high_water() -> (usize, usize) {
         p += 4;
     }
     (top - p, top - bottom())
+}
+
+/// `Err((used, room))` when the stack used since the last paint comes within
+/// [`MARGIN`] bytes of the statics.
+pub fn check() -> Result<(), (usize, usize)> {
+    let (used, room) = high_water();
+    if used + MARGIN > room { Err((used, room)) } else { Ok(()) }
 }

@@ -10,7 +10,8 @@
 //! * Target (`target_os = "none"`): for each configuration, one untimed
 //!   preparation (a 2D scene collected into RAM), the stack painted, one
 //!   timed frame into a display that only reads each pixel, the stack
-//!   scanned, then one more frame into a CRC display. Prints
+//!   scanned (the run fails if the frame left less than `stack::MARGIN`
+//!   bytes of room), then one more frame into a CRC display. Prints
 //!   `bench INDEX ticks=T instr=I stack=B crc=C` per configuration and `#`
 //!   notes (the timer's calibration). Timers: Cortex-M4F on QEMU
 //!   `mps2-an386`, SysTick on the 25 MHz core clock, 40 instructions per
@@ -137,6 +138,7 @@ mod firmware {
             black_box(&result);
             let (stack, _) = stack::high_water();
             result?;
+            stack::check().map_err(|(used, room)| Fail::Stack(i, used, room))?;
             let mut crc = Sink::new(W as u32, height, Mode::Crc);
             benches::frame(bench.work, height, BACKGROUND, &mut b, &mut crc)?;
             hprintln!(
@@ -155,6 +157,8 @@ mod firmware {
     enum Fail {
         Render(Error),
         Clock(ClockError),
+        /// Configuration, stack bytes used, bytes of room ([`stack::MARGIN`]).
+        Stack(usize, usize, usize),
     }
 
     impl From<Error> for Fail {
@@ -177,6 +181,13 @@ mod firmware {
                 match e {
                     Fail::Render(e) => hprintln!("error: {}", e),
                     Fail::Clock(e) => hprintln!("error: {}", e),
+                    Fail::Stack(i, used, room) => hprintln!(
+                        "error: configuration {}: stack {} of {} bytes used, less than {} to spare",
+                        i,
+                        used,
+                        room,
+                        stack::MARGIN
+                    ),
                 }
                 debug::EXIT_FAILURE
             }
