@@ -100,7 +100,12 @@ mod firmware {
                 debug::EXIT_FAILURE
             }
             (Ok(()), Err((used, room))) => {
-                hprintln!("error: stack {} of {} bytes used, less than {} to spare", used, room, stack::MARGIN);
+                hprintln!(
+                    "error: stack {} of {} bytes used, less than {} to spare",
+                    used,
+                    room,
+                    stack::MARGIN
+                );
                 debug::EXIT_FAILURE
             }
         };
