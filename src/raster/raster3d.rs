@@ -20,7 +20,7 @@
 //! | depth, up to 16 bits | 1 (`u32`) | shift, compare, store |
 //! | depth, 24 or 32 bits | 1 (`i64`) | clamp, shift, compare, store |
 //! | flat colour | 0 | — |
-//! | affine colour | 3 (`i32`) | 3 shifts |
+//! | affine colour | 3 (`i32`) | 3 bit-field extracts (`shade`: 3 shifts and clamps for hand-made channels above the maximum) |
 //! | perspective-correct colour | 4 (`i64`) | 3 `u32` divisions |
 //!
 //! The narrow accumulators give exactly the values of the `i64` planes (see
@@ -46,14 +46,21 @@
 //! value may differ by one unit from the plane's where the exact value is
 //! that close to a rounding tie).
 
-use crate::attr::{COLOR_FRAC, COLOR_HALF, Plane, PlaneFrame, PlaneSetup, channel_clamped, channel_in_range};
+use crate::attr::{Plane, PlaneFrame, PlaneSetup};
 use crate::band::BandView;
-use crate::depth::{DepthFormat, DepthRows, DepthState, DepthTest};
+use crate::depth::{DepthFormat, DepthRows, DepthState};
 use crate::edge::{Cull, Span, SpanRest, TriangleSpans};
 use crate::primitive::{center_rows, reference_pixel};
 use crate::{Interpolate, SubPoint};
 
+mod depth_span;
+mod shade;
 mod tiny;
+
+use depth_span::{DepthRule, DepthSpan, LessWrite};
+pub(crate) use depth_span::{depth_steps, depth_value};
+
+use shade::{Gouraud, ShadeSpan, Shader, channels_in_range};
 
 /// Fixed-point units per depth step in the depth plane.
 pub const DEPTH_FRAC: u32 = 16;
@@ -352,38 +359,6 @@ fn draw_with_test<C, F, Sh, R, const W: usize>(
     }
 }
 
-/// A depth state, known at compile time or not.
-trait DepthRule: Copy {
-    fn test(self) -> DepthTest;
-    fn write(self) -> bool;
-}
-
-impl DepthRule for DepthState {
-    #[inline(always)]
-    fn test(self) -> DepthTest {
-        self.test
-    }
-    #[inline(always)]
-    fn write(self) -> bool {
-        self.write
-    }
-}
-
-/// [`DepthState::LESS_WRITE`] as a type.
-#[derive(Clone, Copy)]
-struct LessWrite;
-
-impl DepthRule for LessWrite {
-    #[inline(always)]
-    fn test(self) -> DepthTest {
-        DepthTest::Less
-    }
-    #[inline(always)]
-    fn write(self) -> bool {
-        true
-    }
-}
-
 /// The fragment loop of [`draw_triangle`], for one way of shading.
 #[inline(always)]
 fn draw_spans<C, F, Sh, D, Rest, const W: usize>(
@@ -438,106 +413,6 @@ fn draw_spans<C, F, Sh, D, Rest, const W: usize>(
     }
 }
 
-/// The depth plane along a span. Formats of at most 16 bits step in `u32`:
-/// a sampled value is within 2^13 units of an exact one in
-/// `[0, MAX·2^DEPTH_FRAC]` (`attr`), so value + ½ step lies in
-/// `[0, 2^32)` and its wrapping `u32` sum is exact and needs no clamp: the
-/// same result as [`depth_value`], which wider formats use on `i64`.
-struct DepthSpan<F> {
-    narrow: (u32, u32),
-    wide: (i64, i64),
-    _f: core::marker::PhantomData<F>,
-}
-
-impl<F: DepthFormat> DepthSpan<F> {
-    const NARROW: bool = F::BITS + DEPTH_FRAC <= 32;
-
-    #[inline(always)]
-    fn new(p: &Plane, x: i32, y: i32) -> Self {
-        let (narrow, wide) = if Self::NARROW {
-            // Only the low 32 bits are used: `at_low32` gives them.
-            ((p.at_low32(x, y).wrapping_add(1 << (DEPTH_FRAC - 1)), p.step_x() as u32), (0, 0))
-        } else {
-            ((0, 0), (p.at(x, y), p.step_x()))
-        };
-        DepthSpan { narrow, wide, _f: core::marker::PhantomData }
-    }
-
-    #[inline(always)]
-    fn value(&self) -> u32 {
-        if Self::NARROW { self.narrow.0 >> DEPTH_FRAC } else { depth_value::<F>(self.wide.0) }
-    }
-
-    #[inline(always)]
-    fn step(&mut self) {
-        if Self::NARROW {
-            self.narrow.0 = self.narrow.0.wrapping_add(self.narrow.1);
-        } else {
-            self.wide.0 = self.wide.0.wrapping_add(self.wide.1);
-        }
-    }
-}
-
-/// A way of colouring a triangle's fragments: per span, a [`ShadeSpan`].
-trait Shader<C> {
-    type Span: ShadeSpan<C>;
-    fn start(&self, x: i32, y: i32) -> Self::Span;
-}
-
-/// Colour along one span, pixel by pixel.
-trait ShadeSpan<C> {
-    fn color(&self) -> C;
-    fn step(&mut self);
-}
-
-/// Flat shading: the colour itself.
-impl<C: Interpolate> Shader<C> for C {
-    type Span = C;
-    #[inline(always)]
-    fn start(&self, _: i32, _: i32) -> C {
-        *self
-    }
-}
-
-impl<C: Interpolate> ShadeSpan<C> for C {
-    #[inline(always)]
-    fn color(&self) -> C {
-        *self
-    }
-    #[inline(always)]
-    fn step(&mut self) {}
-}
-
-/// A depth-plane value rounded to the nearest step of `F`; the clamp only
-/// matters at ± rounding.
-#[inline(always)]
-pub(crate) fn depth_value<F: DepthFormat>(z: i64) -> u32 {
-    ((z.clamp(0, (F::MAX as i64) << DEPTH_FRAC) + (1 << (DEPTH_FRAC - 1))) >> DEPTH_FRAC) as u32
-}
-
-/// `depth / (2^32 − 1) · max · 2^DEPTH_FRAC`: a vertex depth in depth steps
-/// of a format with largest value `max`, so 0 → 0 and `u32::MAX` → `max`
-/// exactly. Division by `2^32 − 1` as the series `y·2^-32·(1 + 2^-32 + 2^-64)`
-/// (shifts and adds only; the truncated terms are below one unit).
-#[inline]
-pub(crate) fn depth_steps(depth: u32, max: u32) -> i64 {
-    if max <= 0xFFFF {
-        // y < 2^64 − 2^48 and y >> 32 < 2^32: the sum fits a u64 and
-        // y >> 64 is 0, so this is the u128 series below without its
-        // (library-called) 128-bit arithmetic.
-        let y = crate::math::divisor::mul_wide_u32(depth, max) << DEPTH_FRAC;
-        return (((y + (y >> 32)) >> 32) + 1).min((max as u64) << DEPTH_FRAC) as i64;
-    }
-    depth_steps_wide(depth, max)
-}
-
-/// [`depth_steps`] in `u128`, for any `max`.
-fn depth_steps_wide(depth: u32, max: u32) -> i64 {
-    let y = (depth as u128 * max as u128) << DEPTH_FRAC;
-    // Rounding up by one unit makes u32::MAX land on max·2^16 exactly.
-    (((y + (y >> 32) + (y >> 64)) >> 32) + 1).min((max as u128) << DEPTH_FRAC) as i64
-}
-
 /// The triangle's `1/w` values scaled by a common power of two so the largest
 /// has `bits` bits (rounding only if a value must shift right): ratios are all
 /// that matter, and the products with interpolated values stay bounded.
@@ -549,176 +424,4 @@ pub(crate) fn normalised_q<const S: u32>(tri: &ScreenTriangle<S>, bits: u32) -> 
         let q = if shift >= 0 { q << shift } else { (q + (1 << (-shift - 1))) >> -shift };
         q.max(1) as i64
     })
-}
-
-/// Whether every vertex channel of `tri` is at most the colour's maximum
-/// (always so for the pipeline's triangles; a hand-made triangle may hold
-/// more, which the pixels clamp).
-#[inline(always)]
-fn channels_in_range<C: Interpolate, const S: u32>(tri: &ScreenTriangle<S>) -> bool {
-    let max = C::CHANNEL_MAX;
-    tri.v.iter().all(|v| v.color[0] <= max[0] && v.color[1] <= max[1] && v.color[2] <= max[2])
-}
-
-/// Gouraud colour set-up for one triangle: per channel a plane of the
-/// colour (affine) or of `c·q`, plus one of `q` (perspective-correct).
-/// Channels the colour type lacks get no plane and stay 0. `CLAMP`: each
-/// pixel's channels are clamped to `0..=max`; without it (affine, vertex
-/// channels in range: [`channels_in_range`]) they are in range already
-/// ([`channel_in_range`]).
-struct Gouraud<C, M, const CLAMP: bool> {
-    planes: [Plane; 4],
-    _m: core::marker::PhantomData<(C, M)>,
-}
-
-/// [`Gouraud`] along a span. Affine: `i32` accumulators (a sampled value is
-/// within 2^13 units of one in `[0, 255·2^20]`, so the wrapping `i32` sum (with the rounding's half step added, below 2^28) is
-/// the exact `i64` one). Perspective-correct: accumulators scaled by 2^32 /
-/// 2^[`DEPTH_FRAC`], so the high word is the whole part the division needs
-/// (sampled `c·q` in `[−1, 2^31)` and `q` in `[0, 2^23]` after flooring),
-/// again exact modulo 2^64.
-struct GouraudSpan<C, M, const CLAMP: bool> {
-    affine: [i32; 3],
-    affine_step: [i32; 3],
-    persp: [i64; 4],
-    persp_step: [i64; 4],
-    _m: core::marker::PhantomData<(C, M)>,
-}
-
-impl<C: Interpolate, M: Interpolation, const CLAMP: bool> Gouraud<C, M, CLAMP> {
-    /// The planes of `tri`, written in place (channels the colour type
-    /// lacks keep theirs).
-    #[inline(always)]
-    fn set_up<const S: u32>(&mut self, tri: &ScreenTriangle<S>, setup: &PlaneSetup) {
-        let max = C::CHANNEL_MAX;
-        let planes = &mut self.planes;
-        if M::PERSPECTIVE {
-            // 23 bits keep c·q within u32 for a channel c ≤ 255.
-            let q = normalised_q(tri, Q_BITS);
-            setup.plane_into(q.map(|q| q << DEPTH_FRAC), &mut planes[3]);
-            for (k, p) in planes.iter_mut().take(3).enumerate() {
-                if max[k] > 0 {
-                    let cq = |i: usize| (tri.v[i].color[k] as i64 * q[i]) << DEPTH_FRAC;
-                    setup.plane_into([cq(0), cq(1), cq(2)], p);
-                }
-            }
-        } else {
-            for (k, p) in planes.iter_mut().take(3).enumerate() {
-                if max[k] > 0 {
-                    setup.plane_into(tri.v.map(|v| (v.color[k] as i64) << COLOR_FRAC), p);
-                }
-            }
-        }
-    }
-}
-
-impl<C: Interpolate, M: Interpolation, const CLAMP: bool> Shader<C> for Gouraud<C, M, CLAMP> {
-    type Span = GouraudSpan<C, M, CLAMP>;
-
-    #[inline(always)]
-    fn start(&self, x: i32, y: i32) -> GouraudSpan<C, M, CLAMP> {
-        let max = C::CHANNEL_MAX;
-        let mut s = GouraudSpan {
-            affine: [0; 3],
-            affine_step: [0; 3],
-            persp: [0; 4],
-            persp_step: [0; 4],
-            _m: core::marker::PhantomData,
-        };
-        for (k, p) in self.planes.iter().enumerate() {
-            if k == 3 && !M::PERSPECTIVE || k < 3 && max[k] == 0 {
-                continue;
-            }
-            let d = p.step_x();
-            if M::PERSPECTIVE {
-                (s.persp[k], s.persp_step[k]) = (p.at(x, y) << (32 - DEPTH_FRAC), d << (32 - DEPTH_FRAC));
-            } else {
-                // The `i32` accumulator keeps the low 32 bits only, with
-                // the rounding's half step added once (`channel_in_range`).
-                (s.affine[k], s.affine_step[k]) =
-                    ((p.at_low32(x, y) as i32).wrapping_add(COLOR_HALF), d as i32);
-            }
-        }
-        s
-    }
-}
-
-impl<C: Interpolate, M: Interpolation, const CLAMP: bool> ShadeSpan<C> for GouraudSpan<C, M, CLAMP> {
-    #[inline(always)]
-    fn color(&self) -> C {
-        let max = C::CHANNEL_MAX;
-        // No array `map` here: it is not always inlined.
-        let channel_of = |k: usize| -> u8 {
-            if max[k] == 0 {
-                0
-            } else if M::PERSPECTIVE {
-                // q ≤ 2^23 and c·q < 2^31 inside the triangle: 32-bit
-                // divisions, which Cortex-M3/M4 do in hardware (the max only
-                // guards rounding).
-                let q = ((self.persp[3] >> 32) as i32).max(1) as u32;
-                let p = ((self.persp[k] >> 32) as i32).max(0) as u32;
-                ((p + q / 2) / q).min(max[k] as u32) as u8
-            } else if CLAMP {
-                channel_clamped(self.affine[k], max[k])
-            } else {
-                channel_in_range(self.affine[k], max[k])
-            }
-        };
-        C::from_channels([channel_of(0), channel_of(1), channel_of(2)])
-    }
-
-    #[inline(always)]
-    fn step(&mut self) {
-        let max = C::CHANNEL_MAX;
-        if M::PERSPECTIVE {
-            for (k, (acc, step)) in self.persp.iter_mut().zip(self.persp_step).enumerate() {
-                if k == 3 || max[k] > 0 {
-                    *acc = acc.wrapping_add(step);
-                }
-            }
-        } else {
-            for ((acc, step), m) in self.affine.iter_mut().zip(self.affine_step).zip(max) {
-                if m > 0 {
-                    *acc = acc.wrapping_add(step);
-                }
-            }
-        }
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// The `u64` form of 16-bit formats equals the `u128` series.
-    #[test]
-    fn narrow_depth_steps_equal_the_wide_series() {
-        let mut seed = 0x0005_DEEC_E66D_u64;
-        for i in 0..300_000u32 {
-            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
-            let (d, m) = ((seed >> 32) as u32, (seed >> 16) as u32 & 0xFFFF);
-            let d = [d, 0, u32::MAX, u32::MAX - 1, 1][(i % 5) as usize];
-            for max in [m, 0xFFFF, 0xFF, 1, 0] {
-                assert_eq!(depth_steps(d, max), depth_steps_wide(d, max), "{d} {max}");
-            }
-        }
-    }
-
-    #[test]
-    fn depth_steps_maps_ends_exactly_and_is_monotonic() {
-        for max in [0xFF, 0xFFFF, 0xFF_FFFF, u32::MAX] {
-            assert_eq!(depth_steps(0, max), 1.min((max as i64) << DEPTH_FRAC));
-            assert_eq!(depth_steps(u32::MAX, max), (max as i64) << DEPTH_FRAC);
-            let mut last = 0;
-            for i in 0..=4096u64 {
-                let d = (i * (u32::MAX as u64) / 4096) as u32;
-                let v = depth_steps(d, max);
-                // Exact value d·max·2^16/(2^32−1), within one unit (plus the +1).
-                let exact = (d as f64) * (max as f64) * 65536.0 / (u32::MAX as f64);
-                assert!((v as f64 - exact).abs() <= 2.0 + exact * 1e-15, "{d} {max}: {v} vs {exact}");
-                assert!(v >= last);
-                last = v;
-            }
-        }
-    }
 }

@@ -1,0 +1,181 @@
+//! Colour along a span of the 3D fragment loop ([`super::draw_triangle`]'s
+//! plane path): flat, or Gouraud from per-triangle planes, affine or
+//! perspective-correct. The loop asks a [`Shader`] for a [`ShadeSpan`] at
+//! each span's start and steps it pixel by pixel.
+//!
+//! # Affine channels without a clamp
+//! A plane through channel values in `0..=max`, sampled at a covered pixel
+//! centre, rounds to a value in `0..=max` ([`channel_in_range`]): a
+//! triangle whose vertex channels are all in range ([`channels_in_range`],
+//! always so for the pipeline's) takes a loop whose channel is one
+//! bit-field extract; a hand-made one with larger channels keeps the
+//! per-pixel clamp ([`channel_clamped`]). The same pixels either way.
+
+use super::{DEPTH_FRAC, Interpolation, Q_BITS, ScreenTriangle, normalised_q};
+use crate::Interpolate;
+use crate::attr::{COLOR_FRAC, COLOR_HALF, Plane, PlaneSetup, channel_clamped, channel_in_range};
+
+/// A way of colouring a triangle's fragments: per span, a [`ShadeSpan`].
+pub(super) trait Shader<C> {
+    type Span: ShadeSpan<C>;
+    fn start(&self, x: i32, y: i32) -> Self::Span;
+}
+
+/// Colour along one span, pixel by pixel.
+pub(super) trait ShadeSpan<C> {
+    fn color(&self) -> C;
+    fn step(&mut self);
+}
+
+/// Flat shading: the colour itself.
+impl<C: Interpolate> Shader<C> for C {
+    type Span = C;
+    #[inline(always)]
+    fn start(&self, _: i32, _: i32) -> C {
+        *self
+    }
+}
+
+impl<C: Interpolate> ShadeSpan<C> for C {
+    #[inline(always)]
+    fn color(&self) -> C {
+        *self
+    }
+    #[inline(always)]
+    fn step(&mut self) {}
+}
+
+/// Whether every vertex channel of `tri` is at most the colour's maximum
+/// (always so for the pipeline's triangles; a hand-made triangle may hold
+/// more, which the pixels clamp).
+#[inline(always)]
+pub(super) fn channels_in_range<C: Interpolate, const S: u32>(tri: &ScreenTriangle<S>) -> bool {
+    let max = C::CHANNEL_MAX;
+    tri.v.iter().all(|v| v.color[0] <= max[0] && v.color[1] <= max[1] && v.color[2] <= max[2])
+}
+
+/// Gouraud colour set-up for one triangle: per channel a plane of the
+/// colour (affine) or of `c·q`, plus one of `q` (perspective-correct).
+/// Channels the colour type lacks get no plane and stay 0. `CLAMP`: each
+/// pixel's channels are clamped to `0..=max`; without it (affine, vertex
+/// channels in range: [`channels_in_range`]) they are in range already
+/// ([`channel_in_range`]).
+pub(super) struct Gouraud<C, M, const CLAMP: bool> {
+    pub(super) planes: [Plane; 4],
+    pub(super) _m: core::marker::PhantomData<(C, M)>,
+}
+
+/// [`Gouraud`] along a span. Affine: `i32` accumulators (a sampled value is
+/// within 2^13 units of one in `[0, 255·2^20]`, so the wrapping `i32` sum (with the rounding's half step added, below 2^28) is
+/// the exact `i64` one). Perspective-correct: accumulators scaled by 2^32 /
+/// 2^[`DEPTH_FRAC`], so the high word is the whole part the division needs
+/// (sampled `c·q` in `[−1, 2^31)` and `q` in `[0, 2^23]` after flooring),
+/// again exact modulo 2^64.
+pub(super) struct GouraudSpan<C, M, const CLAMP: bool> {
+    affine: [i32; 3],
+    affine_step: [i32; 3],
+    persp: [i64; 4],
+    persp_step: [i64; 4],
+    _m: core::marker::PhantomData<(C, M)>,
+}
+
+impl<C: Interpolate, M: Interpolation, const CLAMP: bool> Gouraud<C, M, CLAMP> {
+    /// The planes of `tri`, written in place (channels the colour type
+    /// lacks keep theirs).
+    #[inline(always)]
+    pub(super) fn set_up<const S: u32>(&mut self, tri: &ScreenTriangle<S>, setup: &PlaneSetup) {
+        let max = C::CHANNEL_MAX;
+        let planes = &mut self.planes;
+        if M::PERSPECTIVE {
+            // 23 bits keep c·q within u32 for a channel c ≤ 255.
+            let q = normalised_q(tri, Q_BITS);
+            setup.plane_into(q.map(|q| q << DEPTH_FRAC), &mut planes[3]);
+            for (k, p) in planes.iter_mut().take(3).enumerate() {
+                if max[k] > 0 {
+                    let cq = |i: usize| (tri.v[i].color[k] as i64 * q[i]) << DEPTH_FRAC;
+                    setup.plane_into([cq(0), cq(1), cq(2)], p);
+                }
+            }
+        } else {
+            for (k, p) in planes.iter_mut().take(3).enumerate() {
+                if max[k] > 0 {
+                    setup.plane_into(tri.v.map(|v| (v.color[k] as i64) << COLOR_FRAC), p);
+                }
+            }
+        }
+    }
+}
+
+impl<C: Interpolate, M: Interpolation, const CLAMP: bool> Shader<C> for Gouraud<C, M, CLAMP> {
+    type Span = GouraudSpan<C, M, CLAMP>;
+
+    #[inline(always)]
+    fn start(&self, x: i32, y: i32) -> GouraudSpan<C, M, CLAMP> {
+        let max = C::CHANNEL_MAX;
+        let mut s = GouraudSpan {
+            affine: [0; 3],
+            affine_step: [0; 3],
+            persp: [0; 4],
+            persp_step: [0; 4],
+            _m: core::marker::PhantomData,
+        };
+        for (k, p) in self.planes.iter().enumerate() {
+            if k == 3 && !M::PERSPECTIVE || k < 3 && max[k] == 0 {
+                continue;
+            }
+            let d = p.step_x();
+            if M::PERSPECTIVE {
+                (s.persp[k], s.persp_step[k]) = (p.at(x, y) << (32 - DEPTH_FRAC), d << (32 - DEPTH_FRAC));
+            } else {
+                // The `i32` accumulator keeps the low 32 bits only, with
+                // the rounding's half step added once (`channel_in_range`).
+                (s.affine[k], s.affine_step[k]) =
+                    ((p.at_low32(x, y) as i32).wrapping_add(COLOR_HALF), d as i32);
+            }
+        }
+        s
+    }
+}
+
+impl<C: Interpolate, M: Interpolation, const CLAMP: bool> ShadeSpan<C> for GouraudSpan<C, M, CLAMP> {
+    #[inline(always)]
+    fn color(&self) -> C {
+        let max = C::CHANNEL_MAX;
+        // No array `map` here: it is not always inlined.
+        let channel_of = |k: usize| -> u8 {
+            if max[k] == 0 {
+                0
+            } else if M::PERSPECTIVE {
+                // q ≤ 2^23 and c·q < 2^31 inside the triangle: 32-bit
+                // divisions, which Cortex-M3/M4 do in hardware (the max only
+                // guards rounding).
+                let q = ((self.persp[3] >> 32) as i32).max(1) as u32;
+                let p = ((self.persp[k] >> 32) as i32).max(0) as u32;
+                ((p + q / 2) / q).min(max[k] as u32) as u8
+            } else if CLAMP {
+                channel_clamped(self.affine[k], max[k])
+            } else {
+                channel_in_range(self.affine[k], max[k])
+            }
+        };
+        C::from_channels([channel_of(0), channel_of(1), channel_of(2)])
+    }
+
+    #[inline(always)]
+    fn step(&mut self) {
+        let max = C::CHANNEL_MAX;
+        if M::PERSPECTIVE {
+            for (k, (acc, step)) in self.persp.iter_mut().zip(self.persp_step).enumerate() {
+                if k == 3 || max[k] > 0 {
+                    *acc = acc.wrapping_add(step);
+                }
+            }
+        } else {
+            for ((acc, step), m) in self.affine.iter_mut().zip(self.affine_step).zip(max) {
+                if m > 0 {
+                    *acc = acc.wrapping_add(step);
+                }
+            }
+        }
+    }
+}
