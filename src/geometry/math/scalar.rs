@@ -361,6 +361,7 @@ fn div_round_u64_u32(n: u64, d: u32) -> u64 {
 /// `I16F16::saturating_from_num(v)` of the `fixed` crate (tested), but with
 /// 32-bit integer operations only (the `fixed` crate goes through 128-bit
 /// intermediates, slow on Cortex-M).
+#[inline]
 pub(crate) fn fx_bits_from_f32(v: f32) -> i32 {
     if HARD_FLOAT { fx_bits_from_f32_float(v) } else { fx_bits_from_f32_int(v) }
 }
@@ -393,6 +394,7 @@ fn fx_bits_from_f32_float(v: f32) -> i32 {
 }
 
 /// [`fx_bits_from_f32`] with 32-bit integer operations only.
+#[inline]
 fn fx_bits_from_f32_int(v: f32) -> i32 {
     let bits = v.to_bits();
     let neg = bits >> 31 != 0;
@@ -467,6 +469,7 @@ impl Neg for Fx {
 impl Scalar for Fx {
     const ZERO: Self = Fx(I16F16::ZERO);
     const ONE: Self = Fx(I16F16::ONE);
+    #[inline]
     fn from_f32(v: f32) -> Self {
         Fx::from_bits(fx_bits_from_f32(v))
     }
