@@ -80,7 +80,9 @@ pub struct ScreenVertex<const S: u32> {
     /// `2^30 · n / w` with `n` the near distance); only ratios matter.
     pub inv_w: u32,
     /// Colour channels in the target colour's native depth
-    /// ([`Interpolate::to_channels`]).
+    /// ([`Interpolate::to_channels`]), each at most its
+    /// [`Interpolate::CHANNEL_MAX`]; a larger one is interpolated as given
+    /// and each pixel's channel clamped to the maximum.
     pub color: [u8; 3],
 }
 
