@@ -35,6 +35,7 @@ pub mod dashboard;
 pub mod knot_mesh;
 use microraster::edge::Cull;
 use microraster::math::{Fx, Scalar};
+use microraster::mesh::MAX_MESHLET_VERTICES;
 use microraster::pipeline::{ClusterCache, VertexCache};
 use microraster::raster3d::{Affine, Interpolation, PerspectiveCorrect, ScreenTriangle};
 use microraster::{Band, Error, Primitive, RenderError, Renderer};
@@ -87,6 +88,13 @@ pub enum Work {
     /// [`Work::Vertex3d`] with a vertex cache ([`Scene3d::draw_cached`]:
     /// each vertex transformed, snapped and lit once; `f32` only, Cortex-M4F).
     Vertex3dCached,
+    /// [`Work::Vertex3dCached`] with a cache of 64 vertices, one meshlet
+    /// cluster's ([`ClusterCache`]): the meshes in chunks of their
+    /// triangles, each vertex once per chunk (`f32`, Cortex-M4F).
+    Vertex3dChunked,
+    /// The whole `f32` affine frame of [`Work::Frame3d`] with the vertex
+    /// stage of [`Work::Vertex3dChunked`]: the same bins, so the same frame.
+    Frame3dChunked,
     /// The vertex stage once per band, keeping the band's triangles, nothing
     /// rasterized.
     VertexPerBand3d(Vertex),
@@ -184,6 +192,8 @@ pub const M4F: &[Bench] = &[
     bench("scene3d", Work::Vertex3d(F32)),
     bench("scene3d", Work::Vertex3d(Fix)),
     bench("scene3d", Work::Vertex3dCached),
+    bench("scene3d", Work::Vertex3dChunked),
+    bench("scene3d", Work::Frame3dChunked),
     bench("knot20k", Work::Meshlets(F32, Aff)),
     bench("knot20k", Work::Meshlets(F32, Persp)),
     bench("knot20k", Work::Meshlets(Fix, Aff)),
@@ -242,6 +252,8 @@ impl Work {
             Work::Vertex3d(F32) => "f32 vertex stage only",
             Work::Vertex3d(Fix) => "Fx vertex stage only",
             Work::Vertex3dCached => "f32 vertex stage only, vertex cache",
+            Work::Vertex3dChunked => "f32 vertex stage only, 64-vertex cache (chunks)",
+            Work::Frame3dChunked => "f32, affine, 64-vertex cache (chunks)",
             Work::VertexPerBand3d(F32) => "f32 vertex stage only, per band",
             Work::VertexPerBand3d(Fix) => "Fx vertex stage only, per band",
             Work::Frame3d(F32, Persp) => "f32, persp.-correct",
@@ -288,6 +300,8 @@ impl Work {
             Work::Frame2d(_) => "BAND,PRIMS",
             Work::Vertex3d(_) | Work::VertexPerBand3d(_) => "BINS",
             Work::Vertex3dCached => "BINS,CACHE",
+            Work::Vertex3dChunked => "BINS,CLUSTER",
+            Work::Frame3dChunked => "BAND,DEPTH,BINS,CLUSTER",
             Work::Frame3d(..) | Work::PerBand3d(..) => "BAND,DEPTH,BINS",
             Work::Meshlets(F32, _) | Work::KnotStage(F32, _) => "BAND,DEPTH,CLUSTER",
             Work::Meshlets(Fix, _) | Work::KnotStage(Fix, _) => "BAND,DEPTH,CLUSTER_FX",
@@ -317,7 +331,11 @@ impl Work {
     pub fn draws(&self) -> bool {
         !matches!(
             self,
-            Work::Vertex3d(_) | Work::Vertex3dCached | Work::VertexPerBand3d(_) | Work::KnotStage(..)
+            Work::Vertex3d(_)
+                | Work::Vertex3dCached
+                | Work::Vertex3dChunked
+                | Work::VertexPerBand3d(_)
+                | Work::KnotStage(..)
         ) && !self.counts_only()
     }
 }
@@ -440,6 +458,25 @@ fn frame_other<const W: usize, const H: usize, const N: usize, const P: usize>(
                 Scene3d.draw_cached::<f32, Rgb565, S, CACHE_VERTICES, N>(&pipeline, ANGLE, cache, b.bins)?,
             );
             Ok(())
+        }
+        Work::Vertex3dChunked => {
+            let (cache, _) = b.cluster.as_mut().ok_or(Error::BufferTooSmall)?;
+            let pipeline = Scene3d::pipeline::<f32, S>(W as u32, height)?;
+            b.bins.clear();
+            black_box(
+                Scene3d.draw_cached::<f32, Rgb565, S, MAX_MESHLET_VERTICES, N>(
+                    &pipeline, ANGLE, cache, b.bins,
+                )?,
+            );
+            Ok(())
+        }
+        Work::Frame3dChunked => {
+            let (cache, _) = b.cluster.as_mut().ok_or(Error::BufferTooSmall)?;
+            let pipeline = Scene3d::pipeline::<f32, S>(W as u32, height)?;
+            b.bins.clear();
+            Scene3d
+                .draw_cached::<f32, Rgb565, S, MAX_MESHLET_VERTICES, N>(&pipeline, ANGLE, cache, b.bins)?;
+            r.render(Triangles3d::new(b.bins, b.depth, DEPTH_STATE, Affine), b.band, sink).map_err(input)
         }
         Work::VertexPerBand3d(F32) => vertex3d_per_band::<f32, W, H, N>(height, b.bins, |_, _| ()),
         Work::VertexPerBand3d(Fix) => vertex3d_per_band::<Fx, W, H, N>(height, b.bins, |_, _| ()),
@@ -696,7 +733,7 @@ pub fn primitives<const W: usize, const H: usize, const N: usize, const P: usize
         #[cfg(not(any(not(target_os = "none"), target_abi = "eabihf")))]
         Work::Meshlets(..) | Work::KnotStage(..) => Err(Error::InvalidParameter),
         Work::Frame2d(scene) | Work::Streamed2d(scene) => count_2d(scene),
-        Work::Vertex3dCached => count_3d(F32),
+        Work::Vertex3dCached | Work::Vertex3dChunked | Work::Frame3dChunked => count_3d(F32),
         Work::Vertex3d(t) | Work::VertexPerBand3d(t) | Work::Frame3d(t, _) | Work::PerBand3d(t, _) => {
             count_3d(t)
         }

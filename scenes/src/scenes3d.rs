@@ -195,9 +195,10 @@ const fn max3(a: usize, b: usize, c: usize) -> usize {
 
 impl Scene3d {
     /// [`Scene3d::draw`] with a vertex cache (each vertex transformed, snapped
-    /// and lit once: [`Pipeline::draw_valid_mesh_cached`]); the same
-    /// triangles. `V` must be at least [`CACHE_VERTICES`] (checked at
-    /// compile time).
+    /// and lit once per mesh, or once per chunk of the mesh's triangles
+    /// where `V` is below [`CACHE_VERTICES`]:
+    /// [`Pipeline::draw_valid_mesh_cached`]); the same triangles. `V` must
+    /// be at least 3 (checked at compile time).
     pub fn draw_cached<T: Scalar, C: Interpolate, const S: u32, const V: usize, const N: usize>(
         &self,
         pipeline: &Pipeline<T, S>,
@@ -205,7 +206,7 @@ impl Scene3d {
         cache: &mut VertexCache<T, S, V>,
         bins: &mut heapless::Vec<ScreenTriangle<S>, N>,
     ) -> Result<Stats, Error> {
-        const { assert!(V >= CACHE_VERTICES, "the vertex cache must hold CACHE_VERTICES") };
+        const { assert!(V >= 3, "the vertex cache must hold a triangle") };
         let mut total = Stats::default();
         for (mesh, (model, c)) in VALID.iter().zip(Self::models::<T, C>(angle)) {
             let s = pipeline.draw_valid_mesh_cached(mesh, &model, c, cache, bins)?;
@@ -239,8 +240,10 @@ mod tests {
         const { assert!(TRIANGLES >= 1000) };
     }
 
-    fn cached_equals_uncached<T: Scalar>() {
-        let mut cache = std::boxed::Box::new(VertexCache::<T, 4, CACHE_VERTICES>::new());
+    /// The scene through a cache of `V` vertices (the whole of each mesh,
+    /// or chunks of them) equals the uncached scene; the triangles compared.
+    fn cache_of<T: Scalar, const V: usize>() -> usize {
+        let mut cache = std::boxed::Box::new(VertexCache::<T, 4, V>::new());
         let (mut a, mut b) = (heapless::Vec::<_, BINS>::new(), heapless::Vec::<_, BINS>::new());
         let mut n = 0;
         for shade in [Shade::Gouraud, Shade::Flat] {
@@ -253,15 +256,28 @@ mod tests {
                     a.clear();
                     b.clear();
                     let sa = Scene3d.draw::<T, Rgb565, 4, BINS>(&p, angle, &mut a).unwrap();
-                    let sb = Scene3d
-                        .draw_cached::<T, Rgb565, 4, CACHE_VERTICES, BINS>(&p, angle, &mut cache, &mut b);
-                    assert_eq!(Ok(sa), sb, "{shade:?} {rows:?} {angle}");
-                    assert!(a == b, "{shade:?} {rows:?} {angle}: {} vs {} triangles", a.len(), b.len());
+                    let sb = Scene3d.draw_cached::<T, Rgb565, 4, V, BINS>(&p, angle, &mut cache, &mut b);
+                    assert_eq!(Ok(sa), sb, "{V}: {shade:?} {rows:?} {angle}");
+                    assert!(a == b, "{V}: {shade:?} {rows:?} {angle}: {} vs {} triangles", a.len(), b.len());
                     n += a.len();
                 }
             }
         }
-        assert!(n > 10_000, "{n}");
+        n
+    }
+
+    fn cached_equals_uncached<T: Scalar>() {
+        // The whole mesh, chunks of 64 (a `ClusterCache`), of 7, of one triangle.
+        for (v, n) in [
+            (CACHE_VERTICES, cache_of::<T, CACHE_VERTICES>()),
+            (64, cache_of::<T, 64>()),
+            (7, cache_of::<T, 7>()),
+            (3, cache_of::<T, 3>()),
+        ] {
+            assert!(n > 10_000, "{v}: {n}");
+        }
+        let mut cache = std::boxed::Box::new(VertexCache::<T, 4, CACHE_VERTICES>::new());
+        let (mut a, mut b) = (heapless::Vec::<_, BINS>::new(), heapless::Vec::<_, BINS>::new());
         // A mesh without normals (face normals, per triangle) and a cache too small.
         let sphere = Scene3d.meshes()[0];
         let bare = ValidMesh::new(Mesh { normals: &[], ..sphere }).unwrap();
@@ -273,9 +289,14 @@ mod tests {
         let sb = p.draw_valid_mesh_cached(&bare, &model, Rgb565::new(31, 20, 5), &mut cache, &mut b).unwrap();
         assert!(sa == sb && a == b, "no normals: {sa:?} vs {sb:?}");
         assert!(sa.emitted > 100);
+        // Chunks of a mesh with face normals; a cache below one triangle.
         let mut small = VertexCache::<T, 4, 100>::new();
-        let r = p.draw_valid_mesh_cached(&bare, &model, Rgb565::new(31, 20, 5), &mut small, &mut b);
-        assert_eq!(r, Err(Error::CapacityExceeded { needed: sphere.positions.len(), capacity: 100 }));
+        b.clear();
+        let sc = p.draw_valid_mesh_cached(&bare, &model, Rgb565::new(31, 20, 5), &mut small, &mut b).unwrap();
+        assert!(sa == sc && a == b, "no normals, chunks: {sa:?} vs {sc:?}");
+        let mut tiny = VertexCache::<T, 4, 2>::new();
+        let r = p.draw_valid_mesh_cached(&bare, &model, Rgb565::new(31, 20, 5), &mut tiny, &mut b);
+        assert_eq!(r, Err(Error::CapacityExceeded { needed: 3, capacity: 2 }));
     }
 
     #[test]

@@ -16,6 +16,7 @@
 
 mod bins;
 mod cache;
+mod chunked;
 mod cluster;
 mod eager;
 mod inside;
@@ -323,9 +324,16 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     /// is transformed, classified, snapped and lit at most once instead of
     /// once per triangle corner (about six times). Bit-identical output.
     ///
+    /// A cache with fewer entries than the mesh has vertices works too: the
+    /// triangles are then taken in their order in chunks of at most
+    /// `min(V, 64)` vertices, and a vertex is computed once per chunk that
+    /// uses it. The same output again, with RAM that does not grow with
+    /// the mesh (a 64-entry cache is 3,072 bytes for `f32` and
+    /// [`Fx`](crate::math::Fx); [`ClusterCache`] is one).
+    ///
     /// Errors: those of [`Pipeline::draw_valid_mesh`], and first
-    /// [`Error::CapacityExceeded`] with `needed` the mesh's vertex count if
-    /// it has more than `V` vertices (nothing done).
+    /// [`Error::CapacityExceeded`] with `needed` 3 if `V < 3` and the mesh
+    /// has more than `V` vertices (nothing done).
     pub fn draw_valid_mesh_cached<C: Interpolate, const V: usize, const N: usize>(
         &self,
         mesh: &ValidMesh<'_>,
@@ -335,8 +343,9 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         bins: &mut heapless::Vec<ScreenTriangle<S>, N>,
     ) -> Result<MeshStats, Error> {
         let mesh = mesh.mesh();
-        if mesh.vertex_count() > V {
-            return Err(Error::CapacityExceeded { needed: mesh.vertex_count(), capacity: V });
+        let whole = mesh.vertex_count() <= V;
+        if !whole && V < 3 {
+            return Err(Error::CapacityExceeded { needed: 3, capacity: V });
         }
         let mut bins = bins::BinWriter::new(bins);
         let mut run = || {
@@ -344,9 +353,16 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
             let Some(setup) = self.mesh_setup(mesh, model, color, &mut stats)? else {
                 return Ok(stats);
             };
+            let inside = inside::InsideView::new(&setup.ctx.mvp, setup.planes).contains(mesh.bounding_sphere);
+            if !whole {
+                self.draw_chunked(&setup, mesh, &mut cache.v, inside, &mut stats, |tri| {
+                    bins.push(tri);
+                    Ok(())
+                })?;
+                return Ok(stats);
+            }
             let cache = &mut cache.v[..mesh.vertex_count()];
             let triangles = mesh.indices.iter().map(|t| t.map(usize::from));
-            let inside = inside::InsideView::new(&setup.ctx.mvp, setup.planes).contains(mesh.bounding_sphere);
             let cached = cache::Slots { slots: cache, inside };
             self.draw_cached(&setup, mesh, &Uniform, cached, triangles, &mut stats, |tri, _| {
                 bins.push(tri);

@@ -82,12 +82,17 @@ fn every_path<T: Scalar>() {
         pipeline.draw_mesh_varying(&mesh, &model, RED, |v| [i32::from(v.index)], b).map(|s| s.emitted)
     });
 
-    // A vertex cache one short: the mesh's vertex count, bins untouched.
+    // A vertex cache one short: chunks, the same bins as every path.
     let mut small = Box::new(VertexCache::<T, 4, 41>::new());
+    check_bins("draw_valid_mesh_cached in chunks", emitted, filler, |b| {
+        pipeline.draw_valid_mesh_cached(&mesh, &model, RED, &mut small, b).map(|s| s.emitted)
+    });
+    // A cache below one triangle: needs 3, bins untouched.
+    let mut two = Box::new(VertexCache::<T, 4, 2>::new());
     let mut bins = heapless::Vec::<ScreenTriangle<4>, CAP>::new();
     bins.push(filler).unwrap();
-    let r = pipeline.draw_valid_mesh_cached(&mesh, &model, RED, &mut small, &mut bins);
-    assert_eq!(r, Err(Error::CapacityExceeded { needed: mesh.mesh().vertex_count(), capacity: 41 }));
+    let r = pipeline.draw_valid_mesh_cached(&mesh, &model, RED, &mut two, &mut bins);
+    assert_eq!(r, Err(Error::CapacityExceeded { needed: 3, capacity: 2 }));
     assert_eq!(bins.as_slice(), &[filler]);
 }
 

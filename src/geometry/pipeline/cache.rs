@@ -7,7 +7,9 @@
 //! triangle survives back-face culling.
 //!
 //! [`Pipeline::draw_valid_mesh_cached`] runs it over a whole mesh into the
-//! frame's bins, [`Pipeline::draw_meshlets`](super::Pipeline::draw_meshlets)
+//! frame's bins (or over chunks of its triangles, [`super::chunked`], when
+//! the cache is smaller than the mesh),
+//! [`Pipeline::draw_meshlets`](super::Pipeline::draw_meshlets)
 //! over each surviving meshlet straight into a band. Both give the triangles
 //! of [`Pipeline::draw_valid_mesh`], bit for bit, in the same order.
 
@@ -21,7 +23,8 @@ use crate::raster3d::{ScreenTriangle, ScreenVertex};
 
 /// Caller-owned storage for [`Pipeline::draw_valid_mesh_cached`]: the
 /// per-vertex results of one mesh of up to `V` vertices (reused mesh after
-/// mesh). Size: `V ×` about 50 bytes for `f32` and [`Fx`](crate::math::Fx)
+/// mesh); a larger mesh is drawn in chunks of up to `min(V, 64)` vertices.
+/// Size: `V ×` about 50 bytes for `f32` and [`Fx`](crate::math::Fx)
 /// (clip position, snapped screen vertex, pre-snap quotients, state),
 /// `size_of` tells exactly.
 ///

@@ -38,10 +38,11 @@ use crate::{Error, Interpolate};
 /// ([`Error::CapacityExceeded`] cannot come from it).
 pub type ClusterCache<T, const S: u32> = VertexCache<T, S, MAX_MESHLET_VERTICES>;
 
-/// A cluster's vertices: local slot → the mesh's arrays.
-struct ClusterSource<'a> {
-    mesh: &'a Mesh<'a>,
-    vertices: &'a [u16],
+/// A cluster's vertices: local slot → the mesh's arrays (also a chunk's,
+/// [`super::chunked`]).
+pub(super) struct ClusterSource<'a> {
+    pub(super) mesh: &'a Mesh<'a>,
+    pub(super) vertices: &'a [u16],
 }
 
 impl VertexSource for ClusterSource<'_> {

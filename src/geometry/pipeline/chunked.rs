@@ -1,0 +1,135 @@
+//! The cached vertex path with a cache smaller than the mesh: the mesh's
+//! triangles are taken in their own order, in chunks whose vertices fit the
+//! cache, each chunk through [`Pipeline::draw_cached`] with its vertices in
+//! local slots. RAM is the cache the caller gives, whatever the mesh's size.
+//!
+//! # Same triangles, same order
+//! A vertex's transformed, snapped and lit values depend on the vertex
+//! alone, not on the triangle or the slot it is cached in (which is why the
+//! whole-mesh cache gives [`Pipeline::draw_valid_mesh`]'s triangles). The
+//! chunks keep the index order, so the bins receive the same triangles in
+//! the same order as with a cache for every vertex; a vertex shared by two
+//! chunks is computed once in each.
+//!
+//! # Slots
+//! A chunk grows triangle by triangle while its new vertices fit
+//! [`CHUNK_SLOTS`] (or the cache, if smaller). Its mesh vertices map to
+//! local slots through a table of [`BUCKETS`] entries with linear probing,
+//! at most half full, so a lookup ends after a few probes; the table and
+//! the slot list live on the stack (about 400 bytes).
+
+use super::cache::{Cached, Slots};
+use super::cluster::ClusterSource;
+use super::{MeshSetup, MeshStats, Pipeline, Uniform};
+use crate::Error;
+use crate::math::Scalar;
+use crate::mesh::Mesh;
+use crate::raster3d::ScreenTriangle;
+
+/// Most vertices of one chunk.
+pub(super) const CHUNK_SLOTS: usize = 64;
+
+/// Entries of the vertex → slot table: twice [`CHUNK_SLOTS`], a power of two.
+const BUCKETS: usize = 2 * CHUNK_SLOTS;
+
+const _: () = assert!(BUCKETS.is_power_of_two() && CHUNK_SLOTS < 256 && BUCKETS >= 2 * CHUNK_SLOTS);
+
+/// Mesh vertex → local slot of the chunk being built or drawn.
+struct SlotTable {
+    /// Slot + 1 per bucket, 0 for an empty bucket.
+    bucket: [u8; BUCKETS],
+    /// The mesh vertex of each slot.
+    vertex: [u16; CHUNK_SLOTS],
+    /// Slots in use.
+    len: usize,
+}
+
+impl SlotTable {
+    fn new() -> Self {
+        SlotTable { bucket: [0; BUCKETS], vertex: [0; CHUNK_SLOTS], len: 0 }
+    }
+
+    fn clear(&mut self) {
+        self.bucket = [0; BUCKETS];
+        self.len = 0;
+    }
+
+    /// The bucket holding `v`, or the empty one where it would go: the
+    /// table is never full (at most [`CHUNK_SLOTS`] of [`BUCKETS`] used),
+    /// so the probe ends.
+    #[inline]
+    fn find(&self, v: u16) -> usize {
+        let mut h = usize::from(v) & (BUCKETS - 1);
+        loop {
+            match self.bucket[h] {
+                0 => return h,
+                s if self.vertex[usize::from(s - 1)] == v => return h,
+                _ => h = (h + 1) & (BUCKETS - 1),
+            }
+        }
+    }
+
+    /// The slot of `v`, which the chunk holds.
+    #[inline]
+    fn slot(&self, v: u16) -> usize {
+        usize::from(self.bucket[self.find(v)]).wrapping_sub(1)
+    }
+
+    /// Adds the vertices of `t` not yet held if, with them, at most `cap`
+    /// slots are used; else changes nothing and returns false.
+    fn add(&mut self, t: [u16; 3], cap: usize) -> bool {
+        let mut added = [usize::MAX; 3];
+        for (k, &v) in t.iter().enumerate() {
+            let h = self.find(v);
+            if self.bucket[h] != 0 {
+                continue;
+            }
+            if self.len == cap {
+                // Undo this triangle's additions (in reverse: probes stay valid).
+                for &b in added[..k].iter().rev().filter(|&&b| b != usize::MAX) {
+                    self.bucket[b] = 0;
+                    self.len -= 1;
+                }
+                return false;
+            }
+            self.vertex[self.len] = v;
+            self.len += 1;
+            self.bucket[h] = self.len as u8;
+            added[k] = h;
+        }
+        true
+    }
+}
+
+impl<T: Scalar, const S: u32> Pipeline<T, S> {
+    /// [`Pipeline::draw_cached`] over the whole of `mesh` with `cache`
+    /// smaller than its vertex count, chunk by chunk (module docs); every
+    /// triangle goes to `sink` in the mesh's order. `cache` has at least
+    /// three entries.
+    pub(super) fn draw_chunked(
+        &self,
+        setup: &MeshSetup<T>,
+        mesh: &Mesh<'_>,
+        cache: &mut [Cached<T, S>],
+        inside: bool,
+        stats: &mut MeshStats,
+        mut sink: impl FnMut(ScreenTriangle<S>) -> Result<(), Error>,
+    ) -> Result<(), Error> {
+        let cap = cache.len().min(CHUNK_SLOTS);
+        let mut table = SlotTable::new();
+        let mut rest = mesh.indices;
+        while !rest.is_empty() {
+            table.clear();
+            // A triangle has at most three new vertices and cap ≥ 3: every
+            // chunk takes at least one triangle.
+            let n = rest.iter().take_while(|&&t| table.add(t, cap)).count();
+            let (chunk, after) = rest.split_at(n);
+            rest = after;
+            let src = ClusterSource { mesh, vertices: &table.vertex[..table.len] };
+            let triangles = chunk.iter().map(|t| t.map(|v| table.slot(v)));
+            let slots = Slots { slots: &mut cache[..table.len], inside };
+            self.draw_cached(setup, &src, &Uniform, slots, triangles, stats, |tri, _| sink(tri))?;
+        }
+        Ok(())
+    }
+}
