@@ -22,7 +22,8 @@ use fixed::types::I16F16;
 use microraster::depth::{Depth8, Depth16, Depth24, Depth32, DepthBand, DepthFormat, DepthState};
 use microraster::edge::Cull;
 use microraster::math::{Fx, Scalar, transform};
-use microraster::pipeline::{ClusterCache, Pipeline};
+use microraster::mesh::MAX_MESHLET_VERTICES;
+use microraster::pipeline::{ClusterCache, MeshStats, Pipeline};
 use microraster::raster3d::{Affine, Interpolation, PerspectiveCorrect, ScreenTriangle};
 use microraster::render::{Direct3d, Triangles3d};
 use microraster::{Band, Error, Primitive, RenderError, Renderer, SubPoint, Triangle, blit::TargetBlitter};
@@ -114,6 +115,7 @@ pub const LIST: &[Config] = &[
     config!("mesh3d/f32/D16/persp/band32/S4", mesh3d::<f32, Depth16, P, 4, 32>),
     config!("mesh3d/f32/D16/persp/band240/S4", mesh3d::<f32, Depth16, P, 4, H>),
     config!("mesh3d/f32/D16/affine/band16/S4", mesh3d::<f32, Depth16, Affine, 4, 16>),
+    config!("mesh3d/f32/D16/persp/band16/S4/cache64", mesh3d_cache64::<f32, Depth16, P, 4, 16>),
     config!("mesh3d/Fx/D16/persp/band16/S4", mesh3d::<Fx, Depth16, P, 4, 16>),
     config!("mesh3d/Fx/D16/affine/band16/S4", mesh3d::<Fx, Depth16, Affine, 4, 16>),
     config!("mesh3d/vertex/f32", vertex3d::<f32>),
@@ -214,12 +216,36 @@ fn mesh3d<T: Scalar, F: DepthFormat, M: Interpolation, const S: u32, const BH: u
     m: &mut dyn Meter,
     fb: &mut FrameBuffer,
 ) -> Result<(), Error> {
+    mesh3d_with::<T, F, M, S, BH>(m, fb, |p, bins| Scene3d.draw::<T, Rgb565, S, BINS>(p, ANGLE, bins))
+}
+
+/// [`mesh3d`] with a vertex cache of 64 entries ([`ClusterCache`], 3,072
+/// bytes): each mesh in chunks of its triangles, the same bins.
+fn mesh3d_cache64<T: Scalar, F: DepthFormat, M: Interpolation, const S: u32, const BH: usize>(
+    m: &mut dyn Meter,
+    fb: &mut FrameBuffer,
+) -> Result<(), Error> {
+    let mut cache = ClusterCache::<T, S>::new();
+    mesh3d_with::<T, F, M, S, BH>(m, fb, |p, bins| {
+        Scene3d.draw_cached::<T, Rgb565, S, MAX_MESHLET_VERTICES, BINS>(p, ANGLE, &mut cache, bins)
+    })
+}
+
+/// [`mesh3d`] with the vertex stage `vertex`.
+fn mesh3d_with<T: Scalar, F: DepthFormat, M: Interpolation, const S: u32, const BH: usize>(
+    m: &mut dyn Meter,
+    fb: &mut FrameBuffer,
+    mut vertex: impl FnMut(
+        &Pipeline<T, S>,
+        &mut heapless::Vec<ScreenTriangle<S>, BINS>,
+    ) -> Result<MeshStats, Error>,
+) -> Result<(), Error> {
     let pipeline = Scene3d::pipeline::<T, S>(W as u32, H as u32)?;
     let mut bins = heapless::Vec::<ScreenTriangle<S>, BINS>::new();
     let mut band = Band::<Rgb565, W, BH>::new(BG);
     let mut depth = DepthBand::<F, W, BH>::zeroed();
     m.start();
-    let r = Scene3d.draw::<T, Rgb565, S, BINS>(&pipeline, ANGLE, &mut bins).and_then(|_| {
+    let r = vertex(&pipeline, &mut bins).and_then(|_| {
         Renderer::new(H as u32, BG)
             .render(Triangles3d::new(&bins, &mut depth, DepthState::LESS_WRITE, M::default()), &mut band, fb)
             .map_err(input)

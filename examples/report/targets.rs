@@ -90,14 +90,19 @@ pub fn section(
         verdict(fill_band >= 0.5)
     );
     let m4 = counts.get("m4f", "mesh3d/f32/D16/persp/band16/S4");
+    // The same frame with a 64-entry vertex cache (chunks): the verdict
+    // takes the better of the two.
+    let m4c = counts.get("m4f", "mesh3d/f32/D16/persp/band16/S4/cache64");
+    let best4 = m4.into_iter().chain(m4c).min();
     let _ = writeln!(
         t,
         "| scene 4 on Cortex-M4F, 16-row bands: ≤ 3 M instructions per frame | {} | {} |",
         m4.map_or("pending (`bash scripts/firmware.sh sweep`)".into(), |n| {
             let v = counts.get("m4f", "mesh3d/vertex/f32").map_or("?".into(), |v| v.to_string());
-            format!("{n} (vertex stage alone: {v})")
+            let c = m4c.map_or("pending".into(), |c| c.to_string());
+            format!("{n} (vertex stage alone: {v}); {c} with a 64-entry vertex cache (3,072 B, same frame)")
         }),
-        m4.map_or("pending", |n| if n <= SCENE_BUDGET { "**met**" } else { "**missed**" })
+        best4.map_or("pending", |n| if n <= SCENE_BUDGET { "**met**" } else { "**missed**" })
     );
     let (f0, x0) = (counts.get("m0", "mesh3d/vertex/f32"), counts.get("m0", "mesh3d/vertex/Fx"));
     let _ = writeln!(
@@ -127,13 +132,15 @@ pub fn section(
          (about one slice fill each), so the whole frame reaches {:.0}% of the ceiling while drawing alone reaches \
          {:.0}%. Scene 4 on the Cortex-M4F: {frame4:.2} M instructions, {vertex4:.2} M of them the vertex stage \
          (1,116 triangles, every vertex transformed once per corner; `Pipeline::draw_valid_mesh_cached` transforms \
-         each vertex once, see the firmware table in the README) and {:.2} M rasterization, {:.0} instructions \
+         each vertex once, or once per chunk of triangles with a cache smaller than the mesh: {:.2} M for the \
+         frame with 64 entries) and {:.2} M rasterization, {:.0} instructions \
          per fragment ({} fragments) including the plane set-up per triangle and band. \
          Cortex-M0: the Fx vertex path needs {:.2} M instructions against soft float's {:.2} M: its 64-bit \
          intermediate products and divisions (perspective divide, normalisation, lighting) cost library calls \
          on a core without a 64-bit multiplier or a divider.\n",
         fill_band * 100.0,
         fill_spans * 100.0,
+        cm("m4f", "mesh3d/f32/D16/persp/band16/S4/cache64"),
         frame4 - vertex4,
         (frame4 - vertex4) * 1e6 / frags4 as f64,
         frags4,
