@@ -93,7 +93,7 @@ mod firmware {
     fn finish(result: Result<(), microraster::Error>) -> ! {
         let (used, room) = stack::high_water();
         hprintln!("# stack: {} of {} bytes used", used, room);
-        let code = match (result, stack::check()) {
+        let code = match (result, stack::check((used, room))) {
             (Ok(()), Ok(())) => debug::EXIT_SUCCESS,
             (Err(e), _) => {
                 hprintln!("error: {}", e);

@@ -47,9 +47,8 @@ pub fn high_water() -> (usize, usize) {
     (top - p, top - bottom())
 }
 
-/// `Err((used, room))` when the stack used since the last paint comes within
-/// [`MARGIN`] bytes of the statics.
-pub fn check() -> Result<(), (usize, usize)> {
-    let (used, room) = high_water();
+/// `Err((used, room))` when `used` bytes of stack ([`high_water`]) come
+/// within [`MARGIN`] bytes of the statics.
+pub fn check((used, room): (usize, usize)) -> Result<(), (usize, usize)> {
     if used + MARGIN > room { Err((used, room)) } else { Ok(()) }
 }

@@ -36,7 +36,7 @@ pub mod knot_mesh;
 use microraster::edge::Cull;
 use microraster::math::{Fx, Scalar};
 use microraster::mesh::MAX_MESHLET_VERTICES;
-use microraster::pipeline::{ClusterCache, VertexCache};
+use microraster::pipeline::{ClusterCache, MeshStats, VertexCache};
 use microraster::raster3d::{Affine, Interpolation, PerspectiveCorrect, ScreenTriangle};
 use microraster::{Band, Error, Primitive, RenderError, Renderer};
 use microraster_scenes::scenes;
@@ -452,30 +452,17 @@ fn frame_other<const W: usize, const H: usize, const N: usize, const P: usize>(
         Work::Vertex3d(Fix) => vertex3d::<Fx, W, N>(height, b.bins),
         Work::Vertex3dCached => {
             let cache = b.cache.as_deref_mut().ok_or(Error::BufferTooSmall)?;
-            let pipeline = Scene3d::pipeline::<f32, S>(W as u32, height)?;
-            b.bins.clear();
-            black_box(
-                Scene3d.draw_cached::<f32, Rgb565, S, CACHE_VERTICES, N>(&pipeline, ANGLE, cache, b.bins)?,
-            );
+            black_box(cached_vertex_stage::<CACHE_VERTICES, W, N>(height, cache, b.bins)?);
             Ok(())
         }
         Work::Vertex3dChunked => {
             let (cache, _) = b.cluster.as_mut().ok_or(Error::BufferTooSmall)?;
-            let pipeline = Scene3d::pipeline::<f32, S>(W as u32, height)?;
-            b.bins.clear();
-            black_box(
-                Scene3d.draw_cached::<f32, Rgb565, S, MAX_MESHLET_VERTICES, N>(
-                    &pipeline, ANGLE, cache, b.bins,
-                )?,
-            );
+            black_box(cached_vertex_stage::<MAX_MESHLET_VERTICES, W, N>(height, cache, b.bins)?);
             Ok(())
         }
         Work::Frame3dChunked => {
             let (cache, _) = b.cluster.as_mut().ok_or(Error::BufferTooSmall)?;
-            let pipeline = Scene3d::pipeline::<f32, S>(W as u32, height)?;
-            b.bins.clear();
-            Scene3d
-                .draw_cached::<f32, Rgb565, S, MAX_MESHLET_VERTICES, N>(&pipeline, ANGLE, cache, b.bins)?;
+            cached_vertex_stage::<MAX_MESHLET_VERTICES, W, N>(height, cache, b.bins)?;
             r.render(Triangles3d::new(b.bins, b.depth, DEPTH_STATE, Affine), b.band, sink).map_err(input)
         }
         Work::VertexPerBand3d(F32) => vertex3d_per_band::<f32, W, H, N>(height, b.bins, |_, _| ()),
@@ -669,6 +656,18 @@ fn vertex3d_per_band<T: Scalar, const W: usize, const H: usize, const N: usize>(
         y0 = y1;
     }
     Ok(())
+}
+
+/// The standard scene's `f32` vertex stage into `bins` through a cache of
+/// `V` vertices (the whole of each mesh, or chunks of it).
+fn cached_vertex_stage<const V: usize, const W: usize, const N: usize>(
+    height: u32,
+    cache: &mut VertexCache<f32, S, V>,
+    bins: &mut heapless::Vec<ScreenTriangle<S>, N>,
+) -> Result<MeshStats, Error> {
+    let pipeline = Scene3d::pipeline::<f32, S>(W as u32, height)?;
+    bins.clear();
+    Scene3d.draw_cached::<f32, Rgb565, S, V, N>(&pipeline, ANGLE, cache, bins)
 }
 
 fn frame3d<T: Scalar, M: Interpolation, const W: usize, const H: usize, const N: usize, const P: usize>(

@@ -136,9 +136,9 @@ mod firmware {
             let result = benches::frame(black_box(bench.work), height, BACKGROUND, &mut b, &mut sink);
             let ticks = t.stop().ok_or(ClockError::Overflow)?;
             black_box(&result);
-            let (stack, _) = stack::high_water();
+            let water = stack::high_water();
             result?;
-            stack::check().map_err(|(used, room)| Fail::Stack(i, used, room))?;
+            stack::check(water).map_err(|(used, room)| Fail::Stack(i, used, room))?;
             let mut crc = Sink::new(W as u32, height, Mode::Crc);
             benches::frame(bench.work, height, BACKGROUND, &mut b, &mut crc)?;
             hprintln!(
@@ -146,7 +146,7 @@ mod firmware {
                 i,
                 ticks,
                 clock::instructions(ticks),
-                stack,
+                water.0,
                 crc.crc()
             );
         }

@@ -234,9 +234,11 @@ fn bits(v: u64) -> u32 {
 /// Fixed-point units per Gouraud channel step.
 pub(crate) const COLOR_FRAC: u32 = 20;
 
-/// A colour accumulator (channel · 2^COLOR_FRAC) as a channel in `0..=max`.
-#[inline(always)]
-pub(crate) fn channel(acc: i32, max: u8) -> u8 {
+/// A colour accumulator (channel · 2^COLOR_FRAC) as a channel in `0..=max`,
+/// rounded half up: the definition the span loops' biased forms
+/// ([`channel_clamped`], [`channel_in_range`]) are tested against.
+#[cfg(test)]
+fn channel(acc: i32, max: u8) -> u8 {
     let v = (acc >> COLOR_FRAC) + ((acc >> (COLOR_FRAC - 1)) & 1); // round half up
     v.clamp(0, max as i32) as u8
 }
@@ -246,7 +248,8 @@ pub(crate) fn channel(acc: i32, max: u8) -> u8 {
 /// at the span's start).
 pub(crate) const COLOR_HALF: i32 = 1 << (COLOR_FRAC - 1);
 
-/// [`channel`] of an accumulator that holds the [`COLOR_HALF`] bias
+/// A colour accumulator (channel · 2^COLOR_FRAC) that holds the
+/// [`COLOR_HALF`] bias as a channel in `0..=max`, rounded half up
 /// (`(acc + ½) >> F` is `acc >> F` plus its bit `F − 1`).
 #[inline(always)]
 pub(crate) fn channel_clamped(acc: i32, max: u8) -> u8 {

@@ -4,7 +4,7 @@
 //! and the range of pixel rows they can touch, which lets the band renderer
 //! skip a primitive that misses a band with two comparisons.
 
-use crate::attr::{COLOR_FRAC, Plane, PlaneFrame, channel};
+use crate::attr::{COLOR_FRAC, COLOR_HALF, Plane, PlaneFrame, channel_clamped};
 use crate::blit::Blitter;
 use crate::edge::{Cull, TriangleSpans};
 use crate::line::{line_pixels, line_rows};
@@ -115,12 +115,18 @@ impl<C: Interpolate, const S: u32> Triangle<C, S> {
                 if let Some(p) = &planes[k] {
                     // Inside the triangle the value is a channel (< 2^28); a step that
                     // does not fit i32 only occurs where spans are one pixel long.
-                    acc[k] = p.at(span.x, span.y).clamp(i32::MIN as i64, i32::MAX as i64) as i32;
+                    // The rounding's half step is added here once (`channel_clamped`).
+                    let biased = p.at(span.x, span.y).saturating_add(COLOR_HALF as i64);
+                    acc[k] = biased.clamp(i32::MIN as i64, i32::MAX as i64) as i32;
                     step[k] = p.step_x().clamp(i32::MIN as i64, i32::MAX as i64) as i32;
                 }
             }
             let colors = (0..span.len).map(|_| {
-                let c = [channel(acc[0], max[0]), channel(acc[1], max[1]), channel(acc[2], max[2])];
+                let c = [
+                    channel_clamped(acc[0], max[0]),
+                    channel_clamped(acc[1], max[1]),
+                    channel_clamped(acc[2], max[2]),
+                ];
                 for k in 0..3 {
                     acc[k] = acc[k].wrapping_add(step[k]); // the step after the last pixel is unused
                 }

@@ -281,13 +281,11 @@ fn shade_spans<C, F, M, const S: u32, const W: usize, R>(
             &zplane,
             &C::from_channels(tri.v[0].color),
         );
+    } else if !M::PERSPECTIVE && channels_in_range::<C, S>(tri) {
+        // No per-pixel clamp (`channel_in_range`).
+        gouraud_spans::<C, F, M, false, S, W, _>(tri, &setup, spans, color, depth, state, &zplane);
     } else {
-        if !M::PERSPECTIVE && channels_in_range::<C, S>(tri) {
-            // No per-pixel clamp (`channel_in_range`).
-            gouraud_spans::<C, F, M, false, S, W, _>(tri, &setup, spans, color, depth, state, &zplane);
-        } else {
-            gouraud_spans::<C, F, M, true, S, W, _>(tri, &setup, spans, color, depth, state, &zplane);
-        }
+        gouraud_spans::<C, F, M, true, S, W, _>(tri, &setup, spans, color, depth, state, &zplane);
     }
 }
 

@@ -23,16 +23,17 @@ use super::cluster::ClusterSource;
 use super::{MeshSetup, MeshStats, Pipeline, Uniform};
 use crate::Error;
 use crate::math::Scalar;
-use crate::mesh::Mesh;
+use crate::mesh::{MAX_MESHLET_VERTICES, Mesh};
 use crate::raster3d::ScreenTriangle;
 
-/// Most vertices of one chunk.
-pub(super) const CHUNK_SLOTS: usize = 64;
+/// Most vertices of one chunk: a cluster's ([`ClusterCache`](super::ClusterCache)'s size).
+const CHUNK_SLOTS: usize = MAX_MESHLET_VERTICES;
 
 /// Entries of the vertex → slot table: twice [`CHUNK_SLOTS`], a power of two.
 const BUCKETS: usize = 2 * CHUNK_SLOTS;
 
-const _: () = assert!(BUCKETS.is_power_of_two() && CHUNK_SLOTS < 256 && BUCKETS >= 2 * CHUNK_SLOTS);
+// Slots + 1 are stored as `u8`; the probe masks with `BUCKETS − 1`.
+const _: () = assert!(BUCKETS.is_power_of_two() && CHUNK_SLOTS < 256);
 
 /// Mesh vertex → local slot of the chunk being built or drawn.
 struct SlotTable {
