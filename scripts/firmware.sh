@@ -25,6 +25,13 @@
 #                                           spend their Cortex-M4F instructions: the N
 #                                           (default 30) costliest functions and source
 #                                           lines (examples/fw_profile; about two minutes)
+#   bash scripts/firmware.sh profile-sweep TARGET KEY [N]
+#                                           the same for one configuration of the sweep
+#                                           (examples/fw_sweep, its key as in
+#                                           docs/data/cortex-m.tsv) on m4f or m0: the
+#                                           Cortex-M0's profile (about three minutes)
+#   bash scripts/firmware.sh sweep-one TARGET KEY
+#                                           that configuration's count alone (about a minute)
 #   bash scripts/firmware.sh sweep          Cortex-M4F and Cortex-M0 instruction counts of the
 #                                           speed/accuracy report's configurations into
 #                                           docs/data/cortex-m.tsv (examples/fw_sweep); then
@@ -309,6 +316,36 @@ profile() { # profile ROWS [N]
   [ "$status" -eq 0 ] || die "profiling rows $rows failed"
 }
 
+# The same for one fw_sweep configuration (MICRORASTER_FW_SWEEP_ONLY) on
+# either target (the sweep runs both on mps2-an386). The count includes the
+# sweep's clock calibration.
+profile_sweep() { # profile_sweep TARGET KEY [N]
+  local t=$1 key=$2 shown=${3:-30} elf fifo tool status=0
+  export MICRORASTER_FW_SWEEP_ONLY=$key
+  setup
+  elf=$(FW_DIR=$ROOT/target/firmware-profile CARGO_PROFILE_RELEASE_DEBUG=line-tables-only \
+    MICRORASTER_BOARD=mps2-an386 build "$t" fw_sweep)
+  cargo build --quiet --release --example fw_profile
+  tool=$ROOT/target/release/examples/fw_profile
+  fifo=$(mktemp -u "${TMPDIR:-/tmp}/fw-profile.XXXXXX")
+  mkfifo "$fifo"
+  "$tool" "$elf" "$shown" <"$fifo" &
+  MICRORASTER_BOARD=mps2-an386 MICRORASTER_QEMU_ARGS="-icount shift=0 -d in_asm,exec,nochain -D $fifo" \
+    qemu "$elf" >/dev/null || status=$?
+  wait $! || status=$?
+  rm -f "$fifo"
+  [ "$status" -eq 0 ] || die "profiling $key on $t failed"
+}
+
+# One fw_sweep configuration's count on one target, printed only.
+sweep_one() { # sweep_one TARGET KEY
+  local elf
+  export MICRORASTER_FW_SWEEP_ONLY=$2
+  setup
+  elf=$(FW_DIR=$ROOT/target/firmware-one MICRORASTER_BOARD=mps2-an386 build "$1" fw_sweep)
+  MICRORASTER_BOARD=mps2-an386 MICRORASTER_QEMU_ARGS="-icount shift=0" qemu "$elf" | grep '^sweep '
+}
+
 # Runs the benchmark on both targets and collects what the table needs into
 # $FW_DIR/table-input.txt (lines `TARGET bench|#|sym|size|fact ...`).
 bench_collect() {
@@ -496,7 +533,9 @@ case ${1:-} in
   build-rp2040) build_rp2040 ;;
   table) shift && write=1 table "$@" ;;
   profile) profile "${2:?profile ROWS [N]}" "${3:-30}" ;;
+  profile-sweep) profile_sweep "${2:?profile-sweep m4f|m0 KEY [N]}" "${3:?profile-sweep m4f|m0 KEY [N]}" "${4:-30}" ;;
   sweep) sweep ;;
+  sweep-one) sweep_one "${2:?sweep-one m4f|m0 KEY}" "${3:?sweep-one m4f|m0 KEY}" ;;
   link) link ;;
   run) run "${2:?run m4f|m0}" ;;
   check) check ;;
