@@ -153,21 +153,81 @@ fn div_2by1(u: u64, d: u32, v: u32) -> u32 {
 
 /// True on ARMv7-M (Cortex-M3/M4/M7): a 32-bit division is one
 /// instruction, a 64-bit one a bit-by-bit library loop (about 300).
-const HALVES_ON_ARMV6M: bool = true;
 const ARMV7M: bool = cfg!(all(target_arch = "arm", target_feature = "thumb2"));
 
 /// `⌊(2^64 − 1)/d⌋ − 2^32` for `d ≥ 2^31` (in `[0, 2^32)`): the quotient
 /// of `(2^32 − 1 − d, 2^32 − 1)` by `d`. On ARMv7-M by 16-bit halves with
-/// the hardware divider, 32 restoring steps on the Cortex-M0, one 64-bit
-/// division elsewhere.
+/// the hardware divider, on the Cortex-M0 (no divider: the library's two
+/// 32-bit divisions cost about 160 instructions) by Newton's iteration,
+/// one 64-bit division elsewhere.
 fn reciprocal(d: u32) -> u32 {
-    if ARMV6M && !HALVES_ON_ARMV6M {
-        reciprocal_by_steps(d)
-    } else if ARMV7M || ARMV6M {
+    if ARMV6M {
+        reciprocal_by_newton(d)
+    } else if ARMV7M {
         reciprocal_by_halves(d)
     } else {
         (u64::MAX / d as u64 - (1 << 32)) as u32
     }
+}
+
+/// `⌊2^25 / (2·t + 1)⌋` for `t = 256 + i`: `2^63/d` to about 9 bits
+/// (`2^40/(t + 1/2)`, in units of `2^16`) for the divisors `d` whose top
+/// nine bits are `t` (512 bytes).
+const RECIPROCAL_SEED: [u16; 256] = {
+    let mut table = [0u16; 256];
+    let mut i = 0;
+    while i < 256 {
+        // Between 2^25/1023 > 2^15 and 2^25/513 < 2^16.
+        table[i] = ((1u32 << 25) / (2 * (256 + i as u32) + 1)) as u16;
+        i += 1;
+    }
+    table
+};
+
+/// [`reciprocal`] with multiplications only (tested on every target).
+///
+/// `y ≈ 2^63/d` (in `(2^31, 2^32]`; the last value is kept below `2^32`)
+/// starts from [`RECIPROCAL_SEED`], relative error `ε₀ < 2^-9`, and takes
+/// two Newton steps `y + y·(2^63 − y·d)/2^63`: each squares the relative
+/// error (`2^-18`, then `2^-36`, so within a few units of `2^63/d`) and
+/// truncates a little (the first step keeps the top 15 bits of its
+/// residual, the second 50, adding below `2^-22` and one unit). Then
+/// `2y − 2^32` is within about six of the result, which the remainder
+/// `(2^64 − 1) − (2^32 + v)·d` (exact, in 64 bits; it must lie in
+/// `[0, d)`) corrects one step at a time: exact whatever the estimate.
+fn reciprocal_by_newton(d: u32) -> u32 {
+    // The first step in 32 bits: y₀ = t·2^16, its residual
+    // 2^63 − y₀·d = 2^16·e with e = 2^47 − t·d (|e| < 2^38.1, from ε₀).
+    let t = RECIPROCAL_SEED[((d >> 23) & 0xFF) as usize] as u32;
+    let e = (1i64 << 47) - mul_u16_u32(t, d) as i64;
+    // y₀·(2^16·e)/2^63 = t·e/2^31, with e's top bits: |e >> 23| ≤ 2^15.1,
+    // so t·|e >> 23| < 2^31.1 fits a u32.
+    let (neg, e) = (e < 0, (e.unsigned_abs() >> 23) as u32);
+    let step = (t * e) >> 8;
+    let y = t << 16;
+    let y = if neg { y - step } else { y.saturating_add(step) };
+    // The second step with exact 64-bit products: r = 2^63 − y·d, |r| <
+    // 2^45.6 (ε₁ < 2^-17.4); y·|r|/2^63 from |r| >> 15 (below 2^31).
+    let yd = mul_wide_u32(y, d);
+    let (neg, r) = if yd > 1 << 63 { (true, yd - (1 << 63)) } else { (false, (1 << 63) - yd) };
+    let step = (mul_wide_u32(y, (r >> 15) as u32) >> 48) as u32;
+    // Each step leaves y at or below 2^63/d ≤ 2^32 in exact arithmetic;
+    // saturating keeps d = 2^31 (whose 2^63/d is 2^32) in range.
+    let y = if neg { y - step } else { y.saturating_add(step) };
+    // v ≈ 2y − 2^32, then the remainder u − v·d with u = (2^64 − 1) −
+    // 2^32·d: above it (u < v·d) v is too large, at d or more too small.
+    let mut v = y.wrapping_mul(2);
+    let u = ((!d as u64) << 32) | u32::MAX as u64;
+    let mut vd = mul_wide_u32(v, d);
+    while vd > u {
+        v -= 1;
+        vd -= d as u64;
+    }
+    while u - vd >= d as u64 {
+        v += 1;
+        vd += d as u64;
+    }
+    v
 }
 
 /// [`reciprocal`] as two 16-bit quotient digits, each estimated with a
@@ -197,23 +257,6 @@ fn reciprocal_by_halves(d: u32) -> u32 {
     // (u1, un1) − q1·d lies in [0, d): exact modulo 2^32.
     let r = (u1 << 16 | un1).wrapping_sub(q1.wrapping_mul(d));
     q1 << 16 | digit(r, un0)
-}
-
-/// [`reciprocal`] by restoring division (tested on every target).
-fn reciprocal_by_steps(d: u32) -> u32 {
-    let (mut r, mut lo, mut q) = (!d, u32::MAX, 0u32);
-    for _ in 0..32 {
-        // r < d < 2^32: the bit shifted out of r means 2r ≥ 2^32 > d.
-        let top = r >> 31;
-        r = (r << 1) | (lo >> 31);
-        lo <<= 1;
-        q <<= 1;
-        if top != 0 || r >= d {
-            r = r.wrapping_sub(d);
-            q |= 1;
-        }
-    }
-    q
 }
 
 /// `2^23`: from here on every `f32` is an integer.
@@ -358,16 +401,17 @@ mod tests {
             assert_eq!(mul_wide_u32_16(a, b), u64::from(a) * u64::from(b));
             let d = a | 1 << 31;
             let want = u64::MAX / u64::from(d) - (1 << 32);
-            assert_eq!(u64::from(reciprocal_by_steps(d)), want, "{d}");
             assert_eq!(u64::from(reciprocal_by_halves(d)), want, "{d}");
+            assert_eq!(u64::from(reciprocal_by_newton(d)), want, "{d}");
             // Divisors with a low half of all ones or zeros (the corrections).
             for d in [d | 0xFFFF, d & !0xFFFF, d | 0x7FFF_FFFF] {
                 assert_eq!(u64::from(reciprocal_by_halves(d)), u64::MAX / u64::from(d) - (1 << 32), "{d}");
+                assert_eq!(u64::from(reciprocal_by_newton(d)), u64::MAX / u64::from(d) - (1 << 32), "{d}");
             }
         }
         for d in [1u32 << 31, u32::MAX, (1 << 31) + 1] {
-            assert_eq!(u64::from(reciprocal_by_steps(d)), u64::MAX / u64::from(d) - (1 << 32), "{d}");
             assert_eq!(u64::from(reciprocal_by_halves(d)), u64::MAX / u64::from(d) - (1 << 32), "{d}");
+            assert_eq!(u64::from(reciprocal_by_newton(d)), u64::MAX / u64::from(d) - (1 << 32), "{d}");
         }
         assert_eq!(mul_wide_u32(u32::MAX, u32::MAX), u64::from(u32::MAX) * u64::from(u32::MAX));
     }
