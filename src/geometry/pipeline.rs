@@ -787,11 +787,14 @@ struct VertexCtx<T: Scalar> {
 
 impl<T: Scalar> VertexCtx<T> {
     /// Row `r` of `mvp · (p, 1)`, bit-identical to
-    /// [`Mat4::transform_point`] (`d·1` is exact).
+    /// [`Mat4::transform_point`] (`d·1` is exact). For `Fx` without the
+    /// saturation ([`Scalar::row_in_range`]): `mesh_setup` accepts a mesh
+    /// only if no partial sum of these rows can saturate
+    /// (`fx_coordinates_fit`).
     #[inline]
     fn row(&self, r: usize, p: Vec3<T>) -> T {
         let [a, b, c, d] = &self.mvp.cols;
-        a[r] * p.x + b[r] * p.y + c[r] * p.z + d[r]
+        T::row_in_range([a[r], b[r], c[r]], [p.x, p.y, p.z], d[r])
     }
 
     /// Clip `(y, w)` of `p`.

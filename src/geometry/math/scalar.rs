@@ -76,6 +76,13 @@ pub trait Scalar:
     /// The value in `[0, 1]` (clamped; NaN gives 0) times `max`, rounded to
     /// nearest: a colour channel from an intensity.
     fn to_channel(self, max: u8) -> u8;
+    /// `((m₀·p₀ + m₁·p₁) + m₂·p₂) + d`, as those operations give it, for
+    /// a caller that knows no partial sum (nor product) leaves the range:
+    /// a matrix row times a point (the vertex stage, after
+    /// `fx_coordinates_fit`). `f32`: the same four operations. [`Fx`]:
+    /// without the saturation (module docs of its impl), bit-identical there.
+    #[doc(hidden)]
+    fn row_in_range(m: [Self; 3], p: [Self; 3], d: Self) -> Self;
 }
 
 impl Scalar for f32 {
@@ -141,6 +148,10 @@ impl Scalar for f32 {
     }
     fn unit3(v: super::Vec3<f32>) -> super::Vec3<f32> {
         super::unit::unit_f32(v)
+    }
+    #[inline(always)]
+    fn row_in_range(m: [f32; 3], p: [f32; 3], d: f32) -> f32 {
+        m[0] * p[0] + m[1] * p[1] + m[2] * p[2] + d
     }
     fn to_channel(self, max: u8) -> u8 {
         // `(clamp(c, 0, 1)·max + 0.5)` truncated, with the clamp after the
@@ -297,6 +308,28 @@ pub(crate) fn saturating_mul_bits_16(a: i32, b: i32) -> i32 {
     let low = ((al as u32 * bl as u32) >> 16) as i64;
     let p = (((ah * bh) as i64) << 16) + (ah * bl) as i64 + (al * bh) as i64 + low;
     p.clamp(i32::MIN as i64, i32::MAX as i64) as i32
+}
+
+/// `⌊a·b / 2^16⌋` modulo 2^32: exact whenever it fits an `i32`. Without a
+/// 32×32→64-bit multiply (Cortex-M0) from the four 16×16-bit products of
+/// [`saturating_mul_bits_16`] in wrapping arithmetic (no 64-bit addition,
+/// no clamp); elsewhere the widening product.
+#[inline(always)]
+pub(crate) fn mul_bits_in_range(a: i32, b: i32) -> i32 {
+    if cfg!(all(target_arch = "arm", not(target_feature = "thumb2"))) {
+        mul_bits_in_range_16(a, b)
+    } else {
+        ((a as i64 * b as i64) >> 16) as i32
+    }
+}
+
+/// [`mul_bits_in_range`] from 16-bit halves (tested on every target).
+#[inline(always)]
+fn mul_bits_in_range_16(a: i32, b: i32) -> i32 {
+    let (ah, al) = (a >> 16, a & 0xFFFF);
+    let (bh, bl) = (b >> 16, b & 0xFFFF);
+    let low = ((al as u32).wrapping_mul(bl as u32) >> 16) as i32;
+    (ah.wrapping_mul(bh) << 16).wrapping_add(ah * bl).wrapping_add(al * bh).wrapping_add(low)
 }
 
 /// The 16.16 quotient of two raw 16.16 values, `a·2^16 / b` truncated
@@ -554,6 +587,16 @@ impl Scalar for Fx {
             None => v,
         }
     }
+    /// Each product `⌊a·b/2^16⌋` and each sum in wrapping 32-bit
+    /// arithmetic: equal modulo 2^32 to the exact values, so equal to them
+    /// (and to the saturating operations, which then do not saturate)
+    /// when they fit an `i32`, as the caller guarantees.
+    #[inline(always)]
+    fn row_in_range(m: [Fx; 3], p: [Fx; 3], d: Fx) -> Fx {
+        let mul = |a: Fx, b: Fx| mul_bits_in_range(a.to_bits(), b.to_bits());
+        let sum = mul(m[0], p[0]).wrapping_add(mul(m[1], p[1])).wrapping_add(mul(m[2], p[2]));
+        Fx::from_bits(sum.wrapping_add(d.to_bits()))
+    }
     fn to_channel(self, max: u8) -> u8 {
         let b = self.to_bits().clamp(0, 1 << 16) as u32;
         ((b * max as u32 + (1 << 15)) >> 16) as u8
@@ -751,6 +794,43 @@ mod tests {
                 }
             }
         }
+    }
+
+    /// Where the products and partial sums fit, the unsaturated row equals
+    /// the saturating operations; the 16-bit-halves product equals the
+    /// fixed crate's wherever the result fits.
+    #[test]
+    fn rows_in_range_equal_the_saturating_rows() {
+        let mut rng = crate::math::vec::tests::Rng(0x5EED_0F_0123);
+        let (mut n, mut near) = (0, 0);
+        for i in 0..400_000u32 {
+            let r = rng.next();
+            let (a, b) = (r as i32 >> (i % 17), (r >> 32) as i32 >> (i / 17 % 17));
+            let want = I16F16::from_bits(a).saturating_mul(I16F16::from_bits(b)).to_bits();
+            let exact = (a as i64 * b as i64) >> 16;
+            if exact == want as i64 {
+                assert_eq!(mul_bits_in_range_16(a, b), want, "{a} * {b}");
+                assert_eq!(mul_bits_in_range(a, b), want, "{a} * {b}");
+            }
+            // A row whose partial sums fit (or not: then nothing is claimed).
+            let mut f = |k: u32| Fx::from_bits(rng.next() as i32 >> (1 + (i + 3 * k) % 24));
+            let (m, p, d) = ([f(0), f(1), f(2)], [f(3), f(4), f(5)], f(6));
+            let wide = |a: Fx, b: Fx| (a.to_bits() as i64 * b.to_bits() as i64) >> 16;
+            let s1 = wide(m[0], p[0]) + wide(m[1], p[1]);
+            let s2 = s1 + wide(m[2], p[2]);
+            let s3 = s2 + d.to_bits() as i64;
+            let fits = [wide(m[0], p[0]), wide(m[1], p[1]), wide(m[2], p[2]), s1, s2, s3]
+                .iter()
+                .all(|&v| i32::try_from(v).is_ok());
+            if fits {
+                let want = m[0] * p[0] + m[1] * p[1] + m[2] * p[2] + d;
+                assert_eq!(Fx::row_in_range(m, p, d), want, "{m:?} {p:?} {d:?}");
+                n += 1;
+                near += (s3.unsigned_abs() > 1 << 29) as u32;
+            }
+        }
+        // Not vacuous: most rows fit, and some come near the range's end.
+        assert!(n > 100_000 && near > 1_000, "{n} {near}");
     }
 
     #[test]
