@@ -31,10 +31,14 @@ fn main() -> Result<(), String> {
     let mut args = std::env::args().skip(1);
     let elf = args.next().ok_or("usage: fw_profile ELF [ROWS_SHOWN] < qemu-log")?;
     let shown: usize = args.next().map_or(Ok(30), |s| s.parse()).map_err(|e| format!("rows shown: {e}"))?;
-    let counts = read_log(BufReader::new(std::io::stdin().lock()))?;
-    let total: u64 = counts.values().sum();
-    let locations = locate(&elf, counts.keys().copied().collect())?;
     let symbols = symbols(&elf)?;
+    let (counts, calls) = read_log(BufReader::new(std::io::stdin().lock()), &symbols)?;
+    let total: u64 = counts.values().sum();
+    let mut pcs: Vec<u32> = counts.keys().copied().collect();
+    pcs.extend(calls.keys().map(|(caller, _)| *caller));
+    pcs.sort_unstable();
+    pcs.dedup();
+    let locations = locate(&elf, pcs)?;
     let (mut by_function, mut by_line) = (HashMap::new(), HashMap::new());
     for (pc, n) in &counts {
         let (mut function, line) = locations.get(pc).cloned().unwrap_or_default();
@@ -47,15 +51,45 @@ fn main() -> Result<(), String> {
         *by_function.entry(format!("{function} — {file}")).or_insert(0u64) += n;
         *by_line.entry(line).or_insert(0u64) += n;
     }
+    // Library calls (compiler-builtins: soft float, 64-bit products and
+    // shifts, divisions) by the source line that made them, each charged
+    // its routine's mean cost: where the Cortex-M0's library time comes from.
+    let mut by_routine: HashMap<&str, (u64, u64)> = HashMap::new();
+    for ((_, callee), n) in &calls {
+        by_routine.entry(callee.as_str()).or_default().1 += n;
+    }
+    for (pc, n) in &counts {
+        if let Some(name) = symbol_of(&symbols, *pc).filter(|s| is_library(s)) {
+            if let Some(r) = by_routine.get_mut(name) {
+                r.0 += n;
+            }
+        }
+    }
+    let mut by_caller = HashMap::new();
+    for ((caller, callee), n) in &calls {
+        let (cost, entries) = by_routine.get(callee.as_str()).copied().unwrap_or_default();
+        let line = locations.get(caller).map_or_else(String::new, |l| l.1.clone());
+        *by_caller.entry(format!("{line} → {callee}")).or_insert(0u64) += cost * n / entries.max(1);
+    }
     println!("{total} instructions executed ({elf})\n");
     print_table("function (innermost inside the crate's src/) — file", by_function, total, shown);
     print_table("source line", by_line, total, shown);
+    print_table("library calls by calling line (each at its routine's mean cost)", by_caller, total, shown);
     Ok(())
 }
 
-/// Instructions executed per block start address, from QEMU's log.
-fn read_log(log: impl BufRead) -> Result<HashMap<u32, u64>, String> {
+/// A compiler-builtins routine (`__aeabi_lmul`, `__addsf3`, …).
+fn is_library(symbol: &str) -> bool {
+    symbol.starts_with("__") && !symbol.starts_with("__cortex")
+}
+
+/// Instructions executed per block start address, from QEMU's log, and the
+/// entries into library routines ([`is_library`]) per `(calling block,
+/// routine)`: the block logged before a routine's first block.
+type Calls = HashMap<(u32, String), u64>;
+fn read_log(log: impl BufRead, symbols: &[(u32, u32, String)]) -> Result<(HashMap<u32, u64>, Calls), String> {
     let (mut size, mut counts) = (HashMap::<u32, u64>::new(), HashMap::<u32, u64>::new());
+    let (mut calls, mut previous) = (Calls::new(), None::<u32>);
     // The block being listed: its first address and instructions so far.
     let mut listing: Option<(u32, u64)> = None;
     for line in log.lines() {
@@ -83,9 +117,19 @@ fn read_log(log: impl BufRead) -> Result<HashMap<u32, u64>, String> {
             let n =
                 size.get(&pc).copied().ok_or_else(|| format!("block {pc:#x} ran before it was listed"))?;
             *counts.entry(pc).or_insert(0) += n;
+            if let Some(i) =
+                symbols.binary_search_by_key(&pc, |s| s.0).ok().filter(|&i| is_library(&symbols[i].2))
+            {
+                if let Some(caller) =
+                    previous.filter(|&c| symbol_of(symbols, c) != Some(symbols[i].2.as_str()))
+                {
+                    *calls.entry((caller, symbols[i].2.clone())).or_insert(0) += 1;
+                }
+            }
+            previous = Some(pc);
         }
     }
-    Ok(counts)
+    Ok((counts, calls))
 }
 
 /// `(function, file:line)` of each address: its innermost inlined frame

@@ -801,7 +801,7 @@ mod tests {
     /// fixed crate's wherever the result fits.
     #[test]
     fn rows_in_range_equal_the_saturating_rows() {
-        let mut rng = crate::math::vec::tests::Rng(0x5EED_0F_0123);
+        let mut rng = crate::math::vec::tests::Rng(0x005E_ED0F_0123);
         let (mut n, mut near) = (0, 0);
         for i in 0..400_000u32 {
             let r = rng.next();
