@@ -270,16 +270,22 @@ IN: main
 
 Trace 0: 0x7f5954000300 [00800408/00000400/00000110/ff000200] main
 ";
-        let counts = read_log(log.as_bytes()).unwrap();
+        // `f` as a library routine: entered once from `main`'s block (its
+        // second run follows its own block, not a call).
+        let symbols = vec![(0x400, 0x10, "main".to_string()), (0x1000, 0x10, "__f".to_string())];
+        let (counts, calls) = read_log(log.as_bytes(), &symbols).unwrap();
         assert_eq!(counts.get(&0x1000), Some(&6));
         assert_eq!(counts.get(&0x400), Some(&(2 + 2 + 1)));
         assert_eq!(counts.values().sum::<u64>(), 11);
+        assert_eq!(calls.into_iter().collect::<Vec<_>>(), [((0x400, "__f".to_string()), 1)]);
+        let (_, none) = read_log(log.as_bytes(), &[]).unwrap();
+        assert!(none.is_empty());
     }
 
     #[test]
     fn a_block_run_before_its_listing_is_an_error() {
         let log = "Trace 0: 0x7f59 [00800408/00002000/00000110/ff000200] g\n";
-        assert!(read_log(log.as_bytes()).unwrap_err().contains("0x2000"));
+        assert!(read_log(log.as_bytes(), &[]).unwrap_err().contains("0x2000"));
     }
 
     #[test]
