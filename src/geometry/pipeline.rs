@@ -531,7 +531,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     fn keep(&self, p: [SubPoint<S>; 3], stats: &mut MeshStats) -> bool {
         let (e1x, e1y) = (p[1].x() - p[0].x(), p[1].y() - p[0].y());
         let (e2x, e2y) = (p[2].x() - p[0].x(), p[2].y() - p[0].y());
-        let det = i64::from(e1x) * i64::from(e2y) - i64::from(e2x) * i64::from(e1y);
+        let det = signed_area2(e1x, e1y, e2x, e2y);
         if det == 0 {
             stats.degenerate += 1;
             return false;
@@ -624,6 +624,26 @@ fn fx_product_fits<T: Scalar>(a: &Mat4<T>, b: &Mat4<T>) -> bool {
     }
     // Entry (r, c) = Σ_k a[k][r]·b[c][k] (column-major).
     (0..4).all(|r| (0..4).all(|c| ok((0..4).map(|k| (a[k][r] * b[c][k]).abs()).sum::<f32>())))
+}
+
+/// `e1x·e2y − e2x·e1y` exactly, for differences of snapped coordinates
+/// (`|e| ≤ 2^29`). On the Cortex-M0, where a 64-bit product is a library
+/// call, in 32 bits when every difference is below 2^15 (products below
+/// 2^30, their difference below 2^31): a small triangle's, most of a mesh's.
+#[inline(always)]
+fn signed_area2(e1x: i32, e1y: i32, e2x: i32, e2y: i32) -> i64 {
+    match crate::math::divisor::ARMV6M.then(|| signed_area2_small(e1x, e1y, e2x, e2y)).flatten() {
+        Some(det) => det,
+        None => i64::from(e1x) * i64::from(e2y) - i64::from(e2x) * i64::from(e1y),
+    }
+}
+
+/// [`signed_area2`] in 32 bits where every difference is below 2^15
+/// (tested on every target).
+#[inline(always)]
+fn signed_area2_small(e1x: i32, e1y: i32, e2x: i32, e2y: i32) -> Option<i64> {
+    let small = |v: i32| v.unsigned_abs() < 1 << 15;
+    (small(e1x) && small(e1y) && small(e2x) && small(e2y)).then(|| i64::from(e1x * e2y - e2x * e1y))
 }
 
 /// `Fx`: true if every model, eye and clip coordinate of the mesh fits
@@ -861,4 +881,30 @@ fn finite_color<T: Scalar>(c: [T; 3]) -> [T; 3] {
             T::ZERO
         }
     })
+}
+
+#[cfg(test)]
+mod tests {
+    /// The 32-bit area of small differences is the 64-bit one, and larger
+    /// differences are left to it.
+    #[test]
+    fn small_area_is_the_wide_area() {
+        let mut rng = crate::math::vec::tests::Rng(0xA2EA);
+        let mut small = 0;
+        for i in 0..200_000u32 {
+            let e = [0; 4].map(|_| (rng.next() as i32) >> (2 + i % 20));
+            let wide = i64::from(e[0]) * i64::from(e[3]) - i64::from(e[2]) * i64::from(e[1]);
+            match super::signed_area2_small(e[0], e[1], e[2], e[3]) {
+                Some(det) => {
+                    assert_eq!(det, wide, "{e:?}");
+                    small += 1;
+                }
+                None => assert!(e.iter().any(|v| v.unsigned_abs() >= 1 << 15), "{e:?}"),
+            }
+            assert_eq!(super::signed_area2(e[0], e[1], e[2], e[3]), wide, "{e:?}");
+        }
+        assert!(small > 50_000, "{small}");
+        let max = (1 << 15) - 1;
+        assert_eq!(super::signed_area2_small(max, -max, max, max), Some(2 * max as i64 * max as i64));
+    }
 }

@@ -17,7 +17,7 @@
 //! `2^23` trick instead of branches on the fraction: the same result.
 
 /// True on the Cortex-M0 (ARMv6-M): no 32×32→64-bit multiply, no divider.
-const ARMV6M: bool = cfg!(all(target_arch = "arm", not(target_feature = "thumb2")));
+pub(crate) const ARMV6M: bool = cfg!(all(target_arch = "arm", not(target_feature = "thumb2")));
 
 /// `a·b` exactly. On the Cortex-M0 from four 16×16-bit products (each fits
 /// a `u32`), elsewhere one widening multiply (`__aeabi_lmul` would handle
@@ -109,7 +109,7 @@ impl FxDivisor {
         if (m >> 32) >= self.d as u64 {
             return None;
         }
-        Some(div_2by1(m << self.sh, self.d << self.sh, self.v))
+        Some(div_2by1(shl_words(m, self.sh), self.d << self.sh, self.v))
     }
 }
 
@@ -126,17 +126,27 @@ impl FxDivisor {
         let (hi, lo) = ((m >> 32) as u32, m as u32);
         let q1 = hi / self.d;
         let r = hi - q1 * self.d;
-        let q0 = div_2by1(((r as u64) << 32 | lo as u64) << self.sh, self.d << self.sh, self.v);
+        let q0 = div_2by1(shl_words((r as u64) << 32 | lo as u64, self.sh), self.d << self.sh, self.v);
         (q1 as u64) << 32 | q0 as u64
     }
 }
 
-/// `⌊u / d⌋` for `d ≥ 2^31` and `⌊u / 2^32⌋ < d`, with `v` from
-/// [`reciprocal`] (Möller–Granlund algorithm 4: the estimate is at most one
-/// too large or two too small, fixed by the remainder tests).
+/// `u << sh` as its high and low words, for `sh` in `1..=31` (a
+/// normalising shift of a positive `i32`) where the result fits 64 bits:
+/// two 32-bit shifts per word, not the Cortex-M0's 64-bit shift call.
+#[inline(always)]
+fn shl_words(u: u64, sh: u32) -> (u32, u32) {
+    debug_assert!((1..32).contains(&sh) && u.leading_zeros() >= sh);
+    let (hi, lo) = ((u >> 32) as u32, u as u32);
+    ((hi << sh) | (lo >> (32 - sh)), lo << sh)
+}
+
+/// `⌊u / d⌋` for `u = (u1, u0)` (high and low words), `d ≥ 2^31` and
+/// `u1 < d`, with `v` from [`reciprocal`] (Möller–Granlund algorithm 4: the
+/// estimate is at most one too large or two too small, fixed by the
+/// remainder tests).
 #[inline]
-fn div_2by1(u: u64, d: u32, v: u32) -> u32 {
-    let (u1, u0) = ((u >> 32) as u32, u as u32);
+fn div_2by1((u1, u0): (u32, u32), d: u32, v: u32) -> u32 {
     // (q1, q0) = v·u1 + (u1 + 1, u0) mod 2^64; u1 + 1 ≤ d fits a u32.
     let q = mul_wide_u32(v, u1).wrapping_add((((u1 + 1) as u64) << 32) | u0 as u64);
     let (mut q1, q0) = ((q >> 32) as u32, q as u32);
