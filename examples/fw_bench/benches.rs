@@ -300,8 +300,8 @@ impl Work {
             Work::Frame2d(_) => "BAND,PRIMS",
             Work::Vertex3d(_) | Work::VertexPerBand3d(_) => "BINS",
             Work::Vertex3dCached => "BINS,CACHE",
-            Work::Vertex3dChunked => "BINS,CLUSTER",
-            Work::Frame3dChunked => "BAND,DEPTH,BINS,CLUSTER",
+            Work::Vertex3dChunked => "BINS,CHUNK",
+            Work::Frame3dChunked => "BAND,DEPTH,BINS,CHUNK",
             Work::Frame3d(..) | Work::PerBand3d(..) => "BAND,DEPTH,BINS",
             Work::Meshlets(F32, _) | Work::KnotStage(F32, _) => "BAND,DEPTH,CLUSTER",
             Work::Meshlets(Fix, _) | Work::KnotStage(Fix, _) => "BAND,DEPTH,CLUSTER_FX",
@@ -354,9 +354,13 @@ pub struct Buffers<'a, const W: usize, const H: usize, const N: usize, const P: 
     pub bins: &'a mut heapless::Vec<ScreenTriangle<S>, N>,
     /// Vertex cache ([`Work::Vertex3dCached`]; none on the Cortex-M0).
     pub cache: Option<&'a mut Cache>,
-    /// One meshlet's vertices ([`Work::Meshlets`]), per numeric path.
-    /// None on the Cortex-M0 (its 16 KB hold no knot row).
+    /// One meshlet's vertices and the frame's cluster record
+    /// ([`Work::Meshlets`]), per numeric path. None on the Cortex-M0 (its
+    /// 16 KB hold no knot row).
     pub cluster: Option<(&'a mut ClusterCache<f32, S>, &'a mut ClusterCache<Fx, S>)>,
+    /// A cluster-sized vertex cache ([`Work::Vertex3dChunked`],
+    /// [`Work::Frame3dChunked`]); none on the Cortex-M0.
+    pub chunk: Option<&'a mut VertexCache<f32, S, MAX_MESHLET_VERTICES>>,
     /// Taller bands ([`Work::KnotTall`]); not on the Cortex-M0, whose
     /// stack has no room for even this field's bytes.
     #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
@@ -456,12 +460,12 @@ fn frame_other<const W: usize, const H: usize, const N: usize, const P: usize>(
             Ok(())
         }
         Work::Vertex3dChunked => {
-            let (cache, _) = b.cluster.as_mut().ok_or(Error::BufferTooSmall)?;
+            let cache = b.chunk.as_deref_mut().ok_or(Error::BufferTooSmall)?;
             black_box(cached_vertex_stage::<MAX_MESHLET_VERTICES, W, N>(height, cache, b.bins)?);
             Ok(())
         }
         Work::Frame3dChunked => {
-            let (cache, _) = b.cluster.as_mut().ok_or(Error::BufferTooSmall)?;
+            let cache = b.chunk.as_deref_mut().ok_or(Error::BufferTooSmall)?;
             cached_vertex_stage::<MAX_MESHLET_VERTICES, W, N>(height, cache, b.bins)?;
             r.render(Triangles3d::new(b.bins, b.depth, DEPTH_STATE, Affine), b.band, sink).map_err(input)
         }

@@ -64,6 +64,8 @@ mod firmware {
     use microraster::pipeline::ClusterCache;
     use microraster::raster3d::ScreenTriangle;
     use microraster::{Band, Error};
+    #[cfg(target_abi = "eabihf")]
+    use microraster::{mesh::MAX_MESHLET_VERTICES, pipeline::VertexCache};
     use panic_semihosting as _;
 
     /// Cortex-M4F (timed on QEMU mps2-an386).
@@ -80,6 +82,7 @@ mod firmware {
         static mut CACHE: benches::Cache = benches::Cache::new();
         static mut CLUSTER: ClusterCache<f32, S> = ClusterCache::new();
         static mut CLUSTER_FX: ClusterCache<Fx, S> = ClusterCache::new();
+        static mut CHUNK: VertexCache<f32, S, MAX_MESHLET_VERTICES> = VertexCache::new();
         // Taller bands, for the rows that measure what they buy.
         static mut BAND48: Band<Rgb565, { benches::M4F_SIZE.0 }, { benches::TALL_48 }> =
             Band::new(BACKGROUND);
@@ -92,8 +95,8 @@ mod firmware {
         let cluster = Some((CLUSTER, CLUSTER_FX));
         let tall =
             Some(benches::Tall { band48: BAND48, depth48: DEPTH48, band240: BAND240, depth240: DEPTH240 });
-        let b =
-            Buffers { prims: PRIMS, band: BAND, depth: DEPTH, bins: BINS, cache: Some(CACHE), cluster, tall };
+        let (cache, chunk) = (Some(CACHE), Some(CHUNK));
+        let b = Buffers { prims: PRIMS, band: BAND, depth: DEPTH, bins: BINS, cache, cluster, chunk, tall };
         finish(run(benches::M4F, benches::M4F_SIZE.1, b))
     }
 
@@ -107,7 +110,15 @@ mod firmware {
         static mut DEPTH: DepthBand<Depth16, { benches::M0_SIZE.0 }, { benches::M0_BAND }> =
             DepthBand::zeroed();
         static mut BINS: heapless::Vec<ScreenTriangle<S>, { benches::BAND_BINS }> = heapless::Vec::new();
-        let b = Buffers { prims: PRIMS, band: BAND, depth: DEPTH, bins: BINS, cache: None, cluster: None };
+        let b = Buffers {
+            prims: PRIMS,
+            band: BAND,
+            depth: DEPTH,
+            bins: BINS,
+            cache: None,
+            cluster: None,
+            chunk: None,
+        };
         finish(run(benches::M0, benches::M0_SIZE.1, b))
     }
 

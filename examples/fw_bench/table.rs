@@ -7,7 +7,7 @@ use std::fmt::{self, Write as _};
 
 use embedded_graphics_core::pixelcolor::Rgb565;
 use microraster::depth::DepthBand;
-use microraster::pipeline::ClusterCache;
+use microraster::pipeline::{ClusterCache, VertexCache};
 use microraster::{Band, Error};
 
 use crate::benches::{self, BACKGROUND, Bench, Buffers, Mode, Sink};
@@ -63,6 +63,7 @@ fn records<const W: usize, const H: usize, const N: usize, const P: usize>(
     let mut bins = Box::new(heapless::Vec::new());
     let mut cache = Box::new(benches::Cache::new());
     let (mut cluster, mut cluster_fx) = (Box::new(ClusterCache::new()), Box::new(ClusterCache::new()));
+    let mut chunk = Box::new(VertexCache::new());
     let (mut band48, mut depth48) = (Box::new(Band::new(BACKGROUND)), Box::new(DepthBand::new()));
     let (mut band240, mut depth240) = (Box::new(Band::new(BACKGROUND)), Box::new(DepthBand::new()));
     let mut b: Buffers<'_, W, H, N, P> = Buffers {
@@ -72,6 +73,7 @@ fn records<const W: usize, const H: usize, const N: usize, const P: usize>(
         bins: &mut bins,
         cache: Some(&mut cache),
         cluster: Some((&mut cluster, &mut cluster_fx)),
+        chunk: Some(&mut chunk),
         tall: Some(benches::Tall {
             band48: &mut band48,
             depth48: &mut depth48,

@@ -23,7 +23,7 @@ use microraster::depth::{Depth8, Depth16, Depth24, Depth32, DepthBand, DepthForm
 use microraster::edge::Cull;
 use microraster::math::{Fx, Scalar, transform};
 use microraster::mesh::MAX_MESHLET_VERTICES;
-use microraster::pipeline::{ClusterCache, MeshStats, Pipeline};
+use microraster::pipeline::{ClusterCache, MeshStats, Pipeline, VertexCache};
 use microraster::raster3d::{Affine, Interpolation, PerspectiveCorrect, ScreenTriangle};
 use microraster::render::{Direct3d, Triangles3d};
 use microraster::{Band, Error, Primitive, RenderError, Renderer, SubPoint, Triangle, blit::TargetBlitter};
@@ -219,13 +219,14 @@ fn mesh3d<T: Scalar, F: DepthFormat, M: Interpolation, const S: u32, const BH: u
     mesh3d_with::<T, F, M, S, BH>(m, fb, |p, bins| Scene3d.draw::<T, Rgb565, S, BINS>(p, ANGLE, bins))
 }
 
-/// [`mesh3d`] with a vertex cache of 64 entries ([`ClusterCache`], 3,072
-/// bytes): each mesh in chunks of its triangles, the same bins.
+/// [`mesh3d`] with a vertex cache of 64 entries (a [`VertexCache`] of
+/// [`MAX_MESHLET_VERTICES`], 3,072 bytes): each mesh in chunks of its
+/// triangles, the same bins.
 fn mesh3d_cache64<T: Scalar, F: DepthFormat, M: Interpolation, const S: u32, const BH: usize>(
     m: &mut dyn Meter,
     fb: &mut FrameBuffer,
 ) -> Result<(), Error> {
-    let mut cache = ClusterCache::<T, S>::new();
+    let mut cache = VertexCache::<T, S, MAX_MESHLET_VERTICES>::new();
     mesh3d_with::<T, F, M, S, BH>(m, fb, |p, bins| {
         Scene3d.draw_cached::<T, Rgb565, S, MAX_MESHLET_VERTICES, BINS>(p, ANGLE, &mut cache, bins)
     })

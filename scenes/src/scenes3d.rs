@@ -267,7 +267,7 @@ mod tests {
     }
 
     fn cached_equals_uncached<T: Scalar>() {
-        // The whole mesh, chunks of 64 (a `ClusterCache`), of 7, of one triangle.
+        // The whole mesh, chunks of 64 (a cluster's), of 7, of one triangle.
         for (v, n) in [
             (CACHE_VERTICES, cache_of::<T, CACHE_VERTICES>()),
             (64, cache_of::<T, 64>()),

@@ -19,6 +19,7 @@ mod cache;
 mod chunked;
 mod cluster;
 mod eager;
+mod frame_clusters;
 mod inside;
 mod material;
 mod model_light;
@@ -30,6 +31,7 @@ use model_light::ModelLight;
 
 pub use cache::VertexCache;
 pub use cluster::ClusterCache;
+pub use frame_clusters::FRAME_CLUSTERS;
 pub(crate) use material::{Material, PerFace, PerVertex, Uniform};
 
 #[cfg(feature = "fragment")]

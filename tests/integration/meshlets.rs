@@ -295,3 +295,70 @@ fn count_both<T: Scalar>() -> (u32, u32) {
     }
     (inside, cut)
 }
+
+/// One frame of `c` through `cache` (16-row bands, f32, affine), each band
+/// drawing the mesh once per model of `models`.
+fn frame_with(
+    c: &Clustered,
+    p: &Pipeline<f32, 4>,
+    models: &[Mat4<f32>],
+    cache: &mut [ClusterCache<f32, 4>],
+) -> Vec<Rgb565> {
+    let mut fb = Framebuffer::new(W as u32, H, BG);
+    let (mut band, mut depth) = (Band::<Rgb565, W, 16>::new(BG), DepthBand::<Depth16, W, 16>::new());
+    let mesh = c.meshlets();
+    let n = cache.len();
+    Renderer::new(H, BG)
+        .render(
+            Direct3d::new(&mut depth, DepthState::LESS_WRITE, Affine, |band| {
+                for (k, model) in models.iter().enumerate() {
+                    p.draw_meshlets(&mesh, model, Rgb565::new(28, 44, 12), &mut cache[k % n], band)?;
+                }
+                Ok(())
+            }),
+            &mut band,
+            &mut fb,
+        )
+        .unwrap();
+    fb.pixels
+}
+
+/// The frame's cluster record (`ClusterCache`) never changes a frame: one
+/// cache kept through frames of other matrices, shared by two placements of
+/// a mesh drawn in turn in every band, and kept while the mesh itself is
+/// moved in place (same buffers, same matrix: only the new frame tells),
+/// draws what fresh caches draw.
+#[test]
+fn a_kept_cluster_cache_draws_what_fresh_caches_draw() {
+    let mut c = torus();
+    let mut kept = [ClusterCache::new(), ClusterCache::new()];
+    let fresh = || [ClusterCache::new(), ClusterCache::new()];
+    for i in 0..6 {
+        let (angle, eye) = (i as f32 * 0.71, [0.5 * i as f32 - 1.2, 1.0, 3.4]);
+        let p = pipeline::<f32>(Cull::Clockwise, eye);
+        let one = [model::<f32>(angle)];
+        let want = frame_with(&c, &p, &one, &mut fresh());
+        assert!(covered(&want) > 1000);
+        assert_eq!(frame_with(&c, &p, &one, &mut kept), want, "frame {i}");
+        let two =
+            [model::<f32>(angle), transform::translation(Vec3::new(0.9, -0.4, -1.0)) * model::<f32>(angle)];
+        let want = frame_with(&c, &p, &two, &mut fresh());
+        assert_eq!(frame_with(&c, &p, &two, &mut kept[..1]), want, "frame {i}, one cache for two");
+        assert_eq!(frame_with(&c, &p, &two, &mut kept), want, "frame {i}, a cache each");
+    }
+    // The mesh moved in place between two frames of the same matrix.
+    let p = pipeline::<f32>(Cull::Clockwise, [0.3, 1.0, 3.4]);
+    let one = [model::<f32>(0.4)];
+    let before = frame_with(&c, &p, &one, &mut kept);
+    let shift = [0.0, 0.7, 0.0];
+    for v in c.positions.iter_mut() {
+        (0..3).for_each(|k| v[k] += shift[k]);
+    }
+    for m in c.meshlets.iter_mut() {
+        (0..3).for_each(|k| m.sphere.0[k] += shift[k]);
+    }
+    (0..3).for_each(|k| c.sphere.0[k] += shift[k]);
+    let want = frame_with(&c, &p, &one, &mut fresh());
+    assert_ne!(want, before, "the move shows");
+    assert_eq!(frame_with(&c, &p, &one, &mut kept), want, "after the move");
+}

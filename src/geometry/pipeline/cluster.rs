@@ -21,6 +21,7 @@
 //! images.
 
 use super::cache::{Slots, VertexCache, VertexSource};
+use super::frame_clusters::{ClusterFrame, FrameClusters, FrameKey};
 use super::inside::InsideView;
 use super::{Band, Material, MeshStats, Pipeline, Uniform, rows_f32, view_planes};
 use crate::depth::DepthFormat;
@@ -31,12 +32,42 @@ use crate::raster3d::{Interpolation, ScreenTriangle};
 use crate::render::Band3d;
 use crate::{Error, Interpolate};
 
-/// The vertex cache [`Pipeline::draw_meshlets`] needs: one cluster's
-/// vertices (3,072 bytes for `f32` and `Fx`). It holds
-/// [`MAX_MESHLET_VERTICES`], the most a valid cluster has, so unlike a
-/// [`VertexCache`] of one's own size it is never too small
-/// ([`Error::CapacityExceeded`] cannot come from it).
-pub type ClusterCache<T, const S: u32> = VertexCache<T, S, MAX_MESHLET_VERTICES>;
+/// The cache [`Pipeline::draw_meshlets`] needs: one cluster's vertices
+/// (a [`VertexCache`] of [`MAX_MESHLET_VERTICES`], the most a valid cluster
+/// has, so [`Error::CapacityExceeded`] cannot come from it) and the frame's
+/// record of each cluster's band-independent tests and rows (up to
+/// [`FRAME_CLUSTERS`](super::FRAME_CLUSTERS) clusters; see `frame_clusters`): about 4.6 KB for
+/// `f32` and `Fx`. Use one per mesh drawn in every band: a cache shared by
+/// several meshes stays correct but rebuilds its record at each switch.
+///
+/// ```
+/// use microraster::pipeline::ClusterCache;
+/// let cache = ClusterCache::<f32, 4>::new();
+/// assert!(core::mem::size_of_val(&cache) < 5_000);
+/// ```
+pub struct ClusterCache<T: Scalar, const S: u32> {
+    vertices: VertexCache<T, S, MAX_MESHLET_VERTICES>,
+    frame: FrameClusters,
+}
+
+impl<T: Scalar, const S: u32> ClusterCache<T, S> {
+    /// An empty cache.
+    pub const fn new() -> Self {
+        ClusterCache { vertices: VertexCache::new(), frame: FrameClusters::EMPTY }
+    }
+}
+
+impl<T: Scalar, const S: u32> Default for ClusterCache<T, S> {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl<T: Scalar, const S: u32> core::fmt::Debug for ClusterCache<T, S> {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        write!(f, "ClusterCache")
+    }
+}
 
 /// A cluster's vertices: local slot → the mesh's arrays (also a chunk's,
 /// [`super::chunked`]).
@@ -72,11 +103,13 @@ const CULL_SLACK: f32 = 1.0 / 256.0;
 /// numeric paths: in 16.16 the plane values of a large sphere saturate (the
 /// mesh-level tests are `f32` for the same reason), and a handful of
 /// products per cluster and band is small beside the vertex work it saves.
-struct ClusterCull {
+pub(super) struct ClusterCull {
     /// Planes `p` with `p · (x, 1) ≥ 0` inside: the view volume and the
     /// band's slab, with `|p.xyz|·(1 + CULL_SLACK)`.
     planes: [(Vec4<f32>, f32); 8], // the slab's two, then the view volume's six
     count: usize,
+    /// How many of `planes` are the slab's (0 to 2).
+    slab: usize,
     /// The eye as a homogeneous model-space point `(e, ew)`, `ew ≥ 0`
     /// (`ew = 0`: orthographic, `e` points towards the viewer); `None`: no
     /// cone test.
@@ -92,38 +125,62 @@ impl ClusterCull {
         let mut add = |p: Vec4<f32>| {
             planes[count] = (p, p.xyz().length() * (1.0 + CULL_SLACK));
             count += 1;
+            count
         };
         // The slab first: it rejects most clusters of a band.
-        if let Some(k) = band.above {
-            add(w * k.to_f32() - y);
-        }
-        if let Some(k) = band.below {
-            add(y - w * k.to_f32());
-        }
+        let above = band.above.map(|k| add(w * k.to_f32() - y));
+        let below = band.below.map(|k| add(y - w * k.to_f32()));
+        let slab = below.or(above).unwrap_or(0);
         for p in view_planes(rows, far) {
             add(p);
         }
-        ClusterCull { planes, count, eye: if cone { eye_point(x, y, z, w) } else { None } }
+        ClusterCull { planes, count, slab, eye: if cone { eye_point(x, y, z, w) } else { None } }
     }
 
     /// Counts and drops a cluster that certainly has no triangle in the band
     /// facing the eye.
     #[inline]
     fn keeps(&self, m: &Meshlet, stats: &mut MeshStats) -> bool {
-        let ((c, r), (axis, cutoff)) = (m.sphere, m.cone);
-        let centre = Vec4::new(c[0], c[1], c[2], 1.0);
-        for (p, len) in &self.planes[..self.count] {
-            if p.dot(centre) < -(r * *len + CULL_SLACK) {
-                stats.clusters_outside += 1;
-                return false;
-            }
+        if !self.slab_keeps(m) || !self.view_keeps(m) {
+            stats.clusters_outside += 1;
+            return false;
         }
-        let away = match self.eye {
-            Some((e, ew)) if cutoff < 1.0 => faces_away(centre.xyz(), r, axis, cutoff, e, ew),
-            _ => false,
-        };
+        let away = self.faces_away(m);
         stats.clusters_back_facing += away as u32;
         !away
+    }
+
+    /// False if the cluster's sphere lies beyond one of `planes`.
+    #[inline]
+    fn within(planes: &[(Vec4<f32>, f32)], (c, r): ([f32; 3], f32)) -> bool {
+        let centre = Vec4::new(c[0], c[1], c[2], 1.0);
+        // Written as the rejection, so that NaN keeps the cluster.
+        !planes.iter().any(|(p, len)| p.dot(centre) < -(r * *len + CULL_SLACK))
+    }
+
+    /// The band's part of [`ClusterCull::keeps`]: false if the cluster lies
+    /// wholly above or below the band.
+    #[inline]
+    pub(super) fn slab_keeps(&self, m: &Meshlet) -> bool {
+        Self::within(&self.planes[..self.slab], m.sphere)
+    }
+
+    /// The view volume's part of [`ClusterCull::keeps`] (the same for every
+    /// band).
+    #[inline]
+    pub(super) fn view_keeps(&self, m: &Meshlet) -> bool {
+        Self::within(&self.planes[self.slab..self.count], m.sphere)
+    }
+
+    /// The cone's part of [`ClusterCull::keeps`]: true if every triangle of
+    /// the cluster faces away from the eye (the same for every band).
+    #[inline]
+    pub(super) fn faces_away(&self, m: &Meshlet) -> bool {
+        let ((c, r), (axis, cutoff)) = (m.sphere, m.cone);
+        match self.eye {
+            Some((e, ew)) if cutoff < 1.0 => faces_away(Vec3::from_f32(c), r, axis, cutoff, e, ew),
+            _ => false,
+        }
     }
 }
 
@@ -284,17 +341,42 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         let cull =
             ClusterCull::new(&setup.ctx.mvp, pipe.clip.far(), &setup.band, pipe.cull == Cull::Clockwise);
         let inside = InsideView::new(&setup.ctx.mvp, setup.planes);
-        for m in mesh.meshlets {
-            if !cull.keeps(m, &mut stats) {
-                continue;
-            }
+        let rows_f = rows_f32(&setup.ctx.mvp);
+        let key = FrameKey {
+            mesh: (mesh.meshlets.as_ptr() as usize, mesh.meshlets.len()),
+            mvp: rows_f.map(|r| [r.x, r.y, r.z, r.w].map(f32::to_bits)),
+            planes: setup.planes,
+            cull: pipe.cull,
+            size: pipe.size,
+            origin: pipe.origin,
+        };
+        let ClusterCache { vertices: cache, frame } = cache;
+        let record = frame.prepare(key, rows.0, mesh.meshlets, rows_f, &cull, &inside);
+        for (i, m) in mesh.meshlets.iter().enumerate() {
+            // The band-independent verdicts from the frame's record where it
+            // has the cluster, in the per-band tests' order (same counts).
+            let inside_view = match record.get(i) {
+                Some(r) => {
+                    if !r.reaches(rows) || !cull.slab_keeps(m) || r.flags() & ClusterFrame::OUTSIDE != 0 {
+                        stats.clusters_outside += 1;
+                        continue;
+                    }
+                    if r.flags() & ClusterFrame::AWAY != 0 {
+                        stats.clusters_back_facing += 1;
+                        continue;
+                    }
+                    r.flags() & ClusterFrame::INSIDE != 0
+                }
+                None if cull.keeps(m, &mut stats) => inside.contains(m.sphere),
+                None => continue,
+            };
             let (vo, vc) = (m.vertex_offset as usize, usize::from(m.vertex_count));
             let (to, tc) = (m.triangle_offset as usize, usize::from(m.triangle_count));
             let vertices = mesh.vertices.get(vo..vo + vc).ok_or(Error::InvalidMeshlet)?;
             let triangles = mesh.triangles.get(to..to + tc).ok_or(Error::InvalidMeshlet)?;
             let slots = cache.v.get_mut(..vc).ok_or(Error::InvalidMeshlet)?;
             let src = ClusterSource { mesh: &mesh.mesh, vertices };
-            if inside.contains(m.sphere) {
+            if inside_view {
                 let emit = |tri: &ScreenTriangle<S>, _: &mut MeshStats| {
                     sink(tri);
                     Ok(())

@@ -1,0 +1,285 @@
+//! What the meshlet stage learns about each cluster once per frame instead
+//! of once per band: the verdicts that do not depend on the band (outside
+//! the view volume, facing away, inside the clip volume) and the frame rows
+//! its bounding sphere can reach. Each band then skips a cluster whose rows
+//! miss it with two integer comparisons, and runs the `f32` slab test (a
+//! library call per operation on the Cortex-M0) only for the few near it.
+//!
+//! # Same clusters drawn
+//! A band still draws exactly the clusters the per-band tests
+//! ([`ClusterCull`], [`InsideView`]) keep, except those whose recorded rows
+//! miss the band: their sphere, and so every triangle of the cluster
+//! (validated to lie inside it), lies above or below the band, so they have
+//! nothing in it. The image is the same; `MeshStats::clusters_outside`
+//! counts them with the other clusters outside.
+//!
+//! # The rows of a sphere
+//! Over a sphere of centre `c` and radius `r` (widened by the validation's
+//! tolerance, as [`InsideView`]), clip `y` and `w` lie within `y_c ± r·|Y|`
+//! and `w_c ± r·|W|` (`Y`, `W`: the rows' `xyz`, Cauchy–Schwarz). Where
+//! `w_c − r·|W|` is positive, `y/w` lies between the extreme ratios of
+//! those intervals; each is widened by `2^-10` of its magnitude plus
+//! `2^-10` (the `f32` rounding of the dot products and quotients is below
+//! `2^-20` relative), and the frame rows of those NDC bounds
+//! (`oy + (1 − y)·h/2`, as `Pipeline::band_bounds`) by two rows more, for
+//! snapping and the top-left rule. A sphere reaching `w ≤ 0`, or values
+//! that are not finite, gives no rows: the cluster is tested per band.
+//!
+//! # When the record is built
+//! A frame's first band (one that does not start below the previous band)
+//! and a band drawing another mesh, matrix, clip planes, culling or
+//! viewport than the last call are tested per band alone; the next band
+//! with the same mesh and matrix builds the record, and later bands of the
+//! frame use it. So a cache shared by meshes drawn in turn stays correct
+//! and costs what the per-band tests cost, and a stale record is never
+//! read. Clusters beyond [`FRAME_CLUSTERS`] are tested per band.
+
+use super::cluster::ClusterCull;
+use super::inside::InsideView;
+use crate::clip3d::ClipPlanes;
+use crate::edge::Cull;
+use crate::math::Vec4;
+use crate::mesh::{Meshlet, SPHERE_TOLERANCE};
+
+/// Clusters per mesh whose verdicts the record keeps (the knot has 216).
+pub const FRAME_CLUSTERS: usize = 256;
+
+/// One cluster's record: its frame rows (inclusive) and verdicts.
+#[derive(Clone, Copy, Debug, Default)]
+pub(super) struct ClusterFrame {
+    top: i16,
+    bottom: i16,
+    flags: u8,
+}
+
+impl ClusterFrame {
+    /// Outside the view volume (as the per-band view test says).
+    pub(super) const OUTSIDE: u8 = 1;
+    /// Facing away from the eye (its normal cone).
+    pub(super) const AWAY: u8 = 2;
+    /// Inside the clip volume ([`InsideView::contains`]).
+    pub(super) const INSIDE: u8 = 4;
+
+    /// True if the cluster may have a triangle in frame rows `rows`.
+    #[inline]
+    pub(super) fn reaches(&self, (y0, y1): (i32, i32)) -> bool {
+        i32::from(self.bottom) >= y0 && i32::from(self.top) <= y1
+    }
+
+    /// The verdict bits.
+    #[inline]
+    pub(super) fn flags(&self) -> u8 {
+        self.flags
+    }
+}
+
+/// What the record was built for.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(super) struct FrameKey {
+    /// The clusters' address and count.
+    pub(super) mesh: (usize, usize),
+    /// The model-view-projection matrix's rows, as `f32` bits.
+    pub(super) mvp: [[u32; 4]; 4],
+    pub(super) planes: ClipPlanes,
+    pub(super) cull: Cull,
+    pub(super) size: (u32, u32),
+    pub(super) origin: (i64, i64),
+}
+
+/// The per-frame record of a [`ClusterCache`](super::ClusterCache).
+pub(super) struct FrameClusters {
+    key: Option<FrameKey>,
+    /// Whether `entries` hold the record of `key` for this frame.
+    built: bool,
+    /// First row of the band the record was last asked for.
+    last_row: i32,
+    entries: [ClusterFrame; FRAME_CLUSTERS],
+}
+
+impl FrameClusters {
+    pub(super) const EMPTY: Self = FrameClusters {
+        key: None,
+        built: false,
+        last_row: i32::MAX,
+        entries: [ClusterFrame { top: 0, bottom: 0, flags: 0 }; FRAME_CLUSTERS],
+    };
+
+    /// The record for `key` in the band starting at `first_row`: empty (test
+    /// every cluster per band) on a frame's first band or a new key, built
+    /// on the next band with the same key, then reused (module docs).
+    pub(super) fn prepare(
+        &mut self,
+        key: FrameKey,
+        first_row: i32,
+        meshlets: &[Meshlet],
+        rows: [Vec4<f32>; 4],
+        cull: &ClusterCull,
+        inside: &InsideView,
+    ) -> &[ClusterFrame] {
+        let same = self.key == Some(key) && first_row > self.last_row;
+        self.last_row = first_row;
+        if !same {
+            // A frame's first band, or another mesh or matrix: the band
+            // tests alone, and a record only if the next band asks again
+            // (a cache shared by meshes in turn never pays for one).
+            (self.key, self.built) = (Some(key), false);
+            return &[];
+        }
+        if !self.built {
+            self.built = true;
+            let reach = SphereRows::new(rows, key.size.1, key.origin.1);
+            for (e, m) in self.entries.iter_mut().zip(meshlets) {
+                let outside = !cull.view_keeps(m);
+                let away = !outside && cull.faces_away(m);
+                let within = !outside && !away && inside.contains(m.sphere);
+                let (top, bottom) = reach.rows(m.sphere).unwrap_or((i16::MIN, i16::MAX));
+                let flags = (outside as u8 * ClusterFrame::OUTSIDE)
+                    | (away as u8 * ClusterFrame::AWAY)
+                    | (within as u8 * ClusterFrame::INSIDE);
+                *e = ClusterFrame { top, bottom, flags };
+            }
+        }
+        &self.entries[..meshlets.len().min(FRAME_CLUSTERS)]
+    }
+}
+
+/// The frame rows of spheres (module docs) for one matrix and viewport.
+struct SphereRows {
+    y: Vec4<f32>,
+    w: Vec4<f32>,
+    /// `|Y|` and `|W|` of the rows' `xyz`.
+    y_len: f32,
+    w_len: f32,
+    half_h: f32,
+    oy: f32,
+}
+
+impl SphereRows {
+    fn new(rows: [Vec4<f32>; 4], height: u32, oy: i64) -> Self {
+        let (y, w) = (rows[1], rows[3]);
+        let half_h = height as f32 * 0.5;
+        SphereRows { y, w, y_len: y.xyz().length(), w_len: w.xyz().length(), half_h, oy: oy as f32 }
+    }
+
+    /// The first and last frame rows the sphere can reach, or `None`.
+    fn rows(&self, (c, r): ([f32; 3], f32)) -> Option<(i16, i16)> {
+        let r = r * (1.0 + 2.0 * SPHERE_TOLERANCE);
+        let centre = Vec4::new(c[0], c[1], c[2], 1.0);
+        let (yc, wc) = (self.y.dot(centre), self.w.dot(centre));
+        let (ry, rw) = (r * self.y_len, r * self.w_len);
+        let (w_lo, w_hi) = (wc - rw, wc + rw);
+        if !(w_lo > 0.0 && w_hi.is_finite()) {
+            return None;
+        }
+        let (y_lo, y_hi) = (yc - ry, yc + ry);
+        let lo = y_lo / if y_lo >= 0.0 { w_hi } else { w_lo };
+        let hi = y_hi / if y_hi >= 0.0 { w_lo } else { w_hi };
+        let widen = |v: f32| v.abs() * (1.0 / 1024.0) + 1.0 / 1024.0;
+        let (lo, hi) = (lo - widen(lo), hi + widen(hi));
+        // NDC y runs up, rows down: the top row from the highest y.
+        let row = |k: f32| self.oy + (1.0 - k) * self.half_h;
+        let (top, bottom) = (row(hi) - 2.0, row(lo) + 2.0);
+        if !(top.is_finite() && bottom.is_finite()) {
+            return None;
+        }
+        // `as` saturates: rows beyond i16 stay beyond every band.
+        Some((floor_i32(top) as i16, ceil_i32(bottom) as i16))
+    }
+}
+
+/// `⌊v⌋` for finite `v` within `i32` (no `std`): truncation, one lower for
+/// a negative value with a fraction; beyond `i32` it saturates, which the
+/// `i16` cast then saturates again.
+fn floor_i32(v: f32) -> i32 {
+    let t = v as i32;
+    if (t as f32) > v { t.saturating_sub(1) } else { t }
+}
+
+/// `⌈v⌉` for finite `v`, as [`floor_i32`].
+fn ceil_i32(v: f32) -> i32 {
+    let t = v as i32;
+    if (t as f32) < v { t.saturating_add(1) } else { t }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::math::{Mat4, Vec3, transform};
+
+    fn rng(seed: &mut u64) -> f32 {
+        *seed ^= *seed << 13;
+        *seed ^= *seed >> 7;
+        *seed ^= *seed << 17;
+        ((*seed >> 11) as f64 / (1u64 << 52) as f64 - 1.0) as f32
+    }
+
+    /// Every point of a sphere (within its tolerance) in front of the eye
+    /// projects at least one row inside the recorded rows, over random
+    /// cameras, spheres and viewports; the rows are not vacuous.
+    #[test]
+    fn sphere_rows_hold_every_point() {
+        let mut seed = 0x0B5E_55ED_F00Du64;
+        let (mut checked, mut tight) = (0u32, 0u32);
+        for _ in 0..400 {
+            let dir = Vec3::new(rng(&mut seed), rng(&mut seed), rng(&mut seed) + 2.0);
+            let eye = dir * (2.0 + 3.0 * rng(&mut seed).abs());
+            let Ok(view) = transform::look_at(eye, Vec3::new(0.0, 0.0, 0.0), Vec3::new(0.0, 1.0, 0.0)) else {
+                continue;
+            };
+            let Ok(proj) = transform::perspective(0.5 + rng(&mut seed).abs(), 1.3, 0.3, 20.0) else {
+                continue;
+            };
+            let mvp: Mat4<f32> = proj * view;
+            let rows = super::super::rows_f32(&mvp);
+            let (h, oy) = (60 + (rng(&mut seed).abs() * 400.0) as u32, (rng(&mut seed) * 100.0) as i64);
+            let reach = SphereRows::new(rows, h, oy);
+            for _ in 0..40 {
+                let c = [rng(&mut seed) * 3.0, rng(&mut seed) * 3.0, rng(&mut seed) * 3.0];
+                let r = rng(&mut seed).abs() * 0.5;
+                let Some((top, bottom)) = reach.rows((c, r)) else { continue };
+                tight += (i32::from(bottom) - i32::from(top) < h as i32) as u32;
+                for i in 0..48 {
+                    let d = [rng(&mut seed), rng(&mut seed), rng(&mut seed)];
+                    let len = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
+                    if len == 0.0 {
+                        continue;
+                    }
+                    let s = r * (1.0 + SPHERE_TOLERANCE) / len
+                        * if i % 3 == 0 { 1.0 } else { rng(&mut seed).abs() };
+                    let p = [0, 1, 2].map(|k| f64::from(c[k] + d[k] * s));
+                    let row = |v: Vec4<f32>| {
+                        f64::from(v.x) * p[0] + f64::from(v.y) * p[1] + f64::from(v.z) * p[2] + f64::from(v.w)
+                    };
+                    let (y, w) = (row(rows[1]), row(rows[3]));
+                    assert!(w > 0.0, "a sphere with rows reaches w ≤ 0");
+                    let screen = oy as f64 + (1.0 - y / w) * f64::from(h) * 0.5;
+                    // A triangle there covers rows whose centre it reaches:
+                    // within a row of the point.
+                    assert!(
+                        f64::from(top) <= screen - 1.0 && f64::from(bottom) >= screen + 1.0,
+                        "{c:?} {r} {screen}"
+                    );
+                    checked += 1;
+                }
+            }
+        }
+        assert!(checked > 100_000 && tight > 5_000, "{checked} {tight}");
+    }
+
+    /// Spheres across or behind the eye, and values that are not finite,
+    /// give no rows (tested per band).
+    #[test]
+    fn spheres_reaching_the_eye_have_no_rows() {
+        let view =
+            transform::look_at(Vec3::new(0.0, 0.0, 5.0), Vec3::new(0.0, 0.0, 0.0), Vec3::new(0.0, 1.0, 0.0))
+                .unwrap();
+        let mvp: Mat4<f32> = transform::perspective(0.8, 1.0, 1.0, 10.0).unwrap() * view;
+        let reach = SphereRows::new(super::super::rows_f32(&mvp), 240, 0);
+        let (top, bottom) = reach.rows(([0.0; 3], 0.5)).expect("in front");
+        assert!(top < 120 && bottom > 120 && bottom - top < 80, "{top} {bottom}");
+        assert_eq!(reach.rows(([0.0, 0.0, 5.0], 0.5)), None); // around the eye
+        assert_eq!(reach.rows(([0.0, 0.0, 9.0], 0.5)), None); // behind it
+        assert_eq!(reach.rows(([f32::NAN, 0.0, 0.0], 0.5)), None);
+        assert_eq!(reach.rows(([0.0; 3], f32::INFINITY)), None);
+    }
+}
