@@ -355,20 +355,25 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         for (i, m) in mesh.meshlets.iter().enumerate() {
             // The band-independent verdicts from the frame's record where it
             // has the cluster, in the per-band tests' order (same counts).
-            let inside_view = match record.get(i) {
-                Some(r) => {
-                    if !r.reaches(rows) || !cull.slab_keeps(m) || r.flags() & ClusterFrame::OUTSIDE != 0 {
+            let flags = record.get(i).map(|r| (r.reaches(rows), r.flags()));
+            let inside_view = match flags {
+                Some((reaches, f)) => {
+                    if !reaches || f & ClusterFrame::OUTSIDE != 0 || !cull.slab_keeps(m) {
                         stats.clusters_outside += 1;
                         continue;
                     }
-                    if r.flags() & ClusterFrame::AWAY != 0 {
+                    if f & ClusterFrame::AWAY != 0 {
                         stats.clusters_back_facing += 1;
                         continue;
                     }
-                    r.flags() & ClusterFrame::INSIDE != 0
+                    f & ClusterFrame::INSIDE != 0
                 }
-                None if cull.keeps(m, &mut stats) => inside.contains(m.sphere),
-                None => continue,
+                None => {
+                    if !cull.keeps(m, &mut stats) {
+                        continue;
+                    }
+                    inside.contains(m.sphere)
+                }
             };
             let (vo, vc) = (m.vertex_offset as usize, usize::from(m.vertex_count));
             let (to, tc) = (m.triangle_offset as usize, usize::from(m.triangle_count));
