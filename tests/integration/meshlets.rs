@@ -38,7 +38,11 @@ struct Clustered {
 }
 
 fn torus() -> Clustered {
-    let (m, n) = (48, 24);
+    torus_of(48, 24)
+}
+
+/// [`torus`] with `m` segments around and `n` around the tube.
+fn torus_of(m: usize, n: usize) -> Clustered {
     let mut p = vec![[0.0; 3]; mesh::torus_vertex_count(m, n)];
     let mut nn = vec![[0.0; 3]; p.len()];
     let mut idx = vec![[0u16; 3]; mesh::torus_triangle_count(m, n)];
@@ -361,4 +365,19 @@ fn a_kept_cluster_cache_draws_what_fresh_caches_draw() {
     let want = frame_with(&c, &p, &one, &mut fresh());
     assert_ne!(want, before, "the move shows");
     assert_eq!(frame_with(&c, &p, &one, &mut kept), want, "after the move");
+}
+
+/// A mesh of more clusters than the frame record keeps: those beyond it are
+/// tested per band, and the image is still the binned path's.
+#[test]
+fn clusters_beyond_the_frame_record_are_drawn() {
+    let c = torus_of(128, 24);
+    assert!(c.meshlets.len() > microraster::pipeline::FRAME_CLUSTERS + 100, "{}", c.meshlets.len());
+    for (i, cull) in [Cull::Clockwise, Cull::None].into_iter().enumerate() {
+        let p = pipeline::<f32>(cull, [0.4 * i as f32 - 0.8, 1.1, 3.3]);
+        let angle = 0.5 + i as f32;
+        let reference = binned::<f32, Affine, 16>(&c, &p, angle);
+        assert!(covered(&reference) > 1000);
+        assert_eq!(direct::<f32, Affine, 16>(&c, &p, angle, Affine), reference, "{cull:?}");
+    }
 }
