@@ -299,11 +299,18 @@ bench_board() {
 # frame each; MICRORASTER_FW_PROFILE), in a target folder of its own, and
 # QEMU's block log (-d in_asm,exec,nochain) read by examples/fw_profile.
 profile() { # profile ROWS [N]
-  local rows=$1 shown=${2:-30} elf fifo tool status=0
+  local rows=$1 shown=${2:-30} elf
   export MICRORASTER_FW_BENCH=$rows MICRORASTER_FW_PROFILE=1
   setup
   elf=$(FW_DIR=$ROOT/target/firmware-profile CARGO_PROFILE_RELEASE_DEBUG=line-tables-only \
     MICRORASTER_BOARD=mps2-an386 build m4f fw_bench)
+  profile_elf "$elf" "$shown" || die "profiling rows $rows failed"
+}
+
+# Runs ELF on mps2-an386 with QEMU's block log piped into fw_profile, which
+# prints the SHOWN costliest functions, lines and library callers.
+profile_elf() { # profile_elf ELF SHOWN
+  local elf=$1 shown=$2 fifo tool status=0
   cargo build --quiet --release --example fw_profile
   tool=$ROOT/target/release/examples/fw_profile
   fifo=$(mktemp -u "${TMPDIR:-/tmp}/fw-profile.XXXXXX")
@@ -313,28 +320,19 @@ profile() { # profile ROWS [N]
     qemu "$elf" >/dev/null || status=$?
   wait $! || status=$?
   rm -f "$fifo"
-  [ "$status" -eq 0 ] || die "profiling rows $rows failed"
+  return "$status"
 }
 
 # The same for one fw_sweep configuration (MICRORASTER_FW_SWEEP_ONLY) on
 # either target (the sweep runs both on mps2-an386). The count includes the
 # sweep's clock calibration.
 profile_sweep() { # profile_sweep TARGET KEY [N]
-  local t=$1 key=$2 shown=${3:-30} elf fifo tool status=0
+  local t=$1 key=$2 shown=${3:-30} elf
   export MICRORASTER_FW_SWEEP_ONLY=$key
   setup
   elf=$(FW_DIR=$ROOT/target/firmware-profile CARGO_PROFILE_RELEASE_DEBUG=line-tables-only \
     MICRORASTER_BOARD=mps2-an386 build "$t" fw_sweep)
-  cargo build --quiet --release --example fw_profile
-  tool=$ROOT/target/release/examples/fw_profile
-  fifo=$(mktemp -u "${TMPDIR:-/tmp}/fw-profile.XXXXXX")
-  mkfifo "$fifo"
-  "$tool" "$elf" "$shown" <"$fifo" &
-  MICRORASTER_BOARD=mps2-an386 MICRORASTER_QEMU_ARGS="-icount shift=0 -d in_asm,exec,nochain -D $fifo" \
-    qemu "$elf" >/dev/null || status=$?
-  wait $! || status=$?
-  rm -f "$fifo"
-  [ "$status" -eq 0 ] || die "profiling $key on $t failed"
+  profile_elf "$elf" "$shown" || die "profiling $key on $t failed"
 }
 
 # One fw_sweep configuration's count on one target, printed only.
