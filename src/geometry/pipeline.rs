@@ -330,8 +330,8 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     /// triangles are then taken in their order in chunks of at most
     /// `min(V, 64)` vertices, and a vertex is computed once per chunk that
     /// uses it. The same output again, with RAM that does not grow with
-    /// the mesh (a 64-entry cache is 3,072 bytes for `f32` and
-    /// [`Fx`](crate::math::Fx); [`ClusterCache`] is one).
+    /// the mesh (a 64-entry cache, `VertexCache<T, S, 64>`, is 3,072 bytes
+    /// for `f32` and [`Fx`](crate::math::Fx)).
     ///
     /// Errors: those of [`Pipeline::draw_valid_mesh`], and first
     /// [`Error::CapacityExceeded`] with `needed` 3 if `V < 3` and the mesh
