@@ -381,3 +381,37 @@ fn clusters_beyond_the_frame_record_are_drawn() {
         assert_eq!(direct::<f32, Affine, 16>(&c, &p, angle, Affine), reference, "{cull:?}");
     }
 }
+
+/// One frame through a cluster cache whose record holds `N` clusters.
+fn frame_recording<const N: usize>(c: &Clustered, p: &Pipeline<f32, 4>, angle: f32) -> Vec<Rgb565> {
+    let mut cache = ClusterCache::<f32, 4, N>::sized();
+    let mut fb = Framebuffer::new(W as u32, H, BG);
+    let (mut band, mut depth) = (Band::<Rgb565, W, 16>::new(BG), DepthBand::<Depth16, W, 16>::new());
+    let (mesh, model) = (c.meshlets(), model::<f32>(angle));
+    Renderer::new(H, BG)
+        .render(
+            Direct3d::new(&mut depth, DepthState::LESS_WRITE, Affine, |band| {
+                p.draw_meshlets(&mesh, &model, Rgb565::new(28, 44, 12), &mut cache, band).map(|_| ())
+            }),
+            &mut band,
+            &mut fb,
+        )
+        .unwrap();
+    fb.pixels
+}
+
+/// The record's capacity changes no pixel: none (every cluster tested per
+/// band), part of the mesh's clusters, all of them.
+#[test]
+fn the_record_capacity_changes_no_pixel() {
+    let c = torus();
+    assert!(c.meshlets.len() > 64, "{}", c.meshlets.len());
+    for i in 0..4 {
+        let p = pipeline::<f32>(Cull::Clockwise, [0.5 * i as f32 - 1.0, 1.2, 3.3]);
+        let angle = 0.9 * i as f32;
+        let reference = binned::<f32, Affine, 16>(&c, &p, angle);
+        assert_eq!(frame_recording::<0>(&c, &p, angle), reference, "none {i}");
+        assert_eq!(frame_recording::<64>(&c, &p, angle), reference, "64 {i}");
+        assert_eq!(frame_recording::<256>(&c, &p, angle), reference, "256 {i}");
+    }
+}

@@ -34,38 +34,53 @@ use crate::{Error, Interpolate};
 
 /// The cache [`Pipeline::draw_meshlets`] needs: one cluster's vertices
 /// (a [`VertexCache`] of [`MAX_MESHLET_VERTICES`], the most a valid cluster
-/// has, so [`Error::CapacityExceeded`] cannot come from it) and the frame's
-/// record of each cluster's band-independent tests and rows (up to
-/// [`FRAME_CLUSTERS`](super::FRAME_CLUSTERS) clusters; see `frame_clusters`): about 4.6 KB for
-/// `f32` and `Fx`. Use one per mesh drawn in every band: a cache shared by
-/// several meshes stays correct but rebuilds its record at each switch.
+/// has, so [`Error::CapacityExceeded`] cannot come from it, 3,072 bytes for
+/// `f32` and `Fx`) and the frame's record of up to `CLUSTERS` clusters (6
+/// bytes each; [`FRAME_CLUSTERS`](super::FRAME_CLUSTERS) = 256 unless told):
+/// what their band-independent tests said this frame and which rows they
+/// can reach, so that each band skips the clusters it cannot meet with two
+/// integer comparisons (`frame_clusters`). Clusters beyond `CLUSTERS` are
+/// tested per band; with `CLUSTERS = 0` all are, in 3 KB. The images are
+/// the same whatever `CLUSTERS` is. Use one per mesh drawn in every band: a
+/// cache shared by meshes drawn in turn stays correct but records nothing.
 ///
 /// ```
 /// use microraster::pipeline::ClusterCache;
 /// let cache = ClusterCache::<f32, 4>::new();
 /// assert!(core::mem::size_of_val(&cache) < 5_000);
+/// let small = ClusterCache::<f32, 4, 0>::sized(); // no record: per-band tests
+/// assert!(core::mem::size_of_val(&small) < 3_300);
 /// ```
-pub struct ClusterCache<T: Scalar, const S: u32> {
+pub struct ClusterCache<T: Scalar, const S: u32, const CLUSTERS: usize = { super::FRAME_CLUSTERS }> {
     vertices: VertexCache<T, S, MAX_MESHLET_VERTICES>,
-    frame: FrameClusters,
+    frame: FrameClusters<CLUSTERS>,
 }
 
 impl<T: Scalar, const S: u32> ClusterCache<T, S> {
-    /// An empty cache.
+    /// An empty cache recording [`FRAME_CLUSTERS`](super::FRAME_CLUSTERS)
+    /// clusters (its type is then inferred from its use, no turbofish).
     pub const fn new() -> Self {
+        Self::sized()
+    }
+}
+
+impl<T: Scalar, const S: u32, const CLUSTERS: usize> ClusterCache<T, S, CLUSTERS> {
+    /// An empty cache recording `CLUSTERS` clusters, as its type says
+    /// (`ClusterCache::<f32, 4, 0>::sized()`: none).
+    pub const fn sized() -> Self {
         ClusterCache { vertices: VertexCache::new(), frame: FrameClusters::EMPTY }
     }
 }
 
-impl<T: Scalar, const S: u32> Default for ClusterCache<T, S> {
+impl<T: Scalar, const S: u32, const CLUSTERS: usize> Default for ClusterCache<T, S, CLUSTERS> {
     fn default() -> Self {
-        Self::new()
+        Self::sized()
     }
 }
 
-impl<T: Scalar, const S: u32> core::fmt::Debug for ClusterCache<T, S> {
+impl<T: Scalar, const S: u32, const CLUSTERS: usize> core::fmt::Debug for ClusterCache<T, S, CLUSTERS> {
     fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
-        write!(f, "ClusterCache")
+        write!(f, "ClusterCache<{CLUSTERS}>")
     }
 }
 
@@ -244,12 +259,12 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     /// of [`Lighting::validate`](crate::light::Lighting::validate); for
     /// [`Fx`](crate::math::Fx), [`Error::CoordinateOutOfRange`] as for
     /// [`Pipeline::draw_valid_mesh`].
-    pub fn draw_meshlets<C, F, M, const W: usize>(
+    pub fn draw_meshlets<C, F, M, const W: usize, const N: usize>(
         &self,
         mesh: &ValidMeshletMesh<'_>,
         model: &Mat4<T>,
         color: C,
-        cache: &mut ClusterCache<T, S>,
+        cache: &mut ClusterCache<T, S, N>,
         band: &mut Band3d<'_, '_, C, F, M, W>,
     ) -> Result<MeshStats, Error>
     where
@@ -262,13 +277,13 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
 
     /// [`Pipeline::draw_meshlets`] with the vertices coloured by `material`
     /// (per vertex; a per-face material is [`Error::InvalidParameter`]).
-    pub(crate) fn draw_meshlets_with<C, F, M, Mat, const W: usize>(
+    pub(crate) fn draw_meshlets_with<C, F, M, Mat, const W: usize, const N: usize>(
         &self,
         mesh: &ValidMeshletMesh<'_>,
         model: &Mat4<T>,
         color: C,
         material: &Mat,
-        cache: &mut ClusterCache<T, S>,
+        cache: &mut ClusterCache<T, S, N>,
         band: &mut Band3d<'_, '_, C, F, M, W>,
     ) -> Result<MeshStats, Error>
     where
@@ -306,12 +321,12 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     /// assert!(front > 20 && front < 60 && stats.emitted == front);
     /// # Ok::<(), microraster::Error>(())
     /// ```
-    pub fn meshlet_triangles<C: Interpolate>(
+    pub fn meshlet_triangles<C: Interpolate, const N: usize>(
         &self,
         mesh: &ValidMeshletMesh<'_>,
         model: &Mat4<T>,
         color: C,
-        cache: &mut ClusterCache<T, S>,
+        cache: &mut ClusterCache<T, S, N>,
         rows: (i32, i32),
         sink: impl FnMut(&ScreenTriangle<S>),
     ) -> Result<MeshStats, Error> {
@@ -321,13 +336,13 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     /// [`Pipeline::meshlet_triangles`] with the vertices coloured by
     /// `material` ([`Pipeline::draw_meshlets_with`]).
     #[allow(clippy::too_many_arguments)]
-    fn meshlets_into<C: Interpolate, Mat: Material<T>>(
+    fn meshlets_into<C: Interpolate, Mat: Material<T>, const N: usize>(
         &self,
         mesh: &ValidMeshletMesh<'_>,
         model: &Mat4<T>,
         color: C,
         material: &Mat,
-        cache: &mut ClusterCache<T, S>,
+        cache: &mut ClusterCache<T, S, N>,
         rows: (i32, i32),
         mut sink: impl FnMut(&ScreenTriangle<S>),
     ) -> Result<MeshStats, Error> {

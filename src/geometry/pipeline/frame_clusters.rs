@@ -32,7 +32,8 @@
 //! with the same mesh and matrix builds the record, and later bands of the
 //! frame use it. So a cache shared by meshes drawn in turn stays correct
 //! and costs what the per-band tests cost, and a stale record is never
-//! read. Clusters beyond [`FRAME_CLUSTERS`] are tested per band.
+//! read. Clusters beyond the record's capacity (the cache's `CLUSTERS`,
+//! [`FRAME_CLUSTERS`] unless told) are tested per band.
 
 use super::cluster::ClusterCull;
 use super::inside::InsideView;
@@ -41,7 +42,8 @@ use crate::edge::Cull;
 use crate::math::Vec4;
 use crate::mesh::{Meshlet, SPHERE_TOLERANCE};
 
-/// Clusters per mesh whose verdicts the record keeps (the knot has 216).
+/// Clusters per mesh whose verdicts a [`ClusterCache`](super::ClusterCache)
+/// records unless its type says otherwise (the knot has 216).
 pub const FRAME_CLUSTERS: usize = 256;
 
 /// One cluster's record: its frame rows (inclusive) and verdicts.
@@ -87,21 +89,21 @@ pub(super) struct FrameKey {
 }
 
 /// The per-frame record of a [`ClusterCache`](super::ClusterCache).
-pub(super) struct FrameClusters {
+pub(super) struct FrameClusters<const N: usize> {
     key: Option<FrameKey>,
     /// Whether `entries` hold the record of `key` for this frame.
     built: bool,
     /// First row of the band the record was last asked for.
     last_row: i32,
-    entries: [ClusterFrame; FRAME_CLUSTERS],
+    entries: [ClusterFrame; N],
 }
 
-impl FrameClusters {
+impl<const N: usize> FrameClusters<N> {
     pub(super) const EMPTY: Self = FrameClusters {
         key: None,
         built: false,
         last_row: i32::MAX,
-        entries: [ClusterFrame { top: 0, bottom: 0, flags: 0 }; FRAME_CLUSTERS],
+        entries: [ClusterFrame { top: 0, bottom: 0, flags: 0 }; N],
     };
 
     /// The record for `key` in the band starting at `first_row`: empty (test
@@ -116,6 +118,9 @@ impl FrameClusters {
         cull: &ClusterCull,
         inside: &InsideView,
     ) -> &[ClusterFrame] {
+        if N == 0 {
+            return &[];
+        }
         let same = self.key == Some(key) && first_row > self.last_row;
         self.last_row = first_row;
         if !same {
@@ -139,7 +144,7 @@ impl FrameClusters {
                 *e = ClusterFrame { top, bottom, flags };
             }
         }
-        &self.entries[..meshlets.len().min(FRAME_CLUSTERS)]
+        &self.entries[..meshlets.len().min(N)]
     }
 }
 
