@@ -187,14 +187,15 @@ impl SphereRows {
         if !(top.is_finite() && bottom.is_finite()) {
             return None;
         }
-        // `as` saturates: rows beyond i16 stay beyond every band.
-        Some((floor_i32(top) as i16, ceil_i32(bottom) as i16))
+        // Saturated to `i16` (a cast would wrap): rows beyond it stay beyond
+        // every band, which lies within 0..4096 (`MAX_FRAME_DIM`).
+        let to_i16 = |v: i32| v.clamp(i16::MIN.into(), i16::MAX.into()) as i16;
+        Some((to_i16(floor_i32(top)), to_i16(ceil_i32(bottom))))
     }
 }
 
-/// `⌊v⌋` for finite `v` within `i32` (no `std`): truncation, one lower for
-/// a negative value with a fraction; beyond `i32` it saturates, which the
-/// `i16` cast then saturates again.
+/// `⌊v⌋` for finite `v` (no `std`): truncation, one lower for a negative
+/// value with a fraction; beyond `i32` it saturates.
 fn floor_i32(v: f32) -> i32 {
     let t = v as i32;
     if (t as f32) > v { t.saturating_sub(1) } else { t }
@@ -272,9 +273,10 @@ mod tests {
     }
 
     /// Spheres across or behind the eye, and values that are not finite,
-    /// give no rows (tested per band).
+    /// give no rows (tested per band); spheres just in front of the eye
+    /// give rows saturated to `i16`.
     #[test]
-    fn spheres_reaching_the_eye_have_no_rows() {
+    fn spheres_at_the_eye_have_no_rows_and_near_it_saturate() {
         let view =
             transform::look_at(Vec3::new(0.0, 0.0, 5.0), Vec3::new(0.0, 0.0, 0.0), Vec3::new(0.0, 1.0, 0.0))
                 .unwrap();
@@ -282,6 +284,17 @@ mod tests {
         let reach = SphereRows::new(super::super::rows_f32(&mvp), 240, 0);
         let (top, bottom) = reach.rows(([0.0; 3], 0.5)).expect("in front");
         assert!(top < 120 && bottom > 120 && bottom - top < 80, "{top} {bottom}");
+        // Spheres just in front of the eye reach far beyond the frame, past
+        // the `i16` range: their rows saturate instead of wrapping.
+        let mut huge = 0;
+        for k in 1..200 {
+            let r = 0.51 - 0.51 * 0.9f32.powi(k);
+            if let Some((top, bottom)) = reach.rows(([0.0, 0.0, 4.49], r)) {
+                assert!(top <= 120 && bottom >= 120, "{r}: {top} {bottom}");
+                huge += (top == i16::MIN || bottom == i16::MAX) as u32;
+            }
+        }
+        assert!(huge > 5, "{huge}");
         assert_eq!(reach.rows(([0.0, 0.0, 5.0], 0.5)), None); // around the eye
         assert_eq!(reach.rows(([0.0, 0.0, 9.0], 0.5)), None); // behind it
         assert_eq!(reach.rows(([f32::NAN, 0.0, 0.0], 0.5)), None);
