@@ -132,20 +132,24 @@ pub(super) struct ClusterCull {
 }
 
 impl ClusterCull {
-    fn new<T: Scalar>(mvp: &Mat4<T>, far: bool, band: &Band<T>, cone: bool) -> Self {
-        let rows = rows_f32(mvp);
+    /// The tests for a model-view-projection matrix given by its rows in
+    /// `f32` ([`rows_f32`]).
+    fn new<T: Scalar>(rows: [Vec4<f32>; 4], far: bool, band: &Band<T>, cone: bool) -> Self {
         let [x, y, z, w] = rows;
         let mut planes = [(Vec4::new(0.0, 0.0, 0.0, 0.0), 0.0); 8];
         let mut count = 0;
         let mut add = |p: Vec4<f32>| {
             planes[count] = (p, p.xyz().length() * (1.0 + CULL_SLACK));
             count += 1;
-            count
         };
         // The slab first: it rejects most clusters of a band.
-        let above = band.above.map(|k| add(w * k.to_f32() - y));
-        let below = band.below.map(|k| add(y - w * k.to_f32()));
-        let slab = below.or(above).unwrap_or(0);
+        if let Some(k) = band.above {
+            add(w * k.to_f32() - y);
+        }
+        if let Some(k) = band.below {
+            add(y - w * k.to_f32());
+        }
+        let slab = usize::from(band.above.is_some()) + usize::from(band.below.is_some());
         for p in view_planes(rows, far) {
             add(p);
         }
@@ -353,10 +357,11 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         let Some(setup) = pipe.mesh_setup(&mesh.mesh, model, color, &mut stats)? else {
             return Ok(stats);
         };
-        let cull =
-            ClusterCull::new(&setup.ctx.mvp, pipe.clip.far(), &setup.band, pipe.cull == Cull::Clockwise);
-        let inside = InsideView::new(&setup.ctx.mvp, setup.planes);
+        // The matrix's rows in `f32` once, for the cluster tests, the inside
+        // test and the record's key.
         let rows_f = rows_f32(&setup.ctx.mvp);
+        let cull = ClusterCull::new(rows_f, pipe.clip.far(), &setup.band, pipe.cull == Cull::Clockwise);
+        let inside = InsideView::from_rows(rows_f, setup.planes);
         let key = FrameKey {
             mesh: (mesh.meshlets.as_ptr() as usize, mesh.meshlets.len()),
             mvp: rows_f.map(|r| [r.x, r.y, r.z, r.w].map(f32::to_bits)),

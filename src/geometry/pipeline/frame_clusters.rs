@@ -137,7 +137,11 @@ impl<const N: usize> FrameClusters<N> {
                 let outside = !cull.view_keeps(m);
                 let away = !outside && cull.faces_away(m);
                 let within = !outside && !away && inside.contains(m.sphere);
-                let (top, bottom) = reach.rows(m.sphere).unwrap_or((i16::MIN, i16::MAX));
+                // A cluster outside the view is skipped in every band whatever
+                // its rows; one facing away needs them (a band counts it
+                // outside or facing away as the per-band tests would).
+                let rows = if outside { None } else { reach.rows(m.sphere) };
+                let (top, bottom) = rows.unwrap_or((i16::MIN, i16::MAX));
                 let flags = (outside as u8 * ClusterFrame::OUTSIDE)
                     | (away as u8 * ClusterFrame::AWAY)
                     | (within as u8 * ClusterFrame::INSIDE);

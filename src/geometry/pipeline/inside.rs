@@ -54,7 +54,11 @@ fn l1(p: Vec4<f32>) -> f32 {
 
 impl InsideView {
     pub(super) fn new<T: Scalar>(mvp: &Mat4<T>, planes: ClipPlanes) -> Self {
-        let rows = super::rows_f32(mvp);
+        Self::from_rows(super::rows_f32(mvp), planes)
+    }
+
+    /// [`InsideView::new`] from the matrix's rows in `f32` ([`super::rows_f32`]).
+    pub(super) fn from_rows(rows: [Vec4<f32>; 4], planes: ClipPlanes) -> Self {
         let l1s = rows.map(l1);
         // Fx acts on w_min no smaller than its smallest value, 2^-16.
         let w_min = planes.w_min().max(ClipPlanes::W_MIN);
