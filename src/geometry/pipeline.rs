@@ -634,10 +634,12 @@ fn fx_product_fits<T: Scalar>(a: &Mat4<T>, b: &Mat4<T>) -> bool {
 /// 2^30, their difference below 2^31): a small triangle's, most of a mesh's.
 #[inline(always)]
 fn signed_area2(e1x: i32, e1y: i32, e2x: i32, e2y: i32) -> i64 {
-    match crate::math::divisor::ARMV6M.then(|| signed_area2_small(e1x, e1y, e2x, e2y)).flatten() {
-        Some(det) => det,
-        None => i64::from(e1x) * i64::from(e2y) - i64::from(e2x) * i64::from(e1y),
+    if crate::math::divisor::ARMV6M {
+        if let Some(det) = signed_area2_small(e1x, e1y, e2x, e2y) {
+            return det;
+        }
     }
+    i64::from(e1x) * i64::from(e2y) - i64::from(e2x) * i64::from(e1y)
 }
 
 /// [`signed_area2`] in 32 bits where every difference is below 2^15

@@ -288,7 +288,7 @@ impl Mul for Fx {
 /// [`saturating_mul_bits_16`]; elsewhere one widening multiply.
 #[inline]
 pub(crate) fn saturating_mul_bits(a: i32, b: i32) -> i32 {
-    if cfg!(all(target_arch = "arm", not(target_feature = "thumb2"))) {
+    if super::divisor::ARMV6M {
         saturating_mul_bits_16(a, b)
     } else {
         let p = (a as i64 * b as i64) >> 16; // |a·b| ≤ 2^62: no overflow
@@ -316,11 +316,7 @@ pub(crate) fn saturating_mul_bits_16(a: i32, b: i32) -> i32 {
 /// no clamp); elsewhere the widening product.
 #[inline(always)]
 pub(crate) fn mul_bits_in_range(a: i32, b: i32) -> i32 {
-    if cfg!(all(target_arch = "arm", not(target_feature = "thumb2"))) {
-        mul_bits_in_range_16(a, b)
-    } else {
-        ((a as i64 * b as i64) >> 16) as i32
-    }
+    if super::divisor::ARMV6M { mul_bits_in_range_16(a, b) } else { ((a as i64 * b as i64) >> 16) as i32 }
 }
 
 /// [`mul_bits_in_range`] from 16-bit halves (tested on every target).
@@ -426,6 +422,15 @@ fn fx_bits_from_f32_float(v: f32) -> i32 {
     }
 }
 
+/// `m / 2^k` rounded to nearest, ties to even, for `m < 2^24` and `k` in
+/// `1..=25`, without a branch: adding half − 1, plus 1 where the quotient
+/// is odd, carries into it exactly when the remainder exceeds half, or
+/// equals it with an odd quotient (`m + 2^(k−1) < 2^25`: no overflow).
+#[inline(always)]
+fn shr_round_even(m: u32, k: u32) -> u32 {
+    (m + (1u32 << (k - 1)) - 1 + ((m >> k) & 1)) >> k
+}
+
 /// [`fx_bits_from_f32`] with 32-bit integer operations only.
 #[inline]
 fn fx_bits_from_f32_int(v: f32) -> i32 {
@@ -438,8 +443,7 @@ fn fx_bits_from_f32_int(v: f32) -> i32 {
     // values.
     let k = 134u32.wrapping_sub((bits >> 23) & 0xFF);
     if k.wrapping_sub(1) < 25 {
-        let m = (bits & 0x7F_FFFF) | 1 << 23;
-        let mag = ((m + (1u32 << (k - 1)) - 1 + ((m >> k) & 1)) >> k) as i32;
+        let mag = shr_round_even((bits & 0x7F_FFFF) | 1 << 23, k) as i32;
         return if bits >> 31 != 0 { -mag } else { mag };
     }
     let neg = bits >> 31 != 0;
@@ -470,10 +474,7 @@ fn fx_bits_from_f32_int(v: f32) -> i32 {
         if k > 25 {
             return 0; // below half of 2^-16 (m < 2^24 ≤ 2^(k−2))
         }
-        // Ties to even without a branch: adding half − 1, plus 1 where the
-        // quotient is odd, carries into it exactly when the remainder
-        // exceeds half, or equals it with an odd quotient (m + 2^(k−1) < 2^25).
-        (m + (1u32 << (k - 1)) - 1 + ((m >> k) & 1)) >> k
+        shr_round_even(m, k as u32) // k in 1..=25
     };
     if neg {
         // mag ≤ 2^31: −2^31 is representable.
@@ -497,7 +498,7 @@ impl Div for Fx {
         } else {
             // Parts with a hardware divide (Thumb-2) divide in 64 bits; the
             // Cortex-M0 has none and uses the shift-subtract form.
-            if cfg!(all(target_arch = "arm", not(target_feature = "thumb2"))) {
+            if super::divisor::ARMV6M {
                 Fx::from_bits(saturating_div_bits(self.to_bits(), o.to_bits()))
             } else {
                 Fx(self.0.saturating_div(o.0))
@@ -550,7 +551,7 @@ impl Scalar for Fx {
             Some(n) if n.unsigned_abs() < 1 << 62 => {
                 // 0 < d < 2^31; the same rounding as (|n| + d/2)/d.
                 let (m, d) = (n.unsigned_abs(), d as u32);
-                let q = if cfg!(all(target_arch = "arm", not(target_feature = "thumb2"))) {
+                let q = if super::divisor::ARMV6M {
                     div_round_u64_u32(m, d)
                 } else {
                     (m + (d / 2) as u64) / d as u64
