@@ -301,12 +301,13 @@ fn count_both<T: Scalar>() -> (u32, u32) {
 }
 
 /// One frame of `c` through `cache` (16-row bands, f32, affine), each band
-/// drawing the mesh once per model of `models`.
-fn frame_with(
+/// drawing the mesh once per model of `models`, model `k` with cache
+/// `k mod cache.len()` (whose record holds `N` clusters).
+fn frame_with<const N: usize>(
     c: &Clustered,
     p: &Pipeline<f32, 4>,
     models: &[Mat4<f32>],
-    cache: &mut [ClusterCache<f32, 4>],
+    cache: &mut [ClusterCache<f32, 4, N>],
 ) -> Vec<Rgb565> {
     let mut fb = Framebuffer::new(W as u32, H, BG);
     let (mut band, mut depth) = (Band::<Rgb565, W, 16>::new(BG), DepthBand::<Depth16, W, 16>::new());
@@ -382,24 +383,6 @@ fn clusters_beyond_the_frame_record_are_drawn() {
     }
 }
 
-/// One frame through a cluster cache whose record holds `N` clusters.
-fn frame_recording<const N: usize>(c: &Clustered, p: &Pipeline<f32, 4>, angle: f32) -> Vec<Rgb565> {
-    let mut cache = ClusterCache::<f32, 4, N>::sized();
-    let mut fb = Framebuffer::new(W as u32, H, BG);
-    let (mut band, mut depth) = (Band::<Rgb565, W, 16>::new(BG), DepthBand::<Depth16, W, 16>::new());
-    let (mesh, model) = (c.meshlets(), model::<f32>(angle));
-    Renderer::new(H, BG)
-        .render(
-            Direct3d::new(&mut depth, DepthState::LESS_WRITE, Affine, |band| {
-                p.draw_meshlets(&mesh, &model, Rgb565::new(28, 44, 12), &mut cache, band).map(|_| ())
-            }),
-            &mut band,
-            &mut fb,
-        )
-        .unwrap();
-    fb.pixels
-}
-
 /// The record's capacity changes no pixel: none (every cluster tested per
 /// band), part of the mesh's clusters, all of them.
 #[test]
@@ -410,8 +393,11 @@ fn the_record_capacity_changes_no_pixel() {
         let p = pipeline::<f32>(Cull::Clockwise, [0.5 * i as f32 - 1.0, 1.2, 3.3]);
         let angle = 0.9 * i as f32;
         let reference = binned::<f32, Affine, 16>(&c, &p, angle);
-        assert_eq!(frame_recording::<0>(&c, &p, angle), reference, "none {i}");
-        assert_eq!(frame_recording::<64>(&c, &p, angle), reference, "64 {i}");
-        assert_eq!(frame_recording::<256>(&c, &p, angle), reference, "256 {i}");
+        let one = [model::<f32>(angle)];
+        let none = frame_with(&c, &p, &one, &mut [ClusterCache::<f32, 4, 0>::sized()]);
+        assert_eq!(none, reference, "none {i}");
+        let part = frame_with(&c, &p, &one, &mut [ClusterCache::<f32, 4, 64>::sized()]);
+        assert_eq!(part, reference, "64 {i}");
+        assert_eq!(frame_with(&c, &p, &one, &mut [ClusterCache::new()]), reference, "256 {i}");
     }
 }

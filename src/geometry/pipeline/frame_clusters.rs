@@ -213,15 +213,9 @@ fn ceil_i32(v: f32) -> i32 {
 
 #[cfg(test)]
 mod tests {
+    use super::super::inside::tests::rng;
     use super::*;
     use crate::math::{Mat4, Vec3, transform};
-
-    fn rng(seed: &mut u64) -> f32 {
-        *seed ^= *seed << 13;
-        *seed ^= *seed >> 7;
-        *seed ^= *seed << 17;
-        ((*seed >> 11) as f64 / (1u64 << 52) as f64 - 1.0) as f32
-    }
 
     /// Every point of a sphere (within its tolerance) in front of the eye
     /// projects at least one row inside the recorded rows, over random

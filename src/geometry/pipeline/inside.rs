@@ -100,12 +100,13 @@ impl InsideView {
 }
 
 #[cfg(test)]
-mod tests {
+pub(super) mod tests {
     use super::*;
     use crate::clip3d::VertexClass;
     use crate::math::{Fx, Vec3, transform};
 
-    fn rng(seed: &mut u64) -> f32 {
+    /// xorshift in [-1, 1) (also the frame record's tests).
+    pub(in crate::geometry::pipeline) fn rng(seed: &mut u64) -> f32 {
         *seed ^= *seed << 13;
         *seed ^= *seed >> 7;
         *seed ^= *seed << 17;
