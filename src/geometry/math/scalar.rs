@@ -301,8 +301,18 @@ pub(crate) fn saturating_mul_bits(a: i32, b: i32) -> i32 {
 /// additions and shifts are 64-bit (inline on every target). With
 /// `a = ah·2^16 + al` (`al` unsigned): `⌊a·b/2^16⌋ = ah·bh·2^16 + ah·bl +
 /// al·bh + ⌊al·bl/2^16⌋` exactly.
+///
+/// Operands below 128 in magnitude (`|a|, |b| < 2^23`: unit vectors,
+/// colours, lighting factors) take [`mul_bits_in_range_16`]: their product
+/// is below `2^30`, so 32-bit wrapping arithmetic is exact and nothing
+/// saturates (Cortex-M0 `Fx` knot: this halves a multiply's 64-bit work).
 #[inline]
 pub(crate) fn saturating_mul_bits_16(a: i32, b: i32) -> i32 {
+    // `x >> 23` is −1 or 0 exactly when `|x| < 2^23` (or x = −2^23): then
+    // `(x >> 23) + 1` is 0 or 1, and the OR of two such values is too.
+    if (((a >> 23) + 1) | ((b >> 23) + 1)) as u32 <= 1 {
+        return mul_bits_in_range_16(a, b);
+    }
     let (ah, al) = (a >> 16, a & 0xFFFF);
     let (bh, bl) = (b >> 16, b & 0xFFFF);
     let low = ((al as u32 * bl as u32) >> 16) as i64;
@@ -709,6 +719,11 @@ mod tests {
             i32::MIN + 1,
             0x8000,
             46341 << 8,
+            // Either side of the 32-bit path's bound (2^23).
+            0x7F_FFFF,
+            0x80_0000,
+            -0x80_0000,
+            -0x80_0001,
         ];
         let mut n = 0;
         for i in 0..400_000u32 {
