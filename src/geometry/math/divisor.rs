@@ -345,6 +345,9 @@ mod tests {
         check::<8>(&mut rng, 200_000);
         check::<16>(&mut rng, 200_000);
         check::<1>(&mut rng, 20_000);
+        // The tiny raster's channel widths (5 and 6 bits for RGB565).
+        check::<5>(&mut rng, 100_000);
+        check::<6>(&mut rng, 100_000);
     }
 
     #[test]

@@ -19,8 +19,9 @@
 //! * **Depth** (formats of up to 16 bits): `v_i = ⌊d_i / 2^8⌋`, `d_i` the
 //!   vertex depth in `2^-16` steps ([`depth_steps`], itself within
 //!   `2^-15` steps of `depth·MAX/(2^32 − 1)`), so `v_i < 2^24` and the sum
-//!   `< det·2^24 < 2^40` (`u64`); its quotient by `det` is floored (an 8-
-//!   and a 16-bit digit) and the stored code is that rounded half up. Against
+//!   `< det·2^24 < 2^40` (`u64`); its quotient by `det` is floored and
+//!   the stored code is that rounded half up (one 16-bit quotient,
+//!   [`depth_code`]). Against
 //!   the exact plane through the snapped vertices' depths: vertex values
 //!   `< 2^-8 + 2^-15` low (a convex combination keeps that), the floor
 //!   `< 2^-8`, the rounding `1/2`: `|stored − exact| < 1/2 + 2^-7 + 2^-15`,
@@ -117,7 +118,7 @@ fn draw_with<C, F, M, D, const S: u32, const W: usize>(
             // w_i ≤ det < 2^16: products of a 16- and a 24-bit value (two
             // 32-bit multiplies each on the Cortex-M0, not a library call).
             let n = mul_u16_u32(w[0], dv[0]) + mul_u16_u32(w[1], dv[1]) + mul_u16_u32(w[2], dv[2]);
-            let code = (floor_div(n, det) + (1 << (FRAC - 1))) >> FRAC;
+            let code = depth_code(n, det);
             if !state.test().passes(code, F::to_u32(*slot)) {
                 return;
             }
@@ -166,24 +167,35 @@ fn shade<C: Interpolate, M: Interpolation, const S: u32>(
             }
             let c = c(k);
             let n = w[0] * c[0] + w[1] * c[1] + w[2] * c[2];
-            // n ≤ 255·det: the quotient is below 2^8, and 2·det·2^7 < 2^24.
-            divrem_small_quotient::<8>(2 * n + det, 2 * det).0 as u8
+            channel_quotient(2 * n + det, 2 * det, max[k]) as u8
         };
         C::from_channels([channel(0), channel(1), channel(2)])
     }
 }
 
-/// `⌊n / d⌋` for `0 < d < 2^16` and `n / d < 2^24`, by two digits of 8
-/// and 16 bits ([`divrem_small_quotient`]: 32-bit divisions, hardware on
-/// ARMv7-M where a 64-bit one is a library call; restoring steps on the
-/// Cortex-M0).
+/// The stored depth code `⌊(⌊n / d⌋ + 2^7) / 2^8⌋` (the quotient rounded
+/// half up to whole codes) for `0 < d < 2^16` and `n ≤ d·(2^16 − 1)·2^8`
+/// (vertex depths of at most 16 bits), by one 16-bit quotient: with nested
+/// floors it equals `⌊(n + 2^7·d) / (2^8·d)⌋ = ⌊⌊(n + 2^7·d) / 2^8⌋ / d⌋`,
+/// and that inner value is below `d·2^16`. One division on ARMv7-M instead
+/// of two; 16 restoring steps on the Cortex-M0 instead of 24.
 #[inline(always)]
-fn floor_div(n: u64, d: u32) -> u32 {
-    let hi = (n >> 16) as u32;
-    // q1 < 2^8 (the quotient is below 2^24), and d·2^7 < 2^23.
-    let (q1, r1) = divrem_small_quotient::<8>(hi, d);
-    // r1 < d < 2^16: the second digit is below 2^16, and d·2^15 < 2^31.
-    (q1 << 16) + divrem_small_quotient::<16>((r1 << 16) | (n as u32 & 0xFFFF), d).0
+fn depth_code(n: u64, d: u32) -> u32 {
+    let m = ((n + ((d as u64) << (FRAC - 1))) >> FRAC) as u32;
+    divrem_small_quotient::<16>(m, d).0
+}
+
+/// `⌊x / d⌋` for a channel of largest value `max`: `x < d·(max + 1)` and
+/// `0 < d < 2^17` (so the quotient is at most `max`). Its restoring steps
+/// on the Cortex-M0 are as many as `max` has bits (5 or 6 for RGB565, not
+/// 8); `max` is a colour type's constant, so the choice folds away.
+#[inline(always)]
+fn channel_quotient(x: u32, d: u32, max: u8) -> u32 {
+    match max {
+        0..=31 => divrem_small_quotient::<5>(x, d).0,
+        32..=63 => divrem_small_quotient::<6>(x, d).0,
+        _ => divrem_small_quotient::<8>(x, d).0,
+    }
 }
 
 /// `⌊x / y⌋` for `0 < y < 2^48` and `x / y < 2^9`, exactly, with one 32-bit
@@ -202,7 +214,7 @@ fn small_quotient(x: u64, y: u64) -> u32 {
 
 #[cfg(test)]
 mod tests {
-    use super::{floor_div, small_quotient};
+    use super::{channel_quotient, depth_code, small_quotient};
 
     /// The next value of a xorshift sequence.
     fn next(seed: &mut u64) -> u64 {
@@ -230,20 +242,45 @@ mod tests {
         }
     }
 
+    /// The one-quotient depth code is the floored quotient rounded half up
+    /// to whole codes, over the whole range of 16-bit vertex depths.
     #[test]
-    fn floor_div_is_the_u64_division() {
+    fn depth_code_is_the_rounded_quotient() {
         let mut seed = 0x2545_F491_4F6C_DD1Du64;
-        for i in 0..200_000u32 {
+        for i in 0..300_000u32 {
             let seed = next(&mut seed);
             let d = ((seed >> 40) as u32 & 0xFFFF).max(1);
-            let d = [d, 1, 0xFFFF, 2][(i % 4) as usize];
-            // Any n with n / d < 2^24, ends included.
-            let n = match i % 3 {
-                0 => seed % (d as u64 * (1 << 24)),
-                1 => d as u64 * (1 << 24) - 1,
+            let d = [d, 1, 0xFFFF, 2, d & 0xFF | 1][(i % 5) as usize];
+            let top = d as u64 * 0xFFFF * 256; // n ≤ d·(2^16 − 1)·2^8
+            let n = match i % 4 {
+                0 => seed % (top + 1),
+                1 => top,
+                // Either side of a rounding tie of the quotient.
+                2 => ((seed >> 20) % 0xFFFF * 256 + 128) * d as u64 - (seed & 1),
                 _ => seed % (d as u64 * 8),
             };
-            assert_eq!(floor_div(n, d) as u64, n / d as u64, "{n} / {d}");
+            assert_eq!(depth_code(n, d) as u64, (n / d as u64 + 128) >> 8, "{n} / {d}");
+        }
+    }
+
+    /// Channel quotients with as few steps as the channel's bits are the
+    /// division, for every channel width up to 8 bits and the divisors the
+    /// tiny path passes (`2·det`, below 2^17).
+    #[test]
+    fn channel_quotient_is_the_division() {
+        let mut seed = 0x0C0_1022_u64;
+        for i in 0..300_000u32 {
+            let seed = next(&mut seed);
+            let max = [1u8, 31, 63, 255, (seed >> 56) as u8 | 1][(i % 5) as usize];
+            let d = (((seed >> 20) as u32 & 0x1FFFF).max(1)).min((1 << 17) - 2);
+            let d = [d, 1, 2, (1 << 17) - 2][(i / 5 % 4) as usize];
+            let top = d as u64 * (max as u64 + 1) - 1; // x < d·(max + 1)
+            let x = match i % 3 {
+                0 => seed % (top + 1),
+                1 => top,
+                _ => (seed >> 8) % (max as u64 + 1) * d as u64,
+            } as u32;
+            assert_eq!(channel_quotient(x, d, max), x / d, "{x} / {d}, max {max}");
         }
     }
 }
