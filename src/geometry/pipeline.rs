@@ -123,6 +123,12 @@ pub struct Pipeline<T: Scalar, const S: u32> {
     /// ([`PerBand3d`](crate::render::PerBand3d))
     /// so the bins only need to hold one band's triangles.
     pub rows: Option<(i32, i32)>,
+    /// Whether snapped vertices get their `1/w` (only perspective-correct
+    /// interpolation reads it); false leaves it at 1. Cleared only where
+    /// the consumer is known to be affine (meshlets drawn into an
+    /// [`Affine`](crate::raster3d::Affine) band): one exact division per
+    /// vertex saved.
+    with_inv_w: bool,
 }
 
 impl<T: Scalar, const S: u32> Pipeline<T, S> {
@@ -156,6 +162,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
             lighting: None,
             shade: Shade::Gouraud,
             rows: None,
+            with_inv_w: true,
         })
     }
 
@@ -520,7 +527,11 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
             z.div_scaled_by(w, u32::MAX as i64)?.clamp(0, u32::MAX as i64) as u32,
             // Only ratios of 1/w matter; a vertex nearer than w_ref/4 (which
             // the w_ref contract excludes) saturates rather than vanishing.
-            self.w_ref.div_scaled_by(w, 1 << 30).unwrap_or(i64::MAX).clamp(1, u32::MAX as i64) as u32,
+            if self.with_inv_w {
+                self.w_ref.div_scaled_by(w, 1 << 30).unwrap_or(i64::MAX).clamp(1, u32::MAX as i64) as u32
+            } else {
+                1
+            },
         ))
     }
 

@@ -374,7 +374,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     /// Fx knot was 0.6 % dearer, f32 the same).
     fn depth_entry(&self, e: &mut Cached<T, S>) {
         let fast = if crate::math::vec::is_float::<T>() {
-            depth_f32(e.clip[2].to_f32(), e.clip[3].to_f32(), self.w_ref.to_f32())
+            depth_f32(e.clip[2].to_f32(), e.clip[3].to_f32(), self.with_inv_w.then(|| self.w_ref.to_f32()))
         } else {
             None
         };

@@ -297,7 +297,8 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         Mat: Material<T>,
     {
         let rows = band.rows();
-        self.meshlets_into(mesh, model, color, material, cache, rows, |tri| band.draw(tri))
+        // An affine band never reads 1/w.
+        self.meshlets_into(mesh, model, color, material, cache, (rows, M::PERSPECTIVE), |tri| band.draw(tri))
     }
 
     /// The triangles [`Pipeline::draw_meshlets`] would draw into the band of
@@ -334,11 +335,12 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         rows: (i32, i32),
         sink: impl FnMut(&ScreenTriangle<S>),
     ) -> Result<MeshStats, Error> {
-        self.meshlets_into(mesh, model, color, &Uniform, cache, rows, sink)
+        self.meshlets_into(mesh, model, color, &Uniform, cache, (rows, true), sink)
     }
 
     /// [`Pipeline::meshlet_triangles`] with the vertices coloured by
-    /// `material` ([`Pipeline::draw_meshlets_with`]).
+    /// `material` ([`Pipeline::draw_meshlets_with`]); without `with_inv_w`
+    /// each vertex's `1/w` is left at 1 (for an affine band).
     #[allow(clippy::too_many_arguments)]
     fn meshlets_into<C: Interpolate, Mat: Material<T>, const N: usize>(
         &self,
@@ -347,12 +349,12 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         color: C,
         material: &Mat,
         cache: &mut ClusterCache<T, S, N>,
-        rows: (i32, i32),
+        (rows, with_inv_w): ((i32, i32), bool),
         mut sink: impl FnMut(&ScreenTriangle<S>),
     ) -> Result<MeshStats, Error> {
         // Validated: the culling relies on each cluster's sphere and cone.
         let mesh = mesh.get();
-        let pipe = Pipeline { rows: Some(rows), ..*self };
+        let pipe = Pipeline { rows: Some(rows), with_inv_w, ..*self };
         let mut stats = MeshStats::default();
         let Some(setup) = pipe.mesh_setup(&mesh.mesh, model, color, &mut stats)? else {
             return Ok(stats);

@@ -123,7 +123,7 @@ impl PreSnap {
 /// saturates as the clamp to `u32::MAX` does) and clamped as there, without
 /// the 64-bit values.
 #[inline]
-pub(super) fn depth_f32(z: f32, w: f32, w_ref: f32) -> Option<(u32, u32)> {
+pub(super) fn depth_f32(z: f32, w: f32, w_ref: Option<f32>) -> Option<(u32, u32)> {
     if !(w > 0.0 && w <= f32::MAX && z.abs() <= w * 128.0) {
         return None;
     }
@@ -139,6 +139,8 @@ pub(super) fn depth_f32(z: f32, w: f32, w_ref: f32) -> Option<(u32, u32)> {
     };
     // |z/w| ≤ 128: the depth quotient is within 2^39.
     let depth = round(z / w * 4_294_967_296.0, 0);
+    // No `1/w` wanted: 1, as `Pipeline::snap_depth` leaves it.
+    let Some(w_ref) = w_ref else { return Some((depth, 1)) };
     let r = w_ref / w * 1_073_741_824.0;
     // NaN too.
     if r.is_nan() || r.abs() > 1_099_511_627_776.0 {
@@ -273,14 +275,17 @@ mod tests {
                 z
             };
             let w_ref = [1.0f32, 1e-9, 3e9, 0.37][i as usize % 4];
-            if let Some(got) = depth_f32(z, w, w_ref) {
+            if let Some(got) = depth_f32(z, w, Some(w_ref)) {
                 assert_eq!(Some(got), want(z, w, w_ref), "{z} {w} {w_ref}");
+                // Without 1/w: the same depth, and 1.
+                assert_eq!(depth_f32(z, w, None), Some((got.0, 1)));
                 n += 1;
             }
         }
         assert!(n > 100_000, "{n}");
-        assert_eq!(depth_f32(1.0, 1.0, f32::INFINITY), None);
-        assert_eq!(depth_f32(129.0, 1.0, 1.0), None);
+        assert_eq!(depth_f32(1.0, 1.0, Some(f32::INFINITY)), None);
+        assert_eq!(depth_f32(129.0, 1.0, Some(1.0)), None);
+        assert_eq!(depth_f32(129.0, 1.0, None), None);
     }
 
     /// The inside snap agrees with the quotients' rounding (ties included)
