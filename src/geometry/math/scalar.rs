@@ -584,7 +584,7 @@ impl Scalar for Fx {
     fn div_scaled_by(self, den: Self::Divisor, scale: i64) -> Option<i64> {
         // Scales up to 2^32 (all of snapping's): |bits·scale| < 2^63 in u64.
         if let Ok(sa) = u32::try_from(scale.unsigned_abs()) {
-            let m = super::divisor::mul_wide_u32(self.to_bits().unsigned_abs(), sa);
+            let m = super::divisor::mul_wide_u32_by(sa, self.to_bits().unsigned_abs());
             if let Some(q) = den.div_round(m) {
                 let q = q as i64;
                 return Some(if (self.to_bits() < 0) != (scale < 0) { -q } else { q });
