@@ -108,13 +108,19 @@ pub(crate) fn unit_bits(v: [i32; 3]) -> Option<[i32; 3]> {
     };
     // N ∈ [2^60, 3·2^62): no overflow.
     let big = x.map(|c| mul_wide_u32(c, c)).iter().sum::<u64>();
-    // n = N / 2^s ∈ [2^30, 2^32) with s even, so √N = √n · 2^(s/2).
-    let (n, half_s) = if big >= 1 << 62 { ((big >> 32) as u32, 16) } else { ((big >> 30) as u32, 15) };
+    // n = N / 2^s ∈ [2^30, 2^32) with s even, so √N = √n · 2^(s/2). The
+    // shifts by words: a 64-bit shift by a variable amount is a library
+    // call on the Cortex-M0 (`__aeabi_llsr`).
+    let (hi, lo) = ((big >> 32) as u32, big as u32);
+    let (n, half_s) = if hi >= 1 << 30 { (hi, 16) } else { ((hi << 2) | (lo >> 30), 15) };
     let y = rsqrt_q29(n);
-    // u = X/√N = X·ρ·2^-16·2^-(s/2); in 16.16: X·y / 2^(29 + s/2), rounded.
-    let sh = 29 + half_s;
+    // u = X/√N = X·ρ·2^-16·2^-(s/2); in 16.16: X·y / 2^(29 + s/2), rounded:
+    // with sh = 29 + s/2 ≥ 44, ⌊(P + 2^(sh−1)) / 2^sh⌋ is the high word of
+    // P + 2^(sh−1) shifted by sh − 32.
+    let sh = 29 + half_s - 32;
     let unit = |k: usize| {
-        let u = ((mul_wide_u32(x[k], y) + (1 << (sh - 1))) >> sh) as i32; // ≤ 2^16 + 1
+        let p = mul_wide_u32(x[k], y) + ((1u64 << 32) << (sh - 1));
+        let u = ((p >> 32) as u32 >> sh) as i32; // ≤ 2^16 + 1
         if v[k] < 0 { -u } else { u }
     };
     Some([unit(0), unit(1), unit(2)])
@@ -125,6 +131,54 @@ mod tests {
     extern crate std;
     use super::*;
     use crate::math::vec::tests::{Rng, U};
+
+    /// The word shifts of `unit_bits` against the same steps with `u64`
+    /// shifts, over vectors of every magnitude (both scalings of `N`).
+    #[test]
+    fn unit_bits_shifts_by_words_as_u64() {
+        fn by_u64(v: [i32; 3]) -> Option<[i32; 3]> {
+            let a = v.map(i32::unsigned_abs);
+            let m = a[0].max(a[1]).max(a[2]);
+            if m == 0 {
+                return None;
+            }
+            let x = match m.leading_zeros() {
+                0 => a.map(|c| c >> 1),
+                k => a.map(|c| c << (k - 1)),
+            };
+            let big = x.map(|c| c as u64 * c as u64).iter().sum::<u64>();
+            let (n, half_s) =
+                if big >= 1 << 62 { ((big >> 32) as u32, 16) } else { ((big >> 30) as u32, 15) };
+            let y = rsqrt_q29(n);
+            let sh = 29 + half_s;
+            let u = |k: usize| {
+                let u = ((x[k] as u64 * y as u64 + (1 << (sh - 1))) >> sh) as i32;
+                if v[k] < 0 { -u } else { u }
+            };
+            Some([u(0), u(1), u(2)])
+        }
+        let mut rng = Rng(0x0B17_5E75);
+        let (mut wide, mut narrow) = (0, 0);
+        for i in 0..200_000u32 {
+            let r = rng.next();
+            let shift = i % 31;
+            let v = [r as i32 >> shift, (r >> 21) as i32 >> shift, (r >> 42) as i32 >> (shift / 2)];
+            let v = if i % 7 == 0 { [v[0], 0, 0] } else { v };
+            assert_eq!(unit_bits(v), by_u64(v), "{v:?}");
+            // Which scaling of N applied (both must be covered).
+            let m = v.map(i32::unsigned_abs).into_iter().max().unwrap_or(0);
+            if m != 0 {
+                let k = m.leading_zeros();
+                let x = v.map(|c| if k == 0 { c.unsigned_abs() >> 1 } else { c.unsigned_abs() << (k - 1) });
+                if x.map(|c| c as u64 * c as u64).iter().sum::<u64>() >= 1 << 62 {
+                    wide += 1
+                } else {
+                    narrow += 1
+                }
+            }
+        }
+        assert!(wide > 1000 && narrow > 1000, "{wide} {narrow}");
+    }
 
     #[test]
     fn reciprocal_square_root_within_bound() {
