@@ -36,6 +36,39 @@ pub(crate) fn mul_u16_u32(a: u32, b: u32) -> u64 {
     if ARMV6M { mul_u16_u32_halves(a, b) } else { a as u64 * b as u64 }
 }
 
+/// `x.leading_zeros()`; on the Cortex-M0 (no `CLZ` instruction; the
+/// library's loop costs about 35 instructions) two comparisons and a byte
+/// table ([`leading_zeros_by_table`]).
+#[inline(always)]
+pub(crate) fn leading_zeros_u32(x: u32) -> u32 {
+    if ARMV6M { leading_zeros_by_table(x) } else { x.leading_zeros() }
+}
+
+/// Leading zeros of each byte value (8 for 0).
+const CLZ8: [u8; 256] = {
+    let mut t = [0u8; 256];
+    let mut i = 0;
+    while i < 256 {
+        t[i] = (i as u8).leading_zeros() as u8;
+        i += 1;
+    }
+    t
+};
+
+/// [`leading_zeros_u32`] by the top non-zero byte's table entry (tested on
+/// every target).
+#[inline(always)]
+fn leading_zeros_by_table(x: u32) -> u32 {
+    let (top, base) = if x >= 1 << 16 {
+        if x >= 1 << 24 { (x >> 24, 0) } else { (x >> 16, 8) }
+    } else if x >= 1 << 8 {
+        (x >> 8, 16)
+    } else {
+        (x, 24)
+    };
+    base + CLZ8[top as usize & 0xFF] as u32
+}
+
 /// `a·b` exactly, as [`mul_wide_u32`]; on the Cortex-M0 cheaper for the
 /// factors snapping and division meet most ([`mul_wide_u32_cases`]).
 #[inline(always)]
@@ -115,7 +148,7 @@ impl FxDivisor {
     /// The divisor `d` (raw bits), `None` unless `0 < d`.
     pub(crate) fn new(d: i32) -> Option<Self> {
         let d = u32::try_from(d).ok().filter(|&d| d > 0)?;
-        let sh = d.leading_zeros();
+        let sh = leading_zeros_u32(d);
         let dn = d << sh;
         Some(FxDivisor { d, sh, v: reciprocal(dn) })
     }
@@ -371,6 +404,18 @@ mod tests {
         // The tiny raster's channel widths (5 and 6 bits for RGB565).
         check::<5>(&mut rng, 100_000);
         check::<6>(&mut rng, 100_000);
+    }
+
+    #[test]
+    fn leading_zeros_by_table_is_leading_zeros() {
+        let mut rng = Rng(0xC12_0C12);
+        for i in 0..200_000u32 {
+            let r = rng.next() as u32;
+            // Every bit length, and the powers of two and their neighbours.
+            let x = [r >> (i % 32), 1 << (i % 32), (1u32 << (i % 32)).wrapping_sub(1), 0, u32::MAX][(i % 5) as usize];
+            assert_eq!(leading_zeros_by_table(x), x.leading_zeros(), "{x:#x}");
+            assert_eq!(leading_zeros_u32(x), x.leading_zeros());
+        }
     }
 
     #[test]

@@ -102,7 +102,7 @@ pub(crate) fn unit_bits(v: [i32; 3]) -> Option<[i32; 3]> {
         return None;
     }
     // Largest component in [2^30, 2^31).
-    let x = match m.leading_zeros() {
+    let x = match super::divisor::leading_zeros_u32(m) {
         0 => a.map(|c| c >> 1),
         k => a.map(|c| c << (k - 1)),
     };
