@@ -153,6 +153,23 @@ impl FxDivisor {
         Some(FxDivisor { d, sh, v: reciprocal(dn) })
     }
 
+    /// The reciprocal word, all that [`FxDivisor::from_reciprocal`] needs
+    /// besides `d` (a vertex cache keeps it in one `u32`).
+    #[inline]
+    pub(crate) fn reciprocal_word(&self) -> u32 {
+        self.v
+    }
+
+    /// The divisor `d` whose [`FxDivisor::reciprocal_word`] is `v`, without
+    /// computing the reciprocal again (`None` unless `0 < d`). A `v` from
+    /// another divisor gives wrong quotients, never a panic or overflow:
+    /// the 2-by-1 division's corrections wrap.
+    #[inline]
+    pub(crate) fn from_reciprocal(d: i32, v: u32) -> Option<Self> {
+        let d = u32::try_from(d).ok().filter(|&d| d > 0)?;
+        Some(FxDivisor { d, sh: leading_zeros_u32(d), v })
+    }
+
     /// `⌊(m + ⌊d/2⌋) / d⌋` (the rounding of
     /// [`Scalar::div_scaled`](super::Scalar::div_scaled)), exactly, or
     /// `None` if it is `2^32` or more (the caller then divides the slow way).
@@ -212,7 +229,7 @@ fn div_2by1((u1, u0): (u32, u32), d: u32, v: u32) -> u32 {
         r = r.wrapping_add(d);
     }
     if r >= d {
-        q1 += 1;
+        q1 = q1.wrapping_add(1);
     }
     q1
 }
@@ -406,13 +423,33 @@ mod tests {
         check::<6>(&mut rng, 100_000);
     }
 
+    /// A divisor rebuilt from its reciprocal word (what a vertex cache
+    /// keeps while a depth waits) is the prepared divisor; a word from
+    /// another divisor gives some quotient, never a panic.
+    #[test]
+    fn divisor_from_its_reciprocal_word_is_the_divisor() {
+        let mut rng = Rng(0x5EC1_9E0D);
+        for i in 0..100_000u32 {
+            let d = [(rng.next() >> 33) as i32, 1, i32::MAX, 1 << 16, (rng.next() >> 50) as i32]
+                [(i % 5) as usize];
+            let Some(p) = FxDivisor::new(d) else { continue };
+            assert_eq!(FxDivisor::from_reciprocal(d, p.reciprocal_word()), Some(p), "{d}");
+            let m = rng.next() >> 1;
+            let other = FxDivisor::from_reciprocal(d, rng.next() as u32).map(|q| q.div_round(m));
+            assert!(other.is_some());
+        }
+        assert_eq!(FxDivisor::from_reciprocal(0, 7), None);
+        assert_eq!(FxDivisor::from_reciprocal(-5, 7), None);
+    }
+
     #[test]
     fn leading_zeros_by_table_is_leading_zeros() {
         let mut rng = Rng(0xC12_0C12);
         for i in 0..200_000u32 {
             let r = rng.next() as u32;
             // Every bit length, and the powers of two and their neighbours.
-            let x = [r >> (i % 32), 1 << (i % 32), (1u32 << (i % 32)).wrapping_sub(1), 0, u32::MAX][(i % 5) as usize];
+            let x = [r >> (i % 32), 1 << (i % 32), (1u32 << (i % 32)).wrapping_sub(1), 0, u32::MAX]
+                [(i % 5) as usize];
             assert_eq!(leading_zeros_by_table(x), x.leading_zeros(), "{x:#x}");
             assert_eq!(leading_zeros_u32(x), x.leading_zeros());
         }

@@ -70,6 +70,15 @@ pub trait Scalar:
     /// [`Scalar::divisor`]: bit-identical, with the denominator's work done
     /// once ([`divisor`](super::divisor)).
     fn div_scaled_by(self, den: Self::Divisor, scale: i64) -> Option<i64>;
+    /// What a vertex cache keeps of prepared divisor `den` while the
+    /// vertex's depth waits (`Fx`: its reciprocal; `f32`: nothing), so
+    /// [`Scalar::divisor_from_word`] rebuilds it without preparing it again.
+    #[doc(hidden)]
+    fn divisor_word(den: Self::Divisor) -> u32;
+    /// `self.divisor()` from `word`, which [`Scalar::divisor_word`] gave
+    /// for `self.divisor()`.
+    #[doc(hidden)]
+    fn divisor_from_word(self, word: u32) -> Option<Self::Divisor>;
     /// [`Vec3::normalize_fast`](super::Vec3::normalize_fast) (see there).
     #[doc(hidden)]
     fn unit3(v: super::Vec3<Self>) -> super::Vec3<Self>;
@@ -145,6 +154,14 @@ impl Scalar for f32 {
             return None;
         }
         Some(super::divisor::round_even_f32(v))
+    }
+    #[inline]
+    fn divisor_word(_: f32) -> u32 {
+        0
+    }
+    #[inline]
+    fn divisor_from_word(self, _: u32) -> Option<f32> {
+        self.divisor()
     }
     fn unit3(v: super::Vec3<f32>) -> super::Vec3<f32> {
         super::unit::unit_f32(v)
@@ -591,6 +608,14 @@ impl Scalar for Fx {
             }
         }
         self.div_scaled(Fx::from_bits(den.d as i32), scale)
+    }
+    #[inline]
+    fn divisor_word(den: Self::Divisor) -> u32 {
+        den.reciprocal_word()
+    }
+    #[inline]
+    fn divisor_from_word(self, word: u32) -> Option<Self::Divisor> {
+        super::divisor::FxDivisor::from_reciprocal(self.to_bits(), word)
     }
     fn unit3(v: super::Vec3<Fx>) -> super::Vec3<Fx> {
         match super::unit::unit_bits([v.x, v.y, v.z].map(Fx::to_bits)) {

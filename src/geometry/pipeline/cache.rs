@@ -378,40 +378,44 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         } else {
             None
         };
-        let d = fast.or_else(|| e.clip[3].divisor().and_then(|w| self.snap_depth(e.clip, w)));
+        // The divisor from the word `snap_deferred` kept in the depth.
+        let d = fast
+            .or_else(|| e.clip[3].divisor_from_word(e.screen.depth).and_then(|w| self.snap_depth(e.clip, w)));
         if let Some((depth, inv_w)) = d {
             (e.screen.depth, e.screen.inv_w) = (depth, inv_w);
         }
         e.state |= Cached::<T, S>::DEPTH;
     }
 
-    /// For `f32`, [`Pipeline::snap_vertex`] with the depth and `1/w` left
-    /// for later (`inv_w` 0, which a snapped vertex never has) where they
-    /// cannot fail: a back face needs neither, and they are two of its four
-    /// divisions and conversions. They fail only for a non-finite `z` or
-    /// `|z/w|·2^32` beyond 2^40 (`1/w` never), so with `z` finite and
-    /// `|z| ≤ 128·w` (`128·w` exact, or infinite only for `w > 2^121`,
-    /// where `|z/w| < 2^7` anyway) they are deferred; otherwise computed
-    /// now, so a vertex fails here exactly when [`Pipeline::snap_vertex`]
-    /// fails. `Fx` snaps at once: its divisor would be prepared twice, which
-    /// costs more than its (exact, cheap) depth division.
+    /// [`Pipeline::snap_vertex`] with the depth and `1/w` left for later
+    /// (`inv_w` 0, which a snapped vertex never has) where they cannot
+    /// fail: a back face needs neither, and they are two of its four
+    /// divisions. They fail only for a non-finite `z` or `|z/w|·2^32`
+    /// beyond 2^40 (`1/w` never), so with `z` finite and `|z| ≤ 128·w`
+    /// (for `f32`, `128·w` exact, or infinite only for `w > 2^121`, where
+    /// `|z/w| < 2^7` anyway; for `Fx`, saturated only for `w ≥ 2^8`, where
+    /// `|z/w| < 2^7` too) they are deferred; otherwise computed now, so a
+    /// vertex fails here exactly when [`Pipeline::snap_vertex`] fails.
+    /// Until then the depth field holds [`Scalar::divisor_word`] of `w`
+    /// (`Fx`: its reciprocal), so `Fx` does not prepare its divisor twice.
     fn snap_deferred(&self, c: [T; 4]) -> Option<ScreenVertex<S>> {
         if !self.depth_deferrable(c) {
             return self.snap_vertex(c);
         }
-        let pos = self.snap_xy(c, c[3].divisor()?)?;
-        Some(ScreenVertex { pos, depth: 0, inv_w: 0, color: [0; 3] })
+        let w = c[3].divisor()?;
+        let pos = self.snap_xy(c, w)?;
+        Some(ScreenVertex { pos, depth: T::divisor_word(w), inv_w: 0, color: [0; 3] })
     }
 }
 
 impl<T: Scalar, const S: u32> Pipeline<T, S> {
     /// Whether [`Pipeline::snap_deferred`] leaves the depth of clip position
-    /// `c` for later (`f32`, its depth cannot fail): then snapping fails
-    /// only where its position does.
+    /// `c` for later (its depth cannot fail): then snapping fails only where
+    /// its position does.
     #[inline]
     pub(super) fn depth_deferrable(&self, c: [T; 4]) -> bool {
         let (z, w) = (c[2], c[3]);
-        crate::math::vec::is_float::<T>() && z.is_finite() && z.abs() <= w * T::from_f32(128.0)
+        z.is_finite() && z.abs() <= w * T::from_f32(128.0)
     }
 }
 
