@@ -85,7 +85,10 @@ fn mul_wide_u32_cases(a: u32, b: u32) -> u64 {
     if a < 1 << 16 {
         mul_u16_u32_halves(a, b)
     } else if a == u32::MAX {
-        ((b as u64) << 32) - b as u64
+        // b·2^32 − b by words: written as that difference, LLVM folds it
+        // back into a product (the library's 64-bit multiply).
+        let hi = b - (b != 0) as u32;
+        ((hi as u64) << 32) | b.wrapping_neg() as u64
     } else {
         mul_wide_u32_16(a, b)
     }
