@@ -272,7 +272,7 @@ mod tests {
         for i in 0..300_000u32 {
             let seed = next(&mut seed);
             let max = [1u8, 31, 63, 255, (seed >> 56) as u8 | 1][(i % 5) as usize];
-            let d = (((seed >> 20) as u32 & 0x1FFFF).max(1)).min((1 << 17) - 2);
+            let d = ((seed >> 20) as u32 & 0x1FFFF).clamp(1, (1 << 17) - 2);
             let d = [d, 1, 2, (1 << 17) - 2][(i / 5 % 4) as usize];
             let top = d as u64 * (max as u64 + 1) - 1; // x < d·(max + 1)
             let x = match i % 3 {
