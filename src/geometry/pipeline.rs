@@ -24,6 +24,7 @@ mod inside;
 mod material;
 mod model_light;
 mod presnap;
+mod sphere_rows;
 #[cfg(feature = "fragment")]
 mod varying;
 
@@ -31,7 +32,7 @@ use model_light::ModelLight;
 
 pub use cache::VertexCache;
 pub use cluster::ClusterCache;
-pub use frame_clusters::FRAME_CLUSTERS;
+pub use frame_clusters::{FRAME_CLUSTERS, FRAME_MESHES};
 pub(crate) use material::{Material, PerFace, PerVertex, Uniform};
 
 #[cfg(feature = "fragment")]

@@ -67,7 +67,7 @@ pub const DEFAULT_LIGHTING: Lighting<f32> =
 /// use embedded_graphics::pixelcolor::{Rgb565, RgbColor};
 /// use microraster::view3d::View240x240;
 /// let view = View240x240::new(Rgb565::BLACK);
-/// assert!(core::mem::size_of_val(&view) < 240 * 16 * 4 + 5120);
+/// assert!(core::mem::size_of_val(&view) < 240 * 16 * 4 + 5_600);
 /// ```
 pub type View240x240 = View3d<Rgb565, 240, 16>;
 
@@ -99,8 +99,9 @@ pub type View160x128 = View3d<Rgb565, 160, 8>;
 /// ([`View3d::set_height`] to use fewer rows); rows, not columns, are
 /// banded, so `W` must not exceed the display's width.
 ///
-/// Size: `W × H × 4` bytes plus about 4.7 KB (the cluster cache: one
-/// cluster's vertices and the frame's cluster record).
+/// Size: `W × H × 4` bytes plus about 5.2 KB (the cluster cache: one
+/// cluster's vertices and the frame's cluster record, which up to four
+/// meshlet objects share).
 ///
 /// ```
 /// use embedded_graphics::mock_display::MockDisplay;

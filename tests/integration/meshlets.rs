@@ -303,11 +303,11 @@ fn count_both<T: Scalar>() -> (u32, u32) {
 /// One frame of `c` through `cache` (16-row bands, f32, affine), each band
 /// drawing the mesh once per model of `models`, model `k` with cache
 /// `k mod cache.len()` (whose record holds `N` clusters).
-fn frame_with<const N: usize>(
+fn frame_with<const N: usize, const K: usize>(
     c: &Clustered,
     p: &Pipeline<f32, 4>,
     models: &[Mat4<f32>],
-    cache: &mut [ClusterCache<f32, 4, N>],
+    cache: &mut [ClusterCache<f32, 4, N, K>],
 ) -> Vec<Rgb565> {
     let mut fb = Framebuffer::new(W as u32, H, BG);
     let (mut band, mut depth) = (Band::<Rgb565, W, 16>::new(BG), DepthBand::<Depth16, W, 16>::new());
@@ -329,8 +329,9 @@ fn frame_with<const N: usize>(
 }
 
 /// The frame's cluster record (`ClusterCache`) never changes a frame: one
-/// cache kept through frames of other matrices, shared by two placements of
-/// a mesh drawn in turn in every band, and kept while the mesh itself is
+/// cache kept through frames of other matrices, shared by two (each with a
+/// record) or five (more than it keeps records of) placements of a mesh
+/// drawn in turn in every band, and kept while the mesh itself is
 /// moved in place (same buffers, same matrix: only the new frame tells),
 /// draws what fresh caches draw.
 #[test]
@@ -350,6 +351,13 @@ fn a_kept_cluster_cache_draws_what_fresh_caches_draw() {
         let want = frame_with(&c, &p, &two, &mut fresh());
         assert_eq!(frame_with(&c, &p, &two, &mut kept[..1]), want, "frame {i}, one cache for two");
         assert_eq!(frame_with(&c, &p, &two, &mut kept), want, "frame {i}, a cache each");
+        // More placements than one cache keeps records of (four): they
+        // take each other's places in turn.
+        let five = [0.0, 0.5, 1.0, 1.5, 2.0].map(|dx| {
+            transform::translation(Vec3::new(dx - 1.0, 0.3 * dx - 0.3, -2.0 - dx)) * model::<f32>(angle)
+        });
+        let want = frame_with(&c, &p, &five, &mut [0; 5].map(|_| ClusterCache::new()));
+        assert_eq!(frame_with(&c, &p, &five, &mut kept[..1]), want, "frame {i}, one cache for five");
     }
     // The mesh moved in place between two frames of the same matrix.
     let p = pipeline::<f32>(Cull::Clockwise, [0.3, 1.0, 3.4]);
@@ -384,7 +392,8 @@ fn clusters_beyond_the_frame_record_are_drawn() {
 }
 
 /// The record's capacity changes no pixel: none (every cluster tested per
-/// band), part of the mesh's clusters, all of them.
+/// band), part of the mesh's clusters, all of them; for one mesh, or for
+/// two placements drawn in turn with records for none, one or both.
 #[test]
 fn the_record_capacity_changes_no_pixel() {
     let c = torus();
@@ -394,10 +403,23 @@ fn the_record_capacity_changes_no_pixel() {
         let angle = 0.9 * i as f32;
         let reference = binned::<f32, Affine, 16>(&c, &p, angle);
         let one = [model::<f32>(angle)];
-        let none = frame_with(&c, &p, &one, &mut [ClusterCache::<f32, 4, 0>::sized()]);
+        let none = frame_with(&c, &p, &one, &mut [ClusterCache::<f32, 4, 0, 0>::sized()]);
         assert_eq!(none, reference, "none {i}");
         let part = frame_with(&c, &p, &one, &mut [ClusterCache::<f32, 4, 64>::sized()]);
         assert_eq!(part, reference, "64 {i}");
         assert_eq!(frame_with(&c, &p, &one, &mut [ClusterCache::new()]), reference, "256 {i}");
+        let two =
+            [model::<f32>(angle), transform::translation(Vec3::new(0.8, 0.2, -1.5)) * model::<f32>(angle)];
+        let want = frame_with(&c, &p, &two, &mut [ClusterCache::new(), ClusterCache::new()]);
+        for (k, got) in [
+            frame_with(&c, &p, &two, &mut [ClusterCache::<f32, 4, 256, 0>::sized()]),
+            frame_with(&c, &p, &two, &mut [ClusterCache::<f32, 4, 256, 1>::sized()]),
+            frame_with(&c, &p, &two, &mut [ClusterCache::<f32, 4, 100, 2>::sized()]),
+        ]
+        .into_iter()
+        .enumerate()
+        {
+            assert_eq!(got, want, "two placements, {k} records, {i}");
+        }
     }
 }

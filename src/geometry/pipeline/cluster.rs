@@ -36,24 +36,34 @@ use crate::{Error, Interpolate};
 /// (a [`VertexCache`] of [`MAX_MESHLET_VERTICES`], the most a valid cluster
 /// has, so [`Error::CapacityExceeded`] cannot come from it, 3,072 bytes for
 /// `f32` and `Fx`) and the frame's record of up to `CLUSTERS` clusters (6
-/// bytes each; [`FRAME_CLUSTERS`](super::FRAME_CLUSTERS) = 256 unless told):
+/// bytes each; [`FRAME_CLUSTERS`](super::FRAME_CLUSTERS) = 256 unless told)
+/// of up to `MESHES` meshes ([`FRAME_MESHES`](super::FRAME_MESHES) = 4
+/// unless told; about 130 bytes each for what its record was built for):
 /// what their band-independent tests said this frame and which rows they
 /// can reach, so that each band skips the clusters it cannot meet with two
 /// integer comparisons (`frame_clusters`). Clusters beyond `CLUSTERS` are
-/// tested per band; with `CLUSTERS = 0` all are, in 3 KB. The images are
-/// the same whatever `CLUSTERS` is. Use one per mesh drawn in every band: a
-/// cache shared by meshes drawn in turn stays correct but records nothing.
+/// tested per band; with `CLUSTERS = 0` and `MESHES = 0` all are, in 3 KB.
+/// The images are the same whatever `CLUSTERS` and `MESHES` are. Meshes
+/// drawn in turn through one cache share the record's capacity, up to
+/// `MESHES` of them at once; beyond that, the others are tested per band.
 ///
 /// ```
 /// use microraster::pipeline::ClusterCache;
 /// let cache = ClusterCache::<f32, 4>::new();
-/// assert!(core::mem::size_of_val(&cache) < 5_000);
-/// let small = ClusterCache::<f32, 4, 0>::sized(); // no record: per-band tests
+/// assert!(core::mem::size_of_val(&cache) < 5_400);
+/// let one = ClusterCache::<f32, 4, 256, 1>::sized(); // the record of one mesh
+/// assert!(core::mem::size_of_val(&one) < 4_900);
+/// let small = ClusterCache::<f32, 4, 0, 0>::sized(); // no record: per-band tests
 /// assert!(core::mem::size_of_val(&small) < 3_300);
 /// ```
-pub struct ClusterCache<T: Scalar, const S: u32, const CLUSTERS: usize = { super::FRAME_CLUSTERS }> {
+pub struct ClusterCache<
+    T: Scalar,
+    const S: u32,
+    const CLUSTERS: usize = { super::FRAME_CLUSTERS },
+    const MESHES: usize = { super::FRAME_MESHES },
+> {
     vertices: VertexCache<T, S, MAX_MESHLET_VERTICES>,
-    frame: FrameClusters<CLUSTERS>,
+    frame: FrameClusters<CLUSTERS, MESHES>,
 }
 
 impl<T: Scalar, const S: u32> ClusterCache<T, S> {
@@ -64,23 +74,30 @@ impl<T: Scalar, const S: u32> ClusterCache<T, S> {
     }
 }
 
-impl<T: Scalar, const S: u32, const CLUSTERS: usize> ClusterCache<T, S, CLUSTERS> {
-    /// An empty cache recording `CLUSTERS` clusters, as its type says
-    /// (`ClusterCache::<f32, 4, 0>::sized()`: none).
+impl<T: Scalar, const S: u32, const CLUSTERS: usize, const MESHES: usize>
+    ClusterCache<T, S, CLUSTERS, MESHES>
+{
+    /// An empty cache recording `CLUSTERS` clusters of up to `MESHES`
+    /// meshes, as its type says (`ClusterCache::<f32, 4, 0, 0>::sized()`:
+    /// none).
     pub const fn sized() -> Self {
         ClusterCache { vertices: VertexCache::new(), frame: FrameClusters::EMPTY }
     }
 }
 
-impl<T: Scalar, const S: u32, const CLUSTERS: usize> Default for ClusterCache<T, S, CLUSTERS> {
+impl<T: Scalar, const S: u32, const CLUSTERS: usize, const MESHES: usize> Default
+    for ClusterCache<T, S, CLUSTERS, MESHES>
+{
     fn default() -> Self {
         Self::sized()
     }
 }
 
-impl<T: Scalar, const S: u32, const CLUSTERS: usize> core::fmt::Debug for ClusterCache<T, S, CLUSTERS> {
+impl<T: Scalar, const S: u32, const CLUSTERS: usize, const MESHES: usize> core::fmt::Debug
+    for ClusterCache<T, S, CLUSTERS, MESHES>
+{
     fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
-        write!(f, "ClusterCache<{CLUSTERS}>")
+        write!(f, "ClusterCache<{CLUSTERS}, {MESHES}>")
     }
 }
 
@@ -263,12 +280,12 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     /// of [`Lighting::validate`](crate::light::Lighting::validate); for
     /// [`Fx`](crate::math::Fx), [`Error::CoordinateOutOfRange`] as for
     /// [`Pipeline::draw_valid_mesh`].
-    pub fn draw_meshlets<C, F, M, const W: usize, const N: usize>(
+    pub fn draw_meshlets<C, F, M, const W: usize, const N: usize, const K: usize>(
         &self,
         mesh: &ValidMeshletMesh<'_>,
         model: &Mat4<T>,
         color: C,
-        cache: &mut ClusterCache<T, S, N>,
+        cache: &mut ClusterCache<T, S, N, K>,
         band: &mut Band3d<'_, '_, C, F, M, W>,
     ) -> Result<MeshStats, Error>
     where
@@ -281,13 +298,13 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
 
     /// [`Pipeline::draw_meshlets`] with the vertices coloured by `material`
     /// (per vertex; a per-face material is [`Error::InvalidParameter`]).
-    pub(crate) fn draw_meshlets_with<C, F, M, Mat, const W: usize, const N: usize>(
+    pub(crate) fn draw_meshlets_with<C, F, M, Mat, const W: usize, const N: usize, const K: usize>(
         &self,
         mesh: &ValidMeshletMesh<'_>,
         model: &Mat4<T>,
         color: C,
         material: &Mat,
-        cache: &mut ClusterCache<T, S, N>,
+        cache: &mut ClusterCache<T, S, N, K>,
         band: &mut Band3d<'_, '_, C, F, M, W>,
     ) -> Result<MeshStats, Error>
     where
@@ -326,12 +343,12 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     /// assert!(front > 20 && front < 60 && stats.emitted == front);
     /// # Ok::<(), microraster::Error>(())
     /// ```
-    pub fn meshlet_triangles<C: Interpolate, const N: usize>(
+    pub fn meshlet_triangles<C: Interpolate, const N: usize, const K: usize>(
         &self,
         mesh: &ValidMeshletMesh<'_>,
         model: &Mat4<T>,
         color: C,
-        cache: &mut ClusterCache<T, S, N>,
+        cache: &mut ClusterCache<T, S, N, K>,
         rows: (i32, i32),
         sink: impl FnMut(&ScreenTriangle<S>),
     ) -> Result<MeshStats, Error> {
@@ -342,13 +359,13 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     /// `material` ([`Pipeline::draw_meshlets_with`]); without `with_inv_w`
     /// each vertex's `1/w` is left at 1 (for an affine band).
     #[allow(clippy::too_many_arguments)]
-    fn meshlets_into<C: Interpolate, Mat: Material<T>, const N: usize>(
+    fn meshlets_into<C: Interpolate, Mat: Material<T>, const N: usize, const K: usize>(
         &self,
         mesh: &ValidMeshletMesh<'_>,
         model: &Mat4<T>,
         color: C,
         material: &Mat,
-        cache: &mut ClusterCache<T, S, N>,
+        cache: &mut ClusterCache<T, S, N, K>,
         (rows, with_inv_w): ((i32, i32), bool),
         mut sink: impl FnMut(&ScreenTriangle<S>),
     ) -> Result<MeshStats, Error> {

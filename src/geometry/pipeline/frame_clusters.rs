@@ -14,33 +14,30 @@
 //! counts them with the other clusters outside.
 //!
 //! # The rows of a sphere
-//! Over a sphere of centre `c` and radius `r` (widened by the validation's
-//! tolerance, as [`InsideView`]), clip `y` and `w` lie within `y_c ± r·|Y|`
-//! and `w_c ± r·|W|` (`Y`, `W`: the rows' `xyz`, Cauchy–Schwarz). Where
-//! `w_c − r·|W|` is positive, `y/w` lies between the extreme ratios of
-//! those intervals; each is widened by `2^-10` of its magnitude plus
-//! `2^-10` (the `f32` rounding of the dot products and quotients is below
-//! `2^-20` relative), and the frame rows of those NDC bounds
-//! (`oy + (1 − y)·h/2`, as `Pipeline::band_bounds`) by two rows more, for
-//! snapping and the top-left rule. A sphere reaching `w ≤ 0`, or values
-//! that are not finite, gives no rows: the cluster is tested per band.
+//! A conservative interval, widened for rounding, snapping and the
+//! top-left rule ([`super::sphere_rows`]).
 //!
 //! # When the record is built
-//! A frame's first band (one that does not start below the previous band)
-//! and a band drawing another mesh, matrix, clip planes, culling or
-//! viewport than the last call are tested per band alone; the next band
-//! with the same mesh and matrix builds the record, and later bands of the
-//! frame use it. So a cache shared by meshes drawn in turn stays correct
-//! and costs what the per-band tests cost, and a stale record is never
-//! read. Clusters beyond the record's capacity (the cache's `CLUSTERS`,
-//! [`FRAME_CLUSTERS`] unless told) are tested per band.
+//! A record belongs to a key: the mesh, matrix, clip planes, culling and
+//! viewport of the call ([`FrameKey`]); up to the cache's `MESHES` keys
+//! ([`FRAME_MESHES`] unless told) keep records
+//! at once, sharing the capacity (the cache's `CLUSTERS`,
+//! [`FRAME_CLUSTERS`] unless told), so meshes drawn in turn through one
+//! cache (a `View3d` scene's meshlet objects) each get one. A key's first
+//! call is tested per band alone; its next call, in a band below, builds
+//! its record, and later bands of the frame use it. A call whose band does
+//! not start below its key's previous call starts a new frame: every
+//! record is dropped, so a stale record is never read. Clusters beyond the
+//! capacity are tested per band, as are the meshes of a key that lost its
+//! place to another.
 
 use super::cluster::ClusterCull;
 use super::inside::InsideView;
+use super::sphere_rows::SphereRows;
 use crate::clip3d::ClipPlanes;
 use crate::edge::Cull;
 use crate::math::Vec4;
-use crate::mesh::{Meshlet, SPHERE_TOLERANCE};
+use crate::mesh::Meshlet;
 
 /// Clusters per mesh whose verdicts a [`ClusterCache`](super::ClusterCache)
 /// records unless its type says otherwise (the knot has 216).
@@ -88,27 +85,48 @@ pub(super) struct FrameKey {
     pub(super) origin: (i64, i64),
 }
 
-/// The per-frame record of a [`ClusterCache`](super::ClusterCache).
-pub(super) struct FrameClusters<const N: usize> {
+/// Meshes (keys) whose records a [`ClusterCache`](super::ClusterCache)
+/// keeps at once unless its type says otherwise.
+pub const FRAME_MESHES: usize = 4;
+
+/// One key's place in the record.
+#[derive(Clone, Copy)]
+struct Slot {
     key: Option<FrameKey>,
-    /// Whether `entries` hold the record of `key` for this frame.
+    /// Whether `entries[start..start + len]` hold `key`'s record for this
+    /// frame.
     built: bool,
-    /// First row of the band the record was last asked for.
+    /// First row of the band `key` was last drawn in.
     last_row: i32,
+    start: usize,
+    len: usize,
+}
+
+impl Slot {
+    const FREE: Slot = Slot { key: None, built: false, last_row: i32::MAX, start: 0, len: 0 };
+}
+
+/// The per-frame record of a [`ClusterCache`](super::ClusterCache).
+pub(super) struct FrameClusters<const N: usize, const M: usize> {
+    slots: [Slot; M],
+    /// Entries taken by this frame's records.
+    used: usize,
+    /// The slot a new key takes when none is free (in turn).
+    next: usize,
     entries: [ClusterFrame; N],
 }
 
-impl<const N: usize> FrameClusters<N> {
+impl<const N: usize, const M: usize> FrameClusters<N, M> {
     pub(super) const EMPTY: Self = FrameClusters {
-        key: None,
-        built: false,
-        last_row: i32::MAX,
+        slots: [Slot::FREE; M],
+        used: 0,
+        next: 0,
         entries: [ClusterFrame { top: 0, bottom: 0, flags: 0 }; N],
     };
 
     /// The record for `key` in the band starting at `first_row`: empty (test
-    /// every cluster per band) on a frame's first band or a new key, built
-    /// on the next band with the same key, then reused (module docs).
+    /// every cluster per band) on a key's first call or a new frame, built
+    /// on the key's next call, then reused (module docs).
     pub(super) fn prepare(
         &mut self,
         key: FrameKey,
@@ -118,22 +136,14 @@ impl<const N: usize> FrameClusters<N> {
         cull: &ClusterCull,
         inside: &InsideView,
     ) -> &[ClusterFrame] {
-        if N == 0 {
+        if N == 0 || M == 0 {
             return &[];
         }
-        let same = self.key == Some(key) && first_row > self.last_row;
-        self.last_row = first_row;
-        if !same {
-            // A frame's first band, or another mesh or matrix: the band
-            // tests alone, and a record only if the next band asks again
-            // (a cache shared by meshes in turn never pays for one).
-            (self.key, self.built) = (Some(key), false);
-            return &[];
-        }
-        if !self.built {
-            self.built = true;
+        let Some(i) = self.slot_for(key, first_row) else { return &[] };
+        if !self.slots[i].built {
+            let (start, len) = self.claim(i, meshlets.len());
             let reach = SphereRows::new(rows, key.size.1, key.origin.1);
-            for (e, m) in self.entries.iter_mut().zip(meshlets) {
+            for (e, m) in self.entries[start..start + len].iter_mut().zip(meshlets) {
                 let outside = !cull.view_keeps(m);
                 let away = !outside && cull.faces_away(m);
                 let within = !outside && !away && inside.contains(m.sphere);
@@ -148,154 +158,109 @@ impl<const N: usize> FrameClusters<N> {
                 *e = ClusterFrame { top, bottom, flags };
             }
         }
-        &self.entries[..meshlets.len().min(N)]
-    }
-}
-
-/// The frame rows of spheres (module docs) for one matrix and viewport.
-struct SphereRows {
-    y: Vec4<f32>,
-    w: Vec4<f32>,
-    /// `|Y|` and `|W|` of the rows' `xyz`.
-    y_len: f32,
-    w_len: f32,
-    half_h: f32,
-    oy: f32,
-}
-
-impl SphereRows {
-    fn new(rows: [Vec4<f32>; 4], height: u32, oy: i64) -> Self {
-        let (y, w) = (rows[1], rows[3]);
-        let half_h = height as f32 * 0.5;
-        SphereRows { y, w, y_len: y.xyz().length(), w_len: w.xyz().length(), half_h, oy: oy as f32 }
+        let (start, len) = (self.slots[i].start, self.slots[i].len);
+        self.entries.get(start..start + len).unwrap_or(&[])
     }
 
-    /// The first and last frame rows the sphere can reach, or `None`.
-    fn rows(&self, (c, r): ([f32; 3], f32)) -> Option<(i16, i16)> {
-        let r = r * (1.0 + 2.0 * SPHERE_TOLERANCE);
-        let centre = Vec4::new(c[0], c[1], c[2], 1.0);
-        let (yc, wc) = (self.y.dot(centre), self.w.dot(centre));
-        let (ry, rw) = (r * self.y_len, r * self.w_len);
-        let (w_lo, w_hi) = (wc - rw, wc + rw);
-        if !(w_lo > 0.0 && w_hi.is_finite()) {
-            return None;
+    /// The slot whose record serves `key` in the band starting at
+    /// `first_row` (built now if it is not yet), or `None`: that band tests
+    /// its clusters alone (module docs).
+    fn slot_for(&mut self, key: FrameKey, first_row: i32) -> Option<usize> {
+        match self.slots.iter().position(|s| s.key == Some(key)) {
+            Some(i) if first_row > self.slots[i].last_row => {
+                self.slots[i].last_row = first_row;
+                Some(i)
+            }
+            Some(i) => {
+                // Not below this key's last band: a new frame, in which
+                // every record is stale.
+                for s in &mut self.slots {
+                    s.built = false;
+                }
+                self.used = 0;
+                self.slots[i].last_row = first_row;
+                None
+            }
+            None => {
+                // A key not seen lately: a free slot, else the next in
+                // turn; a record only if it is drawn again in a band below.
+                let i = self.slots.iter().position(|s| s.key.is_none()).unwrap_or(self.next);
+                let slot = self.slots.get_mut(i)?; // none when M = 0
+                *slot = Slot { key: Some(key), last_row: first_row, ..Slot::FREE };
+                self.next = (i + 1) % M.max(1);
+                None
+            }
         }
-        let (y_lo, y_hi) = (yc - ry, yc + ry);
-        let lo = y_lo / if y_lo >= 0.0 { w_hi } else { w_lo };
-        let hi = y_hi / if y_hi >= 0.0 { w_lo } else { w_hi };
-        let widen = |v: f32| v.abs() * (1.0 / 1024.0) + 1.0 / 1024.0;
-        let (lo, hi) = (lo - widen(lo), hi + widen(hi));
-        // NDC y runs up, rows down: the top row from the highest y.
-        let row = |k: f32| self.oy + (1.0 - k) * self.half_h;
-        let (top, bottom) = (row(hi) - 2.0, row(lo) + 2.0);
-        if !(top.is_finite() && bottom.is_finite()) {
-            return None;
-        }
-        // Saturated to `i16` (a cast would wrap): rows beyond it stay beyond
-        // every band, which lies within 0..4096 (`MAX_FRAME_DIM`).
-        let to_i16 = |v: i32| v.clamp(i16::MIN.into(), i16::MAX.into()) as i16;
-        Some((to_i16(floor_i32(top)), to_i16(ceil_i32(bottom))))
     }
-}
 
-/// `⌊v⌋` for finite `v` (no `std`): truncation, one lower for a negative
-/// value with a fraction; beyond `i32` it saturates.
-fn floor_i32(v: f32) -> i32 {
-    let t = v as i32;
-    if (t as f32) > v { t.saturating_sub(1) } else { t }
-}
-
-/// `⌈v⌉` for finite `v`, as [`floor_i32`].
-fn ceil_i32(v: f32) -> i32 {
-    let t = v as i32;
-    if (t as f32) < v { t.saturating_add(1) } else { t }
+    /// Marks slot `i` built with room for up to `clusters` entries, what is
+    /// left of the capacity (clusters beyond it are tested per band), and
+    /// returns that room as `(start, len)`.
+    fn claim(&mut self, i: usize, clusters: usize) -> (usize, usize) {
+        let start = self.used.min(N);
+        let len = clusters.min(N - start);
+        self.used = start + len;
+        let slot = &mut self.slots[i];
+        (slot.built, slot.start, slot.len) = (true, start, len);
+        (start, len)
+    }
 }
 
 #[cfg(test)]
 mod tests {
-    use super::super::inside::tests::rng;
     use super::*;
-    use crate::math::{Mat4, Vec3, transform};
 
-    /// Every point of a sphere (within its tolerance) in front of the eye
-    /// projects at least one row inside the recorded rows, over random
-    /// cameras, spheres and viewports; the rows are not vacuous.
+    /// The record's bookkeeping over bands: one key records from its
+    /// second band; keys drawn in turn each record, sharing the capacity;
+    /// a band not below a key's last starts a new frame and drops every
+    /// record; a fifth key takes a place in turn.
     #[test]
-    fn sphere_rows_hold_every_point() {
-        let mut seed = 0x0B5E_55ED_F00Du64;
-        let (mut checked, mut tight) = (0u32, 0u32);
-        for _ in 0..400 {
-            let dir = Vec3::new(rng(&mut seed), rng(&mut seed), rng(&mut seed) + 2.0);
-            let eye = dir * (2.0 + 3.0 * rng(&mut seed).abs());
-            let Ok(view) = transform::look_at(eye, Vec3::new(0.0, 0.0, 0.0), Vec3::new(0.0, 1.0, 0.0)) else {
-                continue;
-            };
-            let Ok(proj) = transform::perspective(0.5 + rng(&mut seed).abs(), 1.3, 0.3, 20.0) else {
-                continue;
-            };
-            let mvp: Mat4<f32> = proj * view;
-            let rows = super::super::rows_f32(&mvp);
-            let (h, oy) = (60 + (rng(&mut seed).abs() * 400.0) as u32, (rng(&mut seed) * 100.0) as i64);
-            let reach = SphereRows::new(rows, h, oy);
-            for _ in 0..40 {
-                let c = [rng(&mut seed) * 3.0, rng(&mut seed) * 3.0, rng(&mut seed) * 3.0];
-                let r = rng(&mut seed).abs() * 0.5;
-                let Some((top, bottom)) = reach.rows((c, r)) else { continue };
-                tight += (i32::from(bottom) - i32::from(top) < h as i32) as u32;
-                for i in 0..48 {
-                    let d = [rng(&mut seed), rng(&mut seed), rng(&mut seed)];
-                    let len = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
-                    if len == 0.0 {
-                        continue;
-                    }
-                    let s = r * (1.0 + SPHERE_TOLERANCE) / len
-                        * if i % 3 == 0 { 1.0 } else { rng(&mut seed).abs() };
-                    let p = [0, 1, 2].map(|k| f64::from(c[k] + d[k] * s));
-                    let row = |v: Vec4<f32>| {
-                        f64::from(v.x) * p[0] + f64::from(v.y) * p[1] + f64::from(v.z) * p[2] + f64::from(v.w)
-                    };
-                    let (y, w) = (row(rows[1]), row(rows[3]));
-                    assert!(w > 0.0, "a sphere with rows reaches w ≤ 0");
-                    let screen = oy as f64 + (1.0 - y / w) * f64::from(h) * 0.5;
-                    // A triangle there covers rows whose centre it reaches:
-                    // within a row of the point.
-                    assert!(
-                        f64::from(top) <= screen - 1.0 && f64::from(bottom) >= screen + 1.0,
-                        "{c:?} {r} {screen}"
-                    );
-                    checked += 1;
-                }
+    fn keys_in_turn_each_record_until_a_new_frame() {
+        let key = |k: usize| FrameKey {
+            mesh: (0x1000 * k, 216),
+            mvp: [[k as u32; 4]; 4],
+            planes: ClipPlanes::for_viewport_fast_path(320, 240, 4),
+            cull: Cull::Clockwise,
+            size: (320, 240),
+            origin: (0, 0),
+        };
+        let mut f = FrameClusters::<256, 4>::EMPTY;
+        // What a band gets for key k: Some((start, len)) of its record.
+        let band = |f: &mut FrameClusters<256, 4>, k: usize, row: i32| {
+            let i = f.slot_for(key(k), row)?;
+            if !f.slots[i].built {
+                f.claim(i, 100);
+            }
+            Some((f.slots[i].start, f.slots[i].len))
+        };
+        for frame in 0..3 {
+            // Two meshes in turn: both record from the second band, the
+            // second with what the first left (56 of its 100).
+            assert_eq!((band(&mut f, 1, 0), band(&mut f, 2, 0)), (None, None), "frame {frame}");
+            assert!(!f.slots.iter().any(|s| s.built), "frame {frame}: last frame's records dropped");
+            for row in [16, 32, 224] {
+                assert_eq!(band(&mut f, 1, row), Some((0, 100)), "frame {frame}");
+                assert_eq!(band(&mut f, 2, row), Some((100, 100)), "frame {frame}");
             }
         }
-        assert!(checked > 100_000 && tight > 5_000, "{checked} {tight}");
-    }
-
-    /// Spheres across or behind the eye, and values that are not finite,
-    /// give no rows (tested per band); spheres just in front of the eye
-    /// give rows saturated to `i16`.
-    #[test]
-    fn spheres_at_the_eye_have_no_rows_and_near_it_saturate() {
-        let view =
-            transform::look_at(Vec3::new(0.0, 0.0, 5.0), Vec3::new(0.0, 0.0, 0.0), Vec3::new(0.0, 1.0, 0.0))
-                .unwrap();
-        let mvp: Mat4<f32> = transform::perspective(0.8, 1.0, 1.0, 10.0).unwrap() * view;
-        let reach = SphereRows::new(super::super::rows_f32(&mvp), 240, 0);
-        let (top, bottom) = reach.rows(([0.0; 3], 0.5)).expect("in front");
-        assert!(top < 120 && bottom > 120 && bottom - top < 80, "{top} {bottom}");
-        // Spheres just in front of the eye reach far beyond the frame, past
-        // the `i16` range: their rows saturate instead of wrapping.
-        let mut huge = 0;
-        for k in 1..200 {
-            let r = 0.51 - 0.51 * 0.9f32.powi(k);
-            if let Some((top, bottom)) = reach.rows(([0.0, 0.0, 4.49], r)) {
-                assert!(top <= 120 && bottom >= 120, "{r}: {top} {bottom}");
-                huge += (top == i16::MIN || bottom == i16::MAX) as u32;
+        // A third mesh appears mid-frame: the rest of the capacity.
+        let _ = (band(&mut f, 1, 0), band(&mut f, 2, 0), band(&mut f, 3, 0));
+        assert_eq!((band(&mut f, 1, 16), band(&mut f, 2, 16), band(&mut f, 3, 16)).2, Some((200, 56)));
+        // Five keys in turn: each takes another's place, none records.
+        for row in [32, 48, 64] {
+            for k in 4..9 {
+                assert_eq!(band(&mut f, k, row), None, "{k} {row}");
             }
         }
-        assert!(huge > 5, "{huge}");
-        assert_eq!(reach.rows(([0.0, 0.0, 5.0], 0.5)), None); // around the eye
-        assert_eq!(reach.rows(([0.0, 0.0, 9.0], 0.5)), None); // behind it
-        assert_eq!(reach.rows(([f32::NAN, 0.0, 0.0], 0.5)), None);
-        assert_eq!(reach.rows(([0.0; 3], f32::INFINITY)), None);
+        // One key drawn twice per band: its second call is not below the
+        // first, so it starts a new frame, and the next band's first call
+        // builds the record again (correct; the same mesh and matrix twice
+        // per band is best drawn once).
+        let mut g = FrameClusters::<256, 4>::EMPTY;
+        assert_eq!((band(&mut g, 1, 0), band(&mut g, 1, 0)), (None, None));
+        for row in [16, 32] {
+            assert_eq!((band(&mut g, 1, row), band(&mut g, 1, row)), (Some((0, 100)), None));
+            assert!(!g.slots.iter().any(|s| s.built), "dropped");
+        }
     }
 }
