@@ -56,6 +56,11 @@ use crate::{Error, Interpolate};
 /// let small = ClusterCache::<f32, 4, 0, 0>::sized(); // no record: per-band tests
 /// assert!(core::mem::size_of_val(&small) < 3_300);
 /// ```
+// `repr(C)`: the vertices first. The vertex stage reaches them by immediate
+// offsets from the cache, up to 4,095 bytes in a Thumb-2 load; laid out
+// behind the 2 KB record (Rust's order), the Cortex-M4F knot was 2.6 %
+// dearer.
+#[repr(C)]
 pub struct ClusterCache<
     T: Scalar,
     const S: u32,
