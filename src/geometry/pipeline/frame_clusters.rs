@@ -19,11 +19,11 @@
 //!
 //! # When the record is built
 //! A record belongs to a key: the mesh, matrix, clip planes, culling and
-//! viewport of the call ([`FrameKey`]); up to the cache's `MESHES` keys
-//! ([`FRAME_MESHES`] unless told) keep records
-//! at once, sharing the capacity (the cache's `CLUSTERS`,
-//! [`FRAME_CLUSTERS`] unless told), so meshes drawn in turn through one
-//! cache (a `View3d` scene's meshlet objects) each get one. A key's first
+//! viewport of the call ([`FrameKey`]). Up to the cache's `MESHES` keys
+//! ([`FRAME_MESHES`] unless told) keep records at once, sharing the
+//! capacity (the cache's `CLUSTERS`, [`FRAME_CLUSTERS`] unless told), so
+//! meshes drawn in turn through one cache (a `View3d` scene's meshlet
+//! objects) each get one. A key's first
 //! call is tested per band alone; its next call, in a band below, builds
 //! its record, and later bands of the frame use it. A call whose band does
 //! not start below its key's previous call starts a new frame: every
