@@ -65,7 +65,9 @@ pub(super) struct Cached<T, const S: u32> {
     pub(super) state: u8,
     /// Clip outcode (valid with `CLIP`).
     pub(super) code: u8,
-    /// Snapped vertex (valid with `SNAP` and `SNAPPED`; its colour with
+    /// Snapped vertex (valid with `SNAP` and `SNAPPED`; its depth and
+    /// `1/w` with `DEPTH`, before which its depth field holds the clip
+    /// `w`'s divisor word, `Pipeline::snap_deferred`; its colour with
     /// `LIT`). Not an `Option`: its unwrapping cost loads and branches in
     /// the triangle loop.
     pub(super) screen: ScreenVertex<S>,
