@@ -150,10 +150,8 @@ pub struct FxDivisor {
 impl FxDivisor {
     /// The divisor `d` (raw bits), `None` unless `0 < d`.
     pub(crate) fn new(d: i32) -> Option<Self> {
-        let d = u32::try_from(d).ok().filter(|&d| d > 0)?;
-        let sh = leading_zeros_u32(d);
-        let dn = d << sh;
-        Some(FxDivisor { d, sh, v: reciprocal(dn) })
+        let p = Self::from_reciprocal(d, 0)?;
+        Some(FxDivisor { v: reciprocal(p.d << p.sh), ..p })
     }
 
     /// The reciprocal word, all that [`FxDivisor::from_reciprocal`] needs

@@ -136,11 +136,12 @@ mod tests {
     /// shifts, over vectors of every magnitude (both scalings of `N`).
     #[test]
     fn unit_bits_shifts_by_words_as_u64() {
-        fn by_u64(v: [i32; 3]) -> Option<[i32; 3]> {
+        /// The unit vector, and whether `N` took the wider scaling.
+        fn by_u64(v: [i32; 3]) -> (Option<[i32; 3]>, bool) {
             let a = v.map(i32::unsigned_abs);
             let m = a[0].max(a[1]).max(a[2]);
             if m == 0 {
-                return None;
+                return (None, false);
             }
             let x = match m.leading_zeros() {
                 0 => a.map(|c| c >> 1),
@@ -155,7 +156,7 @@ mod tests {
                 let u = ((x[k] as u64 * y as u64 + (1 << (sh - 1))) >> sh) as i32;
                 if v[k] < 0 { -u } else { u }
             };
-            Some([u(0), u(1), u(2)])
+            (Some([u(0), u(1), u(2)]), big >= 1 << 62)
         }
         let mut rng = Rng(0x0B17_5E75);
         let (mut wide, mut narrow) = (0, 0);
@@ -164,17 +165,13 @@ mod tests {
             let shift = i % 31;
             let v = [r as i32 >> shift, (r >> 21) as i32 >> shift, (r >> 42) as i32 >> (shift / 2)];
             let v = if i % 7 == 0 { [v[0], 0, 0] } else { v };
-            assert_eq!(unit_bits(v), by_u64(v), "{v:?}");
-            // Which scaling of N applied (both must be covered).
-            let m = v.map(i32::unsigned_abs).into_iter().max().unwrap_or(0);
-            if m != 0 {
-                let k = m.leading_zeros();
-                let x = v.map(|c| if k == 0 { c.unsigned_abs() >> 1 } else { c.unsigned_abs() << (k - 1) });
-                if x.map(|c| c as u64 * c as u64).iter().sum::<u64>() >= 1 << 62 {
-                    wide += 1
-                } else {
-                    narrow += 1
-                }
+            let (want, is_wide) = by_u64(v);
+            assert_eq!(unit_bits(v), want, "{v:?}");
+            // Both scalings of N must be covered (the zero vector has none).
+            match (want, is_wide) {
+                (None, _) => {}
+                (Some(_), true) => wide += 1,
+                (Some(_), false) => narrow += 1,
             }
         }
         assert!(wide > 1000 && narrow > 1000, "{wide} {narrow}");
