@@ -105,7 +105,16 @@ pub(super) mod tests {
     use crate::clip3d::VertexClass;
     use crate::math::{Fx, Vec3, transform};
 
-    /// xorshift in [-1, 1) (also the frame record's tests).
+    /// The matrix of an eye at `z = 5` looking at the origin, near 1, far
+    /// 10 (also the sphere rows' tests).
+    pub(in crate::geometry::pipeline) fn eye_at_z5() -> crate::math::Mat4<f32> {
+        let view =
+            transform::look_at(Vec3::new(0.0, 0.0, 5.0), Vec3::new(0.0, 0.0, 0.0), Vec3::new(0.0, 1.0, 0.0))
+                .unwrap();
+        transform::perspective(0.8, 1.0, 1.0, 10.0).unwrap() * view
+    }
+
+    /// xorshift in [-1, 1) (also the sphere rows' tests).
     pub(in crate::geometry::pipeline) fn rng(seed: &mut u64) -> f32 {
         *seed ^= *seed << 13;
         *seed ^= *seed >> 7;
@@ -181,10 +190,7 @@ pub(super) mod tests {
     /// inside.
     #[test]
     fn spheres_across_the_edges_are_not_inside() {
-        let view =
-            transform::look_at(Vec3::new(0.0, 0.0, 5.0), Vec3::new(0.0, 0.0, 0.0), Vec3::new(0.0, 1.0, 0.0))
-                .unwrap();
-        let mvp = transform::perspective(0.8, 1.0, 1.0, 10.0).unwrap() * view;
+        let mvp = eye_at_z5();
         let test = InsideView::new(&mvp, ClipPlanes::DEFAULT);
         assert!(test.contains(([0.0; 3], 0.5)));
         assert!(!test.contains(([0.0; 3], 3.0))); // beyond the sides

@@ -76,7 +76,7 @@ fn ceil_i32(v: f32) -> i32 {
 
 #[cfg(test)]
 mod tests {
-    use super::super::inside::tests::rng;
+    use super::super::inside::tests::{eye_at_z5, rng};
     use super::*;
     use crate::math::{Mat4, Vec3, transform};
 
@@ -138,11 +138,7 @@ mod tests {
     /// give rows saturated to `i16`.
     #[test]
     fn spheres_at_the_eye_have_no_rows_and_near_it_saturate() {
-        let view =
-            transform::look_at(Vec3::new(0.0, 0.0, 5.0), Vec3::new(0.0, 0.0, 0.0), Vec3::new(0.0, 1.0, 0.0))
-                .unwrap();
-        let mvp: Mat4<f32> = transform::perspective(0.8, 1.0, 1.0, 10.0).unwrap() * view;
-        let reach = SphereRows::new(super::super::rows_f32(&mvp), 240, 0);
+        let reach = SphereRows::new(super::super::rows_f32(&eye_at_z5()), 240, 0);
         let (top, bottom) = reach.rows(([0.0; 3], 0.5)).expect("in front");
         assert!(top < 120 && bottom > 120 && bottom - top < 80, "{top} {bottom}");
         // Spheres just in front of the eye reach far beyond the frame, past
