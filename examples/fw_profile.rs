@@ -20,6 +20,9 @@
 //! `src/`, through inlining): blocks are a few instructions long, so a
 //! location's count is exact up to the blocks that straddle two.
 //!
+//! With `MICRORASTER_PROFILE_BLOCKS=FILE` it also writes each block's start
+//! address, instructions executed and length to `FILE`, costliest first.
+//!
 //! The total includes the start-up (zeroing `.bss`, about 0.1 M
 //! instructions) and the output of the row line.
 
@@ -32,8 +35,20 @@ fn main() -> Result<(), String> {
     let elf = args.next().ok_or("usage: fw_profile ELF [ROWS_SHOWN] < qemu-log")?;
     let shown: usize = args.next().map_or(Ok(30), |s| s.parse()).map_err(|e| format!("rows shown: {e}"))?;
     let symbols = symbols(&elf)?;
-    let (counts, calls) = read_log(BufReader::new(std::io::stdin().lock()), &symbols)?;
+    let (counts, calls, sizes) = read_log(BufReader::new(std::io::stdin().lock()), &symbols)?;
     let total: u64 = counts.values().sum();
+    if let Ok(path) = std::env::var("MICRORASTER_PROFILE_BLOCKS") {
+        // Per block: start address, instructions executed and the block's
+        // length in instructions, costliest first
+        // (to read beside `llvm-objdump -d` of the same ELF).
+        let mut blocks: Vec<(u32, u64)> = counts.iter().map(|(&pc, &n)| (pc, n)).collect();
+        blocks.sort_unstable_by_key(|&(pc, n)| (core::cmp::Reverse(n), pc));
+        let text: String = blocks
+            .iter()
+            .map(|(pc, n)| format!("{pc:08x} {n} {}\n", sizes.get(pc).copied().unwrap_or(0)))
+            .collect();
+        std::fs::write(&path, text).map_err(|e| format!("writing {path}: {e}"))?;
+    }
     let mut pcs: Vec<u32> = counts.keys().copied().collect();
     pcs.extend(calls.keys().map(|(caller, _)| *caller));
     pcs.sort_unstable();
@@ -85,9 +100,11 @@ fn is_library(symbol: &str) -> bool {
 
 /// Instructions executed per block start address, from QEMU's log, and the
 /// entries into library routines ([`is_library`]) per `(calling block,
-/// routine)`: the block logged before a routine's first block.
+/// routine)`: the block logged before a routine's first block; and each
+/// block's length in instructions.
 type Calls = HashMap<(u32, String), u64>;
-fn read_log(log: impl BufRead, symbols: &[(u32, u32, String)]) -> Result<(HashMap<u32, u64>, Calls), String> {
+type Log = (HashMap<u32, u64>, Calls, HashMap<u32, u64>);
+fn read_log(log: impl BufRead, symbols: &[(u32, u32, String)]) -> Result<Log, String> {
     let (mut size, mut counts) = (HashMap::<u32, u64>::new(), HashMap::<u32, u64>::new());
     let (mut calls, mut previous) = (Calls::new(), None::<u32>);
     // The block being listed: its first address and instructions so far.
@@ -129,7 +146,7 @@ fn read_log(log: impl BufRead, symbols: &[(u32, u32, String)]) -> Result<(HashMa
             previous = Some(pc);
         }
     }
-    Ok((counts, calls))
+    Ok((counts, calls, size))
 }
 
 /// `(function, file:line)` of each address: its innermost inlined frame
@@ -273,7 +290,7 @@ Trace 0: 0x7f5954000300 [00800408/00000400/00000110/ff000200] main
         // `f` as a library routine: entered once from `main`'s block (its
         // second run follows its own block, not a call).
         let symbols = vec![(0x400, 0x10, "main".to_string()), (0x1000, 0x10, "__f".to_string())];
-        let (counts, calls) = read_log(log.as_bytes(), &symbols).unwrap();
+        let (counts, calls, sizes) = read_log(log.as_bytes(), &symbols).unwrap();
         assert_eq!(counts.get(&0x1000), Some(&6));
         assert_eq!(counts.get(&0x400), Some(&(2 + 2 + 1)));
         assert_eq!(counts.values().sum::<u64>(), 11);
