@@ -295,7 +295,9 @@ Trace 0: 0x7f5954000300 [00800408/00000400/00000110/ff000200] main
         assert_eq!(counts.get(&0x400), Some(&(2 + 2 + 1)));
         assert_eq!(counts.values().sum::<u64>(), 11);
         assert_eq!(calls.into_iter().collect::<Vec<_>>(), [((0x400, "__f".to_string()), 1)]);
-        let (_, none) = read_log(log.as_bytes(), &[]).unwrap();
+        // Block lengths: as listed last (`main`'s second listing is one instruction).
+        assert_eq!(sizes.get(&0x1000), Some(&3));
+        let (_, none, _) = read_log(log.as_bytes(), &[]).unwrap();
         assert!(none.is_empty());
     }
 
