@@ -416,12 +416,25 @@ fn draw_spans<C, F, Sh, D, Rest, const W: usize>(
 /// The triangle's `1/w` values scaled by a common power of two so the largest
 /// has `bits` bits (rounding only if a value must shift right): ratios are all
 /// that matter, and the products with interpolated values stay bounded.
+///
+/// In `u32` (`bits` of 1 to 31): a value shifted left stays below 2^`bits`,
+/// and one shifted right by `k` is rounded half up as
+/// `⌊q / 2^k⌋ + (bit k − 1 of q)`, which is `⌊(q + 2^(k−1)) / 2^k⌋`
+/// without the sum's 33rd bit (64-bit shifts are several instructions on
+/// the Cortex-M; tested against the `u64` form).
 pub(crate) fn normalised_q<const S: u32>(tri: &ScreenTriangle<S>, bits: u32) -> [i64; 3] {
+    debug_assert!((1..=31).contains(&bits));
     let qmax = tri.v.iter().map(|v| v.inv_w).max().unwrap_or(0).max(1);
     let shift = bits as i32 - (32 - qmax.leading_zeros()) as i32;
     tri.v.map(|v| {
-        let q = v.inv_w as u64;
-        let q = if shift >= 0 { q << shift } else { (q + (1 << (-shift - 1))) >> -shift };
+        let q = v.inv_w;
+        let q = if shift >= 0 {
+            q << shift
+        } else {
+            // 1 ≤ k ≤ 32 − bits ≤ 31.
+            let k = shift.unsigned_abs();
+            (q >> k) + ((q >> (k - 1)) & 1)
+        };
         q.max(1) as i64
     })
 }

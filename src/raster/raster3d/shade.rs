@@ -179,3 +179,50 @@ impl<C: Interpolate, M: Interpolation, const CLAMP: bool> ShadeSpan<C> for Goura
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::{ScreenTriangle, normalised_q};
+    use crate::raster3d::ScreenVertex;
+
+    /// `normalised_q` in `u32` is the `u64` form it replaced,
+    /// `(q + 2^(k−1)) >> k` for a right shift, for `1/w` of every
+    /// magnitude (including `u32::MAX`, whose rounding carries into a
+    /// 33rd bit there) and the normalisations the crate uses.
+    #[test]
+    fn normalised_q_is_the_u64_form() {
+        fn reference(inv_w: [u32; 3], bits: u32) -> [i64; 3] {
+            let qmax = inv_w.iter().copied().max().unwrap_or(0).max(1);
+            let shift = bits as i32 - (32 - qmax.leading_zeros()) as i32;
+            inv_w.map(|q| {
+                let q = q as u64;
+                let q = if shift >= 0 { q << shift } else { (q + (1 << (-shift - 1))) >> -shift };
+                q.max(1) as i64
+            })
+        }
+        let mut seed = 0x9E37_79B9_7F4A_7C15u64;
+        let mut next = || {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            seed
+        };
+        let (mut right, mut left) = (0, 0);
+        for i in 0..200_000u32 {
+            let inv_w = [0u32; 3].map(|_| {
+                let r = next();
+                let v = (r >> (32 + (r as u32 % 32))) as u32;
+                [v, u32::MAX, 0, 1, v | 1 << 31, (1 << 23) - 1][(r >> 8) as usize % 6]
+            });
+            let tri = ScreenTriangle::<4> {
+                v: inv_w.map(|inv_w| ScreenVertex { inv_w, ..Default::default() }),
+                flat: false,
+            };
+            let bits = [23, 30, 1, 31][(i % 4) as usize];
+            assert_eq!(normalised_q(&tri, bits), reference(inv_w, bits), "{inv_w:?} to {bits} bits");
+            let top = 32 - inv_w.iter().max().unwrap_or(&0).max(&1).leading_zeros();
+            (right, left) = if top > bits { (right + 1, left) } else { (right, left + 1) };
+        }
+        assert!(right > 50_000 && left > 20_000, "{right} shifted right, {left} left");
+    }
+}
