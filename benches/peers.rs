@@ -72,6 +72,8 @@ fn scene2d(
     let mut out = vec![BG; W * H];
     run(&mut g, "mr_band16_slice", || mr_band(&s4, &mut band, &mut slice));
     run(&mut g, "mr_band16_slice_s8", || mr_band(&s8, &mut band, &mut slice));
+    let mut index = Vec::new();
+    run(&mut g, "mr_band16_slice_binned", || mr_binned(&s4, &mut band, &mut index, &mut slice));
     run(&mut g, "mr_band16_egfb", || mr_band(&s4, &mut band, &mut *egfb));
     run(&mut g, "mr_direct_slice", || mr_direct(&s4, &mut slice));
     run(&mut g, "mr_direct_egfb", || mr_direct(&s4, &mut *egfb));

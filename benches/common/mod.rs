@@ -292,6 +292,26 @@ pub fn mr_band<const S: u32, const BH: usize>(
     Renderer::new(H as u32, BG).render(&scene.prims[..], band, target).unwrap();
 }
 
+/// [`mr_band`] through a [`Binned2d`](microraster::render::Binned2d) index
+/// (`index` resized to what the scene needs on its first use): each band
+/// reads only the primitives that touch it.
+pub fn mr_binned<const S: u32, const BH: usize>(
+    scene: &Scene2d<S>,
+    band: &mut Band<Rgb565, W, BH>,
+    index: &mut Vec<u16>,
+    target: &mut impl Frame,
+) {
+    use microraster::render::Binned2d;
+    let renderer = Renderer::new(H as u32, BG);
+    match renderer.render(Binned2d::new(&scene.prims, index), band, target) {
+        Err(microraster::RenderError::Input(microraster::Error::CapacityExceeded { needed, .. })) => {
+            index.resize(needed, 0);
+            renderer.render(Binned2d::new(&scene.prims, index), band, target).unwrap();
+        }
+        other => other.unwrap(),
+    }
+}
+
 /// microraster drawing straight into `target` (no band): the target is
 /// wiped, then every primitive goes through `TargetBlitter` (spans become
 /// `fill_solid`, Gouraud spans `fill_contiguous`).

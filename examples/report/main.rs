@@ -314,6 +314,15 @@ fn peers2d(
     );
     let mine = slice.px.clone();
     let diff = |px: &[Rgb565]| Some(px.iter().zip(&mine).filter(|(a, b)| a != b).count());
+    let mut index = Vec::new();
+    let t = median_ns(|| mr_binned(&s4, &mut band, &mut index, &mut slice));
+    add(
+        "microraster, 16-row bands, binned (Binned2d)",
+        "slice",
+        k("band16/S4/flat/binned"),
+        t,
+        diff(&slice.px),
+    );
     let t = median_ns(|| mr_band(&s8, &mut band, &mut slice));
     add("microraster, 16-row bands, S = 8", "slice", k("band16/S8/flat"), t, diff(&slice.px));
     let t = median_ns(|| mr_direct(&s4, &mut slice));

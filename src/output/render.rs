@@ -4,6 +4,7 @@ use crate::band::Band;
 use crate::edge::Cull;
 
 mod band3d;
+mod binned;
 mod dirty;
 pub mod link;
 #[cfg(feature = "async")]
@@ -15,6 +16,7 @@ mod spi_panel;
 mod threads;
 use crate::{Error, Interpolate, RenderError};
 pub use band3d::Band3d;
+pub use binned::Binned2d;
 pub use dirty::{DirtyBands, signature};
 use embedded_graphics_core::prelude::{DrawTarget, Point, Size};
 use embedded_graphics_core::primitives::Rectangle;

@@ -113,3 +113,61 @@ fn frame_offset_and_bad_height() {
         assert_eq!(r, Err(microraster::RenderError::Input(microraster::Error::InvalidFrameSize)));
     }
 }
+
+/// `Binned2d` over `scene` with `H`-row bands and an index of exactly the
+/// length it needs (found from the error of an empty one); one entry less
+/// is refused before anything is sent.
+fn render_binned<C: Interpolate + core::fmt::Debug, const H: usize>(
+    scene: &[Primitive<C, 4>],
+    bg: C,
+    cull: Cull,
+) -> Vec<C> {
+    use microraster::render::Binned2d;
+    use microraster::{Error, RenderError};
+    let renderer = Renderer::new(HEIGHT, bg).with_cull(cull);
+    let mut band = Band::<C, W, H>::new(bg);
+    let mut fb = Framebuffer::new(W as u32, HEIGHT, bg);
+    let needed = match renderer.render(Binned2d::new(scene, &mut []), &mut band, &mut fb) {
+        Err(RenderError::Input(Error::CapacityExceeded { needed, capacity: 0 })) => needed,
+        other => panic!("an empty index: {other:?}"),
+    };
+    // The bands and, for each primitive, the bands its rows reach in the frame.
+    let bands = HEIGHT.div_ceil(H as u32) as usize;
+    let reach = |p: &Primitive<C, 4>| {
+        let (lo, hi) = p.rows();
+        let (lo, hi) = (lo.max(0), hi.min(HEIGHT as i32 - 1));
+        if lo > hi { 0 } else { (hi as usize / H) - (lo as usize / H) + 1 }
+    };
+    assert_eq!(needed, bands + scene.iter().map(reach).sum::<usize>(), "H = {H}");
+    let mut index = vec![0u16; needed];
+    let short = renderer.render(Binned2d::new(scene, &mut index[..needed - 1]), &mut band, &mut fb);
+    assert_eq!(short, Err(RenderError::Input(Error::CapacityExceeded { needed, capacity: needed - 1 })));
+    assert!(fb.contiguous.is_empty(), "a refused frame sends nothing");
+    renderer.render(Binned2d::new(scene, &mut index), &mut band, &mut fb).unwrap();
+    fb.pixels
+}
+
+/// The binned pass draws exactly what the slice pass draws, for every band
+/// height, colour type and culling, with primitives beyond the frame.
+#[test]
+fn binned_primitives_draw_what_the_slice_draws() {
+    let mut scenes = 0;
+    for seed in 1..=6 {
+        let mut rng = Rng::new(seed + 300);
+        for cull in [Cull::None, Cull::Clockwise] {
+            for n in [1, 5, 40, 300] {
+                let scene = random_scene::<Rgb565>(&mut rng, n);
+                let bg = Rgb565::new(3, 5, 7);
+                let full = render_banded::<Rgb565, { HEIGHT as usize }>(&scene, bg, cull).pixels;
+                assert_eq!(render_binned::<Rgb565, 1>(&scene, bg, cull), full, "band height 1");
+                assert_eq!(render_binned::<Rgb565, 7>(&scene, bg, cull), full, "band height 7");
+                assert_eq!(render_binned::<Rgb565, 16>(&scene, bg, cull), full, "band height 16");
+                let gray = random_scene::<Gray8>(&mut rng, n);
+                let full = render_banded::<Gray8, 16>(&gray, Gray8::new(9), cull).pixels;
+                assert_eq!(render_binned::<Gray8, 16>(&gray, Gray8::new(9), cull), full, "Gray8");
+                scenes += 1;
+            }
+        }
+    }
+    assert_eq!(scenes, 6 * 2 * 4);
+}

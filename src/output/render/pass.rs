@@ -7,6 +7,7 @@
 //! | pass | draws |
 //! |---|---|
 //! | `&[Primitive]`, `&[Primitive; N]`, `&heapless::Vec<Primitive, N>` | 2D triangles and lines |
+//! | [`Binned2d`](super::Binned2d) | the same, each band reading only its primitives (an index you own) |
 //! | `()` | nothing: the background |
 //! | [`Triangles3d`] | screen triangles from the vertex stage, depth-tested |
 //! | [`PerBand3d`] | the vertex stage run per band into small bins (low RAM) |
@@ -134,23 +135,34 @@ impl<C: Interpolate, const S: u32, const W: usize, const H: usize> Pass<C, W, H>
     const CLEARS: bool = false;
 
     fn draw(&mut self, band: &mut BandView<'_, C, W>, renderer: &Renderer<C>) -> Result<(), Error> {
-        let (y0, y1) = (band.y0(), band.y1());
         let mut view = LazyClear::<C, W, H>::new(band, renderer.background());
-        for prim in self.iter() {
-            let (lo, hi) = prim.rows();
-            if lo < y1 && hi >= y0 {
-                match prim {
-                    Primitive::Triangle(t) => t.draw(&mut view, renderer.cull()),
-                    // Pixel by pixel: clear the line's rows once, then no checks.
-                    Primitive::Line(l) => {
-                        view.clear_rows(lo, hi);
-                        l.draw(view.view());
-                    }
+        draw_prims(self.iter(), &mut view, renderer);
+        view.finish();
+        Ok(())
+    }
+}
+
+/// Draws those of `prims` that touch `view`'s rows, in order: the body of
+/// the slice pass and of [`Binned2d`](super::Binned2d).
+#[inline(always)]
+pub(super) fn draw_prims<'p, C: Interpolate + 'p, const S: u32, const W: usize, const H: usize>(
+    prims: impl Iterator<Item = &'p Primitive<C, S>>,
+    view: &mut LazyClear<'_, '_, C, W, H>,
+    renderer: &Renderer<C>,
+) {
+    let (y0, y1) = (view.view().y0(), view.view().y1());
+    for prim in prims {
+        let (lo, hi) = prim.rows();
+        if lo < y1 && hi >= y0 {
+            match prim {
+                Primitive::Triangle(t) => t.draw(view, renderer.cull()),
+                // Pixel by pixel: clear the line's rows once, then no checks.
+                Primitive::Line(l) => {
+                    view.clear_rows(lo, hi);
+                    l.draw(view.view());
                 }
             }
         }
-        view.finish();
-        Ok(())
     }
 }
 
