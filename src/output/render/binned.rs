@@ -59,11 +59,14 @@ impl<'a, C, const S: u32> Binned2d<'a, C, S> {
     }
 }
 
-/// The bands `lo..=hi` (of `rows` rows, `bands` of them) that frame rows
-/// `first..=last` touch, if any.
-fn band_range((first, last): (i32, i32), rows: usize, height: u32) -> Option<(usize, usize)> {
+/// The bands `lo..=hi` of `H` rows that frame rows `first..=last` of a
+/// frame `height` rows tall touch, if any. Inlined with `H` a constant:
+/// its divisions are shifts for a power of two (a call with `H` as an
+/// argument was a tenth of the tiny scene's frame on the host).
+#[inline(always)]
+fn band_range<const H: usize>((first, last): (i32, i32), height: u32) -> Option<(usize, usize)> {
     let (lo, hi) = (first.max(0), last.min(height as i32 - 1));
-    (lo <= hi).then(|| (lo as usize / rows, hi as usize / rows))
+    (lo <= hi).then(|| (lo as usize / H.max(1), hi as usize / H.max(1)))
 }
 
 impl<C: Interpolate, const S: u32, const W: usize, const H: usize> Pass<C, W, H> for Binned2d<'_, C, S> {
@@ -81,7 +84,7 @@ impl<C: Interpolate, const S: u32, const W: usize, const H: usize> Pass<C, W, H>
         // The length that suffices: every primitive's bands counted.
         let prims = self.prims;
         let too_small = || {
-            let all = prims.iter().filter_map(|p| band_range(p.rows(), H, height));
+            let all = prims.iter().filter_map(|p| band_range::<H>(p.rows(), height));
             Error::CapacityExceeded {
                 needed: bands + all.map(|(lo, hi)| hi - lo + 1).sum::<usize>(),
                 capacity,
@@ -95,7 +98,7 @@ impl<C: Interpolate, const S: u32, const W: usize, const H: usize> Pass<C, W, H>
         ends.fill(0);
         let mut total = bands;
         for p in self.prims {
-            if let Some((lo, hi)) = band_range(p.rows(), H, height) {
+            if let Some((lo, hi)) = band_range::<H>(p.rows(), height) {
                 if total + hi - lo + 1 > capacity {
                     return Err(too_small());
                 }
@@ -111,7 +114,7 @@ impl<C: Interpolate, const S: u32, const W: usize, const H: usize> Pass<C, W, H>
             (start, *e) = (start + *e, start);
         }
         for (i, p) in self.prims.iter().enumerate() {
-            if let Some((lo, hi)) = band_range(p.rows(), H, height) {
+            if let Some((lo, hi)) = band_range::<H>(p.rows(), height) {
                 for end in &mut ends[lo..=hi] {
                     entries[usize::from(*end)] = i as u16;
                     *end += 1;
