@@ -32,7 +32,7 @@
 //! * **Colour**, perspective-correct: `Σ E_i·c_i·q_i / Σ E_i·q_i` with
 //!   `q_i` the plane path's normalised `1/w` (below 2^23): sums below
 //!   `2^47` and `2^39` (`u64`), rounded half up exactly
-//!   ([`small_quotient`]): within `1/2` plus the normalisation's error
+//!   ([`SmallDivisor`], its factors made once per triangle): within `1/2` plus the normalisation's error
 //!   (`255·ε/(1 − ε)`, `ε` the relative error of the smallest `q_i`), as
 //!   on the plane path but without its planes' rounding: inside the derived
 //!   bound of `tests/integration/perspective.rs`.
