@@ -200,13 +200,8 @@ mod tests {
                 q.max(1) as i64
             })
         }
-        let mut seed = 0x9E37_79B9_7F4A_7C15u64;
-        let mut next = || {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            seed
-        };
+        let mut rng = crate::math::vec::tests::Rng(0x0051_F7ED);
+        let mut next = || rng.next();
         let (mut right, mut left) = (0, 0);
         for i in 0..200_000u32 {
             let inv_w = [0u32; 3].map(|_| {
