@@ -430,7 +430,13 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
                     sink(tri);
                     Ok(())
                 };
-                pipe.draw_inside(&setup, &src, material, slots, triangles, &mut stats, emit)
+                let last = pipe.draw_inside(&setup, &src, material, slots, triangles, &mut stats, emit);
+                // What this band shows of the cluster's last row narrows the
+                // record for the bands below (`ClusterFrame::narrow`).
+                if let (Ok(Some(last)), Some(r)) = (&last, record.get_mut(i)) {
+                    r.narrow(*last);
+                }
+                last.map(|_| ())
             } else {
                 let emit = |tri: ScreenTriangle<S>, _: &mut MeshStats| {
                     sink(&tri);

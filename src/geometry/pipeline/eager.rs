@@ -34,6 +34,7 @@ use super::presnap::PreSnap;
 use super::{Band, Material, MeshSetup, MeshStats, Pipeline, Shade, VertexCtx};
 use crate::Error;
 use crate::SubPoint;
+use crate::primitive::center_rows;
 use crate::math::{Scalar, Vec3};
 use crate::mesh::MAX_MESHLET_VERTICES;
 use crate::raster3d::{ScreenTriangle, ScreenVertex};
@@ -43,6 +44,9 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     /// all lie inside the clip volume (module docs): the same triangles to
     /// `sink`, in order, with the same vertices and colours. `cache` holds
     /// one entry per slot of `src` and is overwritten.
+    ///
+    /// Returns the last frame row any of the cluster's triangles can cover
+    /// where this band shows it ([`last_row`]), else `None`.
     ///
     /// Errors: [`Error::InvalidParameter`] for a per-face `material`;
     /// [`Error::InvalidMesh`] for a slot beyond `cache` or `src`, and
@@ -57,7 +61,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         triangles: &[[u8; 3]],
         stats: &mut MeshStats,
         mut sink: impl FnMut(&ScreenTriangle<S>, &mut MeshStats) -> Result<(), Error>,
-    ) -> Result<(), Error> {
+    ) -> Result<Option<i32>, Error> {
         if M::PER_FACE {
             return Err(Error::InvalidParameter);
         }
@@ -77,13 +81,14 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         // so its triangle goes on to the snapping), and is reported as
         // `InvalidMesh` where its triangle is snapped or drawn.
         let mut states = [0u8; MAX_MESHLET_VERTICES];
-        let mut all_sides = SIDES;
+        let (mut all_sides, mut any_side) = (SIDES, 0);
         for (i, e) in cache.iter_mut().enumerate() {
             let p = src.position(i).map(Vec3::from_f32).ok_or(Error::InvalidMesh)?;
             let yw = ctx.yw(p);
             let side = band.side(yw);
             e.state = side;
             all_sides &= side;
+            any_side |= side;
             if side == 0 {
                 self.snap_slot(ctx, &presnap, e, p, yw);
             } else {
@@ -91,8 +96,9 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
             }
             states[i % MAX_MESHLET_VERTICES] = e.state;
         }
+        let last = if any_side & Band::<f32>::BELOW == 0 { self.last_row(cache) } else { None };
         if all_sides != 0 {
-            return Ok(());
+            return Ok(last);
         }
         let flat = self.shade == Shade::Flat;
         for t in triangles {
@@ -128,7 +134,27 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
             sink(&tri, stats)?;
             stats.emitted += 1;
         }
-        Ok(())
+        Ok(last)
+    }
+
+    /// The last frame row a triangle of the cluster in `cache` can cover,
+    /// after its `y`/`w` pass found no vertex below the band's margin: every
+    /// vertex is then above the band (its screen `y` below `y0 − 0.9`,
+    /// [`Band`]'s margin less its error) or snapped, and a triangle covers
+    /// no row whose centre lies below its lowest vertex. `None` if a vertex
+    /// in the band did not snap, or without band rows.
+    fn last_row(&self, cache: &[Cached<T, S>]) -> Option<i32> {
+        const SIDES: u8 = Band::<f32>::ABOVE | Band::<f32>::BELOW;
+        let (y0, _) = self.rows?;
+        let mut last = y0 - 1;
+        for e in cache.iter().filter(|e| e.state & SIDES == 0) {
+            if e.state & Cached::<T, S>::SNAPPED == 0 {
+                return None;
+            }
+            let y = e.screen.pos.y();
+            last = last.max(center_rows::<S>(y, y).1);
+        }
+        Some(last)
     }
 
     /// Transforms and snaps cache entry `e` of model position `p` (clip

@@ -70,6 +70,18 @@ impl ClusterFrame {
     pub(super) fn flags(&self) -> u8 {
         self.flags
     }
+
+    /// Lowers the cluster's last row to `last` where that is below it: the
+    /// vertex stage found, drawing the cluster into a band, that none of its
+    /// triangles covers a row below `last` (`Pipeline::draw_inside`), and
+    /// the bands below then skip it. The record stays conservative: it is
+    /// this frame's, for this key's matrix and viewport.
+    #[inline]
+    pub(super) fn narrow(&mut self, last: i32) {
+        if last < i32::from(self.bottom) {
+            self.bottom = last.max(i32::from(i16::MIN)) as i16;
+        }
+    }
 }
 
 /// What the record was built for.
@@ -135,11 +147,11 @@ impl<const N: usize, const M: usize> FrameClusters<N, M> {
         rows: [Vec4<f32>; 4],
         cull: &ClusterCull,
         inside: &InsideView,
-    ) -> &[ClusterFrame] {
+    ) -> &mut [ClusterFrame] {
         if N == 0 || M == 0 {
-            return &[];
+            return &mut [];
         }
-        let Some(i) = self.slot_for(key, first_row) else { return &[] };
+        let Some(i) = self.slot_for(key, first_row) else { return &mut [] };
         if !self.slots[i].built {
             let (start, len) = self.claim(i, meshlets.len());
             let reach = SphereRows::new(rows, key.size.1, key.origin.1);
@@ -159,7 +171,7 @@ impl<const N: usize, const M: usize> FrameClusters<N, M> {
             }
         }
         let (start, len) = (self.slots[i].start, self.slots[i].len);
-        self.entries.get(start..start + len).unwrap_or(&[])
+        self.entries.get_mut(start..start + len).unwrap_or(&mut [])
     }
 
     /// The slot whose record serves `key` in the band starting at
