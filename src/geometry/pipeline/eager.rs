@@ -33,7 +33,6 @@ use super::cache::{Cached, VertexSource};
 use super::presnap::PreSnap;
 use super::{Band, Material, MeshSetup, MeshStats, Pipeline, Shade, VertexCtx};
 use crate::Error;
-use crate::SubPoint;
 use crate::primitive::center_rows;
 use crate::math::{Scalar, Vec3};
 use crate::mesh::MAX_MESHLET_VERTICES;
@@ -42,11 +41,12 @@ use crate::raster3d::{ScreenTriangle, ScreenVertex};
 impl<T: Scalar, const S: u32> Pipeline<T, S> {
     /// [`Pipeline::draw_cached`] for the slots of one cluster whose vertices
     /// all lie inside the clip volume (module docs): the same triangles to
-    /// `sink`, in order, with the same vertices and colours. `cache` holds
-    /// one entry per slot of `src` and is overwritten.
+    /// `sink`, in order, with the same vertices and colours. The first
+    /// `count` entries of `cache` hold the slots of `src` and are
+    /// overwritten.
     ///
     /// Returns the last frame row any of the cluster's triangles can cover
-    /// where this band shows it ([`last_row`]), else `None`.
+    /// where this band shows it ([`Pipeline::last_row`]), else `None`.
     ///
     /// Errors: [`Error::InvalidParameter`] for a per-face `material`;
     /// [`Error::InvalidMesh`] for a slot beyond `cache` or `src`, and
@@ -57,7 +57,8 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         setup: &MeshSetup<T>,
         src: &Src,
         material: &M,
-        cache: &mut [Cached<T, S>],
+        cache: &mut [Cached<T, S>; MAX_MESHLET_VERTICES],
+        count: usize,
         triangles: &[[u8; 3]],
         stats: &mut MeshStats,
         mut sink: impl FnMut(&ScreenTriangle<S>, &mut MeshStats) -> Result<(), Error>,
@@ -82,7 +83,8 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         // `InvalidMesh` where its triangle is snapped or drawn.
         let mut states = [0u8; MAX_MESHLET_VERTICES];
         let (mut all_sides, mut any_side) = (SIDES, 0);
-        for (i, e) in cache.iter_mut().enumerate() {
+        let slots = cache.get_mut(..count).ok_or(Error::InvalidMesh)?;
+        for (i, e) in slots.iter_mut().enumerate() {
             let p = src.position(i).map(Vec3::from_f32).ok_or(Error::InvalidMesh)?;
             let yw = ctx.yw(p);
             let side = band.side(yw);
@@ -96,7 +98,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
             }
             states[i % MAX_MESHLET_VERTICES] = e.state;
         }
-        let last = if any_side & Band::<f32>::BELOW == 0 { self.last_row(cache) } else { None };
+        let last = if any_side & Band::<f32>::BELOW == 0 { self.last_row(slots) } else { None };
         if all_sides != 0 {
             return Ok(last);
         }
@@ -124,13 +126,20 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
                 stats.degenerate += 1;
                 continue;
             }
-            let pos = idx.map(|j| cache.get(j).map_or(SubPoint::ORIGIN, |e| e.screen.pos));
+            // A corner that got here has a snapped state, so its slot is
+            // below `count`; one beyond 64 would have read another slot's
+            // state above. One test for the three, then no bounds checks.
+            if (idx[0] | idx[1] | idx[2]) >= MAX_MESHLET_VERTICES {
+                return Err(Error::InvalidMesh);
+            }
+            let idx = idx.map(|j| j % MAX_MESHLET_VERTICES);
+            let pos = idx.map(|j| cache[j].screen.pos);
             if !self.keep(pos, stats) {
                 continue;
             }
             // Filled in place and lent to the sink: no copies of the triangle.
             let mut tri = ScreenTriangle { v: [ScreenVertex::default(); 3], flat };
-            self.complete(ctx, src, material, *max, cache, idx, &mut tri.v)?;
+            self.complete(ctx, src, material, *max, cache.as_mut_slice(), idx, &mut tri.v)?;
             sink(&tri, stats)?;
             stats.emitted += 1;
         }
