@@ -155,15 +155,16 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     fn last_row(&self, cache: &[Cached<T, S>]) -> Option<i32> {
         const SIDES: u8 = Band::<f32>::ABOVE | Band::<f32>::BELOW;
         let (y0, _) = self.rows?;
-        let mut last = y0 - 1;
+        // The band's first row is at most 2^12, a snapped `y` at most 2^28
+        // in magnitude: `i32::MIN` is below every row's `y`.
+        let mut lowest = i32::MIN;
         for e in cache.iter().filter(|e| e.state & SIDES == 0) {
             if e.state & Cached::<T, S>::SNAPPED == 0 {
                 return None;
             }
-            let y = e.screen.pos.y();
-            last = last.max(center_rows::<S>(y, y).1);
+            lowest = lowest.max(e.screen.pos.y());
         }
-        Some(last)
+        Some(if lowest == i32::MIN { y0 - 1 } else { center_rows::<S>(lowest, lowest).1.max(y0 - 1) })
     }
 
     /// Transforms and snaps cache entry `e` of model position `p` (clip
