@@ -98,7 +98,9 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
             }
             states[i % MAX_MESHLET_VERTICES] = e.state;
         }
-        let last = if any_side & Band::<f32>::BELOW == 0 { self.last_row(slots) } else { None };
+        // Only a band with rows of the viewport below it has a use for it.
+        let below = self.rows.is_some_and(|(_, y1)| i64::from(y1) + 1 < self.origin.1 + i64::from(self.size.1));
+        let last = if below && any_side & Band::<f32>::BELOW == 0 { self.last_row(slots) } else { None };
         if all_sides != 0 {
             return Ok(last);
         }
