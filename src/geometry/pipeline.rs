@@ -543,20 +543,12 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     /// [`ScreenTriangle::rows`] computes them.
     #[inline]
     fn keep(&self, p: [SubPoint<S>; 3], stats: &mut MeshStats) -> bool {
-        self.kept_rows(p, stats).is_some_and(|(lo, hi)| self.rows.is_none_or(|(r0, r1)| lo <= r1 && hi >= r0))
-    }
-
-    /// The first and last rows whose centres the triangle's snapped
-    /// corners `p` span, `None` for a degenerate or culled one (counted):
-    /// [`Pipeline::keep`] before its band test.
-    #[inline]
-    fn kept_rows(&self, p: [SubPoint<S>; 3], stats: &mut MeshStats) -> Option<(i32, i32)> {
         let (e1x, e1y) = (p[1].x() - p[0].x(), p[1].y() - p[0].y());
         let (e2x, e2y) = (p[2].x() - p[0].x(), p[2].y() - p[0].y());
         let det = signed_area2(e1x, e1y, e2x, e2y);
         if det == 0 {
             stats.degenerate += 1;
-            return None;
+            return false;
         }
         let culled = match self.cull {
             Cull::None => false,
@@ -565,10 +557,11 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         };
         if culled {
             stats.back_faces += 1;
-            return None;
+            return false;
         }
         let (y0, y1, y2) = (p[0].y(), p[1].y(), p[2].y());
-        Some(center_rows::<S>(y0.min(y1).min(y2), y0.max(y1).max(y2)))
+        let (lo, hi) = center_rows::<S>(y0.min(y1).min(y2), y0.max(y1).max(y2));
+        self.rows.is_none_or(|(r0, r1)| lo <= r1 && hi >= r0)
     }
 
     /// Colours the vertices and hands the triangle to `sink` (counted in

@@ -33,6 +33,7 @@ use super::cache::{Cached, VertexSource};
 use super::presnap::PreSnap;
 use super::{Band, Material, MeshSetup, MeshStats, Pipeline, Shade, VertexCtx};
 use crate::Error;
+use crate::primitive::center_rows;
 use crate::math::{Scalar, Vec3};
 use crate::mesh::MAX_MESHLET_VERTICES;
 use crate::raster3d::{ScreenTriangle, ScreenVertex};
@@ -45,7 +46,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     /// overwritten.
     ///
     /// Returns the last frame row any of the cluster's triangles can cover
-    /// where this band shows it (no vertex below the band), else `None`.
+    /// where this band shows it ([`Pipeline::last_row`]), else `None`.
     ///
     /// Errors: [`Error::InvalidParameter`] for a per-face `material`;
     /// [`Error::InvalidMesh`] for a slot beyond `cache` or `src`, and
@@ -97,18 +98,11 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
             }
             states[i % MAX_MESHLET_VERTICES] = e.state;
         }
-        // The cluster's last row is known when no vertex lies below the
-        // band's margin: every vertex is then above the band (its screen `y`
-        // below `y0 − 0.9`: [`Band`]'s margin less its error) or near it, so
-        // a triangle with a row below `y0` has its corners snapped here and
-        // meets the row test below. Only a band with viewport rows below it
-        // has a use for that row.
-        let below =
-            self.rows.is_some_and(|(_, y1)| i64::from(y1) + 1 < self.origin.1 + i64::from(self.size.1));
-        let narrow = below && any_side & Band::<f32>::BELOW == 0;
-        let mut last = self.rows.map_or(0, |(y0, _)| y0 - 1);
+        // Only a band with rows of the viewport below it has a use for it.
+        let below = self.rows.is_some_and(|(_, y1)| i64::from(y1) + 1 < self.origin.1 + i64::from(self.size.1));
+        let last = if below && any_side & Band::<f32>::BELOW == 0 { self.last_row(slots) } else { None };
         if all_sides != 0 {
-            return Ok(narrow.then_some(last));
+            return Ok(last);
         }
         let flat = self.shade == Shade::Flat;
         for t in triangles {
@@ -142,11 +136,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
             }
             let idx = idx.map(|j| j % MAX_MESHLET_VERTICES);
             let pos = idx.map(|j| cache[j].screen.pos);
-            // `keep`, with the last row of every triangle that may be drawn
-            // in some band (not degenerate, not culled).
-            let Some((lo, hi)) = self.kept_rows(pos, stats) else { continue };
-            last = last.max(hi);
-            if self.rows.is_some_and(|(r0, r1)| lo > r1 || hi < r0) {
+            if !self.keep(pos, stats) {
                 continue;
             }
             // Filled in place and lent to the sink: no copies of the triangle.
@@ -155,7 +145,28 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
             sink(&tri, stats)?;
             stats.emitted += 1;
         }
-        Ok(narrow.then_some(last))
+        Ok(last)
+    }
+
+    /// The last frame row a triangle of the cluster in `cache` can cover,
+    /// after its `y`/`w` pass found no vertex below the band's margin: every
+    /// vertex is then above the band (its screen `y` below `y0 − 0.9`,
+    /// [`Band`]'s margin less its error) or snapped, and a triangle covers
+    /// no row whose centre lies below its lowest vertex. `None` if a vertex
+    /// in the band did not snap, or without band rows.
+    fn last_row(&self, cache: &[Cached<T, S>]) -> Option<i32> {
+        const SIDES: u8 = Band::<f32>::ABOVE | Band::<f32>::BELOW;
+        let (y0, _) = self.rows?;
+        // The band's first row is at most 2^12, a snapped `y` at most 2^28
+        // in magnitude: `i32::MIN` is below every row's `y`.
+        let mut lowest = i32::MIN;
+        for e in cache.iter().filter(|e| e.state & SIDES == 0) {
+            if e.state & Cached::<T, S>::SNAPPED == 0 {
+                return None;
+            }
+            lowest = lowest.max(e.screen.pos.y());
+        }
+        Some(if lowest == i32::MIN { y0 - 1 } else { center_rows::<S>(lowest, lowest).1.max(y0 - 1) })
     }
 
     /// Transforms and snaps cache entry `e` of model position `p` (clip
