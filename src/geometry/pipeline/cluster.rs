@@ -430,7 +430,8 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
                     sink(tri);
                     Ok(())
                 };
-                let last = pipe.draw_inside(&setup, &src, material, &mut cache.v, vc, triangles, &mut stats, emit);
+                let last =
+                    pipe.draw_inside(&setup, &src, material, &mut cache.v, vc, triangles, &mut stats, emit);
                 // What this band shows of the cluster's last row narrows the
                 // record for the bands below (`ClusterFrame::narrow`).
                 if let (Ok(Some(last)), Some(r)) = (&last, record.get_mut(i)) {

@@ -33,9 +33,9 @@ use super::cache::{Cached, VertexSource};
 use super::presnap::PreSnap;
 use super::{Band, Material, MeshSetup, MeshStats, Pipeline, Shade, VertexCtx};
 use crate::Error;
-use crate::primitive::center_rows;
 use crate::math::{Scalar, Vec3};
 use crate::mesh::MAX_MESHLET_VERTICES;
+use crate::primitive::center_rows;
 use crate::raster3d::{ScreenTriangle, ScreenVertex};
 
 impl<T: Scalar, const S: u32> Pipeline<T, S> {
@@ -99,7 +99,8 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
             states[i % MAX_MESHLET_VERTICES] = e.state;
         }
         // Only a band with rows of the viewport below it has a use for it.
-        let below = self.rows.is_some_and(|(_, y1)| i64::from(y1) + 1 < self.origin.1 + i64::from(self.size.1));
+        let below =
+            self.rows.is_some_and(|(_, y1)| i64::from(y1) + 1 < self.origin.1 + i64::from(self.size.1));
         let last = if below && any_side & Band::<f32>::BELOW == 0 { self.last_row(slots) } else { None };
         if all_sides != 0 {
             return Ok(last);

@@ -15,7 +15,11 @@
 //!
 //! # The rows of a sphere
 //! A conservative interval, widened for rounding, snapping and the
-//! top-left rule ([`super::sphere_rows`]).
+//! top-left rule ([`super::sphere_rows`]). It reaches further than the
+//! cluster's triangles (a median of 32 rows on the knot), so a band that
+//! finds no vertex of a cluster below it lowers the cluster's last row to
+//! what its snapped vertices reach ([`ClusterFrame::narrow`]), and the
+//! bands below skip it.
 //!
 //! # When the record is built
 //! A record belongs to a key: the mesh, matrix, clip planes, culling and
