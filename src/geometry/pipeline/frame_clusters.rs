@@ -226,6 +226,23 @@ impl<const N: usize, const M: usize> FrameClusters<N, M> {
 mod tests {
     use super::*;
 
+    /// `narrow` only ever lowers the last row (a band's finding cannot
+    /// widen the bound), saturates below `i16`, and the cluster then stops
+    /// reaching the bands below that row.
+    #[test]
+    fn narrowing_only_lowers_the_last_row() {
+        let mut f = ClusterFrame { top: 10, bottom: 60, flags: 0 };
+        assert!(f.reaches((48, 63)));
+        f.narrow(47);
+        assert_eq!((f.top, f.bottom), (10, 47));
+        assert!(!f.reaches((48, 63)) && f.reaches((32, 47)));
+        f.narrow(55); // a later, looser finding changes nothing
+        assert_eq!(f.bottom, 47);
+        f.narrow(i32::MIN);
+        assert_eq!(f.bottom, i16::MIN);
+        assert!(!f.reaches((0, 15)));
+    }
+
     /// The record's bookkeeping over bands: one key records from its
     /// second band; keys drawn in turn each record, sharing the capacity;
     /// a band not below a key's last starts a new frame and drops every
