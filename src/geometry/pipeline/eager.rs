@@ -49,7 +49,8 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     /// where this band shows it ([`Pipeline::last_row`]), else `None`.
     ///
     /// Errors: [`Error::InvalidParameter`] for a per-face `material`;
-    /// [`Error::InvalidMesh`] for a slot beyond `cache` or `src`, and
+    /// [`Error::InvalidMesh`] for a slot beyond `cache` or `src` (one below
+    /// 64 may instead drop its triangle, see the `states` comment), and
     /// whatever `sink` returns.
     #[allow(clippy::too_many_arguments)]
     pub(super) fn draw_inside<Src: VertexSource, M: Material<T>>(
@@ -78,9 +79,13 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         // indexed by a masked slot: the triangle loop, which runs over every
         // triangle of the cluster in every band it reaches, reads three of
         // them without bounds checks. A validated mesh has no slot beyond
-        // its cluster; one would read another slot's flags here (0 below 64,
-        // so its triangle goes on to the snapping), and is reported as
-        // `InvalidMesh` where its triangle is snapped or drawn.
+        // its cluster. One would read another slot's flags here (0 below 64,
+        // so its triangle goes on to the snapping): at 64 or beyond it is
+        // reported as `InvalidMesh`; below 64 the slot's entry is left from
+        // an earlier cluster, and its triangle is either `InvalidMesh` (the
+        // entry not snapped: `src` has no such slot) or dropped as
+        // degenerate (its flags here never show a snap). Nothing is drawn
+        // from another cluster's entry.
         let mut states = [0u8; MAX_MESHLET_VERTICES];
         let (mut all_sides, mut any_side) = (SIDES, 0);
         let slots = cache.get_mut(..count).ok_or(Error::InvalidMesh)?;
