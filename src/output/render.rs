@@ -98,9 +98,9 @@ impl<C: Interpolate> Renderer<C> {
     /// it with one `fill_contiguous`. `pass` says what the frame is and with
     /// which options ([`render::Pass`](crate::render::Pass)): a slice or array of
     /// 2D [`Primitive`](crate::Primitive)s, `()` for an empty frame,
-    /// [`Triangles3d`](crate::render::Triangles3d) and
-    /// [`Direct3d`](crate::render::Direct3d) for 3D,
-    /// [`from_fn`](crate::render::from_fn) for `embedded-graphics` drawables,
+    /// [`Triangles3d`] and
+    /// [`Direct3d`] for 3D,
+    /// [`from_fn`] for `embedded-graphics` drawables,
     /// [`Antialiased`](crate::aa::Antialiased) for anti-aliased frames.
     ///
     /// Errors: [`Error::InvalidFrameSize`] if the height is 0 or above

@@ -5,7 +5,7 @@
 //! of time (with the `obj2rs` converter of `tools/`: `cargo run -p
 //! microraster-tools --bin obj2rs -- model.obj NAME > model.rs`, or
 //! `microraster_tools::obj::convert` in a build script) lives in `static`
-//! arrays in flash and costs no RAM. The generators [`cube`], [`icosphere`] and [`torus`] write into
+//! arrays in flash and costs no RAM. The generators [`cube`](fn@cube), [`icosphere`](fn@icosphere) and [`torus`](fn@torus) write into
 //! caller-provided buffers whose exact sizes are given by `const fn`s
 //! ([`cube_vertex_count`], [`icosphere_triangle_count`], …), so the buffers
 //! can be plain arrays.

@@ -39,7 +39,7 @@ pub const fn torus_triangle_count(major_segments: usize, minor_segments: usize) 
 ///   torus is too large for `f32`;
 /// * [`Error::CoordinateOutOfRange`] (dedicated variants are planned) if a
 ///   segment count is below 3, there would be more than
-///   [`MAX_VERTICES`](super::MAX_VERTICES) vertices, the radii do not satisfy
+///   [`MAX_VERTICES`] vertices, the radii do not satisfy
 ///   `0 < minor_radius < major_radius`, or a buffer is too small.
 ///
 /// The buffers are untouched on error, except when the torus overflows `f32`.

@@ -7,7 +7,7 @@
 //! With `f32`, snapping a coordinate `c` (`x`, or `−y` since y is flipped)
 //! of a vertex with clip `w` computes `q = fl(fl(c / w) · a)`, `a` half the
 //! viewport in subpixels ([`Scalar::div_scaled_by`](crate::math::Scalar)),
-//! then `origin + round_even(q)`. [`quotients`] computes the same `q`, bit
+//! then `origin + round_even(q)`. [`PreSnap::quotients`] computes the same `q`, bit
 //! for bit. So each snapped coordinate is `B + R` with `B` a per-axis integer
 //! and `|R − q| ≤ 1/2`.
 //!

@@ -135,8 +135,8 @@
 //!
 //! # Cost when unused
 //! Everything here is generic and reached only through
-//! [`Antialiased`](crate::aa::Antialiased) and
-//! [`Antialiased3d`](crate::aa::Antialiased3d):
+//! [`Antialiased`] and
+//! [`Antialiased3d`]:
 //! a program that does not call them compiles none of it.
 
 pub mod msaa;

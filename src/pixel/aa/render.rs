@@ -117,7 +117,7 @@ where
 /// depth band at sample resolution if it tests depth: the fragment stage
 /// ([`crate::fragment`]) anti-aliased.
 ///
-/// Errors: [`Error::InvalidFrameSize`](crate::Error::InvalidFrameSize) if
+/// Errors: [`Error::InvalidFrameSize`] if
 /// `height · N` exceeds [`MAX_FRAME_DIM`](crate::MAX_FRAME_DIM) (before
 /// anything is sent); the first error `draw` returns.
 ///

@@ -9,7 +9,7 @@ use crate::Error;
 use core::f32::consts::{FRAC_PI_2, PI, TAU};
 
 /// A geometric shape: its filled region and its stroke as closed contours.
-/// [`Shape::styled`] pairs it with a [`ShapeStyle`](super::ShapeStyle) for drawing.
+/// [`Shape::styled`] pairs it with a [`ShapeStyle`] for drawing.
 ///
 /// ```
 /// use embedded_graphics::{mock_display::MockDisplay, pixelcolor::BinaryColor, Drawable};
