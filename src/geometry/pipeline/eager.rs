@@ -38,6 +38,9 @@ use crate::mesh::MAX_MESHLET_VERTICES;
 use crate::primitive::center_rows;
 use crate::raster3d::{ScreenTriangle, ScreenVertex};
 
+/// A vertex's band sides ([`Band`]): either bit set puts it beyond the band.
+const SIDES: u8 = Band::<f32>::ABOVE | Band::<f32>::BELOW;
+
 impl<T: Scalar, const S: u32> Pipeline<T, S> {
     /// [`Pipeline::draw_cached`] for the slots of one cluster whose vertices
     /// all lie inside the clip volume (module docs): the same triangles to
@@ -67,7 +70,6 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         if M::PER_FACE {
             return Err(Error::InvalidParameter);
         }
-        const SIDES: u8 = Band::<f32>::ABOVE | Band::<f32>::BELOW;
         let MeshSetup { ctx, max, band, .. } = setup;
         let presnap = PreSnap::new::<T>(self.size, self.origin, S);
 
@@ -161,7 +163,6 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     /// no row whose centre lies below its lowest vertex. `None` if a vertex
     /// in the band did not snap, or without band rows.
     fn last_row(&self, cache: &[Cached<T, S>]) -> Option<i32> {
-        const SIDES: u8 = Band::<f32>::ABOVE | Band::<f32>::BELOW;
         let (y0, _) = self.rows?;
         // The band's first row is at most 2^12, a snapped `y` at most 2^28
         // in magnitude: `i32::MIN` is below every row's `y`.

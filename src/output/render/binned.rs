@@ -76,7 +76,7 @@ impl<C: Interpolate, const S: u32, const W: usize, const H: usize> Pass<C, W, H>
     /// Sorts the primitives into their bands' lists.
     fn check(&mut self, renderer: &Renderer<C>) -> Result<(), Error> {
         let height = renderer.height();
-        let bands = (height as usize).div_ceil(H.max(1));
+        let bands = renderer.frame_bands::<W, H>()?.bands();
         let capacity = self.index.len().min(u16::MAX as usize);
         if self.prims.len() > 1 << 16 {
             return Err(Error::CapacityExceeded { needed: self.prims.len(), capacity: 1 << 16 });
