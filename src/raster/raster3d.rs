@@ -383,26 +383,30 @@ fn draw_spans<C, F, Sh, D, Rest, const W: usize>(
         let (x0, len) = (span.x as usize, span.len as usize);
         let Some(cspan) = color.row_mut(span.y).and_then(|r| r.get_mut(x0..x0 + len)) else { return };
         let mut sh = shade.start(span.x, span.y);
-        if F::ENABLED {
-            let drow = depth.get_mut((span.y - y0) as usize).and_then(|r| r.get_mut(x0..x0 + len));
-            let Some(dspan) = drow else { return };
-            let mut z = DepthSpan::<F>::new(zplane, span.x, span.y);
-            for (p, slot) in cspan.iter_mut().zip(dspan.iter_mut()) {
-                let zq = z.value();
-                if state.test().passes(zq, F::to_u32(*slot)) {
-                    if state.write() {
-                        *slot = F::from_u32(zq);
-                    }
-                    *p = sh.color();
-                }
-                z.step();
-                sh.step();
-            }
-        } else {
+        if !F::ENABLED {
             for p in cspan.iter_mut() {
                 *p = sh.color();
                 sh.step();
             }
+            return;
+        }
+        let drow = depth.get_mut((span.y - y0) as usize).and_then(|r| r.get_mut(x0..x0 + len));
+        let Some(dspan) = drow else { return };
+        let mut z = DepthSpan::<F>::new(zplane, span.x, span.y);
+        if !Sh::PERSPECTIVE {
+            depth_then_colour(cspan, dspan, state, &mut z, &sh);
+            return;
+        }
+        for (p, slot) in cspan.iter_mut().zip(dspan.iter_mut()) {
+            let zq = z.value();
+            if state.test().passes(zq, F::to_u32(*slot)) {
+                if state.write() {
+                    *slot = F::from_u32(zq);
+                }
+                *p = sh.color();
+            }
+            z.step();
+            sh.step();
         }
     };
     let (first, second, rest) = spans;
@@ -410,6 +414,47 @@ fn draw_spans<C, F, Sh, D, Rest, const W: usize>(
     if let Some(second) = second {
         each(second);
         rest.for_each_ref(each);
+    }
+}
+
+/// The affine fragment loop of one span: depth first, 32 pixels at a time,
+/// into a mask of the pixels that pass, then the colour of those alone,
+/// each from its index ([`ShadeSpan::color_at`]); the same pixels as
+/// stepping both together. Stepped together, the depth's and the colour's
+/// accumulators and steps did not fit the Cortex-M4's registers, and LLVM's
+/// four-times unrolling of small loops for M-class cores gave each span
+/// four sets of them to set up (about 110 instructions a span; the standard
+/// scene's spans are about 4 pixels long). The perspective-correct loop
+/// keeps the stepping: its colour at an index takes four 64-bit products,
+/// which cost more than they saved (`docs/setup_cost.md`, thirteenth pass).
+#[inline(always)]
+fn depth_then_colour<C, F: DepthFormat, D: DepthRule>(
+    cspan: &mut [C],
+    dspan: &mut [F::Storage],
+    state: D,
+    z: &mut DepthSpan<F>,
+    sh: &impl ShadeSpan<C>,
+) {
+    for (k, (cs, ds)) in cspan.chunks_mut(32).zip(dspan.chunks_mut(32)).enumerate() {
+        let mut pass = 0u32;
+        for (i, slot) in ds.iter_mut().enumerate() {
+            let zq = z.value();
+            if state.test().passes(zq, F::to_u32(*slot)) {
+                if state.write() {
+                    *slot = F::from_u32(zq);
+                }
+                pass |= 1 << i;
+            }
+            z.step();
+        }
+        let base = 32 * k as u32;
+        while pass != 0 {
+            let i = pass.trailing_zeros();
+            pass &= pass - 1;
+            if let Some(p) = cs.get_mut(i as usize) {
+                *p = sh.color_at(base + i);
+            }
+        }
     }
 }
 

@@ -39,16 +39,21 @@ fn triangle<C: Interpolate>(rng: &mut Rng, size: i64) -> ScreenTriangle<4> {
     ScreenTriangle { v: [v(), v(), v()], flat: false }
 }
 
-/// Every covered channel of `C` within the bound; (samples, tiny samples, max error).
-fn check<C: Interpolate>(seed: u64, triangles: usize) -> (usize, usize, f64) {
+/// Every covered channel of `C` within the bound, drawn with depth format
+/// `F` and `state` (one that every pixel passes); (samples, tiny samples,
+/// max error).
+fn check<C: Interpolate, F: DepthFormat>(
+    seed: u64,
+    triangles: usize,
+    state: DepthState,
+) -> (usize, usize, f64) {
     let mut rng = Rng::new(seed);
     let clip = ClipRect::new(0, 0, W as i32, H as i32);
     let (mut n, mut tiny, mut worst) = (0, 0, 0f64);
     for i in 0..triangles {
         let size = [1, 2, 3, 6, 12, 40][i % 6];
         let t = triangle::<C>(&mut rng, size);
-        let (frame, _) =
-            draw_frame::<C, NoDepth, Affine, 4, W, H>(&[t], C::from_channels([0; 3]), DepthState::DISABLED);
+        let (frame, _) = draw_frame::<C, F, Affine, 4, W, H>(&[t], C::from_channels([0; 3]), state);
         let small = is_tiny(t.v.map(|v| v.pos));
         for (x, y) in exact_coverage(t.v.map(|v| v.pos), clip, Cull::None).pixels() {
             let (num, d) = bary(t.v.map(|v| v.pos), x, y).unwrap();
@@ -71,10 +76,16 @@ fn check<C: Interpolate>(seed: u64, triangles: usize) -> (usize, usize, f64) {
 
 #[test]
 fn affine_colour_within_derived_bound_for_tiny_and_larger_triangles() {
+    // With a depth buffer the loop tests depth first and colours the
+    // pixels that pass from their index in the span (spans of up to 40
+    // pixels here, beyond its 32-pixel chunks); without, it steps the colour.
+    let (always, none) = (DepthState::LESS_EQUAL_WRITE, DepthState::DISABLED);
     for (name, (n, tiny, worst)) in [
-        ("Rgb888", check::<Rgb888>(0x5EED_0001, 6000)),
-        ("Rgb565", check::<Rgb565>(0x5EED_0002, 6000)),
-        ("Gray8", check::<Gray8>(0x5EED_0003, 6000)),
+        ("Rgb888", check::<Rgb888, NoDepth>(0x5EED_0001, 6000, none)),
+        ("Rgb565", check::<Rgb565, NoDepth>(0x5EED_0002, 6000, none)),
+        ("Gray8", check::<Gray8, NoDepth>(0x5EED_0003, 6000, none)),
+        ("Rgb888, Depth16", check::<Rgb888, Depth16>(0x5EED_0004, 6000, always)),
+        ("Rgb565, Depth16", check::<Rgb565, Depth16>(0x5EED_0005, 6000, always)),
     ] {
         println!(
             "affine colour, {name}: {n} channel samples ({tiny} of tiny triangles), max error {worst:.4}"

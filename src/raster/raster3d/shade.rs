@@ -18,13 +18,21 @@ use crate::attr::{COLOR_FRAC, COLOR_HALF, Plane, PlaneSetup, channel_clamped, ch
 /// A way of colouring a triangle's fragments: per span, a [`ShadeSpan`].
 pub(super) trait Shader<C> {
     type Span: ShadeSpan<C>;
+    /// Perspective-correct: each pixel's colour divides, and its
+    /// accumulators are 64-bit.
+    const PERSPECTIVE: bool = false;
     fn start(&self, x: i32, y: i32) -> Self::Span;
 }
 
-/// Colour along one span, pixel by pixel.
+/// Colour along one span: at its current pixel, stepped pixel by pixel,
+/// or at any pixel of the span from its start.
 pub(super) trait ShadeSpan<C> {
     fn color(&self) -> C;
     fn step(&mut self);
+    /// The colour `i` pixels after the span's start (of a span not yet
+    /// stepped): the same value `i` steps give, as each accumulator wraps
+    /// (`start + i·step` modulo its width is `i` wrapping additions).
+    fn color_at(&self, i: u32) -> C;
 }
 
 /// Flat shading: the colour itself.
@@ -43,6 +51,10 @@ impl<C: Interpolate> ShadeSpan<C> for C {
     }
     #[inline(always)]
     fn step(&mut self) {}
+    #[inline(always)]
+    fn color_at(&self, _: u32) -> C {
+        *self
+    }
 }
 
 /// Whether every vertex channel of `tri` is at most the colour's maximum
@@ -108,6 +120,7 @@ impl<C: Interpolate, M: Interpolation, const CLAMP: bool> Gouraud<C, M, CLAMP> {
 
 impl<C: Interpolate, M: Interpolation, const CLAMP: bool> Shader<C> for Gouraud<C, M, CLAMP> {
     type Span = GouraudSpan<C, M, CLAMP>;
+    const PERSPECTIVE: bool = M::PERSPECTIVE;
 
     #[inline(always)]
     fn start(&self, x: i32, y: i32) -> GouraudSpan<C, M, CLAMP> {
@@ -137,9 +150,11 @@ impl<C: Interpolate, M: Interpolation, const CLAMP: bool> Shader<C> for Gouraud<
     }
 }
 
-impl<C: Interpolate, M: Interpolation, const CLAMP: bool> ShadeSpan<C> for GouraudSpan<C, M, CLAMP> {
+impl<C: Interpolate, M: Interpolation, const CLAMP: bool> GouraudSpan<C, M, CLAMP> {
+    /// The colour of accumulators `affine` (affine) or `persp`
+    /// (perspective-correct; the other is unused).
     #[inline(always)]
-    fn color(&self) -> C {
+    fn color_of(affine: [i32; 3], persp: [i64; 4]) -> C {
         let max = C::CHANNEL_MAX;
         // No array `map` here: it is not always inlined.
         let channel_of = |k: usize| -> u8 {
@@ -149,16 +164,23 @@ impl<C: Interpolate, M: Interpolation, const CLAMP: bool> ShadeSpan<C> for Goura
                 // q ≤ 2^23 and c·q < 2^31 inside the triangle: 32-bit
                 // divisions, which Cortex-M3/M4 do in hardware (the max only
                 // guards rounding).
-                let q = ((self.persp[3] >> 32) as i32).max(1) as u32;
-                let p = ((self.persp[k] >> 32) as i32).max(0) as u32;
+                let q = ((persp[3] >> 32) as i32).max(1) as u32;
+                let p = ((persp[k] >> 32) as i32).max(0) as u32;
                 ((p + q / 2) / q).min(max[k] as u32) as u8
             } else if CLAMP {
-                channel_clamped(self.affine[k], max[k])
+                channel_clamped(affine[k], max[k])
             } else {
-                channel_in_range(self.affine[k], max[k])
+                channel_in_range(affine[k], max[k])
             }
         };
         C::from_channels([channel_of(0), channel_of(1), channel_of(2)])
+    }
+}
+
+impl<C: Interpolate, M: Interpolation, const CLAMP: bool> ShadeSpan<C> for GouraudSpan<C, M, CLAMP> {
+    #[inline(always)]
+    fn color(&self) -> C {
+        Self::color_of(self.affine, self.persp)
     }
 
     #[inline(always)]
@@ -178,12 +200,65 @@ impl<C: Interpolate, M: Interpolation, const CLAMP: bool> ShadeSpan<C> for Goura
             }
         }
     }
+
+    #[inline(always)]
+    fn color_at(&self, i: u32) -> C {
+        let max = C::CHANNEL_MAX;
+        let (mut affine, mut persp) = (self.affine, self.persp);
+        if M::PERSPECTIVE {
+            for k in 0..4 {
+                if k == 3 || max[k] > 0 {
+                    persp[k] = persp[k].wrapping_add(self.persp_step[k].wrapping_mul(i64::from(i)));
+                }
+            }
+        } else {
+            for k in 0..3 {
+                if max[k] > 0 {
+                    affine[k] = affine[k].wrapping_add(self.affine_step[k].wrapping_mul(i as i32));
+                }
+            }
+        }
+        Self::color_of(affine, persp)
+    }
 }
 
 #[cfg(test)]
 mod tests {
-    use super::{ScreenTriangle, normalised_q};
-    use crate::raster3d::ScreenVertex;
+    use super::{GouraudSpan, ScreenTriangle, ShadeSpan, normalised_q};
+    use crate::raster3d::{Affine, Interpolation, PerspectiveCorrect, ScreenVertex};
+    use embedded_graphics_core::pixelcolor::{Rgb565, Rgb888};
+
+    /// A span's colour at an index is the colour after as many steps, for
+    /// accumulators and steps anywhere in their range (so that both wrap),
+    /// affine and perspective-correct, for colour types with and without
+    /// 8-bit channels.
+    #[test]
+    fn color_at_is_the_stepped_color() {
+        fn check<C: crate::Interpolate + PartialEq + core::fmt::Debug, M: Interpolation>(
+            rng: &mut impl FnMut() -> u64,
+        ) {
+            for _ in 0..2_000 {
+                let mut s = GouraudSpan::<C, M, true> {
+                    affine: [0; 3].map(|_| rng() as i32),
+                    affine_step: [0; 3].map(|_| (rng() as i32) >> (rng() % 32)),
+                    persp: [0; 4].map(|_| rng() as i64),
+                    persp_step: [0; 4].map(|_| (rng() as i64) >> (rng() % 64)),
+                    _m: core::marker::PhantomData,
+                };
+                let start = GouraudSpan::<C, M, true> { _m: core::marker::PhantomData, ..s };
+                for i in 0..70 {
+                    assert_eq!(start.color_at(i), s.color(), "pixel {i}");
+                    s.step();
+                }
+            }
+        }
+        let mut rng = crate::math::vec::tests::Rng(0xC010_4A7);
+        let mut next = || rng.next();
+        check::<Rgb565, Affine>(&mut next);
+        check::<Rgb565, PerspectiveCorrect>(&mut next);
+        check::<Rgb888, Affine>(&mut next);
+        check::<Rgb888, PerspectiveCorrect>(&mut next);
+    }
 
     /// `normalised_q` in `u32` is the `u64` form it replaced,
     /// `(q + 2^(k−1)) >> k` for a right shift, for `1/w` of every
