@@ -252,7 +252,7 @@ mod tests {
                 }
             }
         }
-        let mut rng = crate::math::vec::tests::Rng(0xC010_4A7);
+        let mut rng = crate::math::vec::tests::Rng(0x0C01_04A7);
         let mut next = || rng.next();
         check::<Rgb565, Affine>(&mut next);
         check::<Rgb565, PerspectiveCorrect>(&mut next);
