@@ -50,6 +50,7 @@ use crate::attr::{Plane, PlaneFrame, PlaneSetup};
 use crate::band::BandView;
 use crate::depth::{DepthFormat, DepthRows, DepthState};
 use crate::edge::{Cull, Span, SpanRest, TriangleSpans};
+use crate::math::divisor::ARMV6M;
 use crate::primitive::{center_rows, reference_pixel};
 use crate::{Interpolate, SubPoint};
 
@@ -393,7 +394,7 @@ fn draw_spans<C, F, Sh, D, Rest, const W: usize>(
         let drow = depth.get_mut((span.y - y0) as usize).and_then(|r| r.get_mut(x0..x0 + len));
         let Some(dspan) = drow else { return };
         let mut z = DepthSpan::<F>::new(zplane, span.x, span.y);
-        if !Sh::PERSPECTIVE {
+        if !Sh::PERSPECTIVE && !ARMV6M {
             depth_then_colour(cspan, dspan, state, &mut z, &sh);
             return;
         }
@@ -426,7 +427,9 @@ fn draw_spans<C, F, Sh, D, Rest, const W: usize>(
 /// four sets of them to set up (about 110 instructions a span; the standard
 /// scene's spans are about 4 pixels long). The perspective-correct loop
 /// keeps the stepping: its colour at an index takes four 64-bit products,
-/// which cost more than they saved (`docs/setup_cost.md`, thirteenth pass).
+/// which cost more than they saved; so does the Cortex-M0 (ARMv6-M), which
+/// has no instruction to find the mask's next bit (`docs/setup_cost.md`,
+/// thirteenth pass).
 #[inline(always)]
 fn depth_then_colour<C, F: DepthFormat, D: DepthRule>(
     cspan: &mut [C],
