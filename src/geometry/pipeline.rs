@@ -480,7 +480,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
 
     /// The clip-space test of [`Pipeline::rows`] ([`Band`]).
     fn band_bounds(&self) -> Band<T> {
-        let Some((y0, y1)) = self.rows else { return Band::ALL };
+        let Some((y0, y1)) = self.rows else { return Band::all() };
         let (h, oy) = (self.size.1 as f32, self.origin.1);
         // Pixel row `r` lies at NDC y = 1 − 2·(r − oy)/h (y flipped). The
         // bounds are used only where they are small, so their Fx rounding
@@ -489,7 +489,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
             let k = 1.0 - 2.0 * ((row - oy) as f32) / h;
             if k.abs() <= 4.0 { Some(T::from_f32(k)) } else { None }
         };
-        Band { above: k(y0 as i64 - 1), below: k(y1 as i64 + 2), w_min: T::from_f32(0.125) }
+        Band::new(k(y0 as i64 - 1), k(y1 as i64 + 2), T::from_f32(0.125))
     }
 
     /// Clip space to snapped screen positions, depth and `1/w` (colour left
@@ -720,11 +720,22 @@ struct Band<T> {
     above: Option<T>,
     below: Option<T>,
     w_min: T,
+    /// `above` and `below` as `f32` bounds that a missing side turns into
+    /// ±∞, which no `y` passes (not read for `Fx`, which has no infinity).
+    bounds: (T, T),
 }
 
 impl<T: Scalar> Band<T> {
     /// No band: every triangle passes.
-    const ALL: Self = Band { above: None, below: None, w_min: T::ZERO };
+    fn all() -> Self {
+        Band::new(None, None, T::ZERO)
+    }
+
+    fn new(above: Option<T>, below: Option<T>, w_min: T) -> Self {
+        let bounds =
+            (above.unwrap_or(T::from_f32(f32::INFINITY)), below.unwrap_or(T::from_f32(f32::NEG_INFINITY)));
+        Band { above, below, w_min, bounds }
+    }
 
     /// [`Band::excludes`] per vertex: `ABOVE` or `BELOW` if the vertex has
     /// `w ≥ w_min` and lies on that side; a triangle whose three vertices
@@ -737,8 +748,15 @@ impl<T: Scalar> Band<T> {
         if w < self.w_min {
             return 0;
         }
-        let above = self.above.is_some_and(|k| y > k * w);
-        let below = self.below.is_some_and(|k| y < k * w);
+        let (above, below) = if crate::math::vec::is_float::<T>() {
+            // With `w ≥ w_min ≥ 0`, ±∞·w is ±∞, or NaN where `w` is 0 or
+            // NaN: no `y` passes either, so a missing side needs no branch
+            // (the `y`/`w` pass runs this for every vertex of every cluster
+            // visit; tested against the `Option` form).
+            (y > self.bounds.0 * w, y < self.bounds.1 * w)
+        } else {
+            (self.above.is_some_and(|k| y > k * w), self.below.is_some_and(|k| y < k * w))
+        };
         (if above { Self::ABOVE } else { 0 }) | (if below { Self::BELOW } else { 0 })
     }
 
@@ -901,6 +919,60 @@ fn finite_color<T: Scalar>(c: [T; 3]) -> [T; 3] {
 
 #[cfg(test)]
 mod tests {
+    use super::Band;
+
+    /// `Band::side` in `f32`, where a missing side is an infinite bound, is
+    /// the test of the type's docs (a side that is `None` never holds), at
+    /// zero, infinite and NaN `y` and `w` too, for every set of sides.
+    #[test]
+    fn band_side_with_infinite_bounds_is_the_option_test() {
+        let reference = |b: &Band<f32>, (y, w): (f32, f32)| -> u8 {
+            if w < b.w_min {
+                return 0;
+            }
+            let above = b.above.is_some_and(|k| y > k * w);
+            let below = b.below.is_some_and(|k| y < k * w);
+            (if above { Band::<f32>::ABOVE } else { 0 }) | (if below { Band::<f32>::BELOW } else { 0 })
+        };
+        let values = [
+            f32::NEG_INFINITY,
+            -1e30,
+            -3.0,
+            -0.5,
+            -0.0,
+            0.0,
+            1e-30,
+            0.125,
+            0.3,
+            0.5,
+            1.0,
+            2.0,
+            1e30,
+            f32::INFINITY,
+            f32::NAN,
+        ];
+        let bands = [
+            Band::all(),
+            Band::new(None, None, 0.125),
+            Band::new(Some(0.5), None, 0.125),
+            Band::new(None, Some(-0.25), 0.125),
+            Band::new(Some(0.5), Some(-0.25), 0.125),
+            Band::new(Some(-4.0), Some(4.0), 0.125),
+        ];
+        let mut sides = 0;
+        for b in &bands {
+            for &y in &values {
+                for &w in &values {
+                    let got = b.side((y, w));
+                    assert_eq!(got, reference(b, (y, w)), "y {y}, w {w}");
+                    sides += (got != 0) as u32;
+                }
+            }
+        }
+        // Both sides and neither occur.
+        assert!(sides > 100, "{sides}");
+    }
+
     /// The 32-bit area of small differences is the 64-bit one, and larger
     /// differences are left to it.
     #[test]
