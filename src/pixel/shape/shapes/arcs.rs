@@ -1,0 +1,234 @@
+//! The shapes drawn around a centre along elliptic or circular arcs: ellipses,
+//! circles, arcs and sectors.
+
+use super::{Shape, finite, size};
+use crate::Error;
+use crate::shape::edges::EdgeList;
+use crate::shape::flatten::arc_points;
+use crate::shape::stroke::{self, StrokeParams};
+use core::f32::consts::TAU;
+
+/// An ellipse: centre and the two radii (px).
+///
+/// Its stroke is the region between the ellipses of radii `± width/2`: for
+/// a circle exactly the offset curve, for a stretched ellipse as wide as
+/// the pen at the four ends of the axes and narrower between them (about
+/// 0.95 of the width for radii 10 × 5 and 0.82 for 20 × 5 with `width/2 =
+/// 1`), where tiny-skia and SVG stroke the true offset curve.
+///
+/// ```
+/// use microraster::shape::Ellipse;
+/// assert!(Ellipse::new((5.0, 5.0), 4.0, 2.0).is_ok());
+/// assert_eq!(Ellipse::new((5.0, f32::NAN), 4.0, 2.0), Err(microraster::Error::NonFiniteCoordinate));
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Ellipse {
+    c: (f32, f32),
+    rx: f32,
+    ry: f32,
+}
+
+impl Ellipse {
+    /// Errors as for [`Rect::new`](super::Rect::new).
+    ///
+    /// ```
+    /// use embedded_graphics::{mock_display::MockDisplay, pixelcolor::BinaryColor, prelude::*};
+    /// use microraster::shape::{Ellipse, Shape, ShapeStyle};
+    /// let mut display = MockDisplay::new();
+    /// Ellipse::new((4.0, 4.0), 3.0, 1.0)?.styled(ShapeStyle::fill(BinaryColor::On))?.draw(&mut display).unwrap();
+    /// // Wide, not tall: 1.5 px right of the centre is in, 1.5 px below is out.
+    /// assert_eq!(display.get_pixel(Point::new(5, 4)), Some(BinaryColor::On));
+    /// assert_eq!(display.get_pixel(Point::new(4, 5)), None);
+    /// # Ok::<(), microraster::Error>(())
+    /// ```
+    pub fn new(center: (f32, f32), rx: f32, ry: f32) -> Result<Self, Error> {
+        finite(&[center.0, center.1])?;
+        size(&[rx, ry])?;
+        Ok(Ellipse { c: center, rx, ry })
+    }
+
+    fn contour<const N: usize>(&self, e: &mut EdgeList<N>, d: f32, reverse: bool) -> Result<(), Error> {
+        let (rx, ry) = (self.rx + d, self.ry + d);
+        if rx <= 0.0 || ry <= 0.0 {
+            return Ok(());
+        }
+        e.close()?;
+        let sweep = if reverse { -TAU } else { TAU };
+        arc_points(self.c, (rx, ry), 0.0, sweep, |x, y| e.line_to(x, y))?;
+        e.close()
+    }
+}
+
+impl Shape for Ellipse {
+    fn fill_contours<const N: usize>(&self, e: &mut EdgeList<N>) -> Result<(), Error> {
+        self.contour(e, 0.0, false)
+    }
+    /// The region between the ellipses of radii `± width/2` (for a circle
+    /// exactly the offset curve).
+    fn stroke_contours<const N: usize>(&self, e: &mut EdgeList<N>, p: &StrokeParams) -> Result<(), Error> {
+        self.contour(e, p.half, false)?;
+        self.contour(e, -p.half, true)
+    }
+}
+
+/// A circle: an [`Ellipse`] with equal radii.
+///
+/// ```
+/// use microraster::shape::Circle;
+/// assert_eq!(Circle::new((0.0, 0.0), -1.0), Err(microraster::Error::InvalidParameter));
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Circle(Ellipse);
+
+impl Circle {
+    /// Errors as for [`Rect::new`](super::Rect::new).
+    ///
+    /// ```
+    /// use embedded_graphics::{mock_display::MockDisplay, pixelcolor::BinaryColor, prelude::*};
+    /// use microraster::shape::{Circle, Shape, ShapeStyle};
+    /// let mut display = MockDisplay::new();
+    /// Circle::new((2.0, 2.0), 1.0)?.styled(ShapeStyle::fill(BinaryColor::On))?.draw(&mut display).unwrap();
+    /// display.assert_pattern(&["    ", " ## ", " ## "]); // the 4 centres 0.71 px away
+    /// assert_eq!(Circle::new((f32::INFINITY, 0.0), 1.0), Err(microraster::Error::NonFiniteCoordinate));
+    /// # Ok::<(), microraster::Error>(())
+    /// ```
+    pub fn new(center: (f32, f32), radius: f32) -> Result<Self, Error> {
+        Ellipse::new(center, radius, radius).map(Circle)
+    }
+}
+
+impl Shape for Circle {
+    fn fill_contours<const N: usize>(&self, e: &mut EdgeList<N>) -> Result<(), Error> {
+        self.0.fill_contours(e)
+    }
+    fn stroke_contours<const N: usize>(&self, e: &mut EdgeList<N>, p: &StrokeParams) -> Result<(), Error> {
+        self.0.stroke_contours(e, p)
+    }
+}
+
+/// Centre, radius, start angle and sweep (radians: 0 along +x, positive
+/// clockwise on screen; sweeps beyond a full turn are clamped to one).
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct ArcGeom {
+    c: (f32, f32),
+    r: f32,
+    start: f32,
+    sweep: f32,
+}
+
+impl ArcGeom {
+    fn new(c: (f32, f32), r: f32, start: f32, sweep: f32) -> Result<Self, Error> {
+        finite(&[c.0, c.1, start, sweep])?;
+        size(&[r])?;
+        Ok(ArcGeom { c, r, start, sweep: sweep.clamp(-TAU, TAU) })
+    }
+
+    /// The arc at radius `r`, forwards or backwards, as points on the current contour.
+    fn points<const N: usize>(&self, e: &mut EdgeList<N>, r: f32, reverse: bool) -> Result<(), Error> {
+        let (start, sweep) =
+            if reverse { (self.start + self.sweep, -self.sweep) } else { (self.start, self.sweep) };
+        arc_points(self.c, (r, r), start, sweep, |x, y| e.line_to(x, y))
+    }
+}
+
+/// A circular arc: stroke only (its fill is empty, as in `embedded-graphics`).
+///
+/// ```
+/// use microraster::shape::Arc;
+/// assert!(Arc::new((8.0, 8.0), 6.0, 0.0, 3.0).is_ok());
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Arc(ArcGeom);
+
+impl Arc {
+    /// Errors as for [`Rect::new`](super::Rect::new); `start` and `sweep` must be finite.
+    ///
+    /// ```
+    /// use core::f32::consts::PI;
+    /// use embedded_graphics::{mock_display::MockDisplay, pixelcolor::BinaryColor, prelude::*};
+    /// use microraster::shape::{Arc, Shape, ShapeStyle};
+    /// let mut display = MockDisplay::new();
+    /// // The lower half (clockwise from +x), stroked 2 px wide: radii 2 to 4.
+    /// Arc::new((4.0, 4.0), 3.0, 0.0, PI)?.styled(ShapeStyle::stroke(BinaryColor::On, 2.0))?.draw(&mut display).unwrap();
+    /// assert_eq!(display.get_pixel(Point::new(4, 7)), Some(BinaryColor::On));
+    /// assert_eq!(display.get_pixel(Point::new(4, 0)), None);
+    /// assert_eq!(Arc::new((4.0, 4.0), 3.0, 0.0, f32::NAN), Err(microraster::Error::NonFiniteCoordinate));
+    /// # Ok::<(), microraster::Error>(())
+    /// ```
+    pub fn new(center: (f32, f32), radius: f32, start: f32, sweep: f32) -> Result<Self, Error> {
+        ArcGeom::new(center, radius, start, sweep).map(Arc)
+    }
+}
+
+impl Shape for Arc {
+    fn fill_contours<const N: usize>(&self, _: &mut EdgeList<N>) -> Result<(), Error> {
+        Ok(())
+    }
+    /// The annular sector between radii `r ± width/2`, with the caps.
+    fn stroke_contours<const N: usize>(&self, e: &mut EdgeList<N>, p: &StrokeParams) -> Result<(), Error> {
+        // Positive sweep only, so the caps' orientation is known.
+        let g = &if self.0.sweep < 0.0 {
+            ArcGeom { start: self.0.start + self.0.sweep, sweep: -self.0.sweep, ..self.0 }
+        } else {
+            self.0
+        };
+        e.close()?;
+        g.points(e, g.r + p.half, false)?;
+        g.points(e, (g.r - p.half).max(0.0), true)?;
+        e.close()?;
+        for (angle, dir) in [(g.start, -1.0), (g.start + g.sweep, 1.0)] {
+            let (s, c) = crate::math::Scalar::sin_cos(angle);
+            // The tangent pointing away from the arc at this end; the
+            // clockwise annulus runs from outer to inner at the end and from
+            // inner to outer at the start: the opposite of an open stroke's
+            // outline, so the caps are flipped.
+            let t = (-s * dir, c * dir);
+            stroke::cap(e, (g.c.0 + g.r * c, g.c.1 + g.r * s), t, true, p)?;
+        }
+        Ok(())
+    }
+}
+
+/// A pie slice: the centre plus an arc.
+///
+/// ```
+/// use microraster::shape::Sector;
+/// assert!(Sector::new((8.0, 8.0), 6.0, 0.0, 1.5).is_ok());
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Sector(ArcGeom);
+
+impl Sector {
+    /// Errors as for [`Arc::new`].
+    ///
+    /// ```
+    /// use core::f32::consts::FRAC_PI_2;
+    /// use embedded_graphics::{mock_display::MockDisplay, pixelcolor::BinaryColor, prelude::*};
+    /// use microraster::shape::{Sector, Shape, ShapeStyle};
+    /// let mut display = MockDisplay::new();
+    /// // The quarter from +x clockwise to +y: down and right of the centre.
+    /// Sector::new((4.0, 4.0), 3.0, 0.0, FRAC_PI_2)?.styled(ShapeStyle::fill(BinaryColor::On))?.draw(&mut display).unwrap();
+    /// assert_eq!(display.get_pixel(Point::new(5, 5)), Some(BinaryColor::On));
+    /// assert_eq!(display.get_pixel(Point::new(2, 5)), None);
+    /// assert_eq!(display.get_pixel(Point::new(5, 2)), None);
+    /// # Ok::<(), microraster::Error>(())
+    /// ```
+    pub fn new(center: (f32, f32), radius: f32, start: f32, sweep: f32) -> Result<Self, Error> {
+        ArcGeom::new(center, radius, start, sweep).map(Sector)
+    }
+}
+
+impl Shape for Sector {
+    fn fill_contours<const N: usize>(&self, e: &mut EdgeList<N>) -> Result<(), Error> {
+        e.close()?;
+        e.line_to(self.0.c.0, self.0.c.1)?;
+        self.0.points(e, self.0.r, false)?;
+        e.close()
+    }
+    /// The outline (two radii and the arc) with the style's joins at every
+    /// chord vertex: several edges a chord, so large sectors can exceed
+    /// [`MAX_EDGES`](crate::shape::MAX_EDGES) ([`Error::BufferTooSmall`] when styled).
+    fn stroke_contours<const N: usize>(&self, e: &mut EdgeList<N>, p: &StrokeParams) -> Result<(), Error> {
+        stroke::sector(e, self.0.c, self.0.r, self.0.start, self.0.sweep, p)
+    }
+}
