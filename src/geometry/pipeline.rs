@@ -7,12 +7,28 @@
 //! reaches the divide), the perspective divide and viewport transform straight
 //! into snapped [`SubPoint`](crate::SubPoint)s, and back-face culling from the signed area
 //! *after* snapping, so culling and coverage always agree (as in D3D11).
-//! The result goes into a caller-owned `heapless::Vec` of [`ScreenTriangle`]s
+//! The result goes into a caller-owned `heapless::Vec` of [`ScreenTriangle`](crate::raster3d::ScreenTriangle)s
 //! (the frame's bins), which [`Triangles3d`](crate::render::Triangles3d)
 //! draws band by band.
 //!
 //! `T` is the numeric path: `f32` (FPU parts) or [`Fx`](crate::math::Fx)
 //! (16.16 fixed point, parts without an FPU).
+//!
+//! # Where the code is, in the order a vertex meets it
+//! * per mesh: `mesh_setup` (matrices, whole-mesh culls, `Fx` range
+//!   checks), `model_light` (lighting moved into model space), `band` (the
+//!   clip-space test of the rows being drawn);
+//! * meshlets per band: `frame_clusters` and `sphere_rows` (what a frame
+//!   learns about each cluster), `cluster` (the band loop over clusters and
+//!   their culls), `inside` (no clipping needed), then `eager` (a cluster
+//!   inside the view, vertex first) or `cache` (lazily, vertex by vertex;
+//!   `chunked` with a cache smaller than the mesh);
+//! * per vertex: `vertex_ctx` (clip position, lit colour), `material`
+//!   (where its colour comes from), `presnap` and `snap` (back faces before
+//!   snapping, then the snapped position, depth and `1/w` and the
+//!   snapped-area tests);
+//! * whole meshes without meshlets: `mesh_bins` into the frame's bins
+//!   (`bins`), `varying` for the fragment stage.
 
 mod band;
 mod bins;
@@ -23,6 +39,7 @@ mod eager;
 mod frame_clusters;
 mod inside;
 mod material;
+mod mesh_bins;
 mod mesh_setup;
 mod model_light;
 mod presnap;
@@ -45,13 +62,11 @@ pub(crate) use material::{Material, PerFace, PerVertex, Uniform};
 #[cfg_attr(docsrs, doc(cfg(feature = "fragment")))]
 pub use varying::VertexInput;
 
-use crate::clip3d::{Class, ClipPlanes, ClipVertex, classify, clip_triangle};
+use crate::clip3d::ClipPlanes;
 use crate::edge::Cull;
 use crate::light::Lighting;
-use crate::math::{Mat4, Scalar, Vec3, transform};
-use crate::mesh::{Mesh, ValidMesh};
-use crate::raster3d::{ScreenTriangle, ScreenVertex};
-use crate::{Error, Interpolate, MAX_FRAME_DIM};
+use crate::math::{Mat4, Scalar, transform};
+use crate::{Error, MAX_FRAME_DIM};
 
 /// Per-face or per-vertex lighting.
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
@@ -233,219 +248,4 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     pub fn view(&self) -> Mat4<T> {
         self.view
     }
-
-    /// Transforms, lights, clips, snaps and culls `mesh` placed by `model`,
-    /// with material colour `color`, appending the visible triangles to `bins`.
-    ///
-    /// Errors: the errors of [`Mesh::validate`] (out-of-range index, normals
-    /// that do not match, a bounding sphere that does not contain the mesh,
-    /// non-finite data), then those of [`Pipeline::draw_valid_mesh`].
-    pub fn draw_mesh<C: Interpolate, const N: usize>(
-        &self,
-        mesh: &Mesh<'_>,
-        model: &Mat4<T>,
-        color: C,
-        bins: &mut heapless::Vec<ScreenTriangle<S>, N>,
-    ) -> Result<MeshStats, Error> {
-        // A bad mesh is an error, never a silent cull or an out-of-range index.
-        self.draw_valid_mesh(&ValidMesh::new(*mesh)?, model, color, bins)
-    }
-
-    /// [`Pipeline::draw_mesh`] for a mesh checked once beforehand
-    /// ([`ValidMesh`], possibly at compile time): the same result without the
-    /// O(vertices) check on every call (every band, when the vertex stage
-    /// runs per band).
-    ///
-    /// Errors: [`Error::CapacityExceeded`] if `bins` fills up, with the
-    /// length it needed (the mesh's triangles are counted to the end, and
-    /// `bins` is left as it was: on any error no triangle of the mesh is
-    /// kept); [`Error::InvalidParameter`] if `model` is singular;
-    /// the errors of [`Lighting::validate`] for the pipeline's lighting; and
-    /// for [`Fx`](crate::math::Fx) only, [`Error::CoordinateOutOfRange`] if
-    /// `view · model` or `projection · view · model` saturates 16.16, or if
-    /// the mesh is not culled whole and one of its model, eye or clip
-    /// coordinates (or a partial sum of one) reaches ±32767: 16.16 cannot
-    /// hold it, and a saturated coordinate would change what is drawn.
-    pub fn draw_valid_mesh<C: Interpolate, const N: usize>(
-        &self,
-        mesh: &ValidMesh<'_>,
-        model: &Mat4<T>,
-        color: C,
-        bins: &mut heapless::Vec<ScreenTriangle<S>, N>,
-    ) -> Result<MeshStats, Error> {
-        let mut bins = bins::BinWriter::new(bins);
-        let result = self.valid_mesh_into(mesh, model, color, &Uniform, |tri| {
-            bins.push(tri);
-            Ok(())
-        });
-        bins.finish(result)
-    }
-
-    /// [`Pipeline::draw_valid_mesh`] handing each triangle to `sink` instead
-    /// of a bin, in the same order (the binned path is this with a
-    /// [`bins::BinWriter`]): with [`Pipeline::rows`] set to a band's rows, the
-    /// vertex stage draws straight into that band, no bins (the `view3d`
-    /// front). `material` gives each vertex its material colour
-    /// ([`Uniform`]: `color`). Errors: those of
-    /// [`Pipeline::draw_valid_mesh`], with `sink`'s in place of a full bin.
-    pub(crate) fn valid_mesh_into<C: Interpolate, M: Material<T>>(
-        &self,
-        mesh: &ValidMesh<'_>,
-        model: &Mat4<T>,
-        color: C,
-        material: &M,
-        mut sink: impl FnMut(ScreenTriangle<S>) -> Result<(), Error>,
-    ) -> Result<MeshStats, Error> {
-        let mesh = mesh.mesh();
-        let mut stats = MeshStats::default();
-        let Some(MeshSetup { ctx, planes, band, max }) = self.mesh_setup(mesh, model, color, &mut stats)?
-        else {
-            return Ok(stats);
-        };
-
-        let flat = self.shade == Shade::Flat || mesh.normals.is_empty();
-        for (i, idx) in mesh.indices.iter().enumerate() {
-            let Some((pos, clip, class)) = triangle_in_view(mesh, i, &ctx, &band, planes)? else { continue };
-            // Colours are computed only for triangles that survive culling.
-            let face_n = if flat { mesh.face_normal(i) } else { None };
-            let colors = || -> [[T; 3]; 3] {
-                let c = |k: usize| {
-                    let n = if flat { face_n } else { mesh.normals.get(idx[k] as usize).copied() };
-                    if M::UNIFORM {
-                        ctx.color(pos[k], n)
-                    } else {
-                        ctx.color_of(pos[k], n, material.base(ctx.base, i, usize::from(idx[k])))
-                    }
-                };
-                // Flat: one lit colour per face, vertex 0 lit with the face normal.
-                if self.shade == Shade::Flat { [c(0); 3] } else { [c(0), c(1), c(2)] }
-            };
-            if class == Class::Inside {
-                if let Some(at) = self.snapped_and_kept(clip, &mut stats) {
-                    self.emit(at, colors(), max, &mut sink, &mut stats)?;
-                }
-                continue;
-            }
-            let cs = colors();
-            let v = [0, 1, 2].map(|k| ClipVertex { pos: clip[k], attr: cs[k] });
-            self.clip_and_emit(v, planes, &mut stats, |at, attr, stats| {
-                self.emit(at, attr, max, &mut sink, stats)
-            })?;
-        }
-        Ok(stats)
-    }
-
-    /// [`Pipeline::draw_valid_mesh`] with a vertex cache: each mesh vertex
-    /// is transformed, classified, snapped and lit at most once instead of
-    /// once per triangle corner (about six times). Bit-identical output.
-    ///
-    /// A cache with fewer entries than the mesh has vertices works too: the
-    /// triangles are then taken in their order in chunks of at most
-    /// `min(V, 64)` vertices, and a vertex is computed once per chunk that
-    /// uses it. The same output again, with RAM that does not grow with
-    /// the mesh (a 64-entry cache, `VertexCache<T, S, 64>`, is 3,072 bytes
-    /// for `f32` and [`Fx`](crate::math::Fx)).
-    ///
-    /// Errors: those of [`Pipeline::draw_valid_mesh`], and first
-    /// [`Error::CapacityExceeded`] with `needed` 3 if `V < 3` and the mesh
-    /// has more than `V` vertices (nothing done).
-    pub fn draw_valid_mesh_cached<C: Interpolate, const V: usize, const N: usize>(
-        &self,
-        mesh: &ValidMesh<'_>,
-        model: &Mat4<T>,
-        color: C,
-        cache: &mut VertexCache<T, S, V>,
-        bins: &mut heapless::Vec<ScreenTriangle<S>, N>,
-    ) -> Result<MeshStats, Error> {
-        let mesh = mesh.mesh();
-        let whole = mesh.vertex_count() <= V;
-        if !whole && V < 3 {
-            return Err(Error::CapacityExceeded { needed: 3, capacity: V });
-        }
-        let mut bins = bins::BinWriter::new(bins);
-        let mut run = || {
-            let mut stats = MeshStats::default();
-            let Some(setup) = self.mesh_setup(mesh, model, color, &mut stats)? else {
-                return Ok(stats);
-            };
-            let inside = inside::InsideView::new(&setup.ctx.mvp, setup.planes).contains(mesh.bounding_sphere);
-            if !whole {
-                self.draw_chunked(&setup, mesh, &mut cache.v, inside, &mut stats, |tri| {
-                    bins.push(tri);
-                    Ok(())
-                })?;
-                return Ok(stats);
-            }
-            let cache = &mut cache.v[..mesh.vertex_count()];
-            let triangles = mesh.indices.iter().map(|t| t.map(usize::from));
-            let cached = cache::Slots { slots: cache, inside };
-            self.draw_cached(&setup, mesh, &Uniform, cached, triangles, &mut stats, |tri, _| {
-                bins.push(tri);
-                Ok(())
-            })?;
-            Ok(stats)
-        };
-        let result = run();
-        bins.finish(result)
-    }
-
-    /// Clips a triangle that crosses a plane and hands each piece that
-    /// survives snapping and culling to `emit`, with its interpolated
-    /// attributes (all counted in `stats`).
-    fn clip_and_emit<const A: usize>(
-        &self,
-        v: [ClipVertex<T, A>; 3],
-        planes: ClipPlanes,
-        stats: &mut MeshStats,
-        mut emit: impl FnMut([ScreenVertex<S>; 3], [[T; A]; 3], &mut MeshStats) -> Result<(), Error>,
-    ) -> Result<(), Error> {
-        stats.clipped += 1;
-        for tri in clip_triangle(v, planes).triangles() {
-            if let Some(at) = self.snapped_and_kept(tri.map(|v| v.pos), stats) {
-                emit(at, tri.map(|v| v.attr), stats)?;
-            }
-        }
-        Ok(())
-    }
-
-    /// Colours the vertices and hands the triangle to `sink` (counted in
-    /// `stats.emitted` once the sink takes it; a [`bins::BinWriter`] takes
-    /// every triangle, counting those that do not fit).
-    fn emit(
-        &self,
-        mut v: [ScreenVertex<S>; 3],
-        colors: [[T; 3]; 3],
-        max: [u8; 3],
-        sink: &mut impl FnMut(ScreenTriangle<S>) -> Result<(), Error>,
-        stats: &mut MeshStats,
-    ) -> Result<(), Error> {
-        for (v, c) in v.iter_mut().zip(colors) {
-            v.color = channels(c, max);
-        }
-        sink(ScreenTriangle { v, flat: self.shade == Shade::Flat })?;
-        stats.emitted += 1;
-        Ok(())
-    }
-}
-
-/// Triangle `i` of `mesh` in clip space and its class against `planes`;
-/// `None` when it lies outside the band ([`Pipeline::rows`]) or the view
-/// volume. Clip y and w come first: with `rows` set most triangles lie
-/// outside the band and need nothing else.
-#[allow(clippy::type_complexity)]
-fn triangle_in_view<T: Scalar>(
-    mesh: &Mesh<'_>,
-    i: usize,
-    ctx: &VertexCtx<T>,
-    band: &Band<T>,
-    planes: ClipPlanes,
-) -> Result<Option<([Vec3<T>; 3], [[T; 4]; 3], Class)>, Error> {
-    let pos = mesh.triangle(i).ok_or(Error::InvalidMesh)?.map(Vec3::from_f32);
-    let yw = pos.map(|p| ctx.yw(p));
-    if band.excludes(yw) {
-        return Ok(None);
-    }
-    let clip = [0, 1, 2].map(|k| ctx.position(pos[k], yw[k]));
-    let class = classify(clip, planes);
-    Ok((class != Class::Outside).then_some((pos, clip, class)))
 }

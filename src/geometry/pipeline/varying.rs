@@ -10,7 +10,8 @@
 //! to 2^-16, then rounded to the nearest integer).
 
 use super::bins::BinWriter;
-use super::{MeshSetup, Pipeline, channels, triangle_in_view};
+use super::mesh_bins::triangle_in_view;
+use super::{MeshSetup, Pipeline, channels};
 use crate::clip3d::{Class, ClipVertex};
 use crate::fragment::FragTriangle;
 use crate::math::{Mat4, Scalar, Vec3};
