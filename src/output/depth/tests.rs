@@ -3,6 +3,7 @@
 
 extern crate std;
 use super::*;
+use crate::Error;
 use core::cmp::Ordering;
 use core::mem::size_of;
 use std::println;
