@@ -35,6 +35,7 @@ pub mod dashboard;
 pub mod knot_mesh;
 use microraster::edge::Cull;
 use microraster::math::{Fx, Scalar};
+use microraster::light::Viewer::{self, Infinite, Local};
 use microraster::mesh::MAX_MESHLET_VERTICES;
 use microraster::pipeline::{ClusterCache, MeshStats, VertexCache};
 use microraster::raster3d::{Affine, Interpolation, PerspectiveCorrect, ScreenTriangle};
@@ -107,6 +108,11 @@ pub enum Work {
     /// band, no bins. Its triangle count is the mesh's (instructions per
     /// mesh triangle).
     Meshlets(Vertex, Interp),
+    /// [`Work::Meshlets`] in `f32` with the specular term's viewer at
+    /// infinity ([`Viewer::Infinite`]: one half vector per mesh, as
+    /// OpenGL's default light model and TGX light): the same frame but for
+    /// the highlights.
+    MeshletsFar(Interp),
     /// The frame of [`Work::Meshlets`] (affine) stopped after one stage, for
     /// the cost breakdown of the report and docs/setup_cost.md: the `f32`
     /// stages are in the default table, the `Fx` ones run on request
@@ -197,6 +203,8 @@ pub const M4F: &[Bench] = &[
     bench("knot20k", Work::Meshlets(F32, Aff)),
     bench("knot20k", Work::Meshlets(F32, Persp)),
     bench("knot20k", Work::Meshlets(Fix, Aff)),
+    bench("knot20k", Work::MeshletsFar(Aff)),
+    bench("knot20k", Work::MeshletsFar(Persp)),
     bench("dashboard", Work::Dashboard),
     // The stage breakdown (the report's targets, docs/setup_cost.md); the Fx
     // stages with `table m4f knot20k,knot20k-stages`.
@@ -268,6 +276,8 @@ impl Work {
             Work::Meshlets(F32, Persp) => "meshlets per band, f32, persp.-correct",
             Work::Meshlets(Fix, Aff) => "meshlets per band, Fx, affine",
             Work::Meshlets(Fix, Persp) => "meshlets per band, Fx, persp.-correct",
+            Work::MeshletsFar(Aff) => "meshlets per band, f32, affine, viewer at infinity",
+            Work::MeshletsFar(Persp) => "meshlets per band, f32, persp.-correct, viewer at infinity",
             Work::KnotStage(F32, Stage::Vertex) => "f32 affine: band loop + vertex stage only",
             Work::KnotStage(F32, Stage::Coverage) => "f32 affine: + coverage, no planes",
             Work::KnotStage(F32, Stage::NoWrites) => "f32 affine: all but pixel writes",
@@ -303,7 +313,7 @@ impl Work {
             Work::Vertex3dChunked => "BINS,CHUNK",
             Work::Frame3dChunked => "BAND,DEPTH,BINS,CHUNK",
             Work::Frame3d(..) | Work::PerBand3d(..) => "BAND,DEPTH,BINS",
-            Work::Meshlets(F32, _) | Work::KnotStage(F32, _) => "BAND,DEPTH,CLUSTER",
+            Work::Meshlets(F32, _) | Work::MeshletsFar(_) | Work::KnotStage(F32, _) => "BAND,DEPTH,CLUSTER",
             Work::Meshlets(Fix, _) | Work::KnotStage(Fix, _) => "BAND,DEPTH,CLUSTER_FX",
             #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
             Work::KnotVertexRows(_) => "CLUSTER",
@@ -482,10 +492,15 @@ fn frame_other<const W: usize, const H: usize, const N: usize, const P: usize>(
         // The knot's 460 KB of flash data do not fit the micro:bit: Cortex-M4F only.
         #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
         Work::Meshlets(t, i) => match (t, i, b.cluster.as_mut().ok_or(Error::BufferTooSmall)?) {
-            (F32, Aff, c) => meshlets::<f32, _, W, H>(r, b.band, b.depth, c.0, Affine, sink),
-            (F32, Persp, c) => meshlets::<f32, _, W, H>(r, b.band, b.depth, c.0, PerspectiveCorrect, sink),
-            (Fix, Aff, c) => meshlets::<Fx, _, W, H>(r, b.band, b.depth, c.1, Affine, sink),
-            (Fix, Persp, c) => meshlets::<Fx, _, W, H>(r, b.band, b.depth, c.1, PerspectiveCorrect, sink),
+            (F32, Aff, c) => meshlets::<f32, _, W, H>(r, b.band, b.depth, c.0, Affine, Local, sink),
+            (F32, Persp, c) => meshlets::<f32, _, W, H>(r, b.band, b.depth, c.0, PerspectiveCorrect, Local, sink),
+            (Fix, Aff, c) => meshlets::<Fx, _, W, H>(r, b.band, b.depth, c.1, Affine, Local, sink),
+            (Fix, Persp, c) => meshlets::<Fx, _, W, H>(r, b.band, b.depth, c.1, PerspectiveCorrect, Local, sink),
+        },
+        #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+        Work::MeshletsFar(i) => match (i, b.cluster.as_mut().ok_or(Error::BufferTooSmall)?) {
+            (Aff, c) => meshlets::<f32, _, W, H>(r, b.band, b.depth, c.0, Affine, Infinite, sink),
+            (Persp, c) => meshlets::<f32, _, W, H>(r, b.band, b.depth, c.0, PerspectiveCorrect, Infinite, sink),
         },
         #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
         Work::KnotStage(t, stage) => match (t, b.cluster.as_mut().ok_or(Error::BufferTooSmall)?) {
@@ -495,7 +510,7 @@ fn frame_other<const W: usize, const H: usize, const N: usize, const P: usize>(
         #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
         Work::KnotVertexRows(_) | Work::KnotTall(_) => Err(Error::InvalidParameter), // in `frame`
         #[cfg(not(any(not(target_os = "none"), target_abi = "eabihf")))]
-        Work::Meshlets(..) | Work::KnotStage(..) => Err(Error::InvalidParameter),
+        Work::Meshlets(..) | Work::MeshletsFar(_) | Work::KnotStage(..) => Err(Error::InvalidParameter),
     }
 }
 
@@ -511,8 +526,8 @@ fn knot_tall<const W: usize>(
     sink: &mut Sink,
 ) -> Result<(), Error> {
     match rows as usize {
-        TALL_48 => meshlets::<f32, _, W, TALL_48>(r, t.band48, t.depth48, cache, Affine, sink),
-        TALL_240 => meshlets::<f32, _, W, TALL_240>(r, t.band240, t.depth240, cache, Affine, sink),
+        TALL_48 => meshlets::<f32, _, W, TALL_48>(r, t.band48, t.depth48, cache, Affine, Local, sink),
+        TALL_240 => meshlets::<f32, _, W, TALL_240>(r, t.band240, t.depth240, cache, Affine, Local, sink),
         _ => Err(Error::InvalidParameter),
     }
 }
@@ -602,17 +617,21 @@ fn knot_stage<T: Scalar, const W: usize, const H: usize>(
     result
 }
 
-/// The knot through the meshlet stage, drawn straight into each band.
+/// The knot through the meshlet stage, drawn straight into each band, with
+/// the specular term's viewer at `viewer`.
 #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+#[allow(clippy::too_many_arguments)]
 fn meshlets<T: Scalar, M: Interpolation, const W: usize, const H: usize>(
     r: Renderer<Rgb565>,
     band: &mut Band<Rgb565, W, H>,
     depth: &mut DepthBand<Depth16, W, H>,
     cache: &mut ClusterCache<T, S>,
     interp: M,
+    viewer: Viewer,
     sink: &mut Sink,
 ) -> Result<(), Error> {
-    let pipeline = Scene3d::pipeline::<T, S>(W as u32, r.height())?;
+    let mut pipeline = Scene3d::pipeline::<T, S>(W as u32, r.height())?;
+    pipeline.lighting = pipeline.lighting.map(|l| l.with_viewer(viewer));
     let model = knot_model::<T>();
     r.render(
         Direct3d::new(depth, DEPTH_STATE, interp, |band| {
@@ -730,11 +749,15 @@ pub fn primitives<const W: usize, const H: usize, const N: usize, const P: usize
     match work {
         Work::Clear | Work::Dashboard => Ok((0, 0)),
         #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
-        Work::Meshlets(..) | Work::KnotStage(..) | Work::KnotVertexRows(_) | Work::KnotTall(_) => {
+        Work::Meshlets(..)
+        | Work::MeshletsFar(_)
+        | Work::KnotStage(..)
+        | Work::KnotVertexRows(_)
+        | Work::KnotTall(_) => {
             Ok((knot_mesh::KNOT.triangles.len() as u32, 0))
         }
         #[cfg(not(any(not(target_os = "none"), target_abi = "eabihf")))]
-        Work::Meshlets(..) | Work::KnotStage(..) => Err(Error::InvalidParameter),
+        Work::Meshlets(..) | Work::MeshletsFar(_) | Work::KnotStage(..) => Err(Error::InvalidParameter),
         Work::Frame2d(scene) | Work::Streamed2d(scene) => count_2d(scene),
         Work::Vertex3dCached | Work::Vertex3dChunked | Work::Frame3dChunked => count_3d(F32),
         Work::Vertex3d(t) | Work::VertexPerBand3d(t) | Work::Frame3d(t, _) | Work::PerBand3d(t, _) => {

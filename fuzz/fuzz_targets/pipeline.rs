@@ -25,7 +25,7 @@ use microraster::depth::{
     Depth8, Depth16, Depth24, Depth32, DepthBand, DepthFormat, DepthState, DepthTest, NoDepth,
 };
 use microraster::edge::Cull;
-use microraster::light::Lighting;
+use microraster::light::{Lighting, Viewer};
 use microraster::math::{Fx, Mat4, Scalar, Vec3, transform};
 use microraster::mesh::{Mesh, bounding_sphere};
 use microraster::pipeline::{Pipeline, Shade};
@@ -243,6 +243,7 @@ fn run<T: Scalar, const S: u32>(inp: &mut Input) {
         let (_, dir) = vec3::<T>(inp);
         let l = Lighting::new(T::from_f32(small(inp)), dir, T::from_f32(small(inp)));
         let l = if inp.bool() { l.with_specular(T::from_f32(small(inp)), u32::from(inp.u8())) } else { l };
+        let l = l.with_viewer(inp.pick(&[Viewer::Local, Viewer::Infinite]));
         // The vertex stage reports exactly `validate`'s error (issue 13).
         light_error = l.validate().err();
         assert!(

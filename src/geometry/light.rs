@@ -1,6 +1,11 @@
 //! Lighting: ambient plus one directional light, Lambert diffuse and optional
 //! Blinn–Phong specular, evaluated per face (flat) or per vertex (Gouraud).
 //!
+//! The specular term's viewer ([`Viewer`]) is either at the eye (the
+//! default: the half vector follows each vertex) or infinitely far along
+//! +z (OpenGL's default light model, and TGX's): one half vector for the
+//! whole mesh, no square root per vertex.
+//!
 //! All vectors are in eye space (the camera at the origin looking down −z).
 //! The vertex stage evaluates the same formula in model space when the
 //! model-view matrix is a similarity (`pipeline/model_light.rs`: fewer
@@ -31,6 +36,40 @@ pub struct Lighting<T> {
     pub diffuse: T,
     /// Specular factor and Blinn–Phong exponent (`None`: no specular term).
     pub specular: Option<(T, u32)>,
+    /// Where the specular term's viewer is ([`Viewer::Local`] unless set).
+    pub viewer: Viewer,
+}
+
+/// Where the Blinn–Phong half vector's viewer is.
+///
+/// ```
+/// use microraster::light::{Lighting, Viewer};
+/// use microraster::math::Vec3;
+/// let l = Lighting::<f32>::new(0.0, Vec3::new(0.0, 0.0, 1.0), 0.0).with_specular(1.0, 8);
+/// // Facing the light and the viewer: full specular either way.
+/// let (n, p) = (Vec3::new(0.0, 0.0, 1.0), Vec3::new(0.0, 0.0, -5.0));
+/// assert!((l.shade(n, p, [0.0; 3])[0] - 1.0).abs() < 1e-6);
+/// let far = l.with_viewer(Viewer::Infinite);
+/// assert!((far.shade(n, p, [0.0; 3])[0] - 1.0).abs() < 1e-6);
+/// // Off the axis, only the local viewer sees the highlight move.
+/// let p = Vec3::new(3.0, 0.0, -5.0);
+/// assert!(l.shade(n, p, [0.0; 3])[0] < 0.9);
+/// assert!((far.shade(n, p, [0.0; 3])[0] - 1.0).abs() < 1e-6);
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Viewer {
+    /// At the eye (the origin of eye space): the half vector is
+    /// `normalize(L + normalize(−p))` at each lit point `p`, two square
+    /// roots per lit vertex.
+    #[default]
+    Local,
+    /// Infinitely far along +z (OpenGL's `GL_LIGHT_MODEL_LOCAL_VIEWER`
+    /// false, its default): the half vector is `normalize(L + (0, 0, 1))`
+    /// for every point, which the vertex stage computes once per mesh
+    /// where it lights in model space (a similarity model-view, the usual
+    /// case). A light exactly towards −z has no half vector: its specular
+    /// term is `strength · 0^e` (0 for `e > 0`).
+    Infinite,
 }
 
 impl<T: Scalar> Lighting<T> {
@@ -39,7 +78,7 @@ impl<T: Scalar> Lighting<T> {
 
     /// Ambient plus a directional light towards `direction` (normalised here).
     pub fn new(ambient: T, direction: Vec3<T>, diffuse: T) -> Self {
-        Lighting { ambient, direction: direction.normalize(), diffuse, specular: None }
+        Lighting { ambient, direction: direction.normalize(), diffuse, specular: None, viewer: Viewer::Local }
     }
 
     /// [`Lighting::new`], checked: the errors of [`Lighting::validate`].
@@ -83,6 +122,17 @@ impl<T: Scalar> Lighting<T> {
         Lighting { specular: Some((strength, exponent)), ..self }
     }
 
+    /// The same lighting with the specular term's viewer at `viewer`.
+    pub fn with_viewer(self, viewer: Viewer) -> Self {
+        Lighting { viewer, ..self }
+    }
+
+    /// The half vector of the [`Viewer::Infinite`] viewer (eye space),
+    /// zero for a light exactly towards −z.
+    pub(crate) fn infinite_half(&self) -> Vec3<T> {
+        (self.direction + Vec3::new(T::ZERO, T::ZERO, T::ONE)).normalize_fast()
+    }
+
     /// Colour factors for a unit normal `n` at eye-space position `p`, on a
     /// material with channel factors `base` (each in `[0, 1]`).
     pub fn shade(&self, n: Vec3<T>, p: Vec3<T>, base: [T; 3]) -> [T; 3] {
@@ -90,8 +140,11 @@ impl<T: Scalar> Lighting<T> {
         let k = self.ambient + self.diffuse * lambert;
         let spec = match self.specular {
             Some((strength, exp)) if lambert > T::ZERO => {
-                // Half vector between the light and the viewer (at the origin).
-                let h = (self.direction + (-p).normalize_fast()).normalize_fast();
+                // Half vector between the light and the viewer.
+                let h = match self.viewer {
+                    Viewer::Local => (self.direction + (-p).normalize_fast()).normalize_fast(),
+                    Viewer::Infinite => self.infinite_half(),
+                };
                 strength * powi(positive(n.dot(h)), exp)
             }
             _ => T::ZERO,

@@ -45,7 +45,7 @@ use embedded_graphics_core::pixelcolor::Rgb565;
 use crate::band::Band;
 use crate::depth::{Depth16, DepthBand, DepthState};
 use crate::edge::Cull;
-use crate::light::Lighting;
+use crate::light::{Lighting, Viewer};
 use crate::math::Vec3;
 use crate::mesh::ValidMesh;
 use crate::pipeline::{ClusterCache, Material, PerFace, PerVertex, Pipeline, Shade, Uniform};
@@ -58,7 +58,13 @@ use crate::{Error, Interpolate, MAX_FRAME_DIM, RenderError, Renderer};
 /// behind the viewer), so the faces of a box turned towards the camera all
 /// differ in brightness.
 pub const DEFAULT_LIGHTING: Lighting<f32> =
-    Lighting { ambient: 0.25, direction: Vec3::new(-0.36, 0.48, 0.8), diffuse: 0.75, specular: None };
+    Lighting {
+        ambient: 0.25,
+        direction: Vec3::new(-0.36, 0.48, 0.8),
+        diffuse: 0.75,
+        specular: None,
+        viewer: Viewer::Local,
+    };
 
 /// A [`View3d`] for 240 × 240 Rgb565 displays (ST7789, GC9A01): 16-row
 /// bands, 7,680 B of colour and 7,680 B of depth.

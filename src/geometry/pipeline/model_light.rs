@@ -24,6 +24,11 @@
 //! close to a rounding tie. Normals of length within `2^-12` of 1 are used
 //! as they are (a relative error of at most `2^-13`), others normalised.
 //!
+//! With the viewer at infinity ([`Viewer::Infinite`]) the half vector is
+//! one eye-space vector `h`, carried into model space as `Rᵀ·h` once per
+//! mesh like the light: the specular term is then one dot product, the
+//! same value up to the same rounding.
+//!
 //! `Fx`: the same formula in 16.16 (each product rounds at `2^-16`), with
 //! the eye within `2^13` of the model's origin (else eye space); the test
 //! bounds it against `f64` by `(4·e + 8)·2^-16` for exponent `e`.
@@ -33,7 +38,7 @@
 //! rounding). Otherwise (a non-uniform scale, a shear) lighting stays in
 //! eye space.
 
-use crate::light::{Lighting, powi};
+use crate::light::{Lighting, Viewer, powi};
 use crate::math::unit::{rsqrt_f32, unit_f32};
 use crate::math::{Mat4, Scalar, Vec3};
 
@@ -47,6 +52,9 @@ pub(super) struct ModelLight<T> {
     l2_plus_1: T,
     /// The eye in model space.
     eye: Vec3<T>,
+    /// The half vector in model space (`Rᵀ·h`, unit) of a viewer at
+    /// infinity; `None` for a viewer at the eye.
+    half: Option<Vec3<T>>,
     ambient: T,
     diffuse: T,
     specular: Option<(T, u32)>,
@@ -83,6 +91,10 @@ impl<T: Scalar> ModelLight<T> {
         let l = mt(d) * (1.0 / s);
         let eye = mt(t) * (-1.0 / s2);
         let l2_plus_1 = l.dot(l) + 1.0;
+        // The infinite viewer's half vector, zero for a light towards −z
+        // (as `Lighting::infinite_half`), in f32 for both types.
+        let half = (lighting.viewer == Viewer::Infinite)
+            .then(|| mt(unit_f32(d + Vec3::new(0.0, 0.0, 1.0))) * (1.0 / s));
         let finite = [l2_plus_1, eye.x, eye.y, eye.z];
         if !finite.iter().all(|v| v.is_finite()) {
             return None;
@@ -96,6 +108,7 @@ impl<T: Scalar> ModelLight<T> {
             l: t(l),
             l2_plus_1: T::from_f32(l2_plus_1),
             eye: t(eye),
+            half: half.map(t),
             ambient: lighting.ambient,
             diffuse: lighting.diffuse,
             specular: lighting.specular,
@@ -124,7 +137,16 @@ impl<T: Scalar> ModelLight<T> {
         let lambert = if nl > T::ZERO { nl } else { T::ZERO };
         let k = self.ambient + self.diffuse * lambert;
         let spec = match self.specular {
-            Some((strength, exp)) if lambert > T::ZERO => strength * powi(self.half_dot(n, nl, p), exp),
+            Some((strength, exp)) if lambert > T::ZERO => {
+                let nh = match self.half {
+                    Some(h) => {
+                        let nh = n.dot(h);
+                        if nh > T::ZERO { nh } else { T::ZERO }
+                    }
+                    None => self.half_dot(n, nl, p),
+                };
+                strength * powi(nh, exp)
+            }
             _ => T::ZERO,
         };
         base.map(|b| b * k + spec)
@@ -168,12 +190,25 @@ mod tests {
     /// refused.
     #[test]
     fn model_space_is_eye_space() {
+        model_space_is_eye_space_for(Viewer::Local);
+    }
+
+    /// The same with the viewer at infinity (one half vector per mesh).
+    #[test]
+    fn model_space_is_eye_space_infinite_viewer() {
+        model_space_is_eye_space_for(Viewer::Infinite);
+    }
+
+    fn model_space_is_eye_space_for(viewer: Viewer) {
         let mut rng = crate::math::vec::tests::Rng(0x0DE1_5EED);
         let mut rnd = || (rng.next() >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0;
-        let light = Lighting::<f32>::new(0.15, Vec3::new(0.3, 0.8, 0.5), 0.7).with_specular(0.6, 24);
+        let light = Lighting::<f32>::new(0.15, Vec3::new(0.3, 0.8, 0.5), 0.7)
+            .with_specular(0.6, 24)
+            .with_viewer(viewer);
         let light_fx =
             Lighting::<Fx>::new(Fx::from_f32(0.15), Vec3::from_f32([0.3, 0.8, 0.5]), Fx::from_f32(0.7))
-                .with_specular(Fx::from_f32(0.6), 24);
+                .with_specular(Fx::from_f32(0.6), 24)
+                .with_viewer(viewer);
         let (mut worst, mut worst_fx) = (0.0f64, 0.0f64);
         let mut n_spec = 0;
         for _ in 0..2_000 {
@@ -210,7 +245,10 @@ mod tests {
                 let ne = unit(ne);
                 let l = [light.direction.x, light.direction.y, light.direction.z].map(f64::from);
                 let lam = dot(ne, l).max(0.0);
-                let v = unit(pe.map(|x| -x));
+                let v = match viewer {
+                    Viewer::Local => unit(pe.map(|x| -x)),
+                    Viewer::Infinite => [0.0, 0.0, 1.0],
+                };
                 let h = unit([0, 1, 2].map(|i| l[i] + v[i]));
                 let spec = if lam > 0.0 { 0.6 * dot(ne, h).max(0.0).powi(24) } else { 0.0 };
                 n_spec += usize::from(spec > 0.01);
