@@ -34,8 +34,8 @@ pub mod dashboard;
 #[path = "../common/knot_mesh.rs"]
 pub mod knot_mesh;
 use microraster::edge::Cull;
-use microraster::math::{Fx, Scalar};
 use microraster::light::Viewer::{self, Infinite, Local};
+use microraster::math::{Fx, Scalar};
 use microraster::mesh::MAX_MESHLET_VERTICES;
 use microraster::pipeline::{ClusterCache, MeshStats, VertexCache};
 use microraster::raster3d::{Affine, Interpolation, PerspectiveCorrect, ScreenTriangle};
@@ -493,14 +493,20 @@ fn frame_other<const W: usize, const H: usize, const N: usize, const P: usize>(
         #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
         Work::Meshlets(t, i) => match (t, i, b.cluster.as_mut().ok_or(Error::BufferTooSmall)?) {
             (F32, Aff, c) => meshlets::<f32, _, W, H>(r, b.band, b.depth, c.0, Affine, Local, sink),
-            (F32, Persp, c) => meshlets::<f32, _, W, H>(r, b.band, b.depth, c.0, PerspectiveCorrect, Local, sink),
+            (F32, Persp, c) => {
+                meshlets::<f32, _, W, H>(r, b.band, b.depth, c.0, PerspectiveCorrect, Local, sink)
+            }
             (Fix, Aff, c) => meshlets::<Fx, _, W, H>(r, b.band, b.depth, c.1, Affine, Local, sink),
-            (Fix, Persp, c) => meshlets::<Fx, _, W, H>(r, b.band, b.depth, c.1, PerspectiveCorrect, Local, sink),
+            (Fix, Persp, c) => {
+                meshlets::<Fx, _, W, H>(r, b.band, b.depth, c.1, PerspectiveCorrect, Local, sink)
+            }
         },
         #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
         Work::MeshletsFar(i) => match (i, b.cluster.as_mut().ok_or(Error::BufferTooSmall)?) {
             (Aff, c) => meshlets::<f32, _, W, H>(r, b.band, b.depth, c.0, Affine, Infinite, sink),
-            (Persp, c) => meshlets::<f32, _, W, H>(r, b.band, b.depth, c.0, PerspectiveCorrect, Infinite, sink),
+            (Persp, c) => {
+                meshlets::<f32, _, W, H>(r, b.band, b.depth, c.0, PerspectiveCorrect, Infinite, sink)
+            }
         },
         #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
         Work::KnotStage(t, stage) => match (t, b.cluster.as_mut().ok_or(Error::BufferTooSmall)?) {
@@ -753,9 +759,7 @@ pub fn primitives<const W: usize, const H: usize, const N: usize, const P: usize
         | Work::MeshletsFar(_)
         | Work::KnotStage(..)
         | Work::KnotVertexRows(_)
-        | Work::KnotTall(_) => {
-            Ok((knot_mesh::KNOT.triangles.len() as u32, 0))
-        }
+        | Work::KnotTall(_) => Ok((knot_mesh::KNOT.triangles.len() as u32, 0)),
         #[cfg(not(any(not(target_os = "none"), target_abi = "eabihf")))]
         Work::Meshlets(..) | Work::MeshletsFar(_) | Work::KnotStage(..) => Err(Error::InvalidParameter),
         Work::Frame2d(scene) | Work::Streamed2d(scene) => count_2d(scene),

@@ -57,14 +57,13 @@ use crate::{Error, Interpolate, MAX_FRAME_DIM, RenderError, Renderer};
 /// strength 0.75 towards (−0.36, 0.48, 0.8) in eye space (above left,
 /// behind the viewer), so the faces of a box turned towards the camera all
 /// differ in brightness.
-pub const DEFAULT_LIGHTING: Lighting<f32> =
-    Lighting {
-        ambient: 0.25,
-        direction: Vec3::new(-0.36, 0.48, 0.8),
-        diffuse: 0.75,
-        specular: None,
-        viewer: Viewer::Local,
-    };
+pub const DEFAULT_LIGHTING: Lighting<f32> = Lighting {
+    ambient: 0.25,
+    direction: Vec3::new(-0.36, 0.48, 0.8),
+    diffuse: 0.75,
+    specular: None,
+    viewer: Viewer::Local,
+};
 
 /// A [`View3d`] for 240 × 240 Rgb565 displays (ST7789, GC9A01): 16-row
 /// bands, 7,680 B of colour and 7,680 B of depth.
