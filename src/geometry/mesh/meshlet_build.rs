@@ -12,9 +12,11 @@
 
 use super::meshlet::{MAX_MESHLET_TRIANGLES, MAX_MESHLET_VERTICES, Meshlet, MeshletMesh};
 use super::meshlet_adjacency::{State, fill_adjacency, split_scratch};
-use super::winding::face_cross;
-use super::{Mesh, bounding_sphere, cross, dist2, dot, sqrt, sub};
+use super::{Mesh, cross, dist2, dot, sqrt, sub};
 use crate::error::Error;
+
+mod output;
+use output::Output;
 
 /// Triangles [`build_meshlets`] puts in a cluster at most: with 64 vertices a
 /// compact patch of a closed mesh holds about 100 triangles, so the vertex
@@ -162,92 +164,6 @@ pub fn build_meshlets<'a>(
         vertices: &vertices[..verts],
         triangles: &triangles[..tris],
     })
-}
-
-/// The output buffers and how much of them is written.
-struct Output<'a> {
-    meshlets: &'a mut [Meshlet],
-    vertices: &'a mut [u16],
-    triangles: &'a mut [[u8; 3]],
-    clusters: usize,
-    verts: usize,
-    tris: usize,
-    /// The vertex range of the last closed cluster (empty before the first).
-    last: (usize, usize),
-}
-
-impl Output<'_> {
-    /// Writes the open cluster's [`Meshlet`] (sphere and cone) and clears its
-    /// vertices' local indices. Past the end of `meshlets` it only counts
-    /// the cluster, so that the error can say how many are needed.
-    fn close(&mut self, st: &mut State<'_>, mesh: &Mesh<'_>, c: &Open) -> Result<(), Error> {
-        self.clusters += 1;
-        self.last = (c.vo, c.vo + c.verts);
-        let members = &self.vertices[c.vo..c.vo + c.verts];
-        let mut points = [[0.0; 3]; MAX_MESHLET_VERTICES];
-        for (p, &v) in points.iter_mut().zip(members) {
-            *p = mesh.positions[usize::from(v)];
-            st.local[usize::from(v)] = 0;
-        }
-        let Some(slot) = self.meshlets.get_mut(self.clusters - 1) else { return Ok(()) };
-        let corners = |t: &[u8; 3]| t.map(|k| points[usize::from(k)]);
-        let tris = &self.triangles[c.to..c.to + c.tris];
-        // Counts are at most 64 and 128 (`Open::fits`); offsets below 2³² (the
-        // triangle count is checked): the casts are exact.
-        let mut m = Meshlet {
-            vertex_offset: c.vo as u32,
-            triangle_offset: c.to as u32,
-            vertex_count: c.verts as u8,
-            triangle_count: c.tris as u8,
-            sphere: bounding_sphere(&points[..c.verts]),
-            cone: normal_cone(tris.iter().map(corners)),
-        };
-        // The cluster passes by construction, except where rounding is
-        // coarse (subnormal triangles: then a cone that never rejects) or
-        // the radius squared overflows (coordinates near 10¹⁹).
-        let view =
-            MeshletMesh { mesh: *mesh, meshlets: &[], vertices: self.vertices, triangles: self.triangles };
-        if view.validate_cluster(&m) == Err(Error::InvalidMeshlet) {
-            m.cone = ([0.0, 0.0, 1.0], 1.0);
-            if view.validate_cluster(&m) == Err(Error::InvalidMeshlet) {
-                return Err(Error::CoordinateOutOfRange);
-            }
-        }
-        *slot = m;
-        Ok(())
-    }
-}
-
-/// The normal cone `(axis, cutoff)` of triangles given by their corners: the
-/// axis is the mean unit face normal; the cutoff the largest sine between it
-/// and a face normal, rounded up so [`MeshletMesh::validate`] passes without
-/// its tolerance, or 1 (never rejects) if the spread reaches 90°.
-fn normal_cone<I: Iterator<Item = [[f32; 3]; 3]> + Clone>(tris: I) -> ([f32; 3], f32) {
-    const NEVER: ([f32; 3], f32) = ([0.0, 0.0, 1.0], 1.0);
-    let mut sum = [0.0f32; 3];
-    for (n, len2) in tris.clone().filter_map(face_cross) {
-        let len = sqrt(len2);
-        for k in 0..3 {
-            sum[k] += n[k] / len;
-        }
-    }
-    let len = sqrt(dot(sum, sum));
-    // Normals that cancel out (or only degenerate triangles): no cone.
-    if len.is_nan() || len <= 1.0e-3 {
-        return NEVER;
-    }
-    let axis = sum.map(|x| x / len);
-    let mut max_sin2 = 0.0f32;
-    for (n, len2) in tris.filter_map(face_cross) {
-        if dot(axis, n) < 0.0 {
-            return (axis, 1.0);
-        }
-        let s = cross(axis, n);
-        max_sin2 = max_sin2.max(dot(s, s) / len2);
-    }
-    // Margins cover the rounding of the division and the square root.
-    let cutoff = sqrt(max_sin2) * (1.0 + 1.0e-5) + 1.0e-6;
-    (axis, if cutoff < 1.0 { cutoff } else { 1.0 })
 }
 
 /// The cluster being grown.
