@@ -130,20 +130,7 @@ impl<'a, C: PixelColor, const W: usize> BandView<'a, C, W> {
     }
 
     pub(crate) fn row_mut(&mut self, y: i32) -> Option<&mut [C; W]> {
-        self.rows.get_mut(self.row_index(y)?)
-    }
-
-    /// The index of frame row `y` among the view's rows (as the depth
-    /// rows of a 3D pass are indexed), `None` above the view; below it
-    /// the index is past the rows.
-    #[inline]
-    pub(crate) fn row_index(&self, y: i32) -> Option<usize> {
-        usize::try_from(y.checked_sub(self.y0)?).ok()
-    }
-
-    /// Row `i` of the view ([`BandView::row_index`]).
-    #[inline]
-    pub(crate) fn row_at(&mut self, i: usize) -> Option<&mut [C; W]> {
+        let i = usize::try_from(y.checked_sub(self.y0)?).ok()?;
         self.rows.get_mut(i)
     }
 }

@@ -214,10 +214,11 @@ pub fn draw_triangle<C, F, M, const S: u32, const W: usize>(
     let _ = interp; // a value, so the call needs no turbofish
     let depth: &mut [[F::Storage; W]] = depth;
     use crate::blit::Blitter;
+    let v = tri.v.map(|v| v.pos);
     // A small triangle (most of a dense mesh's) keeps its coverage state in
     // this frame: stored into a `TriangleSpans` and read back, it cost a
     // few dozen loads and stores per triangle.
-    match crate::edge::small::setup_state(tri.v.map(|v| v.pos), color.clip(), Cull::None) {
+    match crate::edge::small::setup_state(v, color.clip(), Cull::None) {
         Some(Some(mut small)) => {
             // Most of a dense mesh's: no plane set-up (`tiny`).
             if tiny::eligible::<F>(&small) {
@@ -229,9 +230,6 @@ pub fn draw_triangle<C, F, M, const S: u32, const W: usize>(
         }
         Some(None) => {}
         None => {
-            // Read again here: the corners kept alive across the small
-            // set-up cost stack stores on every triangle.
-            let v = tri.v.map(|v| v.pos);
             let mut spans = TriangleSpans::solved(v, color.clip(), Cull::None);
             let Some(first) = spans.next() else { return };
             let second = spans.next();

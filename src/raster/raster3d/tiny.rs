@@ -106,18 +106,16 @@ fn draw_with<C, F, M, D, const S: u32, const W: usize>(
     let dv = tri
         .v
         .map(|v| if F::ENABLED { (depth_steps(v.depth, F::MAX) >> (DEPTH_FRAC - FRAC)) as u32 } else { 0 });
+    let y0 = color.y0();
     // Perspective-correct colour factors, made at the first pixel that
     // passes its depth test (none for a hidden triangle).
     let mut persp = None;
     small.for_each_centre(|x, y, e| {
         // Edge i lies opposite vertex i: w_i / det is its barycentric coordinate.
         let w = [0, 1, 2].map(|i| e[i] as u32 + bias[i]);
-        // One row index for the colour and the depth row (two lookups cost
-        // about 0.5 % of the knot frame on the Cortex-M4F).
-        let Some(row) = color.row_index(y) else { return };
-        let Some(p) = color.row_at(row).and_then(|r| r.get_mut(x as usize)) else { return };
+        let Some(p) = color.row_mut(y).and_then(|r| r.get_mut(x as usize)) else { return };
         if F::ENABLED {
-            let Some(slot) = depth.get_mut(row).and_then(|r| r.get_mut(x as usize)) else {
+            let Some(slot) = depth.get_mut((y - y0) as usize).and_then(|r| r.get_mut(x as usize)) else {
                 return;
             };
             // w_i ≤ det < 2^16: products of a 16- and a 24-bit value (two
