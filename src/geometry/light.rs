@@ -153,7 +153,10 @@ impl<T: Scalar> Lighting<T> {
     }
 }
 
-fn positive<T: Scalar>(v: T) -> T {
+/// `max(v, 0)`, NaN to 0: the clamp of Lambert's and Blinn–Phong's dot
+/// products (also in model space, `pipeline/model_light.rs`).
+#[inline]
+pub(crate) fn positive<T: Scalar>(v: T) -> T {
     if v > T::ZERO { v } else { T::ZERO }
 }
 

@@ -38,7 +38,7 @@
 //! rounding). Otherwise (a non-uniform scale, a shear) lighting stays in
 //! eye space.
 
-use crate::light::{Lighting, Viewer, powi};
+use crate::light::{Lighting, Viewer, positive, powi};
 use crate::math::unit::{rsqrt_f32, unit_f32};
 use crate::math::{Mat4, Scalar, Vec3};
 
@@ -134,15 +134,12 @@ impl<T: Scalar> ModelLight<T> {
             n = n.normalize_fast();
         }
         let nl = n.dot(self.l);
-        let lambert = if nl > T::ZERO { nl } else { T::ZERO };
+        let lambert = positive(nl);
         let k = self.ambient + self.diffuse * lambert;
         let spec = match self.specular {
             Some((strength, exp)) if lambert > T::ZERO => {
                 let nh = match self.half {
-                    Some(h) => {
-                        let nh = n.dot(h);
-                        if nh > T::ZERO { nh } else { T::ZERO }
-                    }
+                    Some(h) => positive(n.dot(h)),
                     None => self.half_dot(n, nl, p),
                 };
                 strength * powi(nh, exp)
@@ -175,7 +172,7 @@ impl<T: Scalar> ModelLight<T> {
         } else {
             n.dot((self.l + d.normalize_fast()).normalize_fast())
         };
-        if nh > T::ZERO { nh } else { T::ZERO }
+        positive(nh)
     }
 }
 
