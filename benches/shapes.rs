@@ -29,7 +29,7 @@ use std::hint::black_box;
 use std::time::Duration;
 
 #[path = "common/mod.rs"]
-mod common;
+pub mod common;
 use common::{BG, Frame, H, SliceFb, W};
 #[path = "common/criterion_median.rs"]
 mod criterion_median;

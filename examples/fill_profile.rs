@@ -28,7 +28,7 @@ use microraster_scenes::scenes;
 use std::hint::black_box;
 
 #[path = "../benches/common/mod.rs"]
-mod common;
+pub mod common;
 #[path = "report/timing.rs"]
 mod timing;
 use common::*;

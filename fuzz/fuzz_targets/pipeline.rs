@@ -16,22 +16,27 @@
 //!   the guard band (see `STRICT_VIEWPORT`).
 #![no_main]
 
+#[path = "pipeline/checks.rs"]
+mod checks;
+#[path = "pipeline/frame.rs"]
+mod frame;
+#[path = "pipeline/inputs.rs"]
+mod inputs;
+
+use checks::{all_behind_eye, check_ctor, signed_area2};
 use embedded_graphics_core::pixelcolor::Rgb565;
-use embedded_graphics_core::prelude::*;
-use embedded_graphics_core::primitives::Rectangle;
+use frame::render_any;
+use inputs::{is_f32, matrix, small, vec3};
 use libfuzzer_sys::fuzz_target;
+use microraster::Error;
 use microraster::clip3d::ClipPlanes;
-use microraster::depth::{
-    Depth8, Depth16, Depth24, Depth32, DepthBand, DepthFormat, DepthState, DepthTest, NoDepth,
-};
+use microraster::depth::{DepthState, DepthTest};
 use microraster::edge::Cull;
 use microraster::light::{Lighting, Viewer};
 use microraster::math::{Fx, Mat4, Scalar, Vec3, transform};
 use microraster::mesh::{Mesh, bounding_sphere};
 use microraster::pipeline::{Pipeline, Shade};
-use microraster::raster3d::{Affine, Interpolation, PerspectiveCorrect, ScreenTriangle};
-use microraster::render::Triangles3d;
-use microraster::{Band, Error, Renderer};
+use microraster::raster3d::ScreenTriangle;
 use microraster_fuzz::Input;
 
 /// Whether drawn pixels must lie inside the viewport itself. A pipeline
@@ -55,50 +60,6 @@ fuzz_target!(|data: &[u8]| {
         _ => run::<Fx, 8>(&mut inp),
     }
 });
-
-fn is_f32<T: Scalar>() -> bool {
-    T::from_f32(f32::NAN).to_f32().is_nan()
-}
-
-fn vec3<T: Scalar>(inp: &mut Input) -> ([f32; 3], Vec3<T>) {
-    let v = [inp.f32(), inp.f32(), inp.f32()];
-    (v, Vec3::from_f32(v))
-}
-
-fn small(inp: &mut Input) -> f32 {
-    // Mostly moderate values so that something is visible; sometimes extreme.
-    if inp.u8() % 8 == 0 { inp.f32() } else { (inp.u8() as i8) as f32 / 16.0 }
-}
-
-fn matrix<T: Scalar>(inp: &mut Input) -> Mat4<T> {
-    let mut m = [[0.0f32; 4]; 4];
-    for c in &mut m {
-        for e in c.iter_mut() {
-            *e = small(inp);
-        }
-    }
-    Mat4::from_f32(m)
-}
-
-fn check_ctor<T: Scalar>(what: &str, inputs: &[f32], r: &Result<Mat4<T>, Error>) {
-    match r {
-        Ok(m) => {
-            assert!(m.to_f32().iter().flatten().all(|v| v.is_finite()), "{what}{inputs:?}: non-finite matrix")
-        }
-        Err(e) => {
-            if is_f32::<T>() && inputs.iter().any(|v| !v.is_finite()) {
-                assert_eq!(*e, Error::NonFiniteCoordinate, "{what}{inputs:?}");
-            }
-            assert!(
-                matches!(
-                    e,
-                    Error::NonFiniteCoordinate | Error::InvalidParameter | Error::CoordinateOutOfRange
-                ),
-                "{what}{inputs:?}: {e:?}"
-            );
-        }
-    }
-}
 
 fn run<T: Scalar, const S: u32>(inp: &mut Input) {
     let dims = [0u32, 1, 2, 3, 7, 16, 40, 63, 64, 65, 100, 4095, 4096, 4097, u32::MAX];
@@ -373,122 +334,5 @@ fn run<T: Scalar, const S: u32>(inp: &mut Input) {
                 );
             }
         }
-    }
-}
-
-fn signed_area2<const S: u32>(t: &ScreenTriangle<S>) -> i64 {
-    let p = t.v.map(|v| (i64::from(v.pos.x()), i64::from(v.pos.y())));
-    (p[1].0 - p[0].0) * (p[2].1 - p[0].1) - (p[2].0 - p[0].0) * (p[1].1 - p[0].1)
-}
-
-/// True if every triangle has all three clip-space `w` clearly below 0,
-/// computed in f64 from the pipeline's own (converted) matrices and
-/// positions, with a margin for the path's rounding. `Fx` only when nothing
-/// can saturate.
-fn all_behind_eye<T: Scalar, const S: u32>(
-    p: &Pipeline<T, S>,
-    proj: Mat4<T>,
-    model: &Mat4<T>,
-    pos: &[[f32; 3]],
-    idx: &[[u16; 3]],
-) -> bool {
-    let f64m = |m: Mat4<T>| m.to_f32().map(|c| c.map(f64::from));
-    let mul = |a: [[f64; 4]; 4], b: [[f64; 4]; 4]| -> [[f64; 4]; 4] {
-        core::array::from_fn(|c| core::array::from_fn(|r| (0..4).map(|k| a[k][r] * b[c][k]).sum()))
-    };
-    let abs = |a: [[f64; 4]; 4]| a.map(|c| c.map(f64::abs));
-    let (v, m) = (f64m(p.view()), f64m(*model));
-    let proj = f64m(proj);
-    let mvp = mul(proj, mul(v, m));
-    let mag = mul(abs(proj), mul(abs(v), abs(m)));
-    let fx = !is_f32::<T>();
-    if fx && mag.iter().flatten().any(|&e| e > 4000.0) {
-        return false;
-    }
-    idx.iter().all(|t| {
-        t.iter().all(|&i| {
-            let q = pos[usize::from(i)].map(|c| f64::from(T::from_f32(c).to_f32()));
-            let h = [q[0], q[1], q[2], 1.0];
-            let w: f64 = (0..4).map(|k| mvp[k][3] * h[k]).sum();
-            let size: f64 = (0..4).map(|k| mag[k][3] * h[k].abs()).sum();
-            if !w.is_finite() || !size.is_finite() || (fx && size > 4000.0) {
-                return false;
-            }
-            let tol = if fx { 0.01 + 1e-3 * size } else { 1e-5 * size };
-            w < -tol
-        })
-    })
-}
-
-fn render_any<const S: u32, const H: usize>(
-    bins: &[ScreenTriangle<S>],
-    fh: usize,
-    bg: Rgb565,
-    state: DepthState,
-    fmt: u8,
-    perspective: bool,
-) -> Vec<Rgb565> {
-    match (fmt, perspective) {
-        (0, false) => render::<NoDepth, Affine, S, H>(bins, fh, bg, state),
-        (0, true) => render::<NoDepth, PerspectiveCorrect, S, H>(bins, fh, bg, state),
-        (1, false) => render::<Depth8, Affine, S, H>(bins, fh, bg, state),
-        (1, true) => render::<Depth8, PerspectiveCorrect, S, H>(bins, fh, bg, state),
-        (2, false) => render::<Depth16, Affine, S, H>(bins, fh, bg, state),
-        (2, true) => render::<Depth16, PerspectiveCorrect, S, H>(bins, fh, bg, state),
-        (3, false) => render::<Depth24, Affine, S, H>(bins, fh, bg, state),
-        (3, true) => render::<Depth24, PerspectiveCorrect, S, H>(bins, fh, bg, state),
-        (_, false) => render::<Depth32, Affine, S, H>(bins, fh, bg, state),
-        (_, true) => render::<Depth32, PerspectiveCorrect, S, H>(bins, fh, bg, state),
-    }
-}
-
-fn render<F: DepthFormat, M: Interpolation, const S: u32, const H: usize>(
-    bins: &[ScreenTriangle<S>],
-    fh: usize,
-    bg: Rgb565,
-    state: DepthState,
-) -> Vec<Rgb565> {
-    let mut band = Box::new(Band::<Rgb565, FW, H>::new(bg));
-    let mut depth = Box::new(DepthBand::<F, FW, H>::new());
-    let mut fb = Frame { h: fh, px: vec![None; FW * fh] };
-    Renderer::new(fh as u32, bg)
-        .render(Triangles3d::new(bins, &mut depth, state, M::default()), &mut band, &mut fb)
-        .unwrap();
-    fb.px.into_iter().map(|p| p.expect("a frame pixel was never sent")).collect()
-}
-
-/// A 64-wide frame that fails on a pixel sent twice or outside it.
-struct Frame {
-    h: usize,
-    px: Vec<Option<Rgb565>>,
-}
-
-impl OriginDimensions for Frame {
-    fn size(&self) -> Size {
-        Size::new(FW as u32, self.h as u32)
-    }
-}
-
-impl DrawTarget for Frame {
-    type Color = Rgb565;
-    type Error = core::convert::Infallible;
-    fn draw_iter<I: IntoIterator<Item = Pixel<Rgb565>>>(&mut self, pixels: I) -> Result<(), Self::Error> {
-        for Pixel(p, c) in pixels {
-            assert!(
-                p.x >= 0 && p.y >= 0 && (p.x as usize) < FW && (p.y as usize) < self.h,
-                "pixel {p:?} outside the frame"
-            );
-            let slot = &mut self.px[p.y as usize * FW + p.x as usize];
-            assert!(slot.is_none(), "pixel {p:?} sent twice");
-            *slot = Some(c);
-        }
-        Ok(())
-    }
-    fn fill_contiguous<I: IntoIterator<Item = Rgb565>>(
-        &mut self,
-        area: &Rectangle,
-        colors: I,
-    ) -> Result<(), Self::Error> {
-        self.draw_iter(area.points().zip(colors).map(|(p, c)| Pixel(p, c)))
     }
 }
