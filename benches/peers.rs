@@ -37,7 +37,6 @@ mod common;
 use common::*;
 #[path = "common/knot.rs"]
 mod knot;
-#[allow(dead_code)]
 #[path = "../examples/common/knot_mesh.rs"]
 mod knot_mesh;
 

@@ -8,13 +8,13 @@
 #[allow(dead_code)]
 mod gen_bench_mesh;
 #[path = "../examples/common/knot_mesh.rs"]
-#[allow(dead_code)]
 mod knot_mesh;
 
 use std::collections::HashSet;
 
 use gen_bench_mesh::{ALONG, KNOT_R, SCALE, TUBE};
-use knot_mesh::{KNOT, KNOT_INDICES, KNOT_MESH, VALID_KNOT};
+use knot_mesh::{KNOT, KNOT_FX, KNOT_INDICES, KNOT_MESH, VALID_KNOT, VALID_KNOT_FX};
+use microraster::math::{Fx, Scalar};
 use microraster::mesh::ValidMeshletMesh;
 
 #[test]
@@ -150,4 +150,36 @@ fn the_front_draws_the_knot_as_the_explicit_meshlet_path() {
     let lit = explicit.data().chunks(2).filter(|p| p != &[0, 0]).count();
     assert!(lit > 10_000, "the knot covers {lit} pixels");
     assert!(front.data() == explicit.data(), "the front's frame differs from the explicit path's");
+}
+
+/// The knot in 16.16 (`KNOT_FX`, read by the fixed-point stage without a
+/// conversion): its values are `Fx::from_f32` of the `f32` knot's, and its
+/// own clusters pass the checks and hold every triangle once.
+#[test]
+fn fx_knot_holds_the_f32_knot_values() {
+    assert_eq!(ValidMeshletMesh::new_fx(KNOT_FX), Ok(VALID_KNOT_FX));
+    let (f, x) = (KNOT.mesh, KNOT_FX.mesh);
+    assert_eq!((f.positions.len(), f.normals.len()), (x.positions.len(), x.normals.len()));
+    for (a, b) in f.positions.iter().zip(x.positions).chain(f.normals.iter().zip(x.normals)) {
+        assert_eq!(a.map(Fx::from_f32), *b);
+    }
+    let mut got: Vec<[u16; 3]> = Vec::new();
+    for c in KNOT_FX.meshlets {
+        let local = &KNOT_FX.vertices[c.vertex_offset as usize..][..usize::from(c.vertex_count)];
+        for t in &KNOT_FX.triangles[c.triangle_offset as usize..][..usize::from(c.triangle_count)] {
+            let t = t.map(|k| local[usize::from(k)]);
+            let k = (0..3).min_by_key(|&k| t[k]).unwrap_or(0);
+            got.push([t[k], t[(k + 1) % 3], t[(k + 2) % 3]]);
+        }
+    }
+    let mut want: Vec<[u16; 3]> = KNOT_INDICES
+        .iter()
+        .map(|&t| {
+            let k = (0..3).min_by_key(|&k| t[k]).unwrap_or(0);
+            [t[k], t[(k + 1) % 3], t[(k + 2) % 3]]
+        })
+        .collect();
+    got.sort_unstable();
+    want.sort_unstable();
+    assert_eq!(got, want);
 }

@@ -36,6 +36,7 @@ use euc::rasterizer::{BackfaceCullingEnabled, Triangles};
 use microraster::depth::{DepthBand, DepthState};
 use microraster::edge::Cull;
 use microraster::math::{Mat4, Scalar, transform};
+use microraster::mesh::ValidMeshletMesh;
 use microraster::pipeline::ClusterCache;
 use microraster::pipeline::Pipeline;
 use microraster::raster3d::Interpolation;
@@ -65,11 +66,23 @@ pub fn mr_knot<T: Scalar, M: Interpolation + Default>(
     depth: &mut DepthBand<microraster::depth::Depth16, W, 16>,
     target: &mut impl Frame,
 ) {
+    mr_knot_of::<T, M, f32>(&VALID_KNOT, pipeline, cache, band, depth, target);
+}
+
+/// [`mr_knot`] of `mesh` (the knot, its data in `f32` or, `KNOT_FX`, in 16.16).
+pub fn mr_knot_of<T: Scalar, M: Interpolation + Default, P: Scalar>(
+    mesh: &ValidMeshletMesh<'static, P>,
+    pipeline: &Pipeline<T, 4>,
+    cache: &mut ClusterCache<T, 4>,
+    band: &mut Band<Rgb565, W, 16>,
+    depth: &mut DepthBand<microraster::depth::Depth16, W, 16>,
+    target: &mut impl Frame,
+) {
     let model = knot_model::<T>();
     Renderer::new(H as u32, BG3)
         .render(
             Direct3d::new(depth, DepthState::LESS_WRITE, M::default(), |band| {
-                pipeline.draw_meshlets(&VALID_KNOT, &model, KNOT_COLOR, cache, band).map(|_| ())
+                pipeline.draw_meshlets(mesh, &model, KNOT_COLOR, cache, band).map(|_| ())
             }),
             band,
             target,

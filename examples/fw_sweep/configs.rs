@@ -22,7 +22,7 @@ use fixed::types::I16F16;
 use microraster::depth::{Depth8, Depth16, Depth24, Depth32, DepthBand, DepthFormat, DepthState};
 use microraster::edge::Cull;
 use microraster::math::{Fx, Scalar, transform};
-use microraster::mesh::MAX_MESHLET_VERTICES;
+use microraster::mesh::{MAX_MESHLET_VERTICES, ValidMeshletMesh};
 use microraster::pipeline::{ClusterCache, MeshStats, Pipeline, VertexCache};
 use microraster::raster3d::{Affine, Interpolation, PerspectiveCorrect, ScreenTriangle};
 use microraster::render::{Direct3d, Triangles3d};
@@ -125,6 +125,9 @@ pub const LIST: &[Config] = &[
     config!("knot20k/f32/D16/persp/band16/S4", knot::<f32, P>),
     config!("knot20k/Fx/D16/affine/band16/S4", knot::<Fx, Affine>),
     config!("knot20k/Fx/D16/persp/band16/S4", knot::<Fx, P>),
+    // The same, the mesh stored in 16.16 (`KNOT_FX`): no conversion per vertex.
+    config!("knot20k/Fx/D16/affine/band16/S4/fx-mesh", knot_fx_mesh::<Affine>),
+    config!("knot20k/Fx/D16/persp/band16/S4/fx-mesh", knot_fx_mesh::<P>),
 ];
 
 /// Every configuration: [`LIST`] and the fragment-stage options
@@ -278,6 +281,22 @@ pub const KNOT_COLOR: Rgb565 = Rgb565::new(27, 46, 12);
 /// [`ANGLE`] about y (as `examples/fw_bench` and the demo draw it): the
 /// meshlet stage per 16-row band, straight into the band, 16-bit depth.
 fn knot<T: Scalar, M: Interpolation + Default>(m: &mut dyn Meter, fb: &mut FrameBuffer) -> Result<(), Error> {
+    knot_of::<T, M, f32>(&crate::knot_mesh::VALID_KNOT, m, fb)
+}
+
+/// [`knot`] through the fixed-point stage from the knot's data in 16.16
+/// (`KNOT_FX`, the same values as `Fx::from_f32` of the `f32` data, its
+/// own clusters).
+fn knot_fx_mesh<M: Interpolation + Default>(m: &mut dyn Meter, fb: &mut FrameBuffer) -> Result<(), Error> {
+    knot_of::<Fx, M, Fx>(&crate::knot_mesh::VALID_KNOT_FX, m, fb)
+}
+
+/// [`knot`] of `mesh` (positions and normals stored as `P`).
+fn knot_of<T: Scalar, M: Interpolation + Default, P: Scalar>(
+    mesh: &ValidMeshletMesh<'static, P>,
+    m: &mut dyn Meter,
+    fb: &mut FrameBuffer,
+) -> Result<(), Error> {
     let pipeline: Pipeline<T, 4> = Scene3d::pipeline::<T, 4>(W as u32, H as u32)?;
     let model = transform::rotation_y(T::from_f32(ANGLE));
     let mut cache = ClusterCache::<T, 4>::new();
@@ -287,9 +306,7 @@ fn knot<T: Scalar, M: Interpolation + Default>(m: &mut dyn Meter, fb: &mut Frame
     let r = Renderer::new(H as u32, BG)
         .render(
             Direct3d::new(&mut depth, DepthState::LESS_WRITE, M::default(), |band| {
-                pipeline
-                    .draw_meshlets(&crate::knot_mesh::VALID_KNOT, &model, KNOT_COLOR, &mut cache, band)
-                    .map(|_| ())
+                pipeline.draw_meshlets(mesh, &model, KNOT_COLOR, &mut cache, band).map(|_| ())
             }),
             &mut band,
             fb,

@@ -24,7 +24,6 @@ mod configs;
 mod fragment;
 mod frame;
 // The 20k-triangle knot (460 KB of flash: the mps2-an386 has 4 MB).
-#[allow(dead_code)]
 #[path = "../common/knot_mesh.rs"]
 mod knot_mesh;
 

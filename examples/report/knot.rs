@@ -6,7 +6,8 @@
 use super::Peer;
 use crate::common::*;
 use crate::cortex::{Counts, FwBench};
-use crate::knot_renderers::{self as knot, EucKnot, mr_knot};
+use crate::knot_mesh::VALID_KNOT_FX;
+use crate::knot_renderers::{self as knot, EucKnot, mr_knot, mr_knot_of};
 use crate::timing::median_ns;
 use embedded_graphics_core::pixelcolor::{Rgb565, RgbColor};
 use microraster::Band;
@@ -23,6 +24,8 @@ pub const SCENE: &str = "knot20k";
 pub const BASE: &str = "knot20k/f32/D16/persp/band16/S4";
 pub const AFFINE: &str = "knot20k/f32/D16/affine/band16/S4";
 pub const EUC: &str = "knot20k/euc";
+/// The fixed-point path reading the knot's data in 16.16 (`KNOT_FX`).
+pub const FX_MESH: &str = "knot20k/Fx/D16/affine/band16/S4/fx-mesh";
 
 /// Times the knot through microraster (both paths, both interpolations) and
 /// through euc, same frame, and adds them to `peers`. "covered" is the
@@ -53,6 +56,10 @@ pub fn peers(peers: &mut Vec<Peer>) {
     add("microraster, f32, affine", AFFINE, t, diff(&slice.px));
     let t = median_ns(|| mr_knot::<Fx, Affine>(&pfx, &mut cfx, &mut band, &mut depth, &mut slice));
     add("microraster, Fx, affine", "knot20k/Fx/D16/affine/band16/S4", t, diff(&slice.px));
+    let t = median_ns(|| {
+        mr_knot_of::<Fx, Affine, Fx>(&VALID_KNOT_FX, &pfx, &mut cfx, &mut band, &mut depth, &mut slice)
+    });
+    add("microraster, Fx, affine, mesh in 16.16", FX_MESH, t, diff(&slice.px));
     let mut euc = EucKnot::new();
     let t = median_ns(|| euc.frame());
     add("euc 0.5 (f32 depth, framebuffer)", EUC, t, diff(euc.pixels()));
@@ -68,13 +75,15 @@ pub fn readme_table(peers: &[Peer], counts: &Counts, fw: &FwBench) -> String {
          |---|--:|--:|--:|--:|--:|--:|\n",
     );
     let euc = super::find(peers, EUC).map_or(f64::NAN, |p| p.ns);
+    // (peer key, fw_bench row, counted on the Cortex-M0 by fw_sweep)
     let rows = [
-        (BASE, Some("knot20k/meshlets-per-band-f32-persp-correct")),
-        (AFFINE, Some("knot20k/meshlets-per-band-f32-affine")),
-        ("knot20k/Fx/D16/affine/band16/S4", Some("knot20k/meshlets-per-band-fx-affine")),
-        (EUC, None),
+        (BASE, Some("knot20k/meshlets-per-band-f32-persp-correct"), true),
+        (AFFINE, Some("knot20k/meshlets-per-band-f32-affine"), true),
+        ("knot20k/Fx/D16/affine/band16/S4", Some("knot20k/meshlets-per-band-fx-affine"), true),
+        (FX_MESH, None, true),
+        (EUC, None, false),
     ];
-    for (key, fw_key) in rows {
+    for (key, fw_key, m0) in rows {
         let Some(p) = super::find(peers, key) else { continue };
         let m4 = fw_key.and_then(|k| fw.get("m4f", k));
         let n = |v: Option<u64>| v.map_or("–".into(), |v| v.to_string());
@@ -87,7 +96,7 @@ pub fn readme_table(peers: &[Peer], counts: &Counts, fw: &FwBench) -> String {
             n(m4.map(|r| r.instructions)),
             m4.map_or("–".into(), |r| format!("{:.0}", r.instructions as f64 / r.triangles as f64)),
             n(m4.map(|r| r.static_ram)),
-            n(fw_key.and(counts.get("m0", key))),
+            n(if m0 { counts.get("m0", key) } else { None }),
         );
     }
     t

@@ -51,7 +51,6 @@ mod fragment;
 #[path = "../fw_sweep/frame.rs"]
 mod frame;
 // The 20k-triangle knot (issue 12), used by `configs` and `knot_renderers`.
-#[allow(dead_code)]
 #[path = "../common/knot_mesh.rs"]
 mod knot_mesh;
 // The knot's renderers (microraster's meshlet stage and euc), shared with the benchmarks.

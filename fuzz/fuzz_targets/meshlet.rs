@@ -14,11 +14,14 @@
 //!   the mesh is invalid (or with `CoordinateOutOfRange`), and otherwise
 //!   returns clusters that pass validation exactly when the mesh passes
 //!   `check_winding`, hold every triangle once with its winding, and number
-//!   at most `meshlet_bound`.
+//!   at most `meshlet_bound`;
+//! * the clusters over the mesh's values in 16.16 (`Mesh::new_fx`): its
+//!   `validate` gives the verdict the same values in `f32` get.
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
 use microraster::Error;
+use microraster::math::{Fx, Scalar};
 use microraster::mesh::{
     Mesh, Meshlet, MeshletMesh, bounding_sphere, build_meshlets, meshlet_bound, meshlet_scratch_len,
     meshlet_vertex_bound,
@@ -121,6 +124,20 @@ fn arbitrary_clusters(inp: &mut Input<'_>, mesh: Mesh<'_>) {
         ) => {}
         Err(e) => panic!("undocumented error {e:?}"),
     }
+    // The same clusters over the mesh's values in 16.16 (saturated, NaN
+    // as 0): the checks give the verdict they give those values in f32.
+    let fx = |rows: &[[f32; 3]]| rows.iter().map(|r| r.map(Fx::from_f32)).collect::<Vec<_>>();
+    let (pf, nf) = (fx(mesh.positions), fx(mesh.normals));
+    let back = |rows: &[[Fx; 3]]| rows.iter().map(|r| r.map(Fx::to_f32)).collect::<Vec<_>>();
+    let (pb, nb) = (back(&pf), back(&nf));
+    let in_fx = MeshletMesh {
+        mesh: Mesh::new_fx(&pf, &nf, mesh.indices, mesh.bounding_sphere),
+        meshlets: &meshlets,
+        vertices: &vertices,
+        triangles: &triangles,
+    };
+    let in_f32 = MeshletMesh { mesh: Mesh::new(&pb, &nb, mesh.indices, mesh.bounding_sphere), ..m };
+    assert_eq!(in_fx.validate(), in_f32.validate());
 }
 
 fn built_clusters(mesh: Mesh<'_>) {

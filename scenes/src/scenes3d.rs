@@ -198,7 +198,10 @@ impl Scene3d {
     /// and lit once per mesh, or once per chunk of the mesh's triangles
     /// where `V` is below [`CACHE_VERTICES`]:
     /// [`Pipeline::draw_valid_mesh_cached`]); the same triangles. `V` must
-    /// be at least 3 (checked at compile time).
+    /// be at least 3 (checked at compile time). Not inlined: its 2.3 KB
+    /// frame would join its caller's (in `examples/fw_bench`, the frame
+    /// every row's stack figure includes).
+    #[inline(never)]
     pub fn draw_cached<T: Scalar, C: Interpolate, const S: u32, const V: usize, const N: usize>(
         &self,
         pipeline: &Pipeline<T, S>,

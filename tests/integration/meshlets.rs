@@ -8,6 +8,7 @@
 
 mod binned;
 mod cluster_cache;
+mod fx_data;
 
 use crate::framebuffer::Framebuffer;
 use embedded_graphics_core::pixelcolor::Rgb565;
@@ -183,16 +184,25 @@ fn direct_stats<T: Scalar, M: Interpolation, const BH: usize>(
     angle: f32,
     interp: M,
 ) -> (Vec<Rgb565>, [u32; 2]) {
+    direct_of::<T, M, BH, f32>(&c.meshlets(), p, angle, interp)
+}
+
+/// [`direct_stats`] of any meshlet mesh (its data in `f32` or 16.16).
+fn direct_of<T: Scalar, M: Interpolation, const BH: usize, P: Scalar>(
+    mesh: &ValidMeshletMesh<'_, P>,
+    p: &Pipeline<T, 4>,
+    angle: f32,
+    interp: M,
+) -> (Vec<Rgb565>, [u32; 2]) {
     let mut skipped = [0; 2];
     let mut cache = ClusterCache::<T, 4>::new();
     let mut fb = Framebuffer::new(W as u32, H, BG);
     let (mut band, mut depth) = (Band::<Rgb565, W, BH>::new(BG), DepthBand::<Depth16, W, BH>::new());
-    let mesh = c.meshlets();
     let model = model::<T>(angle);
     Renderer::new(H, BG)
         .render(
             Direct3d::new(&mut depth, DepthState::LESS_WRITE, interp, |band| {
-                let s = p.draw_meshlets(&mesh, &model, Rgb565::new(28, 44, 12), &mut cache, band)?;
+                let s = p.draw_meshlets(mesh, &model, Rgb565::new(28, 44, 12), &mut cache, band)?;
                 skipped[0] += s.clusters_outside;
                 skipped[1] += s.clusters_back_facing;
                 Ok(())

@@ -66,6 +66,14 @@ impl<T: Scalar> Vec3<T> {
         Vec3::new(T::from_f32(v[0]), T::from_f32(v[1]), T::from_f32(v[2]))
     }
 
+    /// From components stored as `f32` or [`Fx`](super::Fx)
+    /// ([`Scalar::to_scalar`]; [`Vec3::from_f32`] for `f32`): how the
+    /// vertex stage reads a mesh in either type.
+    #[inline(always)]
+    pub fn from_data<P: Scalar>(v: [P; 3]) -> Self {
+        P::vec3_to(v)
+    }
+
     /// The components as `f32`.
     pub fn to_f32(self) -> [f32; 3] {
         [self.x.to_f32(), self.y.to_f32(), self.z.to_f32()]

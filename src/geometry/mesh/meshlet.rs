@@ -27,9 +27,11 @@
 //! has `axis · (p − e) > cutoff · |p − e|`, so the angle between `axis` and
 //! `p − e` is below `90° − α` and `n · (p − e) > 0` for every face normal `n`.
 
+use super::data::MeshData;
 use super::winding::{face_cross, winding_agrees};
 use super::{SPHERE_TOLERANCE, cross, dist2, dot, is_finite3};
 use crate::error::Error;
+use crate::math::Scalar;
 
 /// Most vertices a cluster may have (local indices are `u8`).
 pub const MAX_MESHLET_VERTICES: usize = 64;
@@ -55,13 +57,38 @@ pub struct Meshlet {
     pub cone: ([f32; 3], f32),
 }
 
-/// A mesh with its clusters, all in borrowed (typically flash) data.
+/// A mesh with its clusters, all in borrowed (typically flash) data; its
+/// positions and normals in `f32` or, for the fixed-point vertex stage, in
+/// 16.16 [`Fx`](crate::math::Fx) (`P`, as for [`Mesh`](super::Mesh)).
+///
+/// Its `validate` checks the invariants the meshlet renderer relies on:
+///
+/// * the inner [`Mesh`](super::Mesh) passes
+///   [`validate`](super::Mesh::validate) (its `indices` may be empty);
+/// * every cluster has 1 to [`MAX_MESHLET_VERTICES`] vertices and 1 to
+///   [`MAX_MESHLET_TRIANGLES`] triangles, all within
+///   [`vertices`](Self::vertices) and [`triangles`](Self::triangles);
+/// * every local index is below its cluster's `vertex_count`, every
+///   entry of `vertices` a cluster uses is below the number of positions;
+/// * every sphere and cone is finite, the radius non-negative, and every
+///   position of a cluster within `radius · (1 + SPHERE_TOLERANCE)` of its
+///   centre (the [`Mesh::validate`](super::Mesh::validate) rule);
+/// * every cone has a unit axis and a cutoff `≥ 0`, and, unless the
+///   cutoff is `≥ 1`, contains the face normal of every non-degenerate
+///   triangle of its cluster (within [`CONE_TOLERANCE`]; degenerate as in
+///   [`DEGENERATE_SIN2`](super::DEGENERATE_SIN2));
+/// * if the mesh has normals, the windings of its own triangles and of
+///   every cluster triangle agree with them
+///   ([`Mesh::check_winding`](super::Mesh::check_winding)).
+///
+/// Entries of `vertices` and `triangles` no cluster uses are not checked,
+/// nor whether clusters overlap.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct MeshletMesh<'a> {
+pub struct MeshletMesh<'a, P = f32> {
     /// The mesh: positions, normals and bounding sphere as for any
     /// [`Mesh`](super::Mesh); its `indices` may be empty (the clusters hold
     /// the triangles).
-    pub mesh: super::Mesh<'a>,
+    pub mesh: super::Mesh<'a, P>,
     /// The clusters.
     pub meshlets: &'a [Meshlet],
     /// Mesh vertex index of each cluster-local vertex, cluster after cluster.
@@ -78,55 +105,31 @@ pub struct MeshletMesh<'a> {
 /// that pass without it.
 pub const CONE_TOLERANCE: f32 = 1.0e-4;
 
-impl MeshletMesh<'_> {
-    /// Checks the invariants the meshlet renderer relies on, in
-    /// O(vertices + triangles) without allocating:
-    ///
-    /// * the inner [`Mesh`](super::Mesh) passes
-    ///   [`validate`](super::Mesh::validate) (its `indices` may be empty);
-    /// * every cluster has 1 to [`MAX_MESHLET_VERTICES`] vertices and 1 to
-    ///   [`MAX_MESHLET_TRIANGLES`] triangles, all within
-    ///   [`vertices`](Self::vertices) and [`triangles`](Self::triangles);
-    /// * every local index is below its cluster's `vertex_count`, every
-    ///   entry of `vertices` a cluster uses is below the number of positions;
-    /// * every sphere and cone is finite, the radius non-negative, and every
-    ///   position of a cluster within `radius · (1 + SPHERE_TOLERANCE)` of its
-    ///   centre (the [`Mesh::validate`](super::Mesh::validate) rule);
-    /// * every cone has a unit axis and a cutoff `≥ 0`, and, unless the
-    ///   cutoff is `≥ 1`, contains the face normal of every non-degenerate
-    ///   triangle of its cluster (within [`CONE_TOLERANCE`]; degenerate as in
-    ///   [`DEGENERATE_SIN2`](super::DEGENERATE_SIN2));
-    /// * if the mesh has normals, the windings of its own triangles and of
-    ///   every cluster triangle agree with them
-    ///   ([`Mesh::check_winding`](super::Mesh::check_winding)).
-    ///
-    /// Entries of `vertices` and `triangles` no cluster uses are not checked,
-    /// nor whether clusters overlap.
-    ///
-    /// # Errors
-    ///
-    /// The errors of [`Mesh::validate`](super::Mesh::validate); then
-    /// [`Error::NonFiniteCoordinate`] for a NaN or infinite sphere or cone,
-    /// [`Error::InvalidMeshlet`] for any other cluster inconsistency, and
-    /// [`Error::WindingMismatch`] for a triangle wound against its normals.
-    ///
-    /// ```
-    /// use microraster::{Error, mesh::{Mesh, Meshlet, MeshletMesh}};
-    /// let positions = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]];
-    /// let mesh = Mesh::new(&positions, &[], &[], ([0.5, 0.5, 0.0], 0.71));
-    /// let cluster = Meshlet {
-    ///     vertex_count: 3,
-    ///     triangle_count: 1,
-    ///     sphere: ([0.5, 0.5, 0.0], 0.71),
-    ///     cone: ([0.0, 0.0, 1.0], 0.0), // one flat triangle facing +z
-    ///     ..Meshlet::default()
-    /// };
-    /// let m = MeshletMesh { mesh, meshlets: &[cluster], vertices: &[0, 1, 2], triangles: &[[0, 1, 2]] };
-    /// assert_eq!(m.validate(), Ok(()));
-    /// let facing_down = MeshletMesh { triangles: &[[0, 2, 1]], ..m };
-    /// assert_eq!(facing_down.validate(), Err(Error::InvalidMeshlet));
-    /// ```
-    pub const fn validate(&self) -> Result<(), Error> {
+/// A [`MeshletMesh`] as its checks read it (its mesh's rows as `f32`,
+/// [`MeshData`]).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct MeshletData<'a> {
+    pub(crate) mesh: MeshData<'a>,
+    pub(crate) meshlets: &'a [Meshlet],
+    pub(crate) vertices: &'a [u16],
+    pub(crate) triangles: &'a [[u8; 3]],
+}
+
+impl<'a, P: Scalar> MeshletMesh<'a, P> {
+    /// The clusters and their mesh as the checks read them.
+    pub(crate) fn data(&self) -> MeshletData<'a> {
+        MeshletData {
+            mesh: self.mesh.data(),
+            meshlets: self.meshlets,
+            vertices: self.vertices,
+            triangles: self.triangles,
+        }
+    }
+}
+
+impl MeshletData<'_> {
+    /// [`MeshletMesh`]'s `validate` (the struct docs).
+    pub(crate) const fn validate(&self) -> Result<(), Error> {
         // Plain loops: a `const fn`, so a `static` is checked at compile time.
         if let Err(e) = self.mesh.validate() {
             return Err(e);
@@ -183,7 +186,7 @@ impl MeshletMesh<'_> {
             if v >= positions.len() {
                 return Err(Error::InvalidMeshlet);
             }
-            if dist2(positions[v], centre) > r * r {
+            if dist2(positions.get(v), centre) > r * r {
                 return Err(Error::InvalidMeshlet);
             }
             k += 1;
@@ -199,8 +202,8 @@ impl MeshletMesh<'_> {
             let a = self.vertices[vo + a as usize] as usize;
             let b = self.vertices[vo + b as usize] as usize;
             let cc = self.vertices[vo + cc as usize] as usize;
-            let p = [positions[a], positions[b], positions[cc]];
-            if !normals.is_empty() && !winding_agrees(p, [normals[a], normals[b], normals[cc]]) {
+            let p = [positions.get(a), positions.get(b), positions.get(cc)];
+            if !normals.is_empty() && !winding_agrees(p, [normals.get(a), normals.get(b), normals.get(cc)]) {
                 return Err(Error::WindingMismatch);
             }
             if cutoff < 1.0 {
@@ -247,19 +250,11 @@ impl MeshletMesh<'_> {
 /// assert_eq!(TRI.get().meshlets.len(), 1);
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct ValidMeshletMesh<'a>(MeshletMesh<'a>);
+pub struct ValidMeshletMesh<'a, P = f32>(pub(super) MeshletMesh<'a, P>);
 
-impl<'a> ValidMeshletMesh<'a> {
-    /// `mesh` if it passes [`MeshletMesh::validate`], else that error.
-    pub const fn new(mesh: MeshletMesh<'a>) -> Result<Self, Error> {
-        match mesh.validate() {
-            Ok(()) => Ok(ValidMeshletMesh(mesh)),
-            Err(e) => Err(e),
-        }
-    }
-
+impl<'a, P> ValidMeshletMesh<'a, P> {
     /// The meshlet mesh.
-    pub const fn get(&self) -> &MeshletMesh<'a> {
+    pub const fn get(&self) -> &MeshletMesh<'a, P> {
         &self.0
     }
 }

@@ -76,7 +76,7 @@ pub(super) fn split_scratch(scratch: &mut [u32], nv: usize, nt: usize) -> Result
 }
 
 /// The mesh's adjacency (vertex → triangles) in `st`, everything live.
-pub(super) fn fill_adjacency(st: &mut State<'_>, mesh: &Mesh<'_>) {
+pub(super) fn fill_adjacency<P>(st: &mut State<'_>, mesh: &Mesh<'_, P>) {
     st.live.fill(0);
     st.local.fill(0);
     st.done.fill(0);

@@ -14,6 +14,7 @@ use super::meshlet::{MAX_MESHLET_TRIANGLES, MAX_MESHLET_VERTICES, Meshlet, Meshl
 use super::meshlet_adjacency::{State, fill_adjacency, split_scratch};
 use super::{Mesh, cross, dist2, dot, sqrt, sub};
 use crate::error::Error;
+use crate::math::Scalar;
 
 mod output;
 use output::Output;
@@ -106,14 +107,14 @@ pub const fn meshlet_vertex_bound(triangles: usize) -> usize {
 /// assert_eq!(m.meshlets.len(), 1); // 42 vertices fit one cluster
 /// # Ok::<(), microraster::Error>(())
 /// ```
-pub fn build_meshlets<'a>(
-    mesh: Mesh<'a>,
+pub fn build_meshlets<'a, P: Scalar>(
+    mesh: Mesh<'a, P>,
     meshlets: &'a mut [Meshlet],
     vertices: &'a mut [u16],
     triangles: &'a mut [[u8; 3]],
     scratch: &mut [u32],
-) -> Result<MeshletMesh<'a>, Error> {
-    mesh.validate()?;
+) -> Result<MeshletMesh<'a, P>, Error> {
+    mesh.data().validate()?;
     let (nv, nt) = (mesh.positions.len(), mesh.indices.len());
     if nt > (u32::MAX / 3) as usize {
         return Err(Error::InvalidParameter);
@@ -193,11 +194,11 @@ impl Open {
     }
 
     /// Appends triangle `t` (which [`fits`](Open::fits)).
-    fn add(
+    fn add<P: Scalar>(
         &mut self,
         st: &mut State<'_>,
         out: &mut Output<'_>,
-        mesh: &Mesh<'_>,
+        mesh: &Mesh<'_, P>,
         t: usize,
         tri: [u16; 3],
     ) -> Result<(), Error> {
@@ -231,8 +232,8 @@ fn new_vertices(st: &State<'_>, tri: [u16; 3]) -> usize {
     usize::from(new(a)) + usize::from(new(b) && b != a) + usize::from(new(c) && c != a && c != b)
 }
 
-fn centroid(mesh: &Mesh<'_>, tri: [u16; 3]) -> [f32; 3] {
-    let p = tri.map(|v| mesh.positions[usize::from(v)]);
+fn centroid<P: Scalar>(mesh: &Mesh<'_, P>, tri: [u16; 3]) -> [f32; 3] {
+    let p = tri.map(|v| mesh.positions[usize::from(v)].map(P::to_f32));
     [0, 1, 2].map(|k| (p[0][k] + p[1][k] + p[2][k]) / 3.0)
 }
 
@@ -241,7 +242,12 @@ fn centroid(mesh: &Mesh<'_>, tri: [u16; 3]) -> [f32; 3] {
 /// would otherwise be stranded: one of its vertices has no other live
 /// triangle), then the smallest distance to `centre` weighted by
 /// [`LIVE_WEIGHT`].
-fn neighbour(st: &State<'_>, mesh: &Mesh<'_>, members: &[u16], centre: [f32; 3]) -> Option<usize> {
+fn neighbour<P: Scalar>(
+    st: &State<'_>,
+    mesh: &Mesh<'_, P>,
+    members: &[u16],
+    centre: [f32; 3],
+) -> Option<usize> {
     let mut best: Option<(usize, usize, f32)> = None;
     for &v in members {
         for &t in st.live_tris(usize::from(v)) {
@@ -265,7 +271,7 @@ fn neighbour(st: &State<'_>, mesh: &Mesh<'_>, members: &[u16], centre: [f32; 3])
 /// live triangle whose vertices have the fewest live triangles (a corner of
 /// what is left), nearest `anchor` among equals; else the live triangle
 /// nearest `anchor`.
-fn seed(st: &State<'_>, mesh: &Mesh<'_>, out: &Output<'_>, anchor: [f32; 3]) -> Option<usize> {
+fn seed<P: Scalar>(st: &State<'_>, mesh: &Mesh<'_, P>, out: &Output<'_>, anchor: [f32; 3]) -> Option<usize> {
     let members = &out.vertices[out.last.0..out.last.1];
     let mut best: Option<(usize, u32, f32)> = None;
     for &v in members {
@@ -283,7 +289,7 @@ fn seed(st: &State<'_>, mesh: &Mesh<'_>, out: &Output<'_>, anchor: [f32; 3]) -> 
 
 /// The live triangle whose centroid is nearest `point` (O(triangles)), and
 /// its squared distance.
-fn nearest(st: &State<'_>, mesh: &Mesh<'_>, point: [f32; 3]) -> Option<(usize, f32)> {
+fn nearest<P: Scalar>(st: &State<'_>, mesh: &Mesh<'_, P>, point: [f32; 3]) -> Option<(usize, f32)> {
     let mut best: Option<(usize, f32)> = None;
     for (w, &bits) in st.done.iter().enumerate() {
         if bits == u32::MAX {
@@ -307,10 +313,10 @@ fn nearest(st: &State<'_>, mesh: &Mesh<'_>, point: [f32; 3]) -> Option<(usize, f
 /// [`TYPICAL_TRIANGLES`] mean-sized triangles. Farther ones (islands left
 /// elsewhere) start a new cluster once the open one has
 /// [`MIN_CLOSED_TRIANGLES`], so no cluster spans the mesh.
-fn reach2(mesh: &Mesh<'_>) -> f32 {
+fn reach2<P: Scalar>(mesh: &Mesh<'_, P>) -> f32 {
     let mut area = 0.0f32;
     for i in 0..mesh.indices.len() {
-        let p = mesh.indices[i].map(|v| mesh.positions[usize::from(v)]);
+        let p = mesh.indices[i].map(|v| mesh.positions[usize::from(v)].map(P::to_f32));
         let n = cross(sub(p[1], p[0]), sub(p[2], p[0]));
         area += sqrt(dot(n, n)) * 0.5;
     }

@@ -35,6 +35,7 @@
 //! and on Cortex-M targets.
 
 pub(crate) mod cube;
+mod data;
 mod icosphere;
 mod meshlet;
 mod meshlet_adjacency;
@@ -63,6 +64,9 @@ pub use torus::{torus, torus_triangle_count, torus_vertex_count};
 pub use winding::DEGENERATE_SIN2;
 
 use crate::error::Error;
+use crate::math::{Fx, Scalar};
+pub use data::fx_rows;
+pub(crate) use data::{MeshData, Rows};
 
 /// An index is out of range, the normals do not match the positions, or the
 /// bounding sphere does not contain the mesh.
@@ -89,6 +93,34 @@ pub const SPHERE_TOLERANCE: f32 = 1.0e-5;
 /// ([`ValidMesh`], at compile time for a `static`) skips that cost
 /// ([`draw_valid_mesh`](crate::pipeline::Pipeline::draw_valid_mesh)).
 ///
+/// # Positions and normals in 16.16
+/// `P` is the type the positions and normals are stored in: `f32` (the
+/// default, [`Mesh::new`]) or [`Fx`] ([`Mesh::new_fx`]). A part without an
+/// FPU draws with [`Pipeline<Fx, _>`](crate::pipeline::Pipeline), which
+/// reads `f32` data by converting every coordinate of every vertex it
+/// visits (`Fx::from_f32`, several dozen instructions each on a
+/// Cortex-M0); data in 16.16 it reads as it is. Converted with
+/// [`Fx::const_from_f32`] (at compile time), the data are the values the
+/// conversion would give, so the fixed-point stage draws the same pixels
+/// from either. Checks and culling read `Fx` data as the nearest `f32`
+/// (exact below 2^8 in magnitude); the bounding spheres stay `f32`. The
+/// meshlet path ([`MeshletMesh`], [`build_meshlets`],
+/// [`Pipeline::draw_meshlets`](crate::pipeline::Pipeline::draw_meshlets))
+/// takes either type, with either scalar of the pipeline; the
+/// whole-mesh paths ([`ValidMesh`], `view3d`) take `f32` data.
+///
+/// ```
+/// use microraster::math::Fx;
+/// use microraster::mesh::{Mesh, bounding_sphere};
+/// const fn fx(v: [f32; 3]) -> [Fx; 3] {
+///     [Fx::const_from_f32(v[0]), Fx::const_from_f32(v[1]), Fx::const_from_f32(v[2])]
+/// }
+/// const P: [[f32; 3]; 3] = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.25]];
+/// static P_FX: [[Fx; 3]; 3] = [fx(P[0]), fx(P[1]), fx(P[2])];
+/// let mesh = Mesh::new_fx(&P_FX, &[], &[[0, 1, 2]], bounding_sphere(&P));
+/// assert_eq!(mesh.validate(), Ok(()));
+/// ```
+///
 /// ```
 /// use microraster::mesh::{Mesh, bounding_sphere};
 ///
@@ -105,12 +137,12 @@ pub const SPHERE_TOLERANCE: f32 = 1.0e-5;
 /// # Ok::<(), microraster::Error>(())
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Mesh<'a> {
+pub struct Mesh<'a, P = f32> {
     /// Vertex positions (finite).
-    pub positions: &'a [[f32; 3]],
+    pub positions: &'a [[P; 3]],
     /// Unit vertex normals, one per position, or empty (the pipeline then uses
     /// flat per-face normals). Finite.
-    pub normals: &'a [[f32; 3]],
+    pub normals: &'a [[P; 3]],
     /// Triangles as indices into `positions`, counter-clockwise when seen from
     /// outside (from the front).
     pub indices: &'a [[u16; 3]],
@@ -129,7 +161,23 @@ impl<'a> Mesh<'a> {
     ) -> Self {
         Mesh { positions, normals, indices, bounding_sphere }
     }
+}
 
+impl<'a> Mesh<'a, Fx> {
+    /// A mesh from its parts in 16.16 (unchecked; see
+    /// [`validate`](Mesh::validate)): for the fixed-point vertex stage,
+    /// which reads them without a conversion (the [`Mesh`] docs).
+    pub const fn new_fx(
+        positions: &'a [[Fx; 3]],
+        normals: &'a [[Fx; 3]],
+        indices: &'a [[u16; 3]],
+        bounding_sphere: ([f32; 3], f32),
+    ) -> Self {
+        Mesh { positions, normals, indices, bounding_sphere }
+    }
+}
+
+impl<P> Mesh<'_, P> {
     /// Number of vertices (positions).
     pub const fn vertex_count(&self) -> usize {
         self.positions.len()
@@ -144,86 +192,21 @@ impl<'a> Mesh<'a> {
     pub const fn has_normals(&self) -> bool {
         !self.normals.is_empty()
     }
+}
 
-    /// Checks the invariants the 3D pipeline relies on, in O(vertices +
-    /// triangles) without allocating:
-    ///
-    /// * every index is less than the number of positions,
-    /// * `normals` is empty or exactly as long as `positions`,
-    /// * every position, normal and the bounding sphere are finite,
-    /// * the radius is non-negative, its square is finite (the radius is below
-    ///   about 1.8·10¹⁹), and every position lies within
-    ///   `radius · (1 + SPHERE_TOLERANCE)` of the centre.
-    ///
-    /// Normals are not checked for unit length.
-    ///
-    /// # Errors
-    ///
-    /// [`Error::NonFiniteCoordinate`] if a value is NaN or infinite;
-    /// [`Error::InvalidMesh`] for inconsistent indices, normals or sphere;
-    /// [`Error::CoordinateOutOfRange`] for a radius too large to square.
-    ///
-    /// ```
-    /// use microraster::{Error, mesh::Mesh};
-    /// let positions = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]];
-    /// let sphere = ([0.5, 0.5, 0.0], 0.71);
-    /// assert!(Mesh::new(&positions, &[], &[[0, 1, 2]], sphere).validate().is_ok());
-    /// assert!(Mesh::new(&positions, &[], &[[0, 1, 3]], sphere).validate().is_err());
-    /// let nan = [[0.0, 0.0, f32::NAN], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]];
-    /// assert_eq!(
-    ///     Mesh::new(&nan, &[], &[[0, 1, 2]], sphere).validate(),
-    ///     Err(Error::NonFiniteCoordinate)
-    /// );
-    /// ```
-    pub const fn validate(&self) -> Result<(), Error> {
-        // A `const fn` (plain loops), so a `static` mesh can be checked at
-        // compile time ([`ValidMesh::new`]); the same f32 operations at run time.
-        let n = self.positions.len();
-        if !self.normals.is_empty() && self.normals.len() != n {
-            return Err(INVALID_MESH);
+impl<'a, P: Scalar> Mesh<'a, P> {
+    /// The data as the checks read it (`f32` rows of either storage type).
+    pub(crate) fn data(&self) -> MeshData<'a> {
+        MeshData {
+            positions: P::rows(self.positions),
+            normals: P::rows(self.normals),
+            indices: self.indices,
+            bounding_sphere: self.bounding_sphere,
         }
-        let mut i = 0;
-        while i < self.indices.len() {
-            let [a, b, c] = self.indices[i];
-            if a as usize >= n || b as usize >= n || c as usize >= n {
-                return Err(INVALID_MESH);
-            }
-            i += 1;
-        }
-        let mut i = 0;
-        while i < self.normals.len() {
-            if !is_finite3(self.normals[i]) {
-                return Err(Error::NonFiniteCoordinate);
-            }
-            i += 1;
-        }
-        let (centre, radius) = self.bounding_sphere;
-        if !is_finite3(centre) || !radius.is_finite() {
-            return Err(Error::NonFiniteCoordinate);
-        }
-        if radius < 0.0 {
-            return Err(INVALID_MESH);
-        }
-        let r = radius * (1.0 + SPHERE_TOLERANCE);
-        let r2 = r * r;
-        if r2 == f32::INFINITY {
-            return Err(Error::CoordinateOutOfRange);
-        }
-        let mut i = 0;
-        while i < n {
-            let p = self.positions[i];
-            if !is_finite3(p) {
-                return Err(Error::NonFiniteCoordinate);
-            }
-            // Finite inputs give no NaN; an overflow to infinity fails.
-            if dist2(p, centre) > r2 {
-                return Err(INVALID_MESH);
-            }
-            i += 1;
-        }
-        Ok(())
     }
+}
 
+impl Mesh<'_> {
     /// The positions of triangle `i`, or `None` if `i` or one of its indices
     /// is out of range.
     pub fn triangle(&self, i: usize) -> Option<[[f32; 3]; 3]> {

@@ -107,10 +107,12 @@ pub(super) struct Slots<'a, T, const S: u32> {
 /// Where the cached path reads its vertices: model positions and normals by
 /// cache slot (a mesh vertex, or a meshlet's local vertex).
 pub(super) trait VertexSource {
+    /// The number type the mesh stores its positions and normals in.
+    type Coord: Scalar;
     /// The model-space position of slot `i` (`None` out of range).
-    fn position(&self, i: usize) -> Option<[f32; 3]>;
+    fn position(&self, i: usize) -> Option<[Self::Coord; 3]>;
     /// The unit normal of slot `i`, if the mesh has normals.
-    fn normal(&self, i: usize) -> Option<[f32; 3]>;
+    fn normal(&self, i: usize) -> Option<[Self::Coord; 3]>;
     /// Whether the mesh has per-vertex normals.
     fn has_normals(&self) -> bool;
     /// The mesh vertex of slot `i` (for its [`Material`] colour; `usize::MAX`
@@ -151,7 +153,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         let (planes, max) = (*planes, *max);
         let coder = VertexClass::<T>::new(planes);
         let flat_shade = self.shade == Shade::Flat;
-        let position = |i: usize| src.position(i).map(Vec3::from_f32).ok_or(Error::InvalidMesh);
+        let position = |i: usize| src.position(i).map(Vec3::from_data).ok_or(Error::InvalidMesh);
         let presnap = PreSnap::new::<T>(self.size, self.origin, S);
         let cull_sign = match self.cull {
             Cull::Clockwise if presnap.active() => 1,
@@ -261,6 +263,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
 }
 
 impl VertexSource for crate::mesh::Mesh<'_> {
+    type Coord = f32;
     fn position(&self, i: usize) -> Option<[f32; 3]> {
         self.positions.get(i).copied()
     }

@@ -112,18 +112,19 @@ impl<T: Scalar, const S: u32, const CLUSTERS: usize, const MESHES: usize> core::
 
 /// A cluster's vertices: local slot → the mesh's arrays (also a chunk's,
 /// [`super::chunked`]).
-pub(super) struct ClusterSource<'a> {
-    pub(super) mesh: &'a Mesh<'a>,
+pub(super) struct ClusterSource<'a, P = f32> {
+    pub(super) mesh: &'a Mesh<'a, P>,
     pub(super) vertices: &'a [u16],
 }
 
-impl VertexSource for ClusterSource<'_> {
+impl<P: Scalar> VertexSource for ClusterSource<'_, P> {
+    type Coord = P;
     #[inline]
-    fn position(&self, i: usize) -> Option<[f32; 3]> {
+    fn position(&self, i: usize) -> Option<[P; 3]> {
         self.mesh.positions.get(usize::from(*self.vertices.get(i)?)).copied()
     }
     #[inline]
-    fn normal(&self, i: usize) -> Option<[f32; 3]> {
+    fn normal(&self, i: usize) -> Option<[P; 3]> {
         self.mesh.normals.get(usize::from(*self.vertices.get(i)?)).copied()
     }
     fn has_normals(&self) -> bool {
@@ -151,15 +152,16 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     /// of [`Lighting::validate`](crate::light::Lighting::validate); for
     /// [`Fx`](crate::math::Fx), [`Error::CoordinateOutOfRange`] as for
     /// [`Pipeline::draw_valid_mesh`].
-    pub fn draw_meshlets<C, F, M, const W: usize, const N: usize, const K: usize>(
+    pub fn draw_meshlets<P, C, F, M, const W: usize, const N: usize, const K: usize>(
         &self,
-        mesh: &ValidMeshletMesh<'_>,
+        mesh: &ValidMeshletMesh<'_, P>,
         model: &Mat4<T>,
         color: C,
         cache: &mut ClusterCache<T, S, N, K>,
         band: &mut Band3d<'_, '_, C, F, M, W>,
     ) -> Result<MeshStats, Error>
     where
+        P: Scalar,
         C: Interpolate,
         F: DepthFormat,
         M: Interpolation,
@@ -169,9 +171,9 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
 
     /// [`Pipeline::draw_meshlets`] with the vertices coloured by `material`
     /// (per vertex; a per-face material is [`Error::InvalidParameter`]).
-    pub(crate) fn draw_meshlets_with<C, F, M, Mat, const W: usize, const N: usize, const K: usize>(
+    pub(crate) fn draw_meshlets_with<P, C, F, M, Mat, const W: usize, const N: usize, const K: usize>(
         &self,
-        mesh: &ValidMeshletMesh<'_>,
+        mesh: &ValidMeshletMesh<'_, P>,
         model: &Mat4<T>,
         color: C,
         material: &Mat,
@@ -179,6 +181,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         band: &mut Band3d<'_, '_, C, F, M, W>,
     ) -> Result<MeshStats, Error>
     where
+        P: Scalar,
         C: Interpolate,
         F: DepthFormat,
         M: Interpolation,
@@ -214,9 +217,9 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     /// assert!(front > 20 && front < 60 && stats.emitted == front);
     /// # Ok::<(), microraster::Error>(())
     /// ```
-    pub fn meshlet_triangles<C: Interpolate, const N: usize, const K: usize>(
+    pub fn meshlet_triangles<P: Scalar, C: Interpolate, const N: usize, const K: usize>(
         &self,
-        mesh: &ValidMeshletMesh<'_>,
+        mesh: &ValidMeshletMesh<'_, P>,
         model: &Mat4<T>,
         color: C,
         cache: &mut ClusterCache<T, S, N, K>,
@@ -230,9 +233,9 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     /// `material` ([`Pipeline::draw_meshlets_with`]); without `with_inv_w`
     /// each vertex's `1/w` is left at 1 (for an affine band).
     #[allow(clippy::too_many_arguments)]
-    fn meshlets_into<C: Interpolate, Mat: Material<T>, const N: usize, const K: usize>(
+    fn meshlets_into<P: Scalar, C: Interpolate, Mat: Material<T>, const N: usize, const K: usize>(
         &self,
-        mesh: &ValidMeshletMesh<'_>,
+        mesh: &ValidMeshletMesh<'_, P>,
         model: &Mat4<T>,
         color: C,
         material: &Mat,

@@ -14,9 +14,9 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     /// The per-mesh part of the vertex stage: the matrices, the whole-mesh
     /// culls (view volume, then [`Pipeline::rows`]) and the clip planes;
     /// `None` when the mesh is culled (counted in `stats`).
-    pub(super) fn mesh_setup<C: Interpolate>(
+    pub(super) fn mesh_setup<P: Scalar, C: Interpolate>(
         &self,
-        mesh: &Mesh<'_>,
+        mesh: &Mesh<'_, P>,
         model: &Mat4<T>,
         color: C,
         stats: &mut MeshStats,
@@ -127,7 +127,11 @@ pub(super) fn fx_product_fits<T: Scalar>(a: &Mat4<T>, b: &Mat4<T>) -> bool {
 /// `row · (p, 1)`. A bound over the bounding sphere decides at once for
 /// nearly every mesh; only a mesh whose sphere reaches beyond the range has
 /// the vertices of its triangles checked one by one.
-pub(super) fn fx_coordinates_fit<T: Scalar>(mesh: &Mesh<'_>, mv: &Mat4<T>, mvp: &Mat4<T>) -> bool {
+pub(super) fn fx_coordinates_fit<T: Scalar, P: Scalar>(
+    mesh: &Mesh<'_, P>,
+    mv: &Mat4<T>,
+    mvp: &Mat4<T>,
+) -> bool {
     let (mv, mvp) = (mv.to_f32(), mvp.to_f32());
     // `Σ_i |m_ri|·e_i + |m_r3|` for each row of both matrices, where `e`
     // bounds `|p_i|`; every partial sum of the row's `Fx` evaluation is at
@@ -145,7 +149,7 @@ pub(super) fn fx_coordinates_fit<T: Scalar>(mesh: &Mesh<'_>, mv: &Mat4<T>, mvp: 
     // transformed for drawing).
     // A meshlet mesh keeps its triangles in its clusters (no `indices`):
     // then every vertex counts.
-    let fits_at = |p: &[f32; 3]| fits(p.map(f32::abs));
+    let fits_at = |p: &[P; 3]| fits(p.map(|v| v.to_f32().abs()));
     fits(c.map(|c| c.abs() + r))
         || if mesh.indices.is_empty() {
             mesh.positions.iter().all(fits_at)

@@ -2,7 +2,7 @@
 //! [`microraster::mesh::Mesh`] (arrays in flash, no RAM).
 //!
 //! ```text
-//! obj2rs INPUT.obj NAME [--mesh-type PATH] [--meshlets] [--flip-winding] > out.rs
+//! obj2rs INPUT.obj NAME [--mesh-type PATH] [--meshlets [--fx]] [--flip-winding] > out.rs
 //! ```
 //!
 //! Writes `NAME_POSITIONS`, `NAME_NORMALS`, `NAME_INDICES` and
@@ -12,6 +12,10 @@
 //! `--meshlets` also writes the mesh's clusters (`NAME_MESHLETS`,
 //! `NAME_MESHLET_VERTICES`, `NAME_MESHLET_TRIANGLES`) and
 //! `NAME_MESHLET_MESH: MeshletMesh<'static>` (see `obj::meshlets`).
+//! `--fx` (with `--meshlets`) stores positions and normals in 16.16
+//! (`Mesh<'static, Fx>`, converted at compile time from the same `f32`
+//! literals), for the fixed-point vertex stage of a part without an FPU,
+//! which then reads them without a conversion.
 //! See `obj::parse` for the OBJ subset understood. Installed by
 //! `cargo install --path tools`; `microraster_tools::obj` is the same
 //! conversion for build scripts. Errors name the line and
@@ -26,7 +30,7 @@ use std::process::ExitCode;
 
 use microraster_tools::obj::{Options, convert_bytes, emit};
 
-const USAGE: &str = "usage: obj2rs INPUT.obj NAME [--mesh-type PATH] [--meshlets] [--flip-winding] > out.rs   (INPUT `-` = stdin)";
+const USAGE: &str = "usage: obj2rs INPUT.obj NAME [--mesh-type PATH] [--meshlets [--fx]] [--flip-winding] > out.rs   (INPUT `-` = stdin)";
 
 fn main() -> ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();
@@ -58,6 +62,7 @@ fn run(args: &[String]) -> Result<(), Failure> {
     let mut mesh_type = emit::DEFAULT_MESH_TYPE.to_string();
     let mut with_meshlets = false;
     let mut flip_winding = false;
+    let mut fx = false;
     let mut it = args.iter();
     while let Some(a) = it.next() {
         match a.as_str() {
@@ -71,6 +76,7 @@ fn run(args: &[String]) -> Result<(), Failure> {
             }
             "--meshlets" => with_meshlets = true,
             "--flip-winding" => flip_winding = true,
+            "--fx" => fx = true,
             s if s.starts_with("--") => return Err(Failure::Usage(format!("unknown option `{s}`"))),
             _ => positional.push(a.as_str()),
         }
@@ -92,7 +98,7 @@ fn run(args: &[String]) -> Result<(), Failure> {
     };
     let shown = if input == "-" { "<stdin>" } else { input };
     read.map_err(|e| Failure::Input(format!("{shown}: {e}")))?;
-    let options = Options { mesh_type, meshlets: with_meshlets, flip_winding };
+    let options = Options { mesh_type, meshlets: with_meshlets, flip_winding, fx };
     let converted = convert_bytes(&bytes, name, &source, &options)
         .map_err(|e| Failure::Input(format!("{shown}: {e}")))?;
     if let Some(warning) = &converted.winding_warning {

@@ -3,11 +3,12 @@
 
 use std::fmt::Write;
 
+use microraster::math::{Fx, Scalar};
 use microraster::mesh::{
     Mesh, Meshlet, bounding_sphere, build_meshlets, meshlet_bound, meshlet_scratch_len, meshlet_vertex_bound,
 };
 
-use super::emit::static_name;
+use super::emit::{fx_positions, static_name, type_paths};
 use super::parse::ObjMesh;
 
 /// The clusters of a mesh, in owned buffers.
@@ -19,12 +20,25 @@ pub struct Clusters {
 
 /// Splits the mesh into clusters.
 pub fn build(mesh: &ObjMesh) -> Result<Clusters, String> {
+    build_of(mesh.mesh())
+}
+
+/// Splits the mesh, its positions and normals in 16.16 (`obj2rs --fx`:
+/// [`fx_positions`]), into clusters whose
+/// spheres and cones hold those values.
+pub fn build_fx(mesh: &ObjMesh) -> Result<Clusters, String> {
+    let (p, sphere) = fx_positions(mesh);
+    let n: Vec<[Fx; 3]> = mesh.normals.iter().map(|r| r.map(Fx::from_f32)).collect();
+    build_of(Mesh::new_fx(&p, &n, &mesh.indices, sphere))
+}
+
+fn build_of<P: Scalar>(mesh: Mesh<'_, P>) -> Result<Clusters, String> {
     let (nv, nt) = (mesh.positions.len(), mesh.indices.len());
     let mut meshlets = vec![Meshlet::default(); meshlet_bound(nt)];
     let mut vertices = vec![0; meshlet_vertex_bound(nt)];
     let mut triangles = vec![[0; 3]; nt];
     let mut scratch = vec![0; meshlet_scratch_len(nv, nt)];
-    let m = build_meshlets(mesh.mesh(), &mut meshlets, &mut vertices, &mut triangles, &mut scratch)
+    let m = build_meshlets(mesh, &mut meshlets, &mut vertices, &mut triangles, &mut scratch)
         .map_err(|e| format!("building meshlets: {e}"))?;
     Ok(Clusters {
         meshlets: m.meshlets.to_vec(),
@@ -77,8 +91,15 @@ pub fn winding_warning(mesh: &ObjMesh, meshlets: bool) -> Option<String> {
 /// around the `NAME` mesh static; `Meshlet` and `MeshletMesh` are taken
 /// from the module of `mesh_type`.
 pub fn rust_source(c: &Clusters, name: &str, mesh_type: &str) -> Result<String, String> {
+    rust_source_with(c, name, mesh_type, false)
+}
+
+/// [`rust_source`]; with `fx` around a mesh in 16.16 (`MeshletMesh<'static,
+/// Fx>`, `obj2rs --fx`).
+pub fn rust_source_with(c: &Clusters, name: &str, mesh_type: &str, fx: bool) -> Result<String, String> {
     let name = static_name(name)?;
-    let module = mesh_type.rsplit_once("::").map_or(String::new(), |(m, _)| format!("{m}::"));
+    let (module, root) = type_paths(mesh_type);
+    let storage = if fx { format!(", {root}math::Fx") } else { String::new() };
     let (nc, nl, nt) = (c.meshlets.len(), c.vertices.len(), c.triangles.len());
     let mut s = String::new();
     let w = &mut s;
@@ -106,8 +127,10 @@ pub fn rust_source(c: &Clusters, name: &str, mesh_type: &str) -> Result<String, 
         let _ = writeln!(w, "    {},", row.join(", "));
     }
     let _ = writeln!(w, "];\n\n/// [`{name}`] with its clusters.");
-    let _ =
-        writeln!(w, "pub static {name}_MESHLET_MESH: {module}MeshletMesh<'static> = {module}MeshletMesh {{");
+    let _ = writeln!(
+        w,
+        "pub static {name}_MESHLET_MESH: {module}MeshletMesh<'static{storage}> = {module}MeshletMesh {{"
+    );
     let _ = writeln!(
         w,
         "    mesh: {name},\n    meshlets: &{name}_MESHLETS,\n    vertices: &{name}_MESHLET_VERTICES,"

@@ -25,11 +25,21 @@ pub struct Options {
     /// Reverse the triangles wound against their normals before writing
     /// (`--flip-winding`, [`meshlets::flip_mismatches`]).
     pub flip_winding: bool,
+    /// Positions and normals in 16.16 (`--fx`, for the fixed-point vertex
+    /// stage, which then reads them without a conversion;
+    /// [`emit::rust_source_with`]). Needs [`Options::meshlets`]: 16.16 data
+    /// is drawn through the meshlet path.
+    pub fx: bool,
 }
 
 impl Default for Options {
     fn default() -> Self {
-        Options { mesh_type: emit::DEFAULT_MESH_TYPE.to_string(), meshlets: false, flip_winding: false }
+        Options {
+            mesh_type: emit::DEFAULT_MESH_TYPE.to_string(),
+            meshlets: false,
+            flip_winding: false,
+            fx: false,
+        }
     }
 }
 
@@ -98,13 +108,20 @@ pub fn convert(path: impl AsRef<Path>, name: &str) -> Result<String, Error> {
 /// # Ok::<(), microraster_tools::Error>(())
 /// ```
 pub fn convert_bytes(bytes: &[u8], name: &str, source: &str, options: &Options) -> Result<Converted, Error> {
+    if options.fx && !options.meshlets {
+        return Err(Error(
+            "16.16 output (`--fx`) needs `--meshlets`: it is drawn through the meshlet path".into(),
+        ));
+    }
     let text = String::from_utf8_lossy(bytes);
     let mut mesh = parse::parse_obj(&text).map_err(|e| Error(e.to_string()))?;
     let flipped = if options.flip_winding { meshlets::flip_mismatches(&mut mesh) } else { 0 };
-    let mut out = emit::rust_source(&mesh, name, source, &options.mesh_type).map_err(Error)?;
+    let mut out =
+        emit::rust_source_with(&mesh, name, source, &options.mesh_type, options.fx).map_err(Error)?;
     if options.meshlets {
-        let clusters = meshlets::build(&mesh).map_err(Error)?;
-        out += &meshlets::rust_source(&clusters, name, &options.mesh_type).map_err(Error)?;
+        let clusters =
+            if options.fx { meshlets::build_fx(&mesh) } else { meshlets::build(&mesh) }.map_err(Error)?;
+        out += &meshlets::rust_source_with(&clusters, name, &options.mesh_type, options.fx).map_err(Error)?;
     }
     let winding_warning = meshlets::winding_warning(&mesh, options.meshlets);
     Ok(Converted { source: out, mesh, winding_warning, flipped })

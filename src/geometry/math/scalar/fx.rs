@@ -4,7 +4,8 @@
 
 use super::Scalar;
 use super::fx_bits::{
-    div_round_u64_u32, fx_bits_from_f32, mul_bits_in_range, saturating_div_bits, saturating_mul_bits,
+    div_round_u64_u32, fx_bits_from_f32, fx_bits_from_f32_int, mul_bits_in_range, saturating_div_bits,
+    saturating_mul_bits,
 };
 use core::ops::{Add, Div, Mul, Neg, Sub};
 use fixed::types::I16F16;
@@ -25,6 +26,18 @@ impl Fx {
     /// From raw 16.16 bits.
     pub const fn from_bits(b: i32) -> Self {
         Fx(I16F16::from_bits(b))
+    }
+    /// [`Scalar::from_f32`] as a `const fn`, bit for bit (the nearest
+    /// value, ties to even, saturating, NaN giving 0): for mesh data
+    /// converted at compile time ([`Mesh`](crate::mesh::Mesh) in 16.16).
+    ///
+    /// ```
+    /// use microraster::math::{Fx, Scalar};
+    /// static HALF: Fx = Fx::const_from_f32(0.5);
+    /// assert_eq!(HALF, Fx::from_f32(0.5));
+    /// ```
+    pub const fn const_from_f32(v: f32) -> Self {
+        Fx::from_bits(fx_bits_from_f32_int(v))
     }
     /// The nearest value to `v`, or [`Error::NonFiniteCoordinate`](crate::Error::NonFiniteCoordinate) for NaN and
     /// ±infinity and [`Error::CoordinateOutOfRange`](crate::Error::CoordinateOutOfRange) for `|v| ≥ 32767` (where
@@ -104,6 +117,18 @@ impl Scalar for Fx {
     }
     fn to_f32(self) -> f32 {
         self.0.to_num::<f32>()
+    }
+    #[inline(always)]
+    fn from_fx(v: Fx) -> Self {
+        v
+    }
+    #[inline(always)]
+    fn to_scalar<U: Scalar>(self) -> U {
+        U::from_fx(self)
+    }
+    #[inline(always)]
+    fn vec3_to<U: Scalar>(v: [Fx; 3]) -> crate::math::Vec3<U> {
+        crate::math::Vec3::new(U::from_fx(v[0]), U::from_fx(v[1]), U::from_fx(v[2]))
     }
     fn sqrt(self) -> Self {
         Fx(self.0.checked_sqrt().unwrap_or(I16F16::ZERO))

@@ -166,13 +166,13 @@ fn fx_bits_from_f32_float(v: f32) -> i32 {
 /// is odd, carries into it exactly when the remainder exceeds half, or
 /// equals it with an odd quotient (`m + 2^(k−1) < 2^25`: no overflow).
 #[inline(always)]
-fn shr_round_even(m: u32, k: u32) -> u32 {
+const fn shr_round_even(m: u32, k: u32) -> u32 {
     (m + (1u32 << (k - 1)) - 1 + ((m >> k) & 1)) >> k
 }
 
 /// [`fx_bits_from_f32`] with 32-bit integer operations only.
 #[inline]
-fn fx_bits_from_f32_int(v: f32) -> i32 {
+pub(super) const fn fx_bits_from_f32_int(v: f32) -> i32 {
     let bits = v.to_bits();
     // The common case first (a model's coordinates and normals; Cortex-M0
     // knot, Fx: 106.6 M -> 103.9 M instructions): a normal number from

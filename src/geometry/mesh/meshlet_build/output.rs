@@ -8,6 +8,7 @@ use super::super::winding::face_cross;
 use super::super::{Mesh, bounding_sphere, cross, dot, sqrt};
 use super::Open;
 use crate::error::Error;
+use crate::math::Scalar;
 
 /// The output buffers and how much of them is written.
 pub(super) struct Output<'a> {
@@ -25,13 +26,18 @@ impl Output<'_> {
     /// Writes the open cluster's [`Meshlet`] (sphere and cone) and clears its
     /// vertices' local indices. Past the end of `meshlets` it only counts
     /// the cluster, so that the error can say how many are needed.
-    pub(super) fn close(&mut self, st: &mut State<'_>, mesh: &Mesh<'_>, c: &Open) -> Result<(), Error> {
+    pub(super) fn close<P: Scalar>(
+        &mut self,
+        st: &mut State<'_>,
+        mesh: &Mesh<'_, P>,
+        c: &Open,
+    ) -> Result<(), Error> {
         self.clusters += 1;
         self.last = (c.vo, c.vo + c.verts);
         let members = &self.vertices[c.vo..c.vo + c.verts];
         let mut points = [[0.0; 3]; MAX_MESHLET_VERTICES];
         for (p, &v) in points.iter_mut().zip(members) {
-            *p = mesh.positions[usize::from(v)];
+            *p = mesh.positions[usize::from(v)].map(P::to_f32);
             st.local[usize::from(v)] = 0;
         }
         let Some(slot) = self.meshlets.get_mut(self.clusters - 1) else { return Ok(()) };
@@ -51,7 +57,8 @@ impl Output<'_> {
         // coarse (subnormal triangles: then a cone that never rejects) or
         // the radius squared overflows (coordinates near 10¹⁹).
         let view =
-            MeshletMesh { mesh: *mesh, meshlets: &[], vertices: self.vertices, triangles: self.triangles };
+            MeshletMesh { mesh: *mesh, meshlets: &[], vertices: self.vertices, triangles: self.triangles }
+                .data();
         if view.validate_cluster(&m) == Err(Error::InvalidMeshlet) {
             m.cone = ([0.0, 0.0, 1.0], 1.0);
             if view.validate_cluster(&m) == Err(Error::InvalidMeshlet) {

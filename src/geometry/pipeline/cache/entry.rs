@@ -71,7 +71,8 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         if self.shade != Shade::Flat && src.has_normals() {
             return Ok(None);
         }
-        let [Some(ra), Some(rb), Some(rc)] = idx.map(|j| src.position(j)) else {
+        let [Some(ra), Some(rb), Some(rc)] = idx.map(|j| src.position(j).map(|p| p.map(Src::Coord::to_f32)))
+        else {
             return Err(Error::InvalidMesh);
         };
         Ok(crate::mesh::face_normal_of([ra, rb, rc]))
@@ -93,8 +94,13 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         face_n: Option<[f32; 3]>,
     ) -> Result<[T; 3], Error> {
         let flat = self.shade == Shade::Flat || !src.has_normals();
-        let n = if flat { face_n } else { src.normal(j) };
-        let p = src.position(j).map(Vec3::from_f32).ok_or(Error::InvalidMesh)?;
+        // Normals go to the lighting as `f32`: a 16.16 normal (of length
+        // about 1, below 2^8) converts exactly, and back to the same 16.16
+        // value. Passing the mesh's type through instead (the lighting
+        // generic over it) cost the f32 knot 1.5 % on the Cortex-M4F, code
+        // generation unchanged in its operations.
+        let n = if flat { face_n } else { src.normal(j).map(|n| n.map(Src::Coord::to_f32)) };
+        let p = src.position(j).map(Vec3::from_data).ok_or(Error::InvalidMesh)?;
         Ok(if M::UNIFORM {
             ctx.lit(p, n, |ctx: &VertexCtx<T>| ctx.base)
         } else {
