@@ -204,6 +204,12 @@ fn array<T>(s: &mut String, items: &[T], per_line: usize, f: impl Fn(&T) -> Stri
     }
 }
 
+/// The doc comment, attributes and first line of a static array.
+fn header(s: &mut String, doc: &str, name: &str, ty: &str, n: usize) {
+    let _ = writeln!(s, "/// {doc}\n#[rustfmt::skip]\n#[allow(clippy::approx_constant)]");
+    let _ = writeln!(s, "pub static {name}: [{ty}; {n}] = [");
+}
+
 fn v3(v: &[f32; 3]) -> String {
     format!("[{:?},{:?},{:?}]", v[0], v[1], v[2])
 }
@@ -218,10 +224,6 @@ pub fn rust_source(k: &Knot) -> String {
     let _ = writeln!(s, "//! {nv} vertices, {nt} triangles, {nc} clusters.\n");
     s += "// Not every program that includes the file draws both variants.\n#![allow(dead_code)]\n\n";
     s += "use microraster::math::Fx;\nuse microraster::mesh::{Mesh, Meshlet, MeshletMesh, ValidMeshletMesh, fx_rows};\n\n";
-    let header = |s: &mut String, doc: &str, name: &str, ty: &str, n: usize| {
-        let _ = writeln!(s, "/// {doc}\n#[rustfmt::skip]\n#[allow(clippy::approx_constant)]");
-        let _ = writeln!(s, "pub static {name}: [{ty}; {n}] = [");
-    };
     header(&mut s, "Vertex positions of [`KNOT`].", "KNOT_POSITIONS", "[f32; 3]", nv);
     array(&mut s, &k.positions, 6, v3);
     s += "];\n\n";
@@ -275,10 +277,6 @@ fn fx_source(s: &mut String, k: &Knot) {
         s,
         "/// [`KNOT_NORMALS`] in 16.16, converted at compile time.\npub static KNOT_NORMALS_FX: [[Fx; 3]; {nv}] = fx_rows(&KNOT_NORMALS);\n"
     );
-    let header = |s: &mut String, doc: &str, name: &str, ty: &str, n: usize| {
-        let _ = writeln!(s, "/// {doc}\n#[rustfmt::skip]\n#[allow(clippy::approx_constant)]");
-        let _ = writeln!(s, "pub static {name}: [{ty}; {n}] = [");
-    };
     let vertices = if fx.vertices == k.vertices {
         "KNOT_MESHLET_VERTICES"
     } else {

@@ -206,9 +206,7 @@ fn issue12(peers: &[Peer], breakdown: &[Breakdown], counts: &Counts, fw: &FwBenc
         );
     }
     // Cortex-M0: Fx against soft-float f32 on the knot (examples/fw_sweep).
-    // The verdict is the fixed-point path with the mesh in 16.16 (what a
-    // part without an FPU stores, `obj2rs --fx`); the same path reading the
-    // `f32` mesh is shown beside it.
+    // Judged with the mesh in 16.16 (`obj2rs --fx`), the f32 mesh's ratio beside it.
     let m0 = |k: &str| counts.get("m0", &format!("knot20k/{k}/D16/affine/band16/S4"));
     let fx_mesh = counts.get("m0", knot::FX_MESH);
     let (measured, v) = match (m0("f32"), m0("Fx"), fx_mesh) {

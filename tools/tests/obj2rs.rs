@@ -8,13 +8,10 @@ use microraster_tools::obj::{emit, meshlets, parse};
 /// Regenerate after changing the emitter:
 /// `cargo run -p microraster-tools --bin obj2rs -- assets/tetra.obj TETRA > assets/tetra.rs`
 /// `cargo run -p microraster-tools --bin obj2rs -- assets/cube_quads.obj CUBE_QUADS > assets/cube_quads.rs`
-/// `cargo run -p microraster-tools --bin obj2rs -- assets/cube_quads.obj CUBE_M --meshlets > assets/cube_quads_meshlets.rs`
-/// `cargo run -p microraster-tools --bin obj2rs -- assets/cube_quads.obj CUBE_FX --meshlets --fx > assets/cube_quads_fx.rs`
+/// (the clusters' outputs: `tests/obj2rs_meshlets.rs`)
 mod generated {
     include!("../../assets/tetra.rs");
     include!("../../assets/cube_quads.rs");
-    include!("../../assets/cube_quads_meshlets.rs");
-    include!("../../assets/cube_quads_fx.rs");
 }
 
 use microraster::Error;
@@ -106,45 +103,6 @@ fn generated_sources_are_current_and_compile() {
     assert_eq!(generated::TETRA_POSITIONS.len(), 4);
     assert_eq!(generated::CUBE_QUADS_INDICES.len(), 12);
     assert_eq!(generated::CUBE_QUADS_NORMALS[0], [0.0, 0.0, 1.0]);
-}
-
-/// Each triangle as its rotation with the smallest index first (winding
-/// kept), sorted.
-fn canonical(triangles: &[[u16; 3]]) -> Vec<[u16; 3]> {
-    let canon = |t: &[u16; 3]| (0..3).map(|r| [t[r], t[(r + 1) % 3], t[(r + 2) % 3]]).min().unwrap();
-    let mut v: Vec<[u16; 3]> = triangles.iter().map(canon).collect();
-    v.sort_unstable();
-    v
-}
-
-/// The triangles of `mm`'s clusters in mesh indices, [`canonical`].
-fn cluster_triangles<P>(mm: &MeshletMesh<'_, P>) -> Vec<[u16; 3]> {
-    let mut got = Vec::new();
-    for cl in mm.meshlets {
-        let local = &mm.vertices[cl.vertex_offset as usize..][..usize::from(cl.vertex_count)];
-        for t in &mm.triangles[cl.triangle_offset as usize..][..usize::from(cl.triangle_count)] {
-            got.push(t.map(|k| local[usize::from(k)]));
-        }
-    }
-    canonical(&got)
-}
-
-#[test]
-fn meshlet_output_is_current_compiles_and_validates() {
-    let m = parse_obj(CUBE_OBJ).unwrap();
-    let mut src = emit::rust_source(&m, "CUBE_M", "cube_quads.obj", emit::DEFAULT_MESH_TYPE).unwrap();
-    let c = meshlets::build(&m).unwrap();
-    src += &meshlets::rust_source(&c, "CUBE_M", emit::DEFAULT_MESH_TYPE).unwrap();
-    assert_eq!(src, include_str!("../../assets/cube_quads_meshlets.rs"), "regenerate (see `mod generated`)");
-    let mm = generated::CUBE_M_MESHLET_MESH;
-    assert_eq!(mm.mesh, m.mesh());
-    assert_eq!(mm.validate(), Ok(()));
-    // Every triangle once, winding kept (up to rotation).
-    assert_eq!(cluster_triangles(&mm), canonical(&m.indices));
-    // The types follow `--mesh-type`'s module.
-    let crate_src = meshlets::rust_source(&c, "X", "crate::mesh::Mesh").unwrap();
-    assert!(crate_src.contains("pub static X_MESHLET_MESH: crate::mesh::MeshletMesh<'static> ="));
-    assert!(meshlets::rust_source(&c, "2x", "Mesh").is_err());
 }
 
 #[test]
@@ -410,27 +368,4 @@ fn convert_for_build_scripts_rejects_a_winding_mismatch() {
     let missing = microraster_tools::obj::convert(dir.join("missing.obj"), "m").unwrap_err().to_string();
     assert!(missing.contains("missing.obj"), "{missing}");
     std::fs::remove_dir_all(&dir).unwrap();
-}
-
-/// `--fx`: the positions and normals in 16.16 are `Fx::from_f32` of the
-/// converted values, the clusters hold them and pass the checks, and every
-/// triangle is there once; without `--meshlets` it is an error.
-#[test]
-fn fx_output_is_current_compiles_and_validates() {
-    use microraster::math::{Fx, Scalar};
-    use microraster::mesh::ValidMeshletMesh;
-    use microraster_tools::obj::{Options, convert_bytes};
-    let fx = Options { meshlets: true, fx: true, ..Options::default() };
-    let c = convert_bytes(CUBE_OBJ.as_bytes(), "CUBE_FX", "cube_quads.obj", &fx).unwrap();
-    assert_eq!(c.source, include_str!("../../assets/cube_quads_fx.rs"), "regenerate (see `mod generated`)");
-    let mm = generated::CUBE_FX_MESHLET_MESH;
-    let m = parse_obj(CUBE_OBJ).unwrap();
-    let to_fx = |rows: &[[f32; 3]]| rows.iter().map(|r| r.map(Fx::from_f32)).collect::<Vec<_>>();
-    assert_eq!(mm.mesh.positions, &to_fx(&m.positions)[..]);
-    assert_eq!(mm.mesh.normals, &to_fx(&m.normals)[..]);
-    assert_eq!(mm.mesh.indices, &m.indices[..]);
-    assert!(ValidMeshletMesh::new_fx(mm).is_ok());
-    assert_eq!(cluster_triangles(&mm), canonical(&m.indices));
-    let alone = Options { fx: true, ..Options::default() };
-    assert!(convert_bytes(CUBE_OBJ.as_bytes(), "CUBE_FX", "cube_quads.obj", &alone).is_err());
 }
