@@ -61,21 +61,10 @@ pub trait Scalar:
     /// The value of `v`: exact for [`Fx`]; for `f32` as [`Fx::to_f32`]
     /// gives it (exact below 2^8 in magnitude).
     fn from_fx(v: Fx) -> Self;
-    /// The value in type `U`: [`Scalar::from_f32`] of an `f32`,
-    /// [`Scalar::from_fx`] of an [`Fx`] (the identity where `U` is `Self`).
-    /// How the vertex stage reads mesh data stored in either type
-    /// ([`Mesh`](crate::mesh::Mesh)).
-    ///
-    /// ```
-    /// use microraster::math::{Fx, Scalar};
-    /// assert_eq!(0.5f32.to_scalar::<Fx>(), Fx::from_f32(0.5));
-    /// assert_eq!(Fx::from_f32(0.25).to_scalar::<f32>(), 0.25);
-    /// assert_eq!(1.5f32.to_scalar::<f32>(), 1.5);
-    /// ```
-    fn to_scalar<U: Scalar>(self) -> U;
     /// [`Vec3::from_data`](super::Vec3::from_data): for `f32` data the
     /// very call [`Vec3::from_f32`](super::Vec3::from_f32) (the vertex
-    /// stage's code and its counts as before 16.16 data).
+    /// stage's code and its counts as before 16.16 data), for [`Fx`] data
+    /// [`Scalar::from_fx`] of each component.
     #[doc(hidden)]
     fn vec3_to<U: Scalar>(v: [Self; 3]) -> super::Vec3<U>;
     /// Square root; negative inputs give 0.
@@ -144,10 +133,6 @@ impl Scalar for f32 {
     #[inline]
     fn from_fx(v: Fx) -> Self {
         v.to_f32()
-    }
-    #[inline(always)]
-    fn to_scalar<U: Scalar>(self) -> U {
-        U::from_f32(self)
     }
     #[inline(always)]
     fn vec3_to<U: Scalar>(v: [f32; 3]) -> super::Vec3<U> {

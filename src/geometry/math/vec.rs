@@ -66,9 +66,16 @@ impl<T: Scalar> Vec3<T> {
         Vec3::new(T::from_f32(v[0]), T::from_f32(v[1]), T::from_f32(v[2]))
     }
 
-    /// From components stored as `f32` or [`Fx`](super::Fx)
-    /// ([`Scalar::to_scalar`]; [`Vec3::from_f32`] for `f32`): how the
-    /// vertex stage reads a mesh in either type.
+    /// From components stored as `f32` ([`Vec3::from_f32`]) or
+    /// [`Fx`](super::Fx) ([`Scalar::from_fx`]): how the vertex stage reads
+    /// a mesh in either type.
+    ///
+    /// ```
+    /// use microraster::math::{Fx, Scalar, Vec3};
+    /// let v = Vec3::<Fx>::from_data([0.5f32, -1.0, 2.0]);
+    /// assert_eq!(v, Vec3::<Fx>::from_f32([0.5, -1.0, 2.0]));
+    /// assert_eq!(Vec3::<f32>::from_data([Fx::from_f32(0.25); 3]), Vec3::new(0.25, 0.25, 0.25));
+    /// ```
     #[inline(always)]
     pub fn from_data<P: Scalar>(v: [P; 3]) -> Self {
         P::vec3_to(v)

@@ -233,7 +233,7 @@ fn new_vertices(st: &State<'_>, tri: [u16; 3]) -> usize {
 }
 
 fn centroid<P: Scalar>(mesh: &Mesh<'_, P>, tri: [u16; 3]) -> [f32; 3] {
-    let p = tri.map(|v| mesh.positions[usize::from(v)].map(P::to_f32));
+    let p = tri.map(|v| mesh.point_f32(v));
     [0, 1, 2].map(|k| (p[0][k] + p[1][k] + p[2][k]) / 3.0)
 }
 
@@ -316,7 +316,7 @@ fn nearest<P: Scalar>(st: &State<'_>, mesh: &Mesh<'_, P>, point: [f32; 3]) -> Op
 fn reach2<P: Scalar>(mesh: &Mesh<'_, P>) -> f32 {
     let mut area = 0.0f32;
     for i in 0..mesh.indices.len() {
-        let p = mesh.indices[i].map(|v| mesh.positions[usize::from(v)].map(P::to_f32));
+        let p = mesh.indices[i].map(|v| mesh.point_f32(v));
         let n = cross(sub(p[1], p[0]), sub(p[2], p[0]));
         area += sqrt(dot(n, n)) * 0.5;
     }

@@ -111,12 +111,9 @@ pub const SPHERE_TOLERANCE: f32 = 1.0e-5;
 ///
 /// ```
 /// use microraster::math::Fx;
-/// use microraster::mesh::{Mesh, bounding_sphere};
-/// const fn fx(v: [f32; 3]) -> [Fx; 3] {
-///     [Fx::const_from_f32(v[0]), Fx::const_from_f32(v[1]), Fx::const_from_f32(v[2])]
-/// }
-/// const P: [[f32; 3]; 3] = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.25]];
-/// static P_FX: [[Fx; 3]; 3] = [fx(P[0]), fx(P[1]), fx(P[2])];
+/// use microraster::mesh::{Mesh, bounding_sphere, fx_rows};
+/// static P: [[f32; 3]; 3] = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.25]];
+/// static P_FX: [[Fx; 3]; 3] = fx_rows(&P);
 /// let mesh = Mesh::new_fx(&P_FX, &[], &[[0, 1, 2]], bounding_sphere(&P));
 /// assert_eq!(mesh.validate(), Ok(()));
 /// ```
@@ -195,6 +192,11 @@ impl<P> Mesh<'_, P> {
 }
 
 impl<'a, P: Scalar> Mesh<'a, P> {
+    /// Position `v` as `f32` (exact for 16.16 data below 2^8; `v` in range).
+    pub(crate) fn point_f32(&self, v: u16) -> [f32; 3] {
+        self.positions[usize::from(v)].map(P::to_f32)
+    }
+
     /// The data as the checks read it (`f32` rows of either storage type).
     pub(crate) fn data(&self) -> MeshData<'a> {
         MeshData {

@@ -123,10 +123,6 @@ impl Scalar for Fx {
         v
     }
     #[inline(always)]
-    fn to_scalar<U: Scalar>(self) -> U {
-        U::from_fx(self)
-    }
-    #[inline(always)]
     fn vec3_to<U: Scalar>(v: [Fx; 3]) -> crate::math::Vec3<U> {
         crate::math::Vec3::new(U::from_fx(v[0]), U::from_fx(v[1]), U::from_fx(v[2]))
     }

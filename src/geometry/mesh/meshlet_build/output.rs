@@ -37,7 +37,7 @@ impl Output<'_> {
         let members = &self.vertices[c.vo..c.vo + c.verts];
         let mut points = [[0.0; 3]; MAX_MESHLET_VERTICES];
         for (p, &v) in points.iter_mut().zip(members) {
-            *p = mesh.positions[usize::from(v)].map(P::to_f32);
+            *p = mesh.point_f32(v);
             st.local[usize::from(v)] = 0;
         }
         let Some(slot) = self.meshlets.get_mut(self.clusters - 1) else { return Ok(()) };
