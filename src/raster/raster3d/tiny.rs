@@ -37,6 +37,18 @@
 //!   on the plane path but without its planes' rounding: inside the derived
 //!   bound of `tests/integration/perspective.rs`.
 //!
+//!   Most pixels take a shortcut with the same result: the screen-linear
+//!   value `V_a = Σ E_i·c_i / det` lies within
+//!   `Δ = (c_max − c_min)/2 · (q_max − q_min)/q_min` of the
+//!   perspective-correct one `V_p` (below), so where `V_a`'s own rounding
+//!   is more than `Δ` from a tie, `V_p` rounds to the same channel, and that
+//!   is taken from `V_a`'s one 32-bit quotient ([`PerspFactors::slack`]).
+//!   Bound: with `b_i = E_i/det` (summing to 1) and `Q = Σ b_j·q_j`,
+//!   `V_p − V_a = Σ b_i·c_i·(q_i/Q − 1) = Σ b_i·(c_i − c̄)·(q_i/Q − 1)` for
+//!   any `c̄` (the weights `b_i·(q_i/Q − 1)` sum to 0); with `c̄` the middle
+//!   of the channel's range and `Q ≥ q_min`, each `|c_i − c̄| ≤ (c_max −
+//!   c_min)/2` and `|q_i/Q − 1| ≤ (q_max − q_min)/q_min`.
+//!
 //! Both depend on the triangle and the pixel only, so any band height gives
 //! the same pixels. Where the exact value lies within those bounds of a
 //! rounding tie, a code or channel can differ by one from what the plane
@@ -51,7 +63,7 @@ use crate::Interpolate;
 use crate::band::BandView;
 use crate::depth::{DepthFormat, DepthState};
 use crate::edge::small::Small;
-use crate::math::divisor::{divrem_small_quotient, mul_u16_u32};
+use crate::math::divisor::{ARMV6M, divrem_small_quotient, mul_u16_u32};
 
 /// Triangles with a determinant below this are drawn here (module docs).
 const DET_LIMIT: i32 = 1 << 16;
@@ -130,7 +142,12 @@ fn draw_with<C, F, M, D, const S: u32, const W: usize>(
             }
         }
         *p = if M::PERSPECTIVE && !tri.flat {
-            shade_perspective::<C>(persp.get_or_insert_with(|| PerspFactors::new(tri)), w)
+            shade_perspective::<C, S>(
+                tri,
+                persp.get_or_insert_with(|| PerspFactors::new::<C, S>(tri, det)),
+                w,
+                det,
+            )
         } else {
             shade::<C, S>(tri, w, det)
         };
@@ -138,36 +155,90 @@ fn draw_with<C, F, M, D, const S: u32, const W: usize>(
 }
 
 /// The per-triangle part of the perspective-correct colour (module docs):
-/// the normalised `q_i` (below 2^23) and each channel's `c_ik·q_i` (below
-/// 2^31, as `c_ik ≤ 255`). Made once per triangle, not per pixel (it was
-/// about half of that colour's per-pixel instructions on the Cortex-M4F).
+/// the normalised `q_i` (below 2^23) and the shortcut's slack. Made once
+/// per triangle, at its first pixel that passes the depth test (none for a
+/// hidden triangle).
 #[derive(Clone, Copy)]
 struct PerspFactors {
     q: [u32; 3],
-    cq: [[u32; 3]; 3],
+    /// `T ≥ 2·det·Δ` (module docs) for the shortcut: at a pixel whose
+    /// screen-linear numerator `x = 2·Σ w_i·c_i + det` leaves a remainder
+    /// `r` by `2·det` with `T ≤ r < 2·det − T`, the channel is `⌊x / 2·det⌋`.
+    /// `u32::MAX` where `T` is not below `det` (hardly a pixel could take
+    /// it), or where a channel exceeds its type's largest value.
+    slack: u32,
 }
 
 impl PerspFactors {
+    /// The factors of `tri` (twice its area `det`) for colour type `C`.
     #[inline(never)]
-    fn new<const S: u32>(tri: &ScreenTriangle<S>) -> Self {
+    fn new<C: Interpolate, const S: u32>(tri: &ScreenTriangle<S>, det: u32) -> Self {
         let q = normalised_q(tri, Q_BITS).map(|q| q as u32);
-        let cq = [0, 1, 2].map(|k| [0, 1, 2].map(|i| tri.v[i].color[k] as u32 * q[i]));
-        PerspFactors { q, cq }
+        let (q_min, q_max) = (q[0].min(q[1]).min(q[2]), q[0].max(q[1]).max(q[2]));
+        // The widest channel range. On the Cortex-M0 a channel beyond its
+        // type's largest value (a hand-made triangle's) turns the shortcut
+        // off: its division by steps needs the quotient in range (a
+        // hardware division does not).
+        let max = C::CHANNEL_MAX;
+        let (mut c_range, mut in_range) = (0u32, true);
+        for k in 0..3 {
+            let c = tri.v.map(|v| u32::from(v.color[k]));
+            let hi = c[0].max(c[1]).max(c[2]);
+            c_range = c_range.max(hi - c[0].min(c[1]).min(c[2]));
+            in_range &= !ARMV6M || hi <= u32::from(max[k]);
+        }
+        // 2·det·Δ = det·c_range·(q_max − q_min)/q_min, below 2^16·2^8·2^23:
+        // divided by the power of two at or below q_min (≥ 1), rounded up.
+        let num = u64::from(det * c_range) * u64::from(q_max - q_min);
+        let k = 31 - q_min.max(1).leading_zeros();
+        let t = (num + (1u64 << k) - 1) >> k;
+        let slack = if in_range && t < u64::from(det) { t as u32 } else { u32::MAX };
+        PerspFactors { q, slack }
     }
 }
 
-/// The perspective-correct Gouraud colour at the pixel whose barycentric
-/// coordinates are `w / det`: channel `k` is `Σ w_i·c_ik·q_i / Σ w_i·q_i`
-/// rounded half up (module docs), the sums below 2^47 and 2^39 exactly in
-/// `u64` as products of `w_i < 2^16` and the triangle's factors, the three
-/// quotients sharing one normalised divisor ([`SmallDivisor`]).
+/// The perspective-correct Gouraud colour of `tri` at the pixel whose
+/// barycentric coordinates are `w / det`: channel `k` is
+/// `Σ w_i·c_ik·q_i / Σ w_i·q_i` rounded half up (module docs). Where every
+/// channel's screen-linear rounding is farther than `Δ` from a tie, that
+/// rounding (the same channels, module docs); else the sums, below 2^47
+/// and 2^39, exactly in `u64` as products of `w_i < 2^16` and `c_ik·q_i`
+/// (below 2^31), the three quotients sharing one normalised divisor
+/// ([`SmallDivisor`]).
 #[inline(never)]
-fn shade_perspective<C: Interpolate>(f: &PerspFactors, w: [u32; 3]) -> C {
+fn shade_perspective<C: Interpolate, const S: u32>(
+    tri: &ScreenTriangle<S>,
+    f: &PerspFactors,
+    w: [u32; 3],
+    det: u32,
+) -> C {
     let max = C::CHANNEL_MAX;
-    let dot = |v: &[u32; 3]| (0..3).map(|i| w[i] as u64 * v[i] as u64).sum::<u64>();
-    let d = dot(&f.q);
+    let c = |k: usize| tri.v.map(|v| u32::from(v.color[k]));
+    if f.slack != u32::MAX {
+        let (d2, t) = (2 * det, f.slack);
+        let (mut out, mut sure) = ([0u8; 3], true);
+        for k in 0..3 {
+            if max[k] > 0 {
+                // Σ w_i·c_i ≤ det·max < 2^24: as the affine channel.
+                let c = c(k);
+                let x = 2 * (w[0] * c[0] + w[1] * c[1] + w[2] * c[2]) + det;
+                let (q, r) = channel_divrem(x, d2, max[k]);
+                sure &= r >= t && r < d2 - t;
+                out[k] = q as u8;
+            }
+        }
+        if sure {
+            return C::from_channels(out);
+        }
+    }
+    let q = f.q;
+    let dot = |v: [u32; 3]| (0..3).map(|i| w[i] as u64 * v[i] as u64).sum::<u64>();
+    let d = dot(q);
     let div = SmallDivisor::new(2 * d);
-    let channel = |k: usize| if max[k] == 0 { 0 } else { div.quotient(2 * dot(&f.cq[k]) + d) as u8 };
+    let channel = |k: usize| {
+        let c = c(k);
+        if max[k] == 0 { 0 } else { div.quotient(2 * dot([0, 1, 2].map(|i| c[i] * q[i])) + d) as u8 }
+    };
     C::from_channels([channel(0), channel(1), channel(2)])
 }
 
@@ -215,6 +286,16 @@ fn channel_quotient(x: u32, d: u32, max: u8) -> u32 {
         0..=31 => divrem_small_quotient::<5>(x, d).0,
         32..=63 => divrem_small_quotient::<6>(x, d).0,
         _ => divrem_small_quotient::<8>(x, d).0,
+    }
+}
+
+/// [`channel_quotient`] with its remainder.
+#[inline(always)]
+fn channel_divrem(x: u32, d: u32, max: u8) -> (u32, u32) {
+    match max {
+        0..=31 => divrem_small_quotient::<5>(x, d),
+        32..=63 => divrem_small_quotient::<6>(x, d),
+        _ => divrem_small_quotient::<8>(x, d),
     }
 }
 
@@ -370,10 +451,88 @@ mod tests {
             let a = (next(&mut seed) >> 40) as u32 % (det + 1);
             let b = (next(&mut seed) >> 40) as u32 % (det - a + 1);
             let w = [[a, b, det - a - b], [det, 0, 0], [0, 0, det]][(i % 3) as usize];
-            let f = PerspFactors::new(&tri);
-            assert_eq!(shade_perspective::<Rgb888>(&f, w), reference::<Rgb888>(&tri, w), "{tri:?} {w:?}");
-            assert_eq!(shade_perspective::<Rgb565>(&f, w), reference::<Rgb565>(&tri, w), "{tri:?} {w:?}");
+            let f = PerspFactors::new::<Rgb888, 4>(&tri, det);
+            assert_eq!(
+                shade_perspective::<Rgb888, 4>(&tri, &f, w, det),
+                reference::<Rgb888>(&tri, w),
+                "{tri:?} {w:?}"
+            );
+            let f = PerspFactors::new::<Rgb565, 4>(&tri, det);
+            assert_eq!(
+                shade_perspective::<Rgb565, 4>(&tri, &f, w, det),
+                reference::<Rgb565>(&tri, w),
+                "{tri:?} {w:?}"
+            );
         }
         assert!(rounded > 20_000, "{rounded} triangles with 1/w rounded by the normalisation");
+    }
+
+    /// The screen-linear shortcut gives the perspective-correct channels
+    /// (the per-pixel formula), for `1/w` that differ by up to a few
+    /// percent (as across a mesh's tiny triangles) and every kind of
+    /// colour: taken at most pixels, and near enough to ties that a bound
+    /// any smaller would show.
+    #[test]
+    fn screen_linear_shortcut_gives_the_perspective_channels() {
+        fn reference<C: Interpolate>(tri: &ScreenTriangle<4>, w: [u32; 3]) -> C {
+            let q = normalised_q(tri, super::Q_BITS).map(|q| q as u64);
+            let w = w.map(|w| w as u64);
+            let d = w[0] * q[0] + w[1] * q[1] + w[2] * q[2];
+            let channel = |k: usize| {
+                let c = [0, 1, 2].map(|i| tri.v[i].color[k] as u64);
+                let n = w[0] * c[0] * q[0] + w[1] * c[1] * q[1] + w[2] * c[2] * q[2];
+                ((2 * n + d) / (2 * d)) as u8
+            };
+            C::from_channels([channel(0), channel(1), channel(2)])
+        }
+        /// Whether the pixel's channels differ between the screen-linear and
+        /// the perspective-correct rounding.
+        fn differs(tri: &ScreenTriangle<4>, w: [u32; 3], det: u32) -> bool {
+            let q = normalised_q(tri, super::Q_BITS).map(|q| q as u64);
+            let w = w.map(|w| w as u64);
+            let d = w[0] * q[0] + w[1] * q[1] + w[2] * q[2];
+            (0..3).any(|k| {
+                let c = [0, 1, 2].map(|i| tri.v[i].color[k] as u64);
+                let n = w[0] * c[0] * q[0] + w[1] * c[1] * q[1] + w[2] * c[2] * q[2];
+                let a = w[0] * c[0] + w[1] * c[1] + w[2] * c[2];
+                (2 * n + d) / (2 * d) != (2 * a + det as u64) / (2 * det as u64)
+            })
+        }
+        let mut seed = 0x5_4C07_C07u64;
+        let (mut taken, mut samples, mut differ) = (0u32, 0u32, 0u32);
+        for i in 0..300_000u32 {
+            // 1/w of any magnitude, the three within 2^-(4..20) of each other.
+            let base = (next(&mut seed) >> (33 + i % 20)) as u32 | 1 << 8;
+            let spread = 4 + (i / 3) % 17;
+            let inv_w = [0u32; 3].map(|_| base + ((next(&mut seed) >> 40) as u32 % ((base >> spread) + 1)));
+            let r = next(&mut seed);
+            let rgb888 = i % 2 == 0;
+            let max = if rgb888 { [255u64; 3] } else { [31, 63, 31] };
+            let v = |k: u32| ScreenVertex::<4> {
+                pos: SubPoint::ORIGIN,
+                depth: 0,
+                inv_w: inv_w[k as usize],
+                color: [0, 1, 2].map(|ch| ((r >> (8 * k + 24 * ch as u32 / 2)) % (max[ch] + 1)) as u8),
+            };
+            let tri = ScreenTriangle { v: [v(0), v(1), v(2)], flat: false };
+            let det = [(next(&mut seed) >> 48) as u32 % 0xFFFF + 1, 2 + i % 60][(i % 2) as usize];
+            let a = (next(&mut seed) >> 40) as u32 % (det + 1);
+            let b = (next(&mut seed) >> 40) as u32 % (det - a + 1);
+            let w = [[a, b, det - a - b], [det, 0, 0], [a, det - a, 0]][(i % 3) as usize];
+            let (slack, ok) = if rgb888 {
+                let f = PerspFactors::new::<Rgb888, 4>(&tri, det);
+                (f.slack, shade_perspective::<Rgb888, 4>(&tri, &f, w, det) == reference::<Rgb888>(&tri, w))
+            } else {
+                let f = PerspFactors::new::<Rgb565, 4>(&tri, det);
+                (f.slack, shade_perspective::<Rgb565, 4>(&tri, &f, w, det) == reference::<Rgb565>(&tri, w))
+            };
+            assert!(ok, "{tri:?} {w:?} det {det}");
+            samples += 1;
+            taken += (slack != u32::MAX) as u32;
+            differ += differs(&tri, w, det) as u32;
+        }
+        // Most triangles allow the shortcut, and the screen-linear rounding
+        // alone is wrong often enough that the tie test must hold it back.
+        assert!(taken > samples / 2 && differ > samples / 200, "{taken} of {samples}, {differ} differ");
     }
 }
