@@ -181,11 +181,11 @@ impl PerspFactors {
         // hardware division does not).
         let max = C::CHANNEL_MAX;
         let (mut c_range, mut in_range) = (0u32, true);
-        for k in 0..3 {
+        for (k, &max) in max.iter().enumerate() {
             let c = tri.v.map(|v| u32::from(v.color[k]));
             let hi = c[0].max(c[1]).max(c[2]);
             c_range = c_range.max(hi - c[0].min(c[1]).min(c[2]));
-            in_range &= !ARMV6M || hi <= u32::from(max[k]);
+            in_range &= !ARMV6M || hi <= u32::from(max);
         }
         // 2·det·Δ = det·c_range·(q_max − q_min)/q_min, below 2^16·2^8·2^23:
         // divided by the power of two at or below q_min (≥ 1), rounded up.
@@ -498,7 +498,7 @@ mod tests {
                 (2 * n + d) / (2 * d) != (2 * a + det as u64) / (2 * det as u64)
             })
         }
-        let mut seed = 0x5_4C07_C07u64;
+        let mut seed = 0x54C0_7C07_u64;
         let (mut taken, mut samples, mut differ) = (0u32, 0u32, 0u32);
         for i in 0..300_000u32 {
             // 1/w of any magnitude, the three within 2^-(4..20) of each other.
