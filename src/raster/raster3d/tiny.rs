@@ -154,13 +154,11 @@ fn draw_with<C, F, M, D, const S: u32, const W: usize>(
     });
 }
 
-/// The per-triangle part of the perspective-correct colour (module docs):
-/// the normalised `q_i` (below 2^23) and the shortcut's slack. Made once
-/// per triangle, at its first pixel that passes the depth test (none for a
-/// hidden triangle).
+/// The per-triangle part of the perspective-correct colour: the slack of
+/// the screen-linear shortcut (module docs). Made once per triangle, at its
+/// first pixel that passes the depth test (none for a hidden triangle).
 #[derive(Clone, Copy)]
 struct PerspFactors {
-    q: [u32; 3],
     /// `T ≥ 2·det·Δ` (module docs) for the shortcut: at a pixel whose
     /// screen-linear numerator `x = 2·Σ w_i·c_i + det` leaves a remainder
     /// `r` by `2·det` with `T ≤ r < 2·det − T`, the channel is `⌊x / 2·det⌋`.
@@ -171,10 +169,20 @@ struct PerspFactors {
 
 impl PerspFactors {
     /// The factors of `tri` (twice its area `det`) for colour type `C`.
+    ///
+    /// `Δ` is bounded from the vertices' `1/w` values `a_i` as they are,
+    /// not normalised (only a pixel that misses the shortcut needs the
+    /// normalised `q_i`): [`normalised_q`] scales them by `2^-k` (`k`
+    /// the bits of the largest beyond 23, else 0, an exact scaling) and
+    /// rounds each to within 1/2, so `q_max − q_min ≤ (a_max − a_min +
+    /// e)/2^k` and `q_min ≥ (a_min − e/2)/2^k`, with `e = 2^k` for `k > 0`
+    /// and 0 for `k = 0`.
     #[inline(never)]
     fn new<C: Interpolate, const S: u32>(tri: &ScreenTriangle<S>, det: u32) -> Self {
-        let q = normalised_q(tri, Q_BITS).map(|q| q as u32);
-        let (q_min, q_max) = (q[0].min(q[1]).min(q[2]), q[0].max(q[1]).max(q[2]));
+        let a = tri.v.map(|v| v.inv_w);
+        let (a_min, a_max) = (a[0].min(a[1]).min(a[2]), a[0].max(a[1]).max(a[2]));
+        let k = (32 - a_max.leading_zeros()).saturating_sub(Q_BITS);
+        let e = if k > 0 { 1u64 << k } else { 0 };
         // The widest channel range. On the Cortex-M0 a channel beyond its
         // type's largest value (a hand-made triangle's) turns the shortcut
         // off: its division by steps needs the quotient in range (a
@@ -187,13 +195,17 @@ impl PerspFactors {
             c_range = c_range.max(hi - c[0].min(c[1]).min(c[2]));
             in_range &= !ARMV6M || hi <= u32::from(max);
         }
-        // 2·det·Δ = det·c_range·(q_max − q_min)/q_min, below 2^16·2^8·2^23:
-        // divided by the power of two at or below q_min (≥ 1), rounded up.
-        let num = u64::from(det * c_range) * u64::from(q_max - q_min);
-        let k = 31 - q_min.max(1).leading_zeros();
+        // 2·det·Δ ≤ det·c_range·(a_max − a_min + e)/(a_min − e/2), the
+        // product below 2^16·2^8·(2^32 + 2^9): divided by the power of two
+        // at or below the divisor, rounded up.
+        let den = u64::from(a_min).saturating_sub(e / 2);
+        if !in_range || den == 0 {
+            return PerspFactors { slack: u32::MAX };
+        }
+        let num = u64::from(det * c_range) * (u64::from(a_max - a_min) + e);
+        let k = 63 - den.leading_zeros();
         let t = (num + (1u64 << k) - 1) >> k;
-        let slack = if in_range && t < u64::from(det) { t as u32 } else { u32::MAX };
-        PerspFactors { q, slack }
+        PerspFactors { slack: if t < u64::from(det) { t as u32 } else { u32::MAX } }
     }
 }
 
@@ -231,7 +243,7 @@ fn shade_perspective<C: Interpolate, const S: u32>(
             return C::from_channels(out);
         }
     }
-    let q = f.q;
+    let q = normalised_q(tri, Q_BITS).map(|q| q as u32);
     let dot = |v: [u32; 3]| (0..3).map(|i| w[i] as u64 * v[i] as u64).sum::<u64>();
     let d = dot(q);
     let div = SmallDivisor::new(2 * d);
