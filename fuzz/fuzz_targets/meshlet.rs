@@ -31,7 +31,7 @@ use microraster_fuzz::Input;
 fuzz_target!(|data: &[u8]| {
     let mut inp = Input::new(data);
     let nv = 3 + usize::from(inp.u8()) % 64;
-    let raw = inp.u8() % 4 == 0;
+    let raw = inp.u8().is_multiple_of(4);
     let positions: Vec<[f32; 3]> = (0..nv)
         .map(|_| [(); 3].map(|()| if raw { inp.f32() } else { f32::from(inp.u8() as i8) / 16.0 }))
         .collect();
@@ -45,7 +45,7 @@ fuzz_target!(|data: &[u8]| {
         }
         _ => (0..nv).map(|_| [inp.f32(), inp.f32(), inp.f32()]).collect(),
     };
-    let bad = inp.u8() % 8 == 0;
+    let bad = inp.u8().is_multiple_of(8);
     let range = nv as u16 + if bad { 2 } else { 0 };
     let nt = 1 + usize::from(inp.u8()) % 100;
     let indices: Vec<[u16; 3]> = (0..nt).map(|_| [(); 3].map(|()| inp.u16() % range)).collect();

@@ -63,7 +63,8 @@ fuzz_target!(|data: &[u8]| {
 
 fn run<T: Scalar, const S: u32>(inp: &mut Input) {
     let dims = [0u32, 1, 2, 3, 7, 16, 40, 63, 64, 65, 100, 4095, 4096, 4097, u32::MAX];
-    let pick_dim = |inp: &mut Input| if inp.u8() % 4 == 0 { inp.u32() % 5000 } else { inp.pick(&dims) };
+    let pick_dim =
+        |inp: &mut Input| if inp.u8().is_multiple_of(4) { inp.u32() % 5000 } else { inp.pick(&dims) };
     let (width, height) = (pick_dim(inp), pick_dim(inp));
     let size_ok = (1..=4096).contains(&width) && (1..=4096).contains(&height);
 
@@ -213,7 +214,7 @@ fn run<T: Scalar, const S: u32>(inp: &mut Input) {
         );
         p = p.with_lighting(l);
     }
-    if inp.u8() % 4 == 0 {
+    if inp.u8().is_multiple_of(4) {
         let a = i32::from(inp.u8()) - 20;
         p.rows = Some((a, a + i32::from(inp.u8() as i8)));
     }
@@ -227,7 +228,8 @@ fn run<T: Scalar, const S: u32>(inp: &mut Input) {
     let tris = 1 + usize::from(inp.u8() % 4);
     let indices: Vec<[u16; 3]> = (0..tris)
         .map(|_| {
-            let idx = |inp: &mut Input| u16::from(inp.u8()) % (n as u16 + u16::from(inp.u8() % 16 == 0));
+            let idx =
+                |inp: &mut Input| u16::from(inp.u8()) % (n as u16 + u16::from(inp.u8().is_multiple_of(16)));
             [idx(inp), idx(inp), idx(inp)]
         })
         .collect();

@@ -15,7 +15,7 @@ pub(super) fn vec3<T: Scalar>(inp: &mut Input) -> ([f32; 3], Vec3<T>) {
 
 pub(super) fn small(inp: &mut Input) -> f32 {
     // Mostly moderate values so that something is visible; sometimes extreme.
-    if inp.u8() % 8 == 0 { inp.f32() } else { (inp.u8() as i8) as f32 / 16.0 }
+    if inp.u8().is_multiple_of(8) { inp.f32() } else { (inp.u8() as i8) as f32 / 16.0 }
 }
 
 pub(super) fn matrix<T: Scalar>(inp: &mut Input) -> Mat4<T> {
