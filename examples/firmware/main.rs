@@ -5,10 +5,10 @@
 //! * On a bare-metal Cortex-M target (`target_os = "none"`) it is a
 //!   `#![no_std]` `#![no_main]` program: output and exit status go through
 //!   semihosting (QEMU, or a debug probe), and a panic exits with failure.
-//!   thumbv7em-none-eabihf (Cortex-M4F) runs the [`workload::m4f`]
-//!   configuration and the fragment-stage scene ([`fragment`]: textures,
+//!   thumbv7em-none-eabihf (Cortex-M4F) runs the `workload::m4f`
+//!   configuration and the fragment-stage scene (`fragment`: textures,
 //!   per-pixel lighting, translucency, 2 × 2 supersampling),
-//!   thumbv6m-none-eabi (Cortex-M0) [`workload::m0`].
+//!   thumbv6m-none-eabi (Cortex-M0) `workload::m0`.
 //! * On the host it prints the same lines for `m4f`, `m0` or (no argument)
 //!   both: the reference the QEMU runs must match.
 //!

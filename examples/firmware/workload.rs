@@ -9,7 +9,7 @@
 //! Two configurations:
 //!
 //! * [`m4f`] (Cortex-M4F, STM32F405 class, 128 KB RAM): the standard 2D scene
-//!   through [`Renderer::render`], and the standard 3D scene ([`Scene3d`],
+//!   through [`Renderer::render`](microraster::Renderer::render), and the standard 3D scene ([`Scene3d`](microraster_scenes::scenes3d::Scene3d),
 //!   meshes in flash) with the vertex stage run once per frame (every visible
 //!   triangle binned, then `Triangles3d`), once on the `f32` vertex
 //!   path and once on the fixed-point [`Fx`] path; 320 × 240 `Rgb565`, 16-row

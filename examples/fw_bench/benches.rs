@@ -6,7 +6,7 @@
 //! Adding a configuration is one line in [`M4F`] or [`M0`]: a name (the
 //! scene) and a [`Work`] (what runs). 2D scenes are any
 //! [`scenes::Scene`] function (`fn(width, height, sink)`); 3D work runs the
-//! standard scene ([`Scene3d`]) on a vertex path ([`Vertex`]) with a colour
+//! standard scene ([`Scene3d`](microraster_scenes::scenes3d::Scene3d)) on a vertex path ([`Vertex`]) with a colour
 //! interpolation ([`Interp`]).
 //!
 //! The buffers are those of the CRC firmware (`examples/firmware/workload.rs`):
@@ -45,16 +45,16 @@ pub type Scene2d = scenes::Scene<Rgb565, S>;
 pub enum Vertex {
     /// `f32` (hardware floating point on the Cortex-M4F, soft float on the M0).
     F32,
-    /// 16.16 fixed point ([`Fx`]).
+    /// 16.16 fixed point ([`Fx`](microraster::math::Fx)).
     Fx,
 }
 
 /// Colour interpolation of the 3D scene.
 #[derive(Clone, Copy, Debug)]
 pub enum Interp {
-    /// Screen-space linear ([`Affine`]).
+    /// Screen-space linear ([`Affine`](microraster::raster3d::Affine)).
     Affine,
-    /// Perspective-correct ([`PerspectiveCorrect`]).
+    /// Perspective-correct ([`PerspectiveCorrect`](microraster::raster3d::PerspectiveCorrect)).
     Perspective,
 }
 
@@ -65,7 +65,7 @@ pub enum Work {
     /// Every other row includes this cost.
     Clear,
     /// A 2D scene collected once into the primitive buffer, then
-    /// [`Renderer::render`]. Scene generation is outside the timed frame.
+    /// [`Renderer::render`](microraster::Renderer::render). Scene generation is outside the timed frame.
     Frame2d(Scene2d),
     /// A 2D scene generated again for every band and drawn straight into it
     /// (no primitive storage; generation is inside the timed frame).
@@ -73,11 +73,11 @@ pub enum Work {
     /// The standard 3D scene's vertex stage alone, once per frame, into the
     /// frame's bins (nothing rasterized).
     Vertex3d(Vertex),
-    /// [`Work::Vertex3d`] with a vertex cache ([`Scene3d::draw_cached`]:
+    /// [`Work::Vertex3d`] with a vertex cache ([`Scene3d::draw_cached`](microraster_scenes::scenes3d::Scene3d::draw_cached):
     /// each vertex transformed, snapped and lit once; `f32` only, Cortex-M4F).
     Vertex3dCached,
     /// [`Work::Vertex3dCached`] with a cache of 64 vertices, one meshlet
-    /// cluster's ([`ClusterCache`]): the meshes in chunks of their
+    /// cluster's ([`ClusterCache`](microraster::pipeline::ClusterCache)): the meshes in chunks of their
     /// triangles, each vertex once per chunk (`f32`, Cortex-M4F).
     Vertex3dChunked,
     /// The whole `f32` affine frame of [`Work::Frame3d`] with the vertex
@@ -91,12 +91,12 @@ pub enum Work {
     /// `PerBand3d`: the vertex stage once per band.
     PerBand3d(Vertex, Interp),
     /// The 20k-triangle knot ([`knot_mesh::KNOT`]) through the meshlet stage:
-    /// `Direct3d` with [`Pipeline::draw_meshlets`] per
+    /// `Direct3d` with [`Pipeline::draw_meshlets`](microraster::pipeline::Pipeline::draw_meshlets) per
     /// band, no bins. Its triangle count is the mesh's (instructions per
     /// mesh triangle).
     Meshlets(Vertex, Interp),
     /// [`Work::Meshlets`] in `f32` with the specular term's viewer at
-    /// infinity ([`Viewer::Infinite`]: one half vector per mesh, as
+    /// infinity ([`Viewer::Infinite`](microraster::light::Viewer::Infinite): one half vector per mesh, as
     /// OpenGL's default light model and TGX light): the same frame but for
     /// the highlights.
     MeshletsFar(Interp),
@@ -107,7 +107,7 @@ pub enum Work {
     KnotStage(Vertex, Stage),
     /// What bands of other heights would buy (on request, `knot20k-rows`):
     /// the `f32` vertex stage of [`Work::Meshlets`] for bands of this many
-    /// rows ([`Pipeline::meshlet_triangles`] per band, triangles only
+    /// rows ([`Pipeline::meshlet_triangles`](microraster::pipeline::Pipeline::meshlet_triangles) per band, triangles only
     /// counted, no band buffer or band loop). 240 rows: one band, the
     /// vertex work of a framebuffer renderer on the same meshlets.
     #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
@@ -128,10 +128,10 @@ pub enum Work {
 #[derive(Clone, Copy, Debug)]
 pub enum Stage {
     /// The band loop and the meshlet vertex stage
-    /// ([`Pipeline::meshlet_triangles`]); triangles are only counted.
+    /// ([`Pipeline::meshlet_triangles`](microraster::pipeline::Pipeline::meshlet_triangles)); triangles are only counted.
     Vertex,
     /// [`Stage::Vertex`] and each triangle's coverage in the band
-    /// ([`TriangleSpans`]), covered pixels counted.
+    /// ([`TriangleSpans`](microraster::edge::TriangleSpans)), covered pixels counted.
     Coverage,
     /// The whole frame with a depth test that never passes: coverage,
     /// each covered pixel's depth (per pixel for tiny triangles, from

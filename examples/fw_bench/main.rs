@@ -1,5 +1,5 @@
 //! Firmware benchmark: instructions per frame of each configuration in
-//! [`benches::M4F`] / [`benches::M0`], measured under QEMU's instruction
+//! `benches::M4F` / `benches::M0`, measured under QEMU's instruction
 //! counting, with the stack high-water mark of each frame.
 //!
 //! `bash scripts/firmware.sh table` builds it for both targets, runs it under

@@ -1,5 +1,5 @@
 //! Cortex-M instruction counts of the speed/accuracy report's configurations
-//! ([`configs::LIST`], each under its report key), for `docs/data/cortex-m.tsv`.
+//! (`configs::LIST`, each under its report key), for `docs/data/cortex-m.tsv`.
 //!
 //! `bash scripts/firmware.sh sweep` builds this for `thumbv7em-none-eabihf`
 //! (Cortex-M4F, hardware `f32`) and `thumbv6m-none-eabi` (Cortex-M0: soft

@@ -20,8 +20,8 @@ use super::knot_mesh;
 use super::{Sink, Stage, TALL_48, TALL_240};
 use crate::workload::{ANGLE, DEPTH_STATE, S};
 
-/// [`Work::KnotTall`]. Not inlined: its frames' locals would enlarge
-/// [`frame`]'s stack frame, and so every row's stack figure.
+/// [`Work::KnotTall`](super::Work::KnotTall). Not inlined: its frames' locals would enlarge
+/// [`frame`](super::frame())'s stack frame, and so every row's stack figure.
 #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
 #[inline(never)]
 pub(super) fn knot_tall<const W: usize>(
@@ -38,7 +38,7 @@ pub(super) fn knot_tall<const W: usize>(
     }
 }
 
-/// [`Work::KnotVertexRows`]: the knot's `f32` vertex stage for bands of
+/// [`Work::KnotVertexRows`](super::Work::KnotVertexRows): the knot's `f32` vertex stage for bands of
 /// `rows` rows, each band's triangles only counted (not inlined, as
 /// [`knot_tall`]).
 #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
@@ -63,7 +63,7 @@ pub(super) fn knot_vertex_rows<const W: usize>(
     Ok(())
 }
 
-/// [`Work::KnotStage`]: the knot's frame up to `stage`.
+/// [`Work::KnotStage`](super::Work::KnotStage): the knot's frame up to `stage`.
 #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
 pub(super) fn knot_stage<T: Scalar, const W: usize, const H: usize>(
     r: Renderer<Rgb565>,
