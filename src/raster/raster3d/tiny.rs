@@ -421,6 +421,24 @@ mod tests {
         }
     }
 
+    /// The perspective-correct colour by the per-pixel formula: `Σ w_i·c_i·q_i
+    /// / Σ w_i·q_i` with the normalised `q_i`, rounded half up by a plain
+    /// `u64` division.
+    fn reference<C: Interpolate>(tri: &ScreenTriangle<4>, w: [u32; 3]) -> C {
+        let q = normalised_q(tri, super::Q_BITS).map(|q| q as u64);
+        let w = w.map(|w| w as u64);
+        let d = w[0] * q[0] + w[1] * q[1] + w[2] * q[2];
+        let channel = |k: usize| {
+            if C::CHANNEL_MAX[k] == 0 {
+                return 0;
+            }
+            let c = [0, 1, 2].map(|i| tri.v[i].color[k] as u64);
+            let n = w[0] * c[0] * q[0] + w[1] * c[1] * q[1] + w[2] * c[2] * q[2];
+            ((2 * n + d) / (2 * d)) as u8
+        };
+        C::from_channels([channel(0), channel(1), channel(2)])
+    }
+
     /// The perspective-correct colour from the triangle's factors is the
     /// per-pixel formula it replaced: `Σ w_i·c_ik·q_i / Σ w_i·q_i` with the
     /// normalised `q_i`, rounded half up by a plain `u64` division, for
@@ -428,20 +446,6 @@ mod tests {
     /// weights up to a determinant below 2^16.
     #[test]
     fn perspective_factors_give_the_per_pixel_formula() {
-        fn reference<C: Interpolate>(tri: &ScreenTriangle<4>, w: [u32; 3]) -> C {
-            let q = normalised_q(tri, super::Q_BITS).map(|q| q as u64);
-            let w = w.map(|w| w as u64);
-            let d = w[0] * q[0] + w[1] * q[1] + w[2] * q[2];
-            let channel = |k: usize| {
-                if C::CHANNEL_MAX[k] == 0 {
-                    return 0;
-                }
-                let c = [0, 1, 2].map(|i| tri.v[i].color[k] as u64);
-                let n = w[0] * c[0] * q[0] + w[1] * c[1] * q[1] + w[2] * c[2] * q[2];
-                ((2 * n + d) / (2 * d)) as u8
-            };
-            C::from_channels([channel(0), channel(1), channel(2)])
-        }
         let mut seed = 0x05EE_D0FC_0105_u64;
         let mut rounded = 0;
         for i in 0..200_000u32 {
@@ -486,17 +490,6 @@ mod tests {
     /// any smaller would show.
     #[test]
     fn screen_linear_shortcut_gives_the_perspective_channels() {
-        fn reference<C: Interpolate>(tri: &ScreenTriangle<4>, w: [u32; 3]) -> C {
-            let q = normalised_q(tri, super::Q_BITS).map(|q| q as u64);
-            let w = w.map(|w| w as u64);
-            let d = w[0] * q[0] + w[1] * q[1] + w[2] * q[2];
-            let channel = |k: usize| {
-                let c = [0, 1, 2].map(|i| tri.v[i].color[k] as u64);
-                let n = w[0] * c[0] * q[0] + w[1] * c[1] * q[1] + w[2] * c[2] * q[2];
-                ((2 * n + d) / (2 * d)) as u8
-            };
-            C::from_channels([channel(0), channel(1), channel(2)])
-        }
         /// Whether the pixel's channels differ between the screen-linear and
         /// the perspective-correct rounding.
         fn differs(tri: &ScreenTriangle<4>, w: [u32; 3], det: u32) -> bool {
