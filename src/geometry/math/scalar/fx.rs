@@ -4,8 +4,8 @@
 
 use super::Scalar;
 use super::fx_bits::{
-    div_round_u64_u32, fx_bits_from_f32, fx_bits_from_f32_int, mul_bits_in_range, saturating_div_bits,
-    saturating_mul_bits,
+    div_round_u64_u32, f32_from_fx_bits, fx_bits_from_f32, fx_bits_from_f32_int, mul_bits_in_range,
+    saturating_div_bits, saturating_mul_bits,
 };
 use core::ops::{Add, Div, Mul, Neg, Sub};
 use fixed::types::I16F16;
@@ -115,8 +115,10 @@ impl Scalar for Fx {
     fn from_f32(v: f32) -> Self {
         Fx::from_bits(fx_bits_from_f32(v))
     }
+    /// The nearest `f32`, ties to even ([`f32_from_fx_bits`]).
+    #[inline]
     fn to_f32(self) -> f32 {
-        self.0.to_num::<f32>()
+        f32_from_fx_bits(self.to_bits())
     }
     #[inline(always)]
     fn from_fx(v: Fx) -> Self {
@@ -282,6 +284,41 @@ mod tests {
         }
         // Not vacuous: most rows fit, and some come near the range's end.
         assert!(n > 100_000 && near > 1_000, "{n} {near}");
+    }
+
+    /// `to_f32` is the `fixed` crate's conversion, bit for bit, in both forms
+    /// (hardware and integer): over every
+    /// magnitude, both signs, the extremes, and the values with more than
+    /// 24 significant bits, where the conversion rounds (ties included).
+    #[test]
+    fn to_f32_is_the_fixed_crates_conversion() {
+        let mut rng = crate::math::vec::tests::Rng(0x70F3_2B17);
+        let check = |b: i32| {
+            let want = I16F16::from_bits(b).to_num::<f32>().to_bits();
+            assert_eq!(Fx::from_bits(b).to_f32().to_bits(), want, "{b}");
+            assert_eq!(super::super::fx_bits::f32_from_fx_bits_int(b).to_bits(), want, "{b}");
+        };
+        for b in
+            [0, 1, -1, i32::MIN, i32::MAX, i32::MIN + 1, 1 << 24, (1 << 24) + 1, (1 << 25) + 2, (1 << 25) + 6]
+        {
+            check(b);
+            check(b.wrapping_neg());
+        }
+        let mut rounded = 0;
+        for i in 0..1_000_000u32 {
+            let r = rng.next();
+            let b = (r as i32) >> (i % 32);
+            check(b);
+            // Ties: the bit below the kept 24 set, the rest clear.
+            let lz = (b.unsigned_abs() | 1).leading_zeros();
+            if lz < 8 {
+                rounded += 1;
+                let k = 8 - lz;
+                let tie = ((b >> k) << k) | (1 << (k - 1));
+                check(tie);
+            }
+        }
+        assert!(rounded > 100_000, "{rounded}");
     }
 
     #[test]
