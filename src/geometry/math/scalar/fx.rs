@@ -115,7 +115,8 @@ impl Scalar for Fx {
     fn from_f32(v: f32) -> Self {
         Fx::from_bits(fx_bits_from_f32(v))
     }
-    /// The nearest `f32`, ties to even ([`f32_from_fx_bits`]).
+    /// The nearest `f32`, ties to even (bit-identical to the `fixed`
+    /// crate's `to_num::<f32>`, without its 64-bit normalisation).
     #[inline]
     fn to_f32(self) -> f32 {
         f32_from_fx_bits(self.to_bits())
