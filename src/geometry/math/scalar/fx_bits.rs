@@ -196,6 +196,8 @@ pub(super) fn f32_from_fx_bits_int(bits: i32) -> f32 {
     let mant = if top <= 23 {
         m << (23 - top)
     } else {
+        // Rounded by its remainder, not by `shr_round_even`: `m` reaches
+        // 2^31, beyond that helper's no-overflow range (below 2^24).
         let k = top - 23; // 1..=8
         let (q, r, half) = (m >> k, m & ((1 << k) - 1), 1 << (k - 1));
         q + u32::from(r > half || (r == half && q & 1 == 1))
