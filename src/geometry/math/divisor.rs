@@ -18,11 +18,13 @@
 
 mod fx_divisor;
 mod m0_arith;
+mod small;
 
 pub use fx_divisor::FxDivisor;
 pub(crate) use m0_arith::{
     ARMV6M, divrem_small_quotient, leading_zeros_u32, mul_u16_u32, mul_wide_u32, mul_wide_u32_by,
 };
+pub(crate) use small::SmallDivisor;
 
 /// `2^23`: from here on every `f32` is an integer.
 pub(crate) const TWO23: f32 = 8_388_608.0;

@@ -15,6 +15,7 @@ use core::ops::{Add, Div, Mul, Neg, Sub};
 
 mod fx;
 mod fx_bits;
+pub(crate) use fx_bits::HARD_FLOAT;
 
 pub use fx::Fx;
 

@@ -137,7 +137,7 @@ pub(crate) fn fx_bits_from_f32(v: f32) -> i32 {
 /// True where `f32` arithmetic is in hardware: everywhere but ARM without
 /// the hard-float ABI (the Cortex-M0, M3; there a float operation is a
 /// library call and the integer form below is cheaper).
-const HARD_FLOAT: bool = cfg!(any(not(target_arch = "arm"), target_abi = "eabihf"));
+pub(crate) const HARD_FLOAT: bool = cfg!(any(not(target_arch = "arm"), target_abi = "eabihf"));
 
 /// [`fx_bits_from_f32`] with floating-point operations (a handful of
 /// instructions with an FPU, against about 50 for the integer form):

@@ -19,12 +19,18 @@
 //! of the channel's range and `Q ≥ q_min`, each `|c_i − c̄| ≤ (c_max −
 //! c_min)/2` and `|q_i/Q − 1| ≤ (q_max − q_min)/q_min`.
 //!
+//! A triangle whose three vertices have the same colour `c` (a quarter of
+//! the knot's) is that colour at every pixel, with no division:
+//! `Σ E_i·c·q_i / Σ E_i·q_i = c` exactly, and the exact sums round it to
+//! `⌊(2·c·d + d) / 2d⌋ = c` ([`PerspFactors::uniform`]).
+//!
 //! Both depend on the triangle and the pixel only, so any band height gives
 //! the same pixels.
 
 use super::super::{Q_BITS, ScreenTriangle, normalised_q};
 use crate::Interpolate;
-use crate::math::divisor::{ARMV6M, divrem_small_quotient};
+use crate::math::divisor::{ARMV6M, SmallDivisor, divrem_small_quotient};
+use crate::math::scalar::HARD_FLOAT;
 
 /// The per-triangle part of the perspective-correct colour: the slack of
 /// the screen-linear shortcut (module docs). Made once per triangle, at its
@@ -37,6 +43,9 @@ pub(super) struct PerspFactors {
     /// `u32::MAX` where `T` is not below `det` (hardly a pixel could take
     /// it), or where a channel exceeds its type's largest value.
     slack: u32,
+    /// The vertices' colours are the same: every pixel is that colour
+    /// (module docs).
+    uniform: bool,
 }
 
 impl PerspFactors {
@@ -51,10 +60,14 @@ impl PerspFactors {
     /// and 0 for `k = 0`.
     #[inline(never)]
     pub(super) fn new<C: Interpolate, const S: u32>(tri: &ScreenTriangle<S>, det: u32) -> Self {
+        let [c0, c1, c2] = tri.v.map(|v| v.color);
+        if c0 == c1 && c1 == c2 {
+            return PerspFactors { slack: 0, uniform: true };
+        }
         let a = tri.v.map(|v| v.inv_w);
         let (a_min, a_max) = (a[0].min(a[1]).min(a[2]), a[0].max(a[1]).max(a[2]));
         let k = (32 - a_max.leading_zeros()).saturating_sub(Q_BITS);
-        let e = if k > 0 { 1u64 << k } else { 0 };
+        let e = if k > 0 { 1u32 << k } else { 0 };
         // The widest channel range. On the Cortex-M0 a channel beyond its
         // type's largest value (a hand-made triangle's) turns the shortcut
         // off: its division by steps needs the quotient in range (a
@@ -67,18 +80,40 @@ impl PerspFactors {
             c_range = c_range.max(hi - c[0].min(c[1]).min(c[2]));
             in_range &= !ARMV6M || hi <= u32::from(max);
         }
-        // 2·det·Δ ≤ det·c_range·(a_max − a_min + e)/(a_min − e/2), the
-        // product below 2^16·2^8·(2^32 + 2^9): divided by the power of two
-        // at or below the divisor, rounded up.
-        let den = u64::from(a_min).saturating_sub(e / 2);
+        // 2·det·Δ ≤ det·c_range·(a_max − a_min + e)/(a_min − e/2).
+        let den = a_min.saturating_sub(e / 2);
         if !in_range || den == 0 {
-            return PerspFactors { slack: u32::MAX };
+            return PerspFactors { slack: u32::MAX, uniform: false };
         }
-        let num = u64::from(det * c_range) * (u64::from(a_max - a_min) + e);
-        let k = 63 - den.leading_zeros();
-        let t = (num + (1u64 << k) - 1) >> k;
-        PerspFactors { slack: if t < u64::from(det) { t as u32 } else { u32::MAX } }
+        let (x, d) = (det * c_range, a_max - a_min);
+        let slack = if HARD_FLOAT { slack_float(x, d, e, den, det) } else { slack_int(x, d, e, den, det) };
+        PerspFactors { slack, uniform: false }
     }
+}
+
+/// A whole `T ≥ x·(d + e)/den`, or `u32::MAX` where it would not be below
+/// `det` (`x < 2^24`, `e ≤ 2^9`, `0 < den`): the product, below
+/// `2^24·(2^32 + 2^9)`, divided in `u64` by the power of two at or below
+/// `den` and rounded up (at most twice the bound).
+#[inline(always)]
+fn slack_int(x: u32, d: u32, e: u32, den: u32, det: u32) -> u32 {
+    let num = u64::from(x) * (u64::from(d) + u64::from(e));
+    let k = 31 - den.leading_zeros();
+    let t = (num + (1u64 << k) - 1) >> k;
+    if t < u64::from(det) { t as u32 } else { u32::MAX }
+}
+
+/// [`slack_int`]'s bound with an FPU: the quotient in `f32`, raised by
+/// `1 + 2^-20`, then truncated plus one. Five roundings to nearest (`d`,
+/// the sum, the product, `den`, the quotient; `x` and `e` are exact) leave
+/// the quotient at least `(1 − 2^-24)^5 / (1 + 2^-24) > 1 − 2^-21.4` of
+/// `x·(d + e)/den`, and the raise (itself rounded, `1 − 2^-24`) lifts it
+/// above: `T > x·(d + e)/den`, within a few units of it.
+#[inline(always)]
+fn slack_float(x: u32, d: u32, e: u32, den: u32, det: u32) -> u32 {
+    const RAISE: f32 = 1.0 + 1.0 / 1_048_576.0;
+    let t = x as f32 * (d as f32 + e as f32) / den as f32 * RAISE;
+    if t < det as f32 { t as u32 + 1 } else { u32::MAX }
 }
 
 /// The perspective-correct Gouraud colour of `tri` at the pixel whose
@@ -97,6 +132,11 @@ pub(super) fn shade_perspective<C: Interpolate, const S: u32>(
     det: u32,
 ) -> C {
     let max = C::CHANNEL_MAX;
+    if f.uniform {
+        // A channel the type lacks is 0, as the sums below make it.
+        let c = tri.v[0].color;
+        return C::from_channels([0, 1, 2].map(|k| if max[k] == 0 { 0 } else { c[k] }));
+    }
     let c = |k: usize| tri.v.map(|v| u32::from(v.color[k]));
     if f.slack != u32::MAX {
         let (d2, t) = (2 * det, f.slack);
@@ -136,65 +176,57 @@ fn channel_divrem(x: u32, d: u32, max: u8) -> (u32, u32) {
     }
 }
 
-/// `⌊x / y⌋` for `0 < y < 2^48` and `x / y < 2^9`, exactly, with one 32-bit
-/// division ([`SmallDivisor`]).
-#[cfg(test)]
-fn small_quotient(x: u64, y: u64) -> u32 {
-    SmallDivisor::new(y).quotient(x)
-}
-
-/// A divisor `0 < y < 2^48` of quotients below 2^9, prepared once for
-/// several: `y`'s top 16 bits plus one (so the estimate is not above the
-/// quotient) divide `x` shifted alike, which is within `513 / 2^15` of
-/// `x / y` below it, and one correction step finishes.
-#[derive(Clone, Copy)]
-struct SmallDivisor {
-    y: u64,
-    s: u32,
-    yh: u32,
-}
-
-impl SmallDivisor {
-    #[inline(always)]
-    fn new(y: u64) -> Self {
-        let s = (64 - y.leading_zeros()).saturating_sub(16);
-        SmallDivisor { y, s, yh: (y >> s) as u32 + (s > 0) as u32 }
-    }
-
-    /// `⌊x / y⌋` for `x / y < 2^9`, exactly.
-    #[inline(always)]
-    fn quotient(&self, x: u64) -> u32 {
-        // y >> s < 2^16, and x >> s < 2^9·((y >> s) + 1) ≤ 2^25.
-        let q = (x >> self.s) as u32 / self.yh;
-        // q ≤ x / y, so x − q·y ≥ 0, and below 2y.
-        if x - q as u64 * self.y >= self.y { q + 1 } else { q }
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::super::tests::next;
-    use super::{PerspFactors, shade_perspective, small_quotient};
+    use super::{PerspFactors, shade_perspective, slack_float, slack_int};
     use crate::raster3d::{ScreenTriangle, ScreenVertex, normalised_q};
     use crate::{Interpolate, SubPoint};
     use embedded_graphics_core::pixelcolor::{Rgb565, Rgb888};
 
+    /// Both slack forms bound `x·(d + e)/den` from above (the shortcut's
+    /// proof needs that) and stay close to it: the float form within two
+    /// units, the power-of-two form within twice the bound plus one. The
+    /// quotients are put just above whole numbers, where the float form's
+    /// roundings would fall below the bound without its raise.
     #[test]
-    fn small_quotient_is_the_u64_division() {
-        let mut seed = 0x9E37_79B9_7F4A_7C15u64;
-        for i in 0..300_000u32 {
-            let seed = next(&mut seed);
-            // Divisors of every size up to 2^48, quotients up to 2^9 − 1.
-            let y = (seed >> (16 + i % 48)).max(1);
-            let y = [y, 1, (1 << 48) - 1, 1 << 16, (1 << 16) - 1, (1 << 16) + 1][(i % 6) as usize];
-            let q = (seed >> 7) % 512;
-            let x = match i % 3 {
-                0 => q * y + (seed >> 11) % y,
-                1 => q * y + y - 1,
-                _ => q * y,
-            };
-            assert_eq!(small_quotient(x, y) as u64, x / y, "{x} / {y}");
+    fn slack_bounds_the_quotient_from_above() {
+        let mut seed = 0x51AC_C0DE_u64;
+        let mut checked = 0;
+        for i in 0..1_000_000u32 {
+            let det = ((next(&mut seed) >> 48) as u32).max(2);
+            let x = ((next(&mut seed) >> 40) as u32).max(1); // below 2^24
+            let e = if i % 3 == 0 { 0 } else { 1u32 << (1 + i % 9) };
+            let n = (next(&mut seed) >> 40) % u64::from(det) + 1;
+            let den = (next(&mut seed) >> 32).max(1 << 12);
+            // y = d + e, the smallest with x·y ≥ n·den: the quotient just above n.
+            let y = (n * den).div_ceil(u64::from(x));
+            let Some(d) = y.checked_sub(u64::from(e)).and_then(|d| u32::try_from(d).ok()) else { continue };
+            let (num, den) = (u128::from(x) * (u128::from(d) + u128::from(e)), den as u32);
+            let det_u = u128::from(det);
+            let float = slack_float(x, d, e, den, det);
+            if float == u32::MAX {
+                assert!(num > (det_u - 1) * u128::from(den), "{x} {d} {e} {den} {det}");
+            } else {
+                let t = u128::from(float);
+                assert!(
+                    t * u128::from(den) >= num && t.saturating_sub(2) * u128::from(den) <= num,
+                    "{x} {d} {e} {den} {det}: {t}"
+                );
+            }
+            let int = slack_int(x, d, e, den, det);
+            if int == u32::MAX {
+                assert!(2 * num > (det_u - 1) * u128::from(den), "{x} {d} {e} {den} {det}");
+            } else {
+                let t = u128::from(int);
+                assert!(
+                    t * u128::from(den) >= num && t.saturating_sub(1) * u128::from(den) <= 2 * num,
+                    "{x} {d} {e} {den}: {t}"
+                );
+            }
+            checked += (float != u32::MAX) as u32;
         }
+        assert!(checked > 100_000, "{checked} bounds below det");
     }
 
     /// The perspective-correct colour by the per-pixel formula: `Σ w_i·c_i·q_i
@@ -223,18 +255,22 @@ mod tests {
     #[test]
     fn perspective_factors_give_the_per_pixel_formula() {
         let mut seed = 0x05EE_D0FC_0105_u64;
-        let mut rounded = 0;
+        let (mut rounded, mut uniform) = (0, 0);
         for i in 0..200_000u32 {
             let r = next(&mut seed);
             let inv_w = [0u32, 1, 2].map(|k| {
                 let v = (next(&mut seed) >> (33 + (k + i) % 31)) as u32;
                 [v.max(1), u32::MAX, 1, v | 1 << 31][((i / 7 + k) % 4) as usize]
             });
+            // One triangle in five of one colour (the uniform case).
             let v = |k: u32| ScreenVertex::<4> {
                 pos: SubPoint::ORIGIN,
                 depth: 0,
                 inv_w: inv_w[k as usize],
-                color: [(r >> (8 * k)) as u8, (r >> (8 * k + 24)) as u8, (r >> (8 * k + 40)) as u8],
+                color: {
+                    let k = if i % 5 == 0 { 0 } else { k };
+                    [(r >> (8 * k)) as u8, (r >> (8 * k + 24)) as u8, (r >> (8 * k + 40)) as u8]
+                },
             };
             let tri = ScreenTriangle { v: [v(0), v(1), v(2)], flat: false };
             rounded += (tri.v.iter().map(|v| v.inv_w).max().unwrap_or(0) >= 1 << 23) as u32;
@@ -255,8 +291,11 @@ mod tests {
                 reference::<Rgb565>(&tri, w),
                 "{tri:?} {w:?}"
             );
+            uniform += f.uniform as u32;
         }
         assert!(rounded > 20_000, "{rounded} triangles with 1/w rounded by the normalisation");
+        // Uniform triangles, their channels above Rgb565's largest included.
+        assert!(uniform > 30_000, "{uniform} triangles of one colour");
     }
 
     /// The screen-linear shortcut gives the perspective-correct channels
@@ -289,11 +328,15 @@ mod tests {
             let r = next(&mut seed);
             let rgb888 = i % 2 == 0;
             let max = if rgb888 { [255u64; 3] } else { [31, 63, 31] };
+            // One triangle in seven of one colour (the uniform case).
             let v = |k: u32| ScreenVertex::<4> {
                 pos: SubPoint::ORIGIN,
                 depth: 0,
                 inv_w: inv_w[k as usize],
-                color: [0, 1, 2].map(|ch| ((r >> (8 * k + 24 * ch as u32 / 2)) % (max[ch] + 1)) as u8),
+                color: {
+                    let k = if i % 7 == 0 { 0 } else { k };
+                    [0, 1, 2].map(|ch| ((r >> (8 * k + 24 * ch as u32 / 2)) % (max[ch] + 1)) as u8)
+                },
             };
             let tri = ScreenTriangle { v: [v(0), v(1), v(2)], flat: false };
             let det = [(next(&mut seed) >> 48) as u32 % 0xFFFF + 1, 2 + i % 60][(i % 2) as usize];
