@@ -229,6 +229,12 @@ mod tests {
         assert!(checked > 100_000, "{checked} bounds below det");
     }
 
+    /// A vertex of `1/w` `inv_w` and colour `color` (position and depth
+    /// do not enter the colour).
+    fn vertex(inv_w: u32, color: [u8; 3]) -> ScreenVertex<4> {
+        ScreenVertex { pos: SubPoint::ORIGIN, depth: 0, inv_w, color }
+    }
+
     /// The perspective-correct colour by the per-pixel formula: `Σ w_i·c_i·q_i
     /// / Σ w_i·q_i` with the normalised `q_i`, rounded half up by a plain
     /// `u64` division.
@@ -263,14 +269,12 @@ mod tests {
                 [v.max(1), u32::MAX, 1, v | 1 << 31][((i / 7 + k) % 4) as usize]
             });
             // One triangle in five of one colour (the uniform case).
-            let v = |k: u32| ScreenVertex::<4> {
-                pos: SubPoint::ORIGIN,
-                depth: 0,
-                inv_w: inv_w[k as usize],
-                color: {
-                    let k = if i % 5 == 0 { 0 } else { k };
-                    [(r >> (8 * k)) as u8, (r >> (8 * k + 24)) as u8, (r >> (8 * k + 40)) as u8]
-                },
+            let v = |k: u32| {
+                let c = if i % 5 == 0 { 0 } else { k };
+                vertex(
+                    inv_w[k as usize],
+                    [(r >> (8 * c)) as u8, (r >> (8 * c + 24)) as u8, (r >> (8 * c + 40)) as u8],
+                )
             };
             let tri = ScreenTriangle { v: [v(0), v(1), v(2)], flat: false };
             rounded += (tri.v.iter().map(|v| v.inv_w).max().unwrap_or(0) >= 1 << 23) as u32;
@@ -329,14 +333,12 @@ mod tests {
             let rgb888 = i % 2 == 0;
             let max = if rgb888 { [255u64; 3] } else { [31, 63, 31] };
             // One triangle in seven of one colour (the uniform case).
-            let v = |k: u32| ScreenVertex::<4> {
-                pos: SubPoint::ORIGIN,
-                depth: 0,
-                inv_w: inv_w[k as usize],
-                color: {
-                    let k = if i % 7 == 0 { 0 } else { k };
-                    [0, 1, 2].map(|ch| ((r >> (8 * k + 24 * ch as u32 / 2)) % (max[ch] + 1)) as u8)
-                },
+            let v = |k: u32| {
+                let c = if i % 7 == 0 { 0 } else { k };
+                vertex(
+                    inv_w[k as usize],
+                    [0, 1, 2].map(|ch| ((r >> (8 * c + 24 * ch as u32 / 2)) % (max[ch] + 1)) as u8),
+                )
             };
             let tri = ScreenTriangle { v: [v(0), v(1), v(2)], flat: false };
             let det = [(next(&mut seed) >> 48) as u32 % 0xFFFF + 1, 2 + i % 60][(i % 2) as usize];
