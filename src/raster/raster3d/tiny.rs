@@ -174,17 +174,24 @@ fn depth_code(n: u64, d: u32) -> u32 {
     divrem_small_quotient::<16>(m, d).0
 }
 
-/// `⌊x / d⌋` for a channel of largest value `max`: `x < d·(max + 1)` and
-/// `0 < d < 2^17` (so the quotient is at most `max`). Its restoring steps
-/// on the Cortex-M0 are as many as `max` has bits (5 or 6 for RGB565, not
-/// 8); `max` is a colour type's constant, so the choice folds away.
+/// `(⌊x / d⌋, x mod d)` for a channel of largest value `max`, with
+/// `x < d·(max + 1)` and `0 < d < 2^17` (so the quotient is at most
+/// `max`). Its restoring steps on the Cortex-M0 are as many as `max` has
+/// bits (5 or 6 for RGB565, not 8); `max` is a colour type's constant, so
+/// the choice folds away.
+#[inline(always)]
+fn channel_divrem(x: u32, d: u32, max: u8) -> (u32, u32) {
+    match max {
+        0..=31 => divrem_small_quotient::<5>(x, d),
+        32..=63 => divrem_small_quotient::<6>(x, d),
+        _ => divrem_small_quotient::<8>(x, d),
+    }
+}
+
+/// [`channel_divrem`]'s quotient (the remainder, unused, folds away).
 #[inline(always)]
 fn channel_quotient(x: u32, d: u32, max: u8) -> u32 {
-    match max {
-        0..=31 => divrem_small_quotient::<5>(x, d).0,
-        32..=63 => divrem_small_quotient::<6>(x, d).0,
-        _ => divrem_small_quotient::<8>(x, d).0,
-    }
+    channel_divrem(x, d, max).0
 }
 
 #[cfg(test)]

@@ -28,8 +28,9 @@
 //! the same pixels.
 
 use super::super::{Q_BITS, ScreenTriangle, normalised_q};
+use super::channel_divrem;
 use crate::Interpolate;
-use crate::math::divisor::{ARMV6M, SmallDivisor, divrem_small_quotient};
+use crate::math::divisor::{ARMV6M, SmallDivisor};
 use crate::math::scalar::HARD_FLOAT;
 
 /// The per-triangle part of the perspective-correct colour: the slack of
@@ -164,16 +165,6 @@ pub(super) fn shade_perspective<C: Interpolate, const S: u32>(
         if max[k] == 0 { 0 } else { div.quotient(2 * dot([0, 1, 2].map(|i| c[i] * q[i])) + d) as u8 }
     };
     C::from_channels([channel(0), channel(1), channel(2)])
-}
-
-/// [`channel_quotient`](super::channel_quotient) with its remainder.
-#[inline(always)]
-fn channel_divrem(x: u32, d: u32, max: u8) -> (u32, u32) {
-    match max {
-        0..=31 => divrem_small_quotient::<5>(x, d),
-        32..=63 => divrem_small_quotient::<6>(x, d),
-        _ => divrem_small_quotient::<8>(x, d),
-    }
 }
 
 #[cfg(test)]
