@@ -2,13 +2,6 @@
 //! perspective-correct colour of a tiny triangle divides three channel sums
 //! by one sum of weights), with one 32-bit division each.
 
-/// `⌊x / y⌋` for `0 < y < 2^48` and `x / y < 2^9`, exactly, with one 32-bit
-/// division ([`SmallDivisor`]).
-#[cfg(test)]
-fn small_quotient(x: u64, y: u64) -> u32 {
-    SmallDivisor::new(y).quotient(x)
-}
-
 /// A divisor `0 < y < 2^48` of quotients below 2^9, prepared once for
 /// several: `y`'s top 16 bits plus one (so the estimate is not above the
 /// quotient) divide `x` shifted alike, which is within `513 / 2^15` of
@@ -56,7 +49,7 @@ mod tests {
                 1 => q * y + y - 1,
                 _ => q * y,
             };
-            assert_eq!(small_quotient(x, y) as u64, x / y, "{x} / {y}");
+            assert_eq!(SmallDivisor::new(y).quotient(x) as u64, x / y, "{x} / {y}");
         }
     }
 }
