@@ -84,6 +84,10 @@ mod firmware {
         static mut CLUSTER_FX: ClusterCache<Fx, S> = ClusterCache::new();
         static mut CHUNK: VertexCache<f32, S, MAX_MESHLET_VERTICES> = VertexCache::new();
         // Taller bands, for the rows that measure what they buy.
+        static mut BAND20: Band<Rgb565, { benches::M4F_SIZE.0 }, { benches::TALL_20 }> =
+            Band::new(BACKGROUND);
+        static mut DEPTH20: DepthBand<Depth16, { benches::M4F_SIZE.0 }, { benches::TALL_20 }> =
+            DepthBand::zeroed();
         static mut BAND48: Band<Rgb565, { benches::M4F_SIZE.0 }, { benches::TALL_48 }> =
             Band::new(BACKGROUND);
         static mut DEPTH48: DepthBand<Depth16, { benches::M4F_SIZE.0 }, { benches::TALL_48 }> =
@@ -93,8 +97,14 @@ mod firmware {
         static mut DEPTH240: DepthBand<Depth16, { benches::M4F_SIZE.0 }, { benches::TALL_240 }> =
             DepthBand::zeroed();
         let cluster = Some((CLUSTER, CLUSTER_FX));
-        let tall =
-            Some(benches::Tall { band48: BAND48, depth48: DEPTH48, band240: BAND240, depth240: DEPTH240 });
+        let tall = Some(benches::Tall {
+            band20: BAND20,
+            depth20: DEPTH20,
+            band48: BAND48,
+            depth48: DEPTH48,
+            band240: BAND240,
+            depth240: DEPTH240,
+        });
         let (cache, chunk) = (Some(CACHE), Some(CHUNK));
         let b = Buffers { prims: PRIMS, band: BAND, depth: DEPTH, bins: BINS, cache, cluster, chunk, tall };
         finish(run(benches::M4F, benches::M4F_SIZE.1, b))

@@ -64,6 +64,7 @@ fn records<const W: usize, const H: usize, const N: usize, const P: usize>(
     let mut cache = Box::new(benches::Cache::new());
     let (mut cluster, mut cluster_fx) = (Box::new(ClusterCache::new()), Box::new(ClusterCache::new()));
     let mut chunk = Box::new(VertexCache::new());
+    let (mut band20, mut depth20) = (Box::new(Band::new(BACKGROUND)), Box::new(DepthBand::new()));
     let (mut band48, mut depth48) = (Box::new(Band::new(BACKGROUND)), Box::new(DepthBand::new()));
     let (mut band240, mut depth240) = (Box::new(Band::new(BACKGROUND)), Box::new(DepthBand::new()));
     let mut b: Buffers<'_, W, H, N, P> = Buffers {
@@ -75,6 +76,8 @@ fn records<const W: usize, const H: usize, const N: usize, const P: usize>(
         cluster: Some((&mut cluster, &mut cluster_fx)),
         chunk: Some(&mut chunk),
         tall: Some(benches::Tall {
+            band20: &mut band20,
+            depth20: &mut depth20,
             band48: &mut band48,
             depth48: &mut depth48,
             band240: &mut band240,
@@ -313,9 +316,10 @@ pub fn table(input: &str) -> Result<(String, String), String> {
     for &(t, label) in &targets {
         let run = &runs[t];
         // The symbols are fw_bench's; the CRC firmware has the same buffers
-        // but the taller bands (`BAND48`, `BAND240` and their depth rows).
+        // but the taller bands (`BAND20`, `BAND48`, `BAND240` and their
+        // depth rows).
         let list = |all: bool| {
-            let tall = |k: &str| k.ends_with("48") || k.ends_with("240");
+            let tall = |k: &str| k.ends_with("20") || k.ends_with("48") || k.ends_with("240");
             let b = run.symbols.iter().filter(|(k, _)| all || !tall(k));
             b.map(|(k, v)| format!("{k} {}", group(*v))).collect::<Vec<_>>().join(", ")
         };

@@ -41,6 +41,9 @@ const FW_TALL: [&str; 3] = [
     "knot20k-rows/meshlets-f32-affine-48-row-bands",
     "knot20k-rows/meshlets-f32-affine-one-240-row-band",
 ];
+/// The same frame with 20-row bands, whose buffers fit [`RAM`] (21 rows
+/// would too, in the same 12 bands).
+const FW_TALL_IN_BUDGET: &str = "knot20k-rows/meshlets-f32-affine-20-row-bands";
 const FW_STAGES: [&str; 3] = [
     "knot20k-stages/f32-affine-band-loop-vertex-stage-only",
     "knot20k-stages/f32-affine-coverage-no-planes",
@@ -299,6 +302,18 @@ fn issue12(peers: &[Peer], breakdown: &[Breakdown], counts: &Counts, fw: &FwBenc
                 per(f240.instructions) / PER_TRI_AFFINE,
                 per(v240.instructions),
                 per(a.instructions.saturating_sub(f240.instructions)),
+            );
+        }
+        // The band height is the issue's; what the RAM budget would allow.
+        if let Some(f20) = fw.get("m4f", FW_TALL_IN_BUDGET) {
+            let _ = write!(
+                w,
+                "Taller bands within the {} KB: with 20-row bands ({} B of buffers) the frame takes {:.0} \
+                 instructions per mesh triangle, {:.2}× the budget. ",
+                RAM / 1024,
+                f20.static_ram,
+                per(f20.instructions),
+                per(f20.instructions) / PER_TRI_AFFINE,
             );
         }
         // The lighting model of TGX (and OpenGL's default): one half vector.

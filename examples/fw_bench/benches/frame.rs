@@ -23,7 +23,7 @@ use super::dashboard;
 #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
 use super::knot::{knot_stage, knot_tall, knot_vertex_rows, meshlets};
 use super::scene3d::{cached_vertex_stage, frame3d, per_band3d, vertex3d, vertex3d_per_band};
-use super::{Sink, TALL_48, TALL_240, Work};
+use super::{Sink, TALL_20, TALL_48, TALL_240, Work};
 use crate::workload::{self, DEPTH_STATE, S};
 
 /// Everything a configuration may use; on the target each buffer is its own
@@ -55,6 +55,10 @@ pub struct Buffers<'a, const W: usize, const H: usize, const N: usize, const P: 
 
 /// The colour and depth bands of [`Work::KnotTall`].
 pub struct Tall<'a, const W: usize> {
+    /// [`TALL_20`] rows.
+    pub band20: &'a mut Band<Rgb565, W, TALL_20>,
+    /// Depth rows of `band20`.
+    pub depth20: &'a mut DepthBand<Depth16, W, TALL_20>,
     /// [`TALL_48`] rows.
     pub band48: &'a mut Band<Rgb565, W, TALL_48>,
     /// Depth rows of `band48`.

@@ -17,7 +17,7 @@ use microraster_scenes::scenes3d::Scene3d;
 use super::frame::{Tall, input};
 #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
 use super::knot_mesh;
-use super::{Sink, Stage, TALL_48, TALL_240};
+use super::{Sink, Stage, TALL_20, TALL_48, TALL_240};
 use crate::workload::{ANGLE, DEPTH_STATE, S};
 
 /// [`Work::KnotTall`](super::Work::KnotTall). Not inlined: its frames' locals would enlarge
@@ -32,6 +32,7 @@ pub(super) fn knot_tall<const W: usize>(
     sink: &mut Sink,
 ) -> Result<(), Error> {
     match rows as usize {
+        TALL_20 => meshlets::<f32, _, W, TALL_20>(r, t.band20, t.depth20, cache, Affine, Local, sink),
         TALL_48 => meshlets::<f32, _, W, TALL_48>(r, t.band48, t.depth48, cache, Affine, Local, sink),
         TALL_240 => meshlets::<f32, _, W, TALL_240>(r, t.band240, t.depth240, cache, Affine, Local, sink),
         _ => Err(Error::InvalidParameter),
