@@ -259,8 +259,13 @@ impl<F: DepthFormat, const W: usize, const H: usize> DepthBand<F, W, H> {
 
     fn fill(&mut self, rows: usize, v: F::Storage) {
         if F::ENABLED {
-            for r in &mut self.rows[..rows.min(H)] {
-                r.fill(v);
+            let rows = &mut self.rows[..rows.min(H)];
+            if crate::band::BLOCK_CLEAR {
+                crate::band::clear_run(rows.as_flattened_mut(), v);
+            } else {
+                for r in rows {
+                    r.fill(v);
+                }
             }
         }
     }

@@ -216,9 +216,6 @@ where
     F: DepthFormat,
     M: Interpolation,
 {
-    let mut rows = depth.rows_mut(view.height());
-    for r in rows.iter_mut() {
-        r.fill(F::FAR);
-    }
-    Band3d::new(view, rows, state)
+    depth.clear(view.height());
+    Band3d::new(view, depth.rows_mut(view.height()), state)
 }
