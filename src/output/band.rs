@@ -368,7 +368,9 @@ pub(crate) fn fill_run<C: Copy>(px: &mut [C], c: C) {
 
 #[cfg(test)]
 mod tests {
-    use super::{clear_run, fill_run};
+    use super::{Band, clear_run, fill_run};
+    use embedded_graphics::draw_target::DrawTarget;
+    use embedded_graphics::pixelcolor::{Rgb565, RgbColor};
 
     /// Both fills write `v` to exactly the slice they get, for every
     /// length around their block sizes and every start (the slice inside a
@@ -391,6 +393,20 @@ mod tests {
                         );
                     }
                 }
+            }
+        }
+    }
+
+    /// The embedded-graphics `clear` of a view writes every pixel of the
+    /// view's rows and nothing of the band's other rows.
+    #[test]
+    fn view_clear_writes_exactly_its_rows() {
+        for rows in 0..=5 {
+            let mut band = Band::<Rgb565, 13, 5>::new(Rgb565::RED);
+            let Ok(()) = band.view_uncleared(40, rows).clear(Rgb565::BLACK);
+            for (i, row) in band.rows().iter().enumerate() {
+                let want = if i < rows { Rgb565::BLACK } else { Rgb565::RED };
+                assert!(row.iter().all(|&p| p == want), "{rows} rows: row {i}");
             }
         }
     }

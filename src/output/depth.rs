@@ -259,14 +259,7 @@ impl<F: DepthFormat, const W: usize, const H: usize> DepthBand<F, W, H> {
 
     fn fill(&mut self, rows: usize, v: F::Storage) {
         if F::ENABLED {
-            let rows = &mut self.rows[..rows.min(H)];
-            if crate::band::BLOCK_CLEAR {
-                crate::band::clear_run(rows.as_flattened_mut(), v);
-            } else {
-                for r in rows {
-                    r.fill(v);
-                }
-            }
+            crate::band::clear_rows(&mut self.rows[..rows.min(H)], v);
         }
     }
 

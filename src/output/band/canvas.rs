@@ -13,7 +13,7 @@
 //! Clipping is done in `i64`, so rectangles anywhere in e-g's coordinate
 //! space (even ones whose far corner overflows `i32`) are accepted.
 
-use super::{BandView, fill_run};
+use super::{BandView, clear_rows, fill_run};
 use core::convert::Infallible;
 use embedded_graphics_core::Pixel;
 use embedded_graphics_core::draw_target::DrawTarget;
@@ -119,9 +119,7 @@ impl<C: PixelColor, const W: usize> DrawTarget for BandView<'_, C, W> {
     }
 
     fn clear(&mut self, color: C) -> Result<(), Infallible> {
-        for row in self.rows.iter_mut() {
-            fill_run(row, color);
-        }
+        clear_rows(self.rows, color);
         Ok(())
     }
 }
