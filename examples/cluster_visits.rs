@@ -19,6 +19,10 @@
 //!   `y` scaled by `K` (flatter in model `y`, which this camera's rows
 //!   mostly follow), their visits counted with the real positions.
 
+#[path = "../benches/common/mod.rs"]
+mod common;
+#[path = "../benches/common/knot.rs"]
+mod knot;
 #[path = "common/knot_mesh.rs"]
 mod knot_mesh;
 use knot_mesh::{KNOT_MESHLET_TRIANGLES, KNOT_MESHLET_VERTICES, KNOT_MESHLETS, KNOT_POSITIONS};
@@ -27,14 +31,15 @@ use microraster::mesh::{
     Mesh, Meshlet, bounding_sphere, build_meshlets, meshlet_bound, meshlet_scratch_len, meshlet_vertex_bound,
 };
 
-const H: f32 = 240.0;
+const H: f32 = common::H as f32;
 const BAND: f32 = 16.0;
 
 fn main() {
-    let eye = Vec3::new(0.0f32, 1.9, 5.6);
-    let view = transform::look_at(eye, Vec3::new(0.0, 0.0, 0.0), Vec3::new(0.0, 1.0, 0.0)).unwrap();
-    let mvp =
-        transform::perspective(0.9f32, 320.0 / H, 1.0, 20.0).unwrap() * view * transform::rotation_y(0.6f32);
+    // The benchmark frame's view and model; its projection as
+    // `Scene3d::pipeline` makes it (which keeps the matrix private).
+    let view = common::pipeline3d::<f32, 4>().view();
+    let projection = transform::perspective(0.9f32, common::W as f32 / H, 1.0, 20.0).unwrap();
+    let mvp = projection * view * knot::knot_model::<f32>();
     let mut args = std::env::args().skip(1);
     match args.next().as_deref() {
         Some("flat") => flat(&mvp),
