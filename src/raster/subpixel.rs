@@ -175,7 +175,9 @@ pub(crate) fn snap_f32_bits(v: f32, s: u32) -> Result<i32, Error> {
     if scaled.abs() > (1u32 << 28) as f32 + 0.5 {
         return Err(Error::CoordinateOutOfRange);
     }
-    let truncated = scaled as i64; // toward zero, exact for |scaled| < 2^63
+    // Toward zero, exact: |scaled| < 2^31 (a hardware conversion on an FPU;
+    // an `i64` one is a library call on 32-bit cores).
+    let truncated = scaled as i32;
     let frac = scaled - truncated as f32; // exact: both within 2^29
     let step = if scaled < 0.0 { -1 } else { 1 };
     let rounded = if frac.abs() > 0.5 || (frac.abs() == 0.5 && truncated & 1 == 1) {
@@ -183,7 +185,8 @@ pub(crate) fn snap_f32_bits(v: f32, s: u32) -> Result<i32, Error> {
     } else {
         truncated
     };
-    if in_range(rounded) { Ok(rounded as i32) } else { Err(Error::CoordinateOutOfRange) }
+    // |rounded| ≤ 2^28 + 1: the step cannot overflow.
+    if in_range(i64::from(rounded)) { Ok(rounded) } else { Err(Error::CoordinateOutOfRange) }
 }
 
 #[cfg(test)]

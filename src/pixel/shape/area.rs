@@ -33,8 +33,12 @@ use crate::math::Scalar;
 /// `⌊v⌋` for finite `v` (saturating far outside the frame, where only the
 /// clamp to the clip matters).
 fn floor(v: f32) -> i64 {
-    let t = v as i64; // truncates toward zero, saturates
-    if (t as f32) > v { t - 1 } else { t }
+    // Truncates toward zero, saturating at the `i32` range: beyond it the
+    // clamp gives what the `i64` floor would. Through `i32` the conversions
+    // are instructions of an FPU, not library calls.
+    let t = v as i32;
+    let t64 = i64::from(t);
+    if (t as f32) > v { t64 - 1 } else { t64 }
 }
 
 /// Cells accumulated at once.
@@ -72,10 +76,18 @@ pub(crate) fn cell_share(c: f32, a: f32, b: f32) -> f32 {
 /// `x` (px) of edge `e` at `t` subpixels, `e.y0 ≤ t ≤ e.y1`.
 #[inline]
 fn x_at(x0: i32, y0: i32, x1: i32, y1: i32, t: i64) -> f32 {
-    let den = i64::from(y1) - i64::from(y0);
-    let off = (t - i64::from(y0)) * (i64::from(x1) - i64::from(x0));
+    // Snapped coordinates are within ±2^28: the differences fit `i32`.
+    let den = y1 - y0;
+    let off = (t - i64::from(y0)) * i64::from(x1 - x0);
+    // An `i64` converts to `f32` by a library call on 32-bit cores; through
+    // `i32` where it fits (nearly always: a shape's size squared in
+    // subpixels), by one instruction with an FPU, rounded the same.
+    let off = match i32::try_from(off) {
+        Ok(o) => o as f32,
+        Err(_) => off as f32,
+    };
     // x0 + off/den in subpixels; the division is exact to f32 rounding.
-    (x0 as f32 + off as f32 / den as f32) * INV_ONE
+    (x0 as f32 + off / den as f32) * INV_ONE
 }
 
 fn alpha(v: f32, rule: FillRule) -> u8 {
@@ -105,6 +117,7 @@ pub(crate) fn scan<F: FnMut(Span, u8), const N: usize>(
     let hi = super::scan::div_ceil(i64::from(y_max), ONE).min(i64::from(clip.y1())) as i32;
     let mut pieces = [Piece::default(); N];
     let mut active = Active::<N>::new();
+    let mut cells = Cells { area: [0.0; CHUNK], start: [0.0; CHUNK + 1] };
     for y in lo..hi {
         let (s0, s1) = (i64::from(y) * ONE, i64::from(y + 1) * ONE);
         let (mut n, mut min_x, mut max_x) = (0, f32::INFINITY, f32::NEG_INFINITY);
@@ -116,7 +129,8 @@ pub(crate) fn scan<F: FnMut(Span, u8), const N: usize>(
             }
             let (xa, xb) = (x_at(e.x0, e.y0, e.x1, e.y1, t0), x_at(e.x0, e.y0, e.x1, e.y1, t1));
             let (a, b) = if xa <= xb { (xa, xb) } else { (xb, xa) };
-            pieces[n] = Piece { a, b, h: f32::from(e.dir) * ((t1 - t0) as f32 * INV_ONE) };
+            // 0 < t1 - t0 ≤ ONE: converted through `i32`, exactly.
+            pieces[n] = Piece { a, b, h: e.dir as f32 * ((t1 - t0) as i32 as f32 * INV_ONE) };
             n += 1;
             min_x = min_x.min(a);
             max_x = max_x.max(b);
@@ -126,18 +140,27 @@ pub(crate) fn scan<F: FnMut(Span, u8), const N: usize>(
         }
         let x_lo = floor(min_x).clamp(i64::from(clip.x0()), i64::from(clip.x1())) as i32;
         let x_hi = (floor(max_x) + 1).clamp(i64::from(clip.x0()), i64::from(clip.x1())) as i32;
-        row(&pieces[..n], y, x_lo, x_hi, rule, runs);
+        row(&pieces[..n], y, (x_lo, x_hi), rule, &mut cells, runs);
     }
     runs.flush();
+}
+
+/// One chunk's accumulators: each cell's partial area, and the winding
+/// change entering at each cell. Kept by the caller and zeroed only for a
+/// chunk an edge touches: most chunks of a large shape (its inside, or
+/// the hole of a ring) are one coverage and need neither.
+struct Cells {
+    area: [f32; CHUNK],
+    start: [f32; CHUNK + 1],
 }
 
 /// Columns `x_lo..x_hi` of row `y`, chunk by chunk.
 fn row<F: FnMut(Span, u8)>(
     pieces: &[Piece],
     y: i32,
-    x_lo: i32,
-    x_hi: i32,
+    (x_lo, x_hi): (i32, i32),
     rule: FillRule,
+    Cells { area, start }: &mut Cells,
     runs: &mut Runs<F>,
 ) {
     let mut c0 = x_lo;
@@ -145,13 +168,16 @@ fn row<F: FnMut(Span, u8)>(
         let len = (x_hi - c0).min(CHUNK as i32);
         let (f0, f1) = (c0 as f32, (c0 + len) as f32);
         let mut base = 0.0f32;
-        let mut area = [0.0f32; CHUNK];
-        let mut start = [0.0f32; CHUNK + 1];
         let mut touched = false;
         for p in pieces {
             if p.b <= f0 {
                 base += p.h;
             } else if p.a < f1 {
+                if !touched {
+                    // The cells this chunk reads: area[..len], start[..=len].
+                    area[..len as usize].fill(0.0);
+                    start[..=len as usize].fill(0.0);
+                }
                 touched = true;
                 // Cells floor(a)..=floor(b) can be partial; those after it are covered.
                 let k_lo = (floor(p.a).max(i64::from(c0)) - i64::from(c0)) as usize;

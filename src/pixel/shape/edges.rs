@@ -32,13 +32,16 @@ pub const BITS: u32 = 4;
 
 /// One non-horizontal edge, stored top to bottom (`y0 < y1`) in subpixel
 /// units; `dir` is `+1` if the contour ran downwards, `-1` if upwards.
+/// `dir` is a whole word, though it holds one of two values: with no padding
+/// bytes an empty [`EdgeList`] is all zeros, and the compiler builds one with
+/// a `memset` in place instead of zeroing a temporary and copying 5 KB.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub(crate) struct Edge {
     pub x0: i32,
     pub y0: i32,
     pub x1: i32,
     pub y1: i32,
-    pub dir: i8,
+    pub dir: i32,
 }
 
 /// Closed contours as at most `N` edges.
@@ -57,10 +60,13 @@ pub(crate) struct Edge {
 pub struct EdgeList<const N: usize> {
     edges: [Edge; N],
     len: usize,
-    // The contour being built: its first and last point.
-    start: Option<(i32, i32)>,
+    // The contour being built (if `open`): its first and last point.
+    open: bool,
+    start: (i32, i32),
     last: (i32, i32),
-    // Bounding rows in subpixel units of the stored edges.
+    // Bounding rows in subpixel units of the stored edges (meaningless
+    // while `len` is 0). An empty list is all zero bytes, so making one is
+    // a `memset`, not a copy of a 5 KB constant.
     y_min: i32,
     y_max: i32,
 }
@@ -88,11 +94,33 @@ impl<const N: usize> EdgeList<N> {
         EdgeList {
             edges: [Edge { x0: 0, y0: 0, x1: 0, y1: 0, dir: 0 }; N],
             len: 0,
-            start: None,
+            open: false,
+            start: (0, 0),
             last: (0, 0),
-            y_min: i32::MAX,
-            y_max: i32::MIN,
+            y_min: 0,
+            y_max: 0,
         }
+    }
+
+    /// Empties the list, as [`EdgeList::new`] would, without rewriting its
+    /// storage: the stored edges are only forgotten. Reusing a list this way
+    /// costs a few stores; assigning `EdgeList::new()` rewrites the whole
+    /// array (5 KB at [`MAX_EDGES`](crate::shape::MAX_EDGES)).
+    ///
+    /// ```
+    /// let mut e = microraster::shape::EdgeList::<4>::new();
+    /// e.move_to(0.0, 0.0)?;
+    /// e.line_to(3.0, 6.0)?;
+    /// e.clear(); // the open contour goes too
+    /// assert!(e.is_empty());
+    /// e.close()?; // nothing to close
+    /// assert!(e.is_empty());
+    /// # Ok::<(), microraster::Error>(())
+    /// ```
+    pub fn clear(&mut self) {
+        self.len = 0;
+        self.open = false;
+        (self.y_min, self.y_max) = (0, 0);
     }
 
     /// Number of stored edges.
@@ -125,7 +153,7 @@ impl<const N: usize> EdgeList<N> {
 
     /// Rows (subpixel units) spanned by the edges: `y_min > y_max` if empty.
     pub(crate) fn y_range(&self) -> (i32, i32) {
-        (self.y_min, self.y_max)
+        if self.len == 0 { (i32::MAX, i32::MIN) } else { (self.y_min, self.y_max) }
     }
 
     /// Starts a new contour at `(x, y)` pixels, closing the previous one.
@@ -142,8 +170,7 @@ impl<const N: usize> EdgeList<N> {
     pub fn move_to(&mut self, x: f32, y: f32) -> Result<(), Error> {
         let p = snap(x, y)?;
         self.close()?;
-        self.start = Some(p);
-        self.last = p;
+        (self.open, self.start, self.last) = (true, p, p);
         Ok(())
     }
 
@@ -164,8 +191,8 @@ impl<const N: usize> EdgeList<N> {
     }
 
     pub(crate) fn line_to_snapped(&mut self, p: (i32, i32)) -> Result<(), Error> {
-        if self.start.is_none() {
-            self.start = Some(p);
+        if !self.open {
+            (self.open, self.start) = (true, p);
         } else {
             self.push(self.last, p)?;
         }
@@ -184,8 +211,9 @@ impl<const N: usize> EdgeList<N> {
     /// # Ok::<(), microraster::Error>(())
     /// ```
     pub fn close(&mut self) -> Result<(), Error> {
-        if let Some(s) = self.start.take() {
-            self.push(self.last, s)?;
+        if self.open {
+            self.open = false;
+            self.push(self.last, self.start)?;
         }
         Ok(())
     }
@@ -230,9 +258,9 @@ impl<const N: usize> EdgeList<N> {
         };
         let slot = self.edges.get_mut(self.len).ok_or(Error::BufferTooSmall)?;
         *slot = e;
+        (self.y_min, self.y_max) =
+            if self.len == 0 { (e.y0, e.y1) } else { (self.y_min.min(e.y0), self.y_max.max(e.y1)) };
         self.len += 1;
-        self.y_min = self.y_min.min(e.y0);
-        self.y_max = self.y_max.max(e.y1);
         Ok(())
     }
 }

@@ -55,7 +55,7 @@ pub(crate) fn scan<F: FnMut(crate::edge::Span, u8), const N: usize>(
     }
     let (lo, hi) = center_rows(y_min, y_max, clip);
     let (cx0, cx1) = (i64::from(clip.x0()), i64::from(clip.x1()));
-    let mut xs = [(0i32, 0i8); N];
+    let mut xs = [(0i32, 0i32); N];
     let mut active = Active::<N>::new();
     for y in lo..hi {
         let yc = i64::from(y) * ONE + HALF;
@@ -80,7 +80,7 @@ pub(crate) fn scan<F: FnMut(crate::edge::Span, u8), const N: usize>(
         }
         let mut winding = 0i32;
         for i in 0..n {
-            winding += i32::from(xs[i].1);
+            winding += xs[i].1;
             let (x, next) = (xs[i].0, if i + 1 < n { xs[i + 1].0 } else { clip.x1() });
             if next > x && rule.inside(winding) {
                 runs.push(y, x, (next - x) as u32, 255);

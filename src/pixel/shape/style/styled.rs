@@ -31,7 +31,17 @@ pub struct Styled<S, C, A = Aliased> {
     // Pixel rows the fill and stroke can touch (half-open), so a band
     // that misses them costs two comparisons.
     rows: (i32, i32),
+    // Fill and stroke each fit SMALL_EDGES: drawn with scratch arrays of
+    // that size, not MAX_EDGES.
+    small: bool,
 }
+
+/// Edge capacity of the scratch lists of a shape drawn with few edges. Every
+/// draw zeroes its edge list and the coverage's per-edge arrays (36 bytes
+/// per edge slot when anti-aliased); at [`MAX_EDGES`] that is 9 KB per shape
+/// and band, most of a small shape's cost. Rectangles, lines, ticks and
+/// small polygons fit 32.
+const SMALL_EDGES: usize = 32;
 
 impl<S: Shape, C: Copy, A: Coverage> Styled<S, C, A> {
     /// Checks the style and that the contours fit [`MAX_EDGES`].
@@ -59,8 +69,13 @@ impl<S: Shape, C: Copy, A: Coverage> Styled<S, C, A> {
         if w < 0.0 || m < 1.0 {
             return Err(Error::InvalidParameter);
         }
-        let mut s = Styled { shape, style, rows: (0, 0) };
-        s.rows = s.extent()?;
+        let mut s = Styled { shape, style, rows: (0, 0), small: true };
+        // A shape that does not fit the small lists is built again in full
+        // ones; any other error is the shape's, whatever the capacity.
+        match s.extent::<SMALL_EDGES>() {
+            Err(Error::BufferTooSmall) => (s.rows, s.small) = (s.extent::<MAX_EDGES>()?, false),
+            r => s.rows = r?,
+        }
         Ok(s)
     }
 
@@ -112,11 +127,12 @@ impl<S: Shape, C: Copy, A: Coverage> Styled<S, C, A> {
         self.rows
     }
 
-    /// The rows [`Self::rows`] reports. Not inlined: a caller that builds many
-    /// shapes holds no edge list on its stack.
+    /// The rows [`Self::rows`] reports, with edge lists of capacity `N`. Not
+    /// inlined: a caller that builds many shapes holds no edge list on its
+    /// stack.
     #[inline(never)]
-    fn extent(&self) -> Result<(i32, i32), Error> {
-        let mut e = EdgeList::<MAX_EDGES>::new();
+    fn extent<const N: usize>(&self) -> Result<(i32, i32), Error> {
+        let mut e = EdgeList::<N>::new();
         self.fill_edges(&mut e)?;
         let f = e.y_range();
         self.stroke_edges(&mut e)?;
@@ -128,7 +144,7 @@ impl<S: Shape, C: Copy, A: Coverage> Styled<S, C, A> {
 
     /// The fill's edges into `e` (emptied first), unsorted.
     fn fill_edges<const N: usize>(&self, e: &mut EdgeList<N>) -> Result<(), Error> {
-        *e = EdgeList::new();
+        e.clear();
         if self.style.fill.is_some() {
             self.shape.fill_contours(e)?;
             e.close()?;
@@ -138,7 +154,7 @@ impl<S: Shape, C: Copy, A: Coverage> Styled<S, C, A> {
 
     /// The stroke's edges into `e` (emptied first), unsorted.
     fn stroke_edges<const N: usize>(&self, e: &mut EdgeList<N>) -> Result<(), Error> {
-        *e = EdgeList::new();
+        e.clear();
         if self.style.stroke.is_some() && self.style.stroke_width > 0.0 {
             self.shape.stroke_contours(e, &self.style.params())?;
             e.close()?;
@@ -170,12 +186,20 @@ impl<S: Shape, C: Interpolate, A: Coverage> Styled<S, C, A> {
         if clip.y1() <= self.rows.0 || clip.y0() >= self.rows.1 {
             return;
         }
+        if self.small { self.draw_in::<SMALL_EDGES, T>(canvas) } else { self.draw_in::<MAX_EDGES, T>(canvas) }
+    }
+
+    /// [`Self::draw_on`] with edge lists of capacity `N`, which `new` found
+    /// the shape to fit. Each capacity its own frame, for the stack.
+    #[inline(never)]
+    fn draw_in<const N: usize, T: Canvas<C>>(&self, canvas: &mut T) {
+        let clip = canvas.clip();
         let op = u32::from(self.style.opacity);
         // Coverage times opacity, rounded; exact (and free) when opaque.
         let alpha = |a: u8| if op == 255 { a } else { div255_round(u32::from(a) * op) as u8 };
         // One edge list for both. Checked in `new`: building the edges
         // cannot fail again.
-        let mut e = EdgeList::<MAX_EDGES>::new();
+        let mut e = EdgeList::<N>::new();
         if let (Some(paint), Ok(())) = (&self.style.fill, self.fill_edges(&mut e)) {
             e.sort_by_top();
             A::cover(&e, self.style.fill_rule, clip, |span, a| paint.paint(canvas, span, alpha(a)));
