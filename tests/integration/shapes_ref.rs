@@ -51,6 +51,11 @@ fn alphas(pm: &Pixmap) -> Vec<u8> {
 /// Random polygons: star-shaped (concave, simple) or free (self-intersecting).
 fn random_polygon(rng: &mut Rng) -> Vec<(f32, f32)> {
     let n = rng.range(3, 12) as usize;
+    random_polygon_of(rng, n)
+}
+
+/// [`random_polygon`] with `n` vertices.
+fn random_polygon_of(rng: &mut Rng, n: usize) -> Vec<(f32, f32)> {
     let c = grid_point(rng, 8.0, 56.0, false);
     let free = rng.chance(0.4);
     let mut angles: Vec<f64> = (0..n).map(|_| rng.uniform(0.0, std::f64::consts::TAU)).collect();

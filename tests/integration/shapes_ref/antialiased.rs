@@ -1,7 +1,7 @@
 //! Anti-aliased shape coverage against the exact area: single shapes, shared
 //! edges, gauge segments, targets without a background.
 
-use super::random_polygon;
+use super::{random_polygon, random_polygon_of};
 use crate::reference::Rng;
 use crate::shapes::{H, W, draw, fill, grid_point};
 use embedded_graphics_core::pixelcolor::{Gray8, GrayColor};
@@ -68,6 +68,39 @@ fn antialiased_coverage_is_the_exact_area() {
         "AA vs exact area: {pixels} pixels, {partial} partial; worst error beyond 8-bit rounding {worst:.4} levels"
     );
     assert!(partial > 100_000, "{partial}");
+}
+
+/// Polygons of 24 to 48 vertices, on both sides of the 32-edge scratch
+/// lists a small shape is drawn with (`Styled::new` chooses): the same
+/// exact-area bound as above for each.
+#[test]
+fn antialiased_coverage_is_the_exact_area_with_small_and_full_edge_lists() {
+    let mut rng = Rng::new(0x5ca1e);
+    let (mut small, mut full) = (0, 0);
+    for _ in 0..400 {
+        let n = rng.range(24, 48) as usize;
+        let pts = random_polygon_of(&mut rng, n);
+        if !is_simple(&pts) {
+            continue;
+        }
+        // Horizontal edges are dropped: count those left.
+        let edges = (0..n).filter(|&i| pts[i].1 != pts[(i + 1) % n].1).count();
+        if edges <= 32 {
+            small += 1
+        } else {
+            full += 1
+        }
+        let ours = draw(Polygon::new(&pts).unwrap(), fill().antialiased());
+        let f: Vec<(f64, f64)> = pts.iter().map(|p| (f64::from(p.0), f64::from(p.1))).collect();
+        for (x, y) in (0..H).flat_map(|y| (0..W).map(move |x| (x, y))) {
+            let area = pixel_area(&f, x as f64, y as f64);
+            let a = f64::from(ours.alpha_at(x, y));
+            assert!((a - 255.0 * area).abs() <= 0.5 + 0.05, "{pts:?} ({x}, {y}): alpha {a} vs area {area}");
+            assert!(ours.at(x, y) <= 1, "pixel written twice");
+        }
+    }
+    println!("AA vs exact area, 24-48 vertices: {small} polygons in 32-edge lists, {full} in full ones");
+    assert!(small > 30 && full > 30, "{small} small, {full} full");
 }
 
 /// True if no two non-adjacent edges of the closed polygon intersect.

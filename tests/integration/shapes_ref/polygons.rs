@@ -1,6 +1,6 @@
 //! Aliased polygons and thick polylines against tiny-skia, away from edges.
 
-use super::{MASK_PX, alphas, paint, path, random_polygon};
+use super::{MASK_PX, alphas, paint, path, random_polygon, random_polygon_of};
 use crate::reference::{Rng, dist_to_segment};
 use crate::shapes::{H, W, draw, fill, grid_point};
 use embedded_graphics_core::pixelcolor::{Gray8, GrayColor};
@@ -42,6 +42,40 @@ fn polygons_match_tiny_skia_away_from_edges() {
     }
     println!("polygons vs tiny-skia: {compared} pixels compared, {covered} covered");
     assert!(compared > 5_000_000 && covered > 1_000_000);
+}
+
+/// Polygons of 24 to 48 vertices, on both sides of the 32-edge scratch
+/// lists a small shape is drawn with (`Styled::new` chooses).
+#[test]
+fn polygons_with_small_and_full_edge_lists_match_tiny_skia() {
+    let mut rng = Rng::new(0x32ed);
+    let mut pm = Pixmap::new(W as u32, H as u32).unwrap();
+    let (mut small, mut full, mut covered) = (0, 0, 0);
+    for _ in 0..300 {
+        let n = rng.range(24, 48) as usize;
+        let pts = random_polygon_of(&mut rng, n);
+        let edges = (0..n).filter(|&i| pts[i].1 != pts[(i + 1) % n].1).count();
+        if edges <= 32 {
+            small += 1
+        } else {
+            full += 1
+        }
+        let ours = draw(Polygon::new(&pts).unwrap(), fill());
+        pm.fill(tiny_skia::Color::TRANSPARENT);
+        if let Some(p) = path(&pts, true) {
+            pm.fill_path(&p, &paint(false), tiny_skia::FillRule::Winding, Transform::identity(), None);
+        }
+        let skia = alphas(&pm);
+        for (x, y) in (0..H).flat_map(|y| (0..W).map(move |x| (x, y))) {
+            if !near_edge(&pts, (x as f64 + 0.5, y as f64 + 0.5)) {
+                let (a, b) = (ours.at(x, y), u32::from(skia[(y * W + x) as usize] != 0));
+                assert_eq!(a, b, "{pts:?} pixel ({x}, {y})");
+                covered += a as usize;
+            }
+        }
+    }
+    println!("polygons of 24-48 vertices vs tiny-skia: {small} in 32-edge lists, {full} in full ones");
+    assert!(small > 30 && full > 30 && covered > 100_000, "{small} small, {full} full, {covered} covered");
 }
 
 #[test]
