@@ -54,6 +54,12 @@ fn random_polygon(rng: &mut Rng) -> Vec<(f32, f32)> {
     random_polygon_of(rng, n)
 }
 
+/// Edges of the closed polygon `pts` that an edge list keeps: the
+/// non-horizontal ones.
+fn edges_kept(pts: &[(f32, f32)]) -> usize {
+    (0..pts.len()).filter(|&i| pts[i].1 != pts[(i + 1) % pts.len()].1).count()
+}
+
 /// [`random_polygon`] with `n` vertices.
 fn random_polygon_of(rng: &mut Rng, n: usize) -> Vec<(f32, f32)> {
     let c = grid_point(rng, 8.0, 56.0, false);

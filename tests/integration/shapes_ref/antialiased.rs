@@ -1,7 +1,7 @@
 //! Anti-aliased shape coverage against the exact area: single shapes, shared
 //! edges, gauge segments, targets without a background.
 
-use super::{random_polygon, random_polygon_of};
+use super::{edges_kept, random_polygon, random_polygon_of};
 use crate::reference::Rng;
 use crate::shapes::{H, W, draw, fill, grid_point};
 use embedded_graphics_core::pixelcolor::{Gray8, GrayColor};
@@ -83,9 +83,7 @@ fn antialiased_coverage_is_the_exact_area_with_small_and_full_edge_lists() {
         if !is_simple(&pts) {
             continue;
         }
-        // Horizontal edges are dropped: count those left.
-        let edges = (0..n).filter(|&i| pts[i].1 != pts[(i + 1) % n].1).count();
-        if edges <= 32 {
+        if edges_kept(&pts) <= 32 {
             small += 1
         } else {
             full += 1

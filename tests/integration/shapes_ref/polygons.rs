@@ -1,6 +1,6 @@
 //! Aliased polygons and thick polylines against tiny-skia, away from edges.
 
-use super::{MASK_PX, alphas, paint, path, random_polygon, random_polygon_of};
+use super::{MASK_PX, alphas, edges_kept, paint, path, random_polygon, random_polygon_of};
 use crate::reference::{Rng, dist_to_segment};
 use crate::shapes::{H, W, draw, fill, grid_point};
 use embedded_graphics_core::pixelcolor::{Gray8, GrayColor};
@@ -10,6 +10,32 @@ use tiny_skia::{Pixmap, Stroke, Transform};
 fn near_edge(pts: &[(f32, f32)], p: (f64, f64)) -> bool {
     let f = |q: (f32, f32)| (f64::from(q.0), f64::from(q.1));
     (0..pts.len()).any(|i| dist_to_segment(p, f(pts[i]), f(pts[(i + 1) % pts.len()])) <= MASK_PX)
+}
+
+/// Fills `pts` with both renderers under the same fill rule and asserts
+/// every pixel centre away from the edges equal: (pixels compared, covered).
+fn match_tiny_skia(
+    pm: &mut Pixmap,
+    pts: &[(f32, f32)],
+    (ours_rule, skia_rule): (FillRule, tiny_skia::FillRule),
+) -> (usize, usize) {
+    let ours = draw(Polygon::new(pts).unwrap(), fill().with_fill_rule(ours_rule));
+    pm.fill(tiny_skia::Color::TRANSPARENT);
+    if let Some(p) = path(pts, true) {
+        pm.fill_path(&p, &paint(false), skia_rule, Transform::identity(), None);
+    }
+    let skia = alphas(pm);
+    let (mut compared, mut covered) = (0, 0);
+    for (x, y) in (0..H).flat_map(|y| (0..W).map(move |x| (x, y))) {
+        if near_edge(pts, (x as f64 + 0.5, y as f64 + 0.5)) {
+            continue;
+        }
+        let (a, b) = (ours.at(x, y), u32::from(skia[(y * W + x) as usize] != 0));
+        assert_eq!(a, b, "{pts:?} {ours_rule:?} pixel ({x}, {y})");
+        compared += 1;
+        covered += a as usize;
+    }
+    (compared, covered)
 }
 
 #[test]
@@ -24,21 +50,9 @@ fn polygons_match_tiny_skia_away_from_edges() {
         } else {
             (FillRule::EvenOdd, tiny_skia::FillRule::EvenOdd)
         };
-        let ours = draw(Polygon::new(&pts).unwrap(), fill().with_fill_rule(ours_rule));
-        pm.fill(tiny_skia::Color::TRANSPARENT);
-        if let Some(p) = path(&pts, true) {
-            pm.fill_path(&p, &paint(false), skia_rule, Transform::identity(), None);
-        }
-        let skia = alphas(&pm);
-        for (x, y) in (0..H).flat_map(|y| (0..W).map(move |x| (x, y))) {
-            if near_edge(&pts, (x as f64 + 0.5, y as f64 + 0.5)) {
-                continue;
-            }
-            let (a, b) = (ours.at(x, y), u32::from(skia[(y * W + x) as usize] != 0));
-            assert_eq!(a, b, "{pts:?} {ours_rule:?} pixel ({x}, {y})");
-            compared += 1;
-            covered += a as usize;
-        }
+        let (c, v) = match_tiny_skia(&mut pm, &pts, (ours_rule, skia_rule));
+        compared += c;
+        covered += v;
     }
     println!("polygons vs tiny-skia: {compared} pixels compared, {covered} covered");
     assert!(compared > 5_000_000 && covered > 1_000_000);
@@ -54,25 +68,12 @@ fn polygons_with_small_and_full_edge_lists_match_tiny_skia() {
     for _ in 0..300 {
         let n = rng.range(24, 48) as usize;
         let pts = random_polygon_of(&mut rng, n);
-        let edges = (0..n).filter(|&i| pts[i].1 != pts[(i + 1) % n].1).count();
-        if edges <= 32 {
+        if edges_kept(&pts) <= 32 {
             small += 1
         } else {
             full += 1
         }
-        let ours = draw(Polygon::new(&pts).unwrap(), fill());
-        pm.fill(tiny_skia::Color::TRANSPARENT);
-        if let Some(p) = path(&pts, true) {
-            pm.fill_path(&p, &paint(false), tiny_skia::FillRule::Winding, Transform::identity(), None);
-        }
-        let skia = alphas(&pm);
-        for (x, y) in (0..H).flat_map(|y| (0..W).map(move |x| (x, y))) {
-            if !near_edge(&pts, (x as f64 + 0.5, y as f64 + 0.5)) {
-                let (a, b) = (ours.at(x, y), u32::from(skia[(y * W + x) as usize] != 0));
-                assert_eq!(a, b, "{pts:?} pixel ({x}, {y})");
-                covered += a as usize;
-            }
-        }
+        covered += match_tiny_skia(&mut pm, &pts, (FillRule::NonZero, tiny_skia::FillRule::Winding)).1;
     }
     println!("polygons of 24-48 vertices vs tiny-skia: {small} in 32-edge lists, {full} in full ones");
     assert!(small > 30 && full > 30 && covered > 100_000, "{small} small, {full} full, {covered} covered");
