@@ -237,6 +237,21 @@ pub(crate) fn sqrt_f32(x: f32) -> f32 {
     y
 }
 
+/// `⌊v⌋` for finite `v` (no `std`): truncation, one lower for a negative
+/// value with a fraction. Exact for `|v| < 2^31`; beyond `i32` it saturates
+/// (NaN gives 0). Both conversions are one instruction on an FPU, where an
+/// `i64` floor would call the runtime library on a 32-bit core.
+pub(crate) fn floor_i32(v: f32) -> i32 {
+    let t = v as i32;
+    if (t as f32) > v { t.saturating_sub(1) } else { t }
+}
+
+/// `⌈v⌉` for finite `v`, as [`floor_i32`].
+pub(crate) fn ceil_i32(v: f32) -> i32 {
+    let t = v as i32;
+    if (t as f32) < v { t.saturating_add(1) } else { t }
+}
+
 /// Sine and cosine in `f32`: Cody–Waite reduction by π/2 (a two-part
 /// constant), then the same Taylor polynomials as the fixed-point path on
 /// `[-π/4, π/4]`. Absolute error below 2·10^-7 (plus 10^-10·|a|) for

@@ -13,6 +13,7 @@
 //! that are not finite, gives no rows: the cluster is tested per band.
 
 use crate::math::Vec4;
+use crate::math::scalar::{ceil_i32, floor_i32};
 use crate::mesh::SPHERE_TOLERANCE;
 
 /// The frame rows of spheres (module docs) for one matrix and viewport.
@@ -59,19 +60,6 @@ impl SphereRows {
         let to_i16 = |v: i32| v.clamp(i16::MIN.into(), i16::MAX.into()) as i16;
         Some((to_i16(floor_i32(top)), to_i16(ceil_i32(bottom))))
     }
-}
-
-/// `⌊v⌋` for finite `v` (no `std`): truncation, one lower for a negative
-/// value with a fraction; beyond `i32` it saturates.
-fn floor_i32(v: f32) -> i32 {
-    let t = v as i32;
-    if (t as f32) > v { t.saturating_sub(1) } else { t }
-}
-
-/// `⌈v⌉` for finite `v`, as [`floor_i32`].
-fn ceil_i32(v: f32) -> i32 {
-    let t = v as i32;
-    if (t as f32) < v { t.saturating_add(1) } else { t }
 }
 
 #[cfg(test)]

@@ -29,16 +29,13 @@ use super::{FillRule, Runs};
 use crate::ClipRect;
 use crate::edge::Span;
 use crate::math::Scalar;
+use crate::math::scalar::floor_i32;
 
-/// `⌊v⌋` for finite `v` (saturating far outside the frame, where only the
-/// clamp to the clip matters).
+/// `⌊v⌋` for finite `v`, saturating beyond `i32` (far outside the frame,
+/// where only the clamp to the clip matters), widened for the `i64`
+/// arithmetic around it.
 fn floor(v: f32) -> i64 {
-    // Truncates toward zero, saturating at the `i32` range: beyond it the
-    // clamp gives what the `i64` floor would. Through `i32` the conversions
-    // are instructions of an FPU, not library calls.
-    let t = v as i32;
-    let t64 = i64::from(t);
-    if (t as f32) > v { t64 - 1 } else { t64 }
+    i64::from(floor_i32(v))
 }
 
 /// Cells accumulated at once.

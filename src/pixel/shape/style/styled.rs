@@ -179,8 +179,6 @@ impl<S: Shape, C: Interpolate, A: Coverage> Styled<S, C, A> {
     /// assert_eq!(band.rows()[0], [b, b, w, b, b, g]);
     /// # Ok::<(), microraster::Error>(())
     /// ```
-    // Not inlined, for the stack (see `extent`).
-    #[inline(never)]
     pub fn draw_on<T: Canvas<C>>(&self, canvas: &mut T) {
         let clip = canvas.clip();
         if clip.y1() <= self.rows.0 || clip.y0() >= self.rows.1 {
