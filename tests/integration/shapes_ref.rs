@@ -54,10 +54,18 @@ fn random_polygon(rng: &mut Rng) -> Vec<(f32, f32)> {
     random_polygon_of(rng, n)
 }
 
-/// Edges of the closed polygon `pts` that an edge list keeps: the
-/// non-horizontal ones.
-fn edges_kept(pts: &[(f32, f32)]) -> usize {
-    (0..pts.len()).filter(|&i| pts[i].1 != pts[(i + 1) % pts.len()].1).count()
+/// Edges a fill may keep and still be drawn with the small scratch lists
+/// (`SMALL_EDGES`, private in `src/pixel/shape/style/styled.rs`).
+const SMALL_LIST_EDGES: usize = 32;
+
+/// A random polygon of 24 to 48 vertices, so either side of the small
+/// scratch lists, and whether its kept edges (the non-horizontal ones, as
+/// an edge list keeps them) fit those lists.
+fn polygon_around_small_lists(rng: &mut Rng) -> (Vec<(f32, f32)>, bool) {
+    let n = rng.range(24, 48) as usize;
+    let pts = random_polygon_of(rng, n);
+    let kept = (0..pts.len()).filter(|&i| pts[i].1 != pts[(i + 1) % pts.len()].1).count();
+    (pts, kept <= SMALL_LIST_EDGES)
 }
 
 /// [`random_polygon`] with `n` vertices.

@@ -1,7 +1,7 @@
 //! Anti-aliased shape coverage against the exact area: single shapes, shared
 //! edges, gauge segments, targets without a background.
 
-use super::{edges_kept, random_polygon, random_polygon_of};
+use super::{polygon_around_small_lists, random_polygon};
 use crate::reference::Rng;
 use crate::shapes::{H, W, draw, fill, grid_point};
 use embedded_graphics_core::pixelcolor::{Gray8, GrayColor};
@@ -78,12 +78,11 @@ fn antialiased_coverage_is_the_exact_area_with_small_and_full_edge_lists() {
     let mut rng = Rng::new(0x5ca1e);
     let (mut small, mut full) = (0, 0);
     for _ in 0..400 {
-        let n = rng.range(24, 48) as usize;
-        let pts = random_polygon_of(&mut rng, n);
+        let (pts, fits) = polygon_around_small_lists(&mut rng);
         if !is_simple(&pts) {
             continue;
         }
-        if edges_kept(&pts) <= 32 {
+        if fits {
             small += 1
         } else {
             full += 1

@@ -1,6 +1,6 @@
 //! Aliased polygons and thick polylines against tiny-skia, away from edges.
 
-use super::{MASK_PX, alphas, edges_kept, paint, path, random_polygon, random_polygon_of};
+use super::{MASK_PX, alphas, paint, path, polygon_around_small_lists, random_polygon};
 use crate::reference::{Rng, dist_to_segment};
 use crate::shapes::{H, W, draw, fill, grid_point};
 use embedded_graphics_core::pixelcolor::{Gray8, GrayColor};
@@ -66,9 +66,8 @@ fn polygons_with_small_and_full_edge_lists_match_tiny_skia() {
     let mut pm = Pixmap::new(W as u32, H as u32).unwrap();
     let (mut small, mut full, mut covered) = (0, 0, 0);
     for _ in 0..300 {
-        let n = rng.range(24, 48) as usize;
-        let pts = random_polygon_of(&mut rng, n);
-        if edges_kept(&pts) <= 32 {
+        let (pts, fits) = polygon_around_small_lists(&mut rng);
+        if fits {
             small += 1
         } else {
             full += 1
