@@ -203,9 +203,59 @@ impl PlaneSetup {
             let gy = if self.need.1 { self.div.div_round(ny << self.shift) } else { 0 };
             (gx, gy, self.div.div_round(m(nx, px) + m(ny, py)))
         } else {
-            self.plane_wide(d1, d2)
+            self.plane_long(d1, d2)
         };
         Plane { base: values[0].wrapping_add(off), gx, gy, rx: self.rx, ry: self.ry }
+    }
+
+    /// `(gx, gy, offset)` of [`PlaneSetup::plane`] beyond its `i64` fast
+    /// path: [`PlaneSetup::plane_split`], else [`PlaneSetup::plane_wide`].
+    /// Out of line and cold, as the `i128` set-up was alone: the common
+    /// path's code stays as it was (an inlined call here cost the standard
+    /// scene's frame 0.5 % at `S = 4`).
+    #[cold]
+    #[inline(never)]
+    fn plane_long(&self, d1: i64, d2: i64) -> (i64, i64, i64) {
+        self.plane_split(d1, d2).unwrap_or_else(|| self.plane_wide(d1, d2))
+    }
+
+    /// `(gx, gy, offset)` of [`PlaneSetup::plane`] where the numerators
+    /// `nx`, `ny` fit `i64` but their products with `2^shift` or the
+    /// reference offset do not (deep subpixel precision: at `S = 8` most
+    /// perspective-correct planes of the standard scene), without `i128`:
+    /// with `n = q·det + r` (floor division, `0 ≤ r < det`),
+    /// `n·k = q·k·det + r·k`, and `r·k` fits. So each quotient is `q·k` plus
+    /// the floor division of the small remainder term, rounded as
+    /// `div_round_i128` rounds (ties away from zero: `+1` when `2r > det`,
+    /// or `2r = det` with a non-negative quotient). `None` where a bound
+    /// below fails; the values are then [`PlaneSetup::plane_wide`]'s.
+    #[inline]
+    fn plane_split(&self, d1: i64, d2: i64) -> Option<(i64, i64, i64)> {
+        let dbits = bits(d1.unsigned_abs() | d2.unsigned_abs());
+        // |n| < 2^63; r < det < 2^(2·ebits + 1), so r·2^shift and
+        // r·p (|p| < 2^(pbits − 1)) stay below 2^61.
+        if dbits + self.ebits > 62 || 2 * self.ebits + 2 + self.shift.max(self.pbits) > 62 {
+            return None;
+        }
+        let (ex, ey, (px, py)) = (self.ex, self.ey, self.p);
+        let m = |d: i64, e: i32| d * e as i64;
+        let (nx, ny) = (m(d1, ex.0) - m(d2, ex.1), m(d2, ey.0) - m(d1, ey.1));
+        let ((qx, rx), (qy, ry)) = (self.div.div_floor_rem(nx), self.div.div_floor_rem(ny));
+        // q·2^shift and q·p below 2^61: every sum below fits, and each
+        // result is the exact (in-range) quotient.
+        if bits(qx.unsigned_abs() | qy.unsigned_abs()) + self.shift.max(self.pbits) > 61 {
+            return None;
+        }
+        let det = self.det;
+        let round = |q: i64, r: i64| q + i64::from(2 * r > det || (2 * r == det && q >= 0));
+        let scaled = |q: i64, r: i64| {
+            let (q2, r2) = self.div.div_floor_rem(r << self.shift);
+            round((q << self.shift) + q2, r2)
+        };
+        let gx = if self.need.0 { scaled(qx, rx) } else { 0 };
+        let gy = if self.need.1 { scaled(qy, ry) } else { 0 };
+        let (q3, r3) = self.div.div_floor_rem(rx * px as i64 + ry * py as i64);
+        Some((gx, gy, round(qx * px as i64 + qy * py as i64 + q3, r3)))
     }
 
     /// `(gx, gy, offset)` of [`PlaneSetup::plane`] in `i128`, for values
@@ -307,6 +357,53 @@ mod tests {
             let off = div_round_i128(nx * px + ny * py, det) as i64;
             assert_eq!(p.base, vals[0].wrapping_add(off), "{frame:?} {vals:?}");
         }
+    }
+
+    /// The split `i64` set-up gives the `i128` one's planes wherever it
+    /// applies, and applies to the deep-subpixel planes it is for.
+    #[test]
+    fn split_setup_is_exact() {
+        let mut seed = 0x6A09_E667_F3BC_C908u64;
+        let mut next = |bits: u32| {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            (seed >> (64 - bits)) as i64 - (1 << (bits - 1))
+        };
+        let (mut split, mut deep) = (0u32, 0u32);
+        for i in 0..200_000 {
+            let cb = 2 + (i % 27) as u32;
+            let v = [0; 3].map(|_| (next(cb), next(cb)));
+            let frame = PlaneFrame { v, shift: 1 + (i % 9) as u32 };
+            let (d1, d2) = (next(2 + (i % 58) as u32), next(2 + (i % 57) as u32));
+            let (rx, ry) = ((next(12) & 4095) as i32, (next(12) & 4095) as i32);
+            let Some(setup) = PlaneSetup::new(&frame, rx, ry) else { continue };
+            let Some(got) = setup.plane_split(d1, d2) else { continue };
+            assert_eq!(got, setup.plane_wide(d1, d2), "{frame:?} {d1} {d2} {rx} {ry}");
+            split += 1;
+            // Beyond the fast path's reach: its products would overflow.
+            let n = (d1 as i128 * setup.ex.0 as i128 - d2 as i128 * setup.ex.1 as i128).unsigned_abs();
+            deep += u32::from(n << setup.shift > i64::MAX as u128);
+        }
+        assert!(split > 50_000 && deep > 4_000, "{split} split, {deep} beyond the fast path");
+        // Every frame of coordinates 0..=3 and small value differences: the
+        // ties (a quotient of exactly ±½, ±1½, ...) of small determinants.
+        let mut ties = 0u32;
+        for code in 0..4096u32 {
+            let c = |k: u32| i64::from((code >> (2 * k)) & 3);
+            let v = [(c(0), c(1)), (c(2), c(3)), (c(4), c(5))];
+            for shift in 1..=2 {
+                let Some(setup) = PlaneSetup::new(&PlaneFrame { v, shift }, 0, 0) else { continue };
+                for (d1, d2) in (-4..=4).flat_map(|a| (-4..=4).map(move |b| (a, b))) {
+                    let got = setup.plane_split(d1, d2).expect("small values split");
+                    assert_eq!(got, setup.plane_wide(d1, d2), "{v:?} {shift} {d1} {d2}");
+                    let nx = d1 as i128 * setup.ex.0 as i128 - d2 as i128 * setup.ex.1 as i128;
+                    ties +=
+                        u32::from((2 * (nx << shift)).rem_euclid(2 * setup.det as i128) == setup.det as i128);
+                }
+            }
+        }
+        assert!(ties > 1_000, "{ties} ties");
     }
 
     /// Planes set up for one span sample it exactly as full planes do:

@@ -104,6 +104,23 @@ impl Divisor {
         }
     }
 
+    /// `(⌊n/d⌋, n − d·⌊n/d⌋)`, the remainder in `0..d`, for `|n| < 2^63`:
+    /// from [`Divisor::div_half_up`]'s quotient, which is `⌊|n|/d⌋` or one
+    /// more, so no other way of dividing is needed.
+    #[inline]
+    pub(super) fn div_floor_rem(&self, n: i64) -> (i64, i64) {
+        let m = n.unsigned_abs();
+        let q = self.div_half_up(m);
+        // q·d ≤ m + ⌊d/2⌋ < 2^63 + 2^62: no overflow.
+        let (q, r) = if q * self.d > m { (q - 1, m + self.d - q * self.d) } else { (q, m - q * self.d) };
+        // |n| = q·d + r with 0 ≤ r < d < 2^63.
+        match (n < 0, r) {
+            (false, _) => (q as i64, r as i64),
+            (true, 0) => (-(q as i64), 0),
+            (true, _) => (-(q as i64) - 1, (self.d - r) as i64),
+        }
+    }
+
     /// `n / d` rounded to nearest, ties away from zero (as
     /// `div_round_i128`); `|n| < 2^63`.
     #[inline(always)]
@@ -152,6 +169,35 @@ mod tests {
         assert_eq!(a.div_round(n), want, "{n} / {d}");
         assert_eq!(b.div_round(n), want, "{n} / {d}");
         [matches!(a.how, How::Short(_)), matches!(a.how, How::Mid(_))]
+    }
+
+    /// `div_floor_rem` in every way against the `i128` floor division.
+    #[test]
+    fn floor_and_remainder_are_exact() {
+        let mut seed = 0x2545_F491_4F6C_DD1Du64;
+        let mut next = || {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            seed
+        };
+        for i in 0..300_000u32 {
+            let d = (next() >> (2 + i % 62)).max(1);
+            let n = (next() >> (1 + i % 63)) as i64 * if i % 2 == 0 { -1 } else { 1 };
+            let want = ((n as i128).div_euclid(d as i128) as i64, (n as i128).rem_euclid(d as i128) as i64);
+            for allow in [true, false] {
+                assert_eq!(Divisor::with_hw(d, allow).div_floor_rem(n), want, "{n} / {d}");
+            }
+        }
+        for d in [1u64, 2, 3, 0xFFFF, 1 << 16, (1 << 31) - 1, 1 << 31, u64::MAX >> 2] {
+            for n in
+                [0, 1, -1, d as i64, -(d as i64), i64::MAX - (d / 2) as i64, -(i64::MAX - (d / 2) as i64)]
+            {
+                let want =
+                    ((n as i128).div_euclid(d as i128) as i64, (n as i128).rem_euclid(d as i128) as i64);
+                assert_eq!(Divisor::new(d).div_floor_rem(n), want, "{n} / {d}");
+            }
+        }
     }
 
     /// Every way gives the `i128` division's rounded quotients, on random
