@@ -28,8 +28,10 @@
 //! evaluation therefore uses wrapping arithmetic, which is exact modulo 2^64
 //! and so returns the (in-range) sum. Setup runs in `i64` when the products fit
 //! (checked on bit lengths), dividing exactly by the determinant in one of
-//! the ways of [`divide`] (chosen by its size and the target), and in `i128`
-//! otherwise; all give the same correctly rounded values.
+//! the ways of [`divide`] (chosen by its size and the target); where only the
+//! numerators fit, by splitting off their quotients first
+//! ([`PlaneSetup::plane_split`], the deep subpixel precisions); and in `i128`
+//! otherwise. All give the same correctly rounded values.
 
 mod channel;
 mod divide;
