@@ -106,8 +106,9 @@ impl Divisor {
 
     /// `(⌊n/d⌋, n − d·⌊n/d⌋)`, the remainder in `0..d`, for `|n| < 2^63`:
     /// from [`Divisor::div_half_up`]'s quotient, which is `⌊|n|/d⌋` or one
-    /// more, so no other way of dividing is needed.
-    #[inline]
+    /// more, so no other way of dividing is needed. Out of line: it serves
+    /// only the uncommon split set-up, five times a plane.
+    #[inline(never)]
     pub(super) fn div_floor_rem(&self, n: i64) -> (i64, i64) {
         let m = n.unsigned_abs();
         let q = self.div_half_up(m);
