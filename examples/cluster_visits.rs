@@ -1,5 +1,5 @@
-//! Two studies of the knot's cluster visits for `docs/setup_cost.md`
-//! (twenty-sixth pass), not a renderer. Both use the `fw_bench` frame's
+//! Three studies of the knot's cluster visits for `docs/setup_cost.md`
+//! (twenty-sixth and twenty-eighth passes), not a renderer. Both use the `fw_bench` frame's
 //! camera and angle, and approximate the stage's visits from the vertices'
 //! rows: a cluster visits a 16-row band when its vertices' rows, with the
 //! band test's margin (a row above, two below), meet the band (no
@@ -8,6 +8,7 @@
 //! ```text
 //! cargo run --release --example cluster_visits -- slabs 16   # slabs of 16 vertices
 //! cargo run --release --example cluster_visits -- flat       # clusters built flatter in y
+//! cargo run --release --example cluster_visits -- done       # finished triangles skipped
 //! ```
 //!
 //! * `slabs N`: each cluster's vertices sorted along the axis of its
@@ -18,6 +19,11 @@
 //! * `flat`: the clusters `build_meshlets` makes from the positions with
 //!   `y` scaled by `K` (flatter in model `y`, which this camera's rows
 //!   mostly follow), their visits counted with the real positions.
+//! * `done`: a per-cluster mask of the triangles no later band needs
+//!   (back faces once a band has met them, and triangles that end above
+//!   the next band): the triangle visits and vertex `y`/`w` computations
+//!   a cluster's later visits would keep (only the live triangles and
+//!   their vertices).
 
 #[path = "../benches/common/mod.rs"]
 mod common;
@@ -43,6 +49,7 @@ fn main() {
     let mut args = std::env::args().skip(1);
     match args.next().as_deref() {
         Some("flat") => flat(&mvp),
+        Some("done") => done(&mvp),
         _ => slabs(&mvp, args.next().map_or(16, |a| a.parse().expect("a slab size"))),
     }
 }
@@ -145,4 +152,70 @@ fn flat(mvp: &Mat4<f32>) {
         let n = m.meshlets.len();
         println!("| {k} | {n} | {:.1} | {visits} | {vertex_visits} |", span / n as f32);
     }
+}
+
+/// The screen position (pixels) of a model position.
+fn screen_of(mvp: &Mat4<f32>, p: [f32; 3]) -> (f32, f32) {
+    let c = mvp.transform_point(Vec3::new(p[0], p[1], p[2]));
+    ((1.0 + c.x / c.w) * 0.5 * common::W as f32, (1.0 - c.y / c.w) * 0.5 * H)
+}
+
+/// A cluster's revisits with a per-cluster mask of the triangles no later
+/// band needs (back faces, and triangles that end above the next band):
+/// the triangle visits and the vertex `y`/`w` computations left.
+fn done(mvp: &Mat4<f32>) {
+    let (mut visits, mut revisits) = (0u64, 0u64);
+    let (mut tri_all, mut tri_live, mut vert_all, mut vert_live) = (0u64, 0u64, 0u64, 0u64);
+    let (mut tri_re, mut vert_re) = (0u64, 0u64);
+    let mut back_total = [0u64; 2];
+    for m in KNOT_MESHLETS.iter() {
+        let at = |i: usize| KNOT_POSITIONS[KNOT_MESHLET_VERTICES[m.vertex_offset as usize + i] as usize];
+        let scr: Vec<(f32, f32)> = (0..m.vertex_count as usize).map(|i| screen_of(mvp, at(i))).collect();
+        let tris = &KNOT_MESHLET_TRIANGLES[m.triangle_offset as usize..][..m.triangle_count as usize];
+        let area = |t: &[u8; 3]| {
+            let [a, b, c] = t.map(|i| scr[i as usize]);
+            (b.0 - a.0) * (c.1 - a.1) - (c.0 - a.0) * (b.1 - a.1)
+        };
+        for t in tris {
+            back_total[(area(t) > 0.0) as usize] += 1;
+        }
+        let (lo, hi) = extent(scr.iter().map(|s| s.1));
+        let mut live = vec![true; tris.len()];
+        for (k, b0) in bands(lo, hi).enumerate() {
+            let (y0, y1) = (b0 - 1.0, b0 + BAND + 2.0);
+            visits += 1;
+            let lt: Vec<usize> = (0..tris.len()).filter(|&i| live[i]).collect();
+            let mut need = vec![false; scr.len()];
+            for &i in &lt {
+                for j in tris[i] {
+                    need[j as usize] = true;
+                }
+            }
+            let nv = need.iter().filter(|&&n| n).count() as u64;
+            tri_all += tris.len() as u64;
+            vert_all += scr.len() as u64;
+            tri_live += lt.len() as u64;
+            vert_live += nv;
+            if k > 0 {
+                revisits += 1;
+                tri_re += lt.len() as u64;
+                vert_re += nv;
+            }
+            for &i in &lt {
+                let rows = tris[i].map(|j| scr[j as usize].1);
+                let (tlo, thi) = (rows[0].min(rows[1]).min(rows[2]), rows[0].max(rows[1]).max(rows[2]));
+                let reached = thi >= y0 && tlo <= y1;
+                // Back faces (this camera's: positive screen area) once seen,
+                // and triangles that end above the next band.
+                if (reached && area(&tris[i]) > 0.0) || thi < b0 + BAND - 1.0 {
+                    live[i] = false;
+                }
+            }
+        }
+    }
+    println!(
+        "{visits} cluster visits ({revisits} revisits); areas by sign {back_total:?}\n\
+         triangle visits {tri_all}, live {tri_live} (revisits: {tri_re} of them)\n\
+         vertex y/w {vert_all}, needed {vert_live} (revisits: {vert_re} of them)"
+    );
 }
