@@ -295,6 +295,16 @@ fn div_round_i128(n: i128, d: i128) -> i128 {
 mod tests {
     use super::*;
 
+    /// xorshift64: a closure giving `bits`-bit signed values (`bits ≥ 1`).
+    fn signed_bits(mut seed: u64) -> impl FnMut(u32) -> i64 {
+        move |bits| {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            (seed >> (64 - bits)) as i64 - (1 << (bits - 1))
+        }
+    }
+
     #[test]
     fn plane_hits_vertex_values_and_steps_linearly() {
         // A right triangle 8 px wide at S = 0 (internal unit = 1/2 px);
@@ -332,13 +342,7 @@ mod tests {
     /// The `i64`/reciprocal path gives exactly the `i128` division's planes.
     #[test]
     fn fast_setup_is_exact() {
-        let mut seed = 0x2545_f491_4f6c_dd1du64;
-        let mut next = |bits: u32| {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            (seed >> (64 - bits)) as i64 - (1 << (bits - 1))
-        };
+        let mut next = signed_bits(0x2545_f491_4f6c_dd1du64);
         for i in 0..200_000 {
             let cb = 2 + (i % 29) as u32;
             let v = [0; 3].map(|_| (next(cb), next(cb)));
@@ -365,13 +369,7 @@ mod tests {
     /// applies, and applies to the deep-subpixel planes it is for.
     #[test]
     fn split_setup_is_exact() {
-        let mut seed = 0x6A09_E667_F3BC_C908u64;
-        let mut next = |bits: u32| {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            (seed >> (64 - bits)) as i64 - (1 << (bits - 1))
-        };
+        let mut next = signed_bits(0x6A09_E667_F3BC_C908u64);
         let (mut split, mut deep) = (0u32, 0u32);
         for i in 0..200_000 {
             let cb = 2 + (i % 27) as u32;
@@ -412,13 +410,7 @@ mod tests {
     /// at its start, and stepped along it.
     #[test]
     fn span_only_planes_sample_the_span_exactly() {
-        let mut seed = 0x1234_5678_9ABC_DEF1u64;
-        let mut next = |bits: u32| {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            (seed >> (64 - bits)) as i64 - (1 << (bits - 1))
-        };
+        let mut next = signed_bits(0x1234_5678_9ABC_DEF1u64);
         let mut skipped = [0; 2];
         for i in 0..100_000 {
             let v = [0; 3].map(|_| (next(8) + 64, next(8) + 64));

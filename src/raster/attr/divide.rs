@@ -163,6 +163,16 @@ fn mul_hi(a: u64, b: u64) -> u64 {
 mod tests {
     use super::*;
 
+    /// xorshift64 as a closure.
+    fn xorshift(mut seed: u64) -> impl FnMut() -> u64 {
+        move || {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            seed
+        }
+    }
+
     fn check(n: i64, d: u64) -> [bool; 2] {
         let (a, b) = (Divisor::with_hw(d, true), Divisor::with_hw(d, false));
         assert!(matches!(b.how, How::Reciprocal(_)));
@@ -175,13 +185,7 @@ mod tests {
     /// `div_floor_rem` in every way against the `i128` floor division.
     #[test]
     fn floor_and_remainder_are_exact() {
-        let mut seed = 0x2545_F491_4F6C_DD1Du64;
-        let mut next = || {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            seed
-        };
+        let mut next = xorshift(0x2545_F491_4F6C_DD1Du64);
         for i in 0..300_000u32 {
             let d = (next() >> (2 + i % 62)).max(1);
             let n = (next() >> (1 + i % 63)) as i64 * if i % 2 == 0 { -1 } else { 1 };
@@ -205,13 +209,7 @@ mod tests {
     /// divisors of every size and numerators of every size and sign.
     #[test]
     fn every_way_is_exact() {
-        let mut seed = 0x9E37_79B9_7F4A_7C15u64;
-        let mut next = || {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            seed
-        };
+        let mut next = xorshift(0x9E37_79B9_7F4A_7C15u64);
         let (mut short, mut mid) = (0, 0);
         for i in 0..600_000u32 {
             let d = (next() >> (2 + i % 62)).max(1);
