@@ -223,8 +223,8 @@ impl PlaneSetup {
 
     /// `(gx, gy, offset)` of [`PlaneSetup::plane`] where the numerators
     /// `nx`, `ny` fit `i64` but their products with `2^shift` or the
-    /// reference offset do not (deep subpixel precision: at `S = 8` most
-    /// perspective-correct planes of the standard scene), without `i128`:
+    /// reference offset do not (deep subpixel precision: the standard
+    /// scene's perspective-correct planes at `S = 8`), without `i128`:
     /// with `n = q·det + r` (floor division, `0 ≤ r < det`),
     /// `n·k = q·k·det + r·k`, and `r·k` fits. So each quotient is `q·k` plus
     /// the floor division of the small remainder term, rounded as
