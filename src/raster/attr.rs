@@ -365,6 +365,11 @@ mod tests {
         }
     }
 
+    /// A plane's numerator `nx` (`gx = nx·2^shift/det`) in `i128`, the tests' reference.
+    fn exact_nx(setup: &PlaneSetup, d1: i64, d2: i64) -> i128 {
+        d1 as i128 * setup.ex.0 as i128 - d2 as i128 * setup.ex.1 as i128
+    }
+
     /// The split `i64` set-up gives the `i128` one's planes wherever it
     /// applies, and applies to the deep-subpixel planes it is for.
     #[test]
@@ -382,8 +387,7 @@ mod tests {
             assert_eq!(got, setup.plane_wide(d1, d2), "{frame:?} {d1} {d2} {rx} {ry}");
             split += 1;
             // Beyond the fast path's reach: its products would overflow.
-            let n = (d1 as i128 * setup.ex.0 as i128 - d2 as i128 * setup.ex.1 as i128).unsigned_abs();
-            deep += u32::from(n << setup.shift > i64::MAX as u128);
+            deep += u32::from(exact_nx(&setup, d1, d2).unsigned_abs() << setup.shift > i64::MAX as u128);
         }
         assert!(split > 50_000 && deep > 4_000, "{split} split, {deep} beyond the fast path");
         // Every frame of coordinates 0..=3 and small value differences: the
@@ -397,7 +401,7 @@ mod tests {
                 for (d1, d2) in (-4..=4).flat_map(|a| (-4..=4).map(move |b| (a, b))) {
                     let got = setup.plane_split(d1, d2).expect("small values split");
                     assert_eq!(got, setup.plane_wide(d1, d2), "{v:?} {shift} {d1} {d2}");
-                    let nx = d1 as i128 * setup.ex.0 as i128 - d2 as i128 * setup.ex.1 as i128;
+                    let nx = exact_nx(&setup, d1, d2);
                     ties +=
                         u32::from((2 * (nx << shift)).rem_euclid(2 * setup.det as i128) == setup.det as i128);
                 }

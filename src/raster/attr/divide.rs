@@ -182,6 +182,12 @@ mod tests {
         [matches!(a.how, How::Short(_)), matches!(a.how, How::Mid(_))]
     }
 
+    /// `⌊n/d⌋` and its remainder in `i128` (the reference).
+    fn floor_rem_i128(n: i64, d: u64) -> (i64, i64) {
+        let (n, d) = (n as i128, d as i128);
+        (n.div_euclid(d) as i64, n.rem_euclid(d) as i64)
+    }
+
     /// `div_floor_rem` in every way against the `i128` floor division.
     #[test]
     fn floor_and_remainder_are_exact() {
@@ -189,7 +195,7 @@ mod tests {
         for i in 0..300_000u32 {
             let d = (next() >> (2 + i % 62)).max(1);
             let n = (next() >> (1 + i % 63)) as i64 * if i % 2 == 0 { -1 } else { 1 };
-            let want = ((n as i128).div_euclid(d as i128) as i64, (n as i128).rem_euclid(d as i128) as i64);
+            let want = floor_rem_i128(n, d);
             for allow in [true, false] {
                 assert_eq!(Divisor::with_hw(d, allow).div_floor_rem(n), want, "{n} / {d}");
             }
@@ -198,8 +204,7 @@ mod tests {
             for n in
                 [0, 1, -1, d as i64, -(d as i64), i64::MAX - (d / 2) as i64, -(i64::MAX - (d / 2) as i64)]
             {
-                let want =
-                    ((n as i128).div_euclid(d as i128) as i64, (n as i128).rem_euclid(d as i128) as i64);
+                let want = floor_rem_i128(n, d);
                 assert_eq!(Divisor::new(d).div_floor_rem(n), want, "{n} / {d}");
             }
         }
