@@ -140,7 +140,8 @@ pub fn section(
         "Where the misses come from. Scene 2: the band renderer clears each band and hands it to the display \
          (about one slice fill each), so the whole frame reaches {:.0}% of the ceiling while drawing alone reaches \
          {:.0}%. Scene 4 on the Cortex-M4F: {frame4:.2} M instructions, {vertex4:.2} M of them the vertex stage \
-         (1,116 triangles, every vertex transformed once per corner; `Pipeline::draw_valid_mesh_cached` transforms \
+         (1,116 triangles, each vertex transformed once per chunk of at most 8 vertices, through \
+         `Pipeline::draw_valid_mesh`'s cache on the stack; `Pipeline::draw_valid_mesh_cached` transforms \
          each vertex once, or once per chunk of triangles with a cache smaller than the mesh: {:.2} M for the \
          frame with 64 entries) and {:.2} M rasterization, {:.0} instructions \
          per fragment ({} fragments) including the plane set-up per triangle and band. \

@@ -244,7 +244,9 @@ mod tests {
     }
 
     /// The scene through a cache of `V` vertices (the whole of each mesh,
-    /// or chunks of them) equals the uncached scene; the triangles compared.
+    /// or chunks of them) equals the scene through `draw_valid_mesh` (chunks
+    /// of 8 vertices; `mesh_bins`' tests compare that with a transform per
+    /// corner); the triangles and counts compared.
     fn cache_of<T: Scalar, const V: usize>() -> usize {
         let mut cache = std::boxed::Box::new(VertexCache::<T, 4, V>::new());
         let (mut a, mut b) = (heapless::Vec::<_, BINS>::new(), heapless::Vec::<_, BINS>::new());

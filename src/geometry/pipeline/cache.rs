@@ -88,7 +88,7 @@ impl<T: Scalar, const S: u32> Cached<T, S> {
     pub(super) const QUO: u8 = 16;
     /// Snapping succeeded (with `SNAP`): `screen` holds the vertex.
     pub(super) const SNAPPED: u8 = 32;
-    const EMPTY: Self = Cached {
+    pub(super) const EMPTY: Self = Cached {
         clip: [T::ZERO; 4],
         state: 0,
         code: 0,

@@ -12,11 +12,13 @@
 //! chunks is computed once in each.
 //!
 //! # Slots
-//! A chunk grows triangle by triangle while its new vertices fit
-//! [`CHUNK_SLOTS`] (or the cache, if smaller). Its mesh vertices map to
-//! local slots through a table of [`BUCKETS`] entries with linear probing,
-//! at most half full, so a lookup ends after a few probes; the table and
-//! the slot list live on the stack (about 400 bytes).
+//! A chunk grows triangle by triangle while its new vertices fit the
+//! table's slots ([`CHUNK_SLOTS`] for a caller's cache, [`SMALL_SLOTS`] for
+//! [`Pipeline::draw_valid_mesh`]'s own) or the cache, if smaller. Its mesh
+//! vertices map to local slots through a table of twice as many buckets
+//! with linear probing, at most half full, so a lookup ends after a few
+//! probes; the table and the slot list live on the stack (about 400 bytes
+//! for 64 slots, 50 for 8).
 
 use super::cache::{Cached, Slots};
 use super::cluster::ClusterSource;
@@ -27,45 +29,53 @@ use crate::mesh::{MAX_MESHLET_VERTICES, Mesh};
 use crate::raster3d::ScreenTriangle;
 
 /// Most vertices of one chunk: a cluster's ([`ClusterCache`](super::ClusterCache)'s size).
-const CHUNK_SLOTS: usize = MAX_MESHLET_VERTICES;
+pub(super) const CHUNK_SLOTS: usize = MAX_MESHLET_VERTICES;
 
-/// Entries of the vertex → slot table: twice [`CHUNK_SLOTS`], a power of two.
-const BUCKETS: usize = 2 * CHUNK_SLOTS;
+/// The vertices of one chunk of [`Pipeline::draw_valid_mesh`] (its cache
+/// on the stack, [`STACK_CACHE`](super::mesh_bins)): at most 8.
+pub(super) const SMALL_SLOTS: usize = 8;
 
-// Slots + 1 are stored as `u8`; the probe masks with `BUCKETS − 1`.
-const _: () = assert!(BUCKETS.is_power_of_two() && CHUNK_SLOTS < 256);
-
-/// Mesh vertex → local slot of the chunk being built or drawn.
-struct SlotTable {
+/// Mesh vertex → local slot of the chunk being built or drawn: `C` slots
+/// and `B` buckets (`B = 2·C`, a power of two, so the table is at most
+/// half full).
+pub(super) struct SlotTable<const B: usize, const C: usize> {
     /// Slot + 1 per bucket, 0 for an empty bucket.
-    bucket: [u8; BUCKETS],
+    bucket: [u8; B],
     /// The mesh vertex of each slot.
-    vertex: [u16; CHUNK_SLOTS],
+    vertex: [u16; C],
     /// Slots in use.
     len: usize,
 }
 
-impl SlotTable {
-    fn new() -> Self {
-        SlotTable { bucket: [0; BUCKETS], vertex: [0; CHUNK_SLOTS], len: 0 }
+/// The table of chunks of up to [`CHUNK_SLOTS`] vertices (a caller's cache).
+pub(super) type WideTable = SlotTable<{ 2 * CHUNK_SLOTS }, CHUNK_SLOTS>;
+/// The table of chunks of up to [`SMALL_SLOTS`] vertices.
+pub(super) type SmallTable = SlotTable<{ 2 * SMALL_SLOTS }, SMALL_SLOTS>;
+
+impl<const B: usize, const C: usize> SlotTable<B, C> {
+    // Slots + 1 are stored as `u8`; the probe masks with `B − 1`.
+    const SIZES: () = assert!(B.is_power_of_two() && B == 2 * C && C < 256);
+
+    pub(super) fn new() -> Self {
+        let () = Self::SIZES;
+        SlotTable { bucket: [0; B], vertex: [0; C], len: 0 }
     }
 
     fn clear(&mut self) {
-        self.bucket = [0; BUCKETS];
+        self.bucket = [0; B];
         self.len = 0;
     }
 
     /// The bucket holding `v`, or the empty one where it would go: the
-    /// table is never full (at most [`CHUNK_SLOTS`] of [`BUCKETS`] used),
-    /// so the probe ends.
+    /// table is never full (at most `C` of `B` used), so the probe ends.
     #[inline]
     fn find(&self, v: u16) -> usize {
-        let mut h = usize::from(v) & (BUCKETS - 1);
+        let mut h = usize::from(v) & (B - 1);
         loop {
             match self.bucket[h] {
                 0 => return h,
                 s if self.vertex[usize::from(s - 1)] == v => return h,
-                _ => h = (h + 1) & (BUCKETS - 1),
+                _ => h = (h + 1) & (B - 1),
             }
         }
     }
@@ -104,20 +114,21 @@ impl SlotTable {
 
 impl<T: Scalar, const S: u32> Pipeline<T, S> {
     /// [`Pipeline::draw_cached`] over the whole of `mesh` with `cache`
-    /// smaller than its vertex count, chunk by chunk (module docs); every
-    /// triangle goes to `sink` in the mesh's order. `cache` has at least
-    /// three entries.
-    pub(super) fn draw_chunked(
+    /// smaller than its vertex count, chunk by chunk (module docs), with
+    /// `table` for its slots; every triangle goes to `sink` in the mesh's
+    /// order. `cache` has at least three entries.
+    #[allow(clippy::too_many_arguments)]
+    pub(super) fn draw_chunked<const B: usize, const C: usize>(
         &self,
         setup: &MeshSetup<T>,
         mesh: &Mesh<'_>,
         cache: &mut [Cached<T, S>],
+        table: &mut SlotTable<B, C>,
         inside: bool,
         stats: &mut MeshStats,
         mut sink: impl FnMut(ScreenTriangle<S>) -> Result<(), Error>,
     ) -> Result<(), Error> {
-        let cap = cache.len().min(CHUNK_SLOTS);
-        let mut table = SlotTable::new();
+        let cap = cache.len().min(C);
         let mut rest = mesh.indices;
         while !rest.is_empty() {
             table.clear();

@@ -1,7 +1,11 @@
 //! A whole mesh into the frame's bins: the path without meshlets, triangle
-//! by triangle (transform, lighting, clipping, snapping and culling), with
-//! or without a vertex cache, for [`Triangles3d`](crate::render::Triangles3d).
+//! by triangle (transform, lighting, clipping, snapping and culling), for
+//! [`Triangles3d`](crate::render::Triangles3d): through a vertex cache (the
+//! caller's, or 8 entries on the stack), or per corner straight into a band
+//! (the `view3d` front).
 
+use super::cache::Cached;
+use super::chunked::{SMALL_SLOTS, SlotTable, SmallTable, WideTable};
 use super::{Band, Material, MeshSetup, MeshStats, Pipeline, Shade, Uniform, VertexCache, VertexCtx};
 use super::{bins, cache, channels, inside};
 use crate::clip3d::{Class, ClipPlanes, ClipVertex, classify, clip_triangle};
@@ -33,6 +37,17 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     /// O(vertices) check on every call (every band, when the vertex stage
     /// runs per band).
     ///
+    /// Each vertex is transformed, snapped and lit once per run of
+    /// consecutive triangles that share it: the triangles are taken in their
+    /// order in chunks of at most 8 vertices, held in a cache on the stack
+    /// (about 420 bytes for `f32` and [`Fx`](crate::math::Fx)), as
+    /// [`Pipeline::draw_valid_mesh_cached`] does with a cache of 8. Meshes
+    /// whose index order keeps neighbours together (strips, grids,
+    /// subdivided spheres) share most corners this way (`docs/setup_cost.md`,
+    /// twenty-ninth pass). The triangles, their order and the counts are
+    /// those of a transform per corner (tested). A larger cache the caller
+    /// owns ([`Pipeline::draw_valid_mesh_cached`]) shares more.
+    ///
     /// Errors: [`Error::CapacityExceeded`] if `bins` fills up, with the
     /// length it needed (the mesh's triangles are counted to the end, and
     /// `bins` is left as it was: on any error no triangle of the mesh is
@@ -50,19 +65,14 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         color: C,
         bins: &mut heapless::Vec<ScreenTriangle<S>, N>,
     ) -> Result<MeshStats, Error> {
-        let mut bins = bins::BinWriter::new(bins);
-        let result = self.valid_mesh_into(mesh, model, color, &Uniform, |tri| {
-            bins.push(tri);
-            Ok(())
-        });
-        bins.finish(result)
+        let mut cache = [Cached::EMPTY; SMALL_SLOTS];
+        self.cached_into(mesh, model, color, &mut cache, &mut SmallTable::new(), bins)
     }
 
-    /// [`Pipeline::draw_valid_mesh`] handing each triangle to `sink` instead
-    /// of a bin, in the same order (the binned path is this with a
-    /// [`bins::BinWriter`]): with [`Pipeline::rows`] set to a band's rows, the
-    /// vertex stage draws straight into that band, no bins (the `view3d`
-    /// front). `material` gives each vertex its material colour
+    /// [`Pipeline::draw_valid_mesh`]'s triangles, in the same order, handed
+    /// to `sink` instead of a bin, each vertex transformed once per corner
+    /// (no cache): with [`Pipeline::rows`] set to a band's rows, the vertex
+    /// stage draws straight into that band, no bins (the `view3d` front). `material` gives each vertex its material colour
     /// ([`Uniform`]: `color`). Errors: those of
     /// [`Pipeline::draw_valid_mesh`], with `sink`'s in place of a full bin.
     pub(crate) fn valid_mesh_into<C: Interpolate, M: Material<T>>(
@@ -134,11 +144,25 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         cache: &mut VertexCache<T, S, V>,
         bins: &mut heapless::Vec<ScreenTriangle<S>, N>,
     ) -> Result<MeshStats, Error> {
-        let mesh = mesh.mesh();
-        let whole = mesh.vertex_count() <= V;
-        if !whole && V < 3 {
+        if mesh.mesh().vertex_count() > V && V < 3 {
             return Err(Error::CapacityExceeded { needed: 3, capacity: V });
         }
+        self.cached_into(mesh, model, color, &mut cache.v, &mut WideTable::new(), bins)
+    }
+
+    /// [`Pipeline::draw_valid_mesh_cached`] with `cache` (at least three
+    /// entries, or the whole mesh) and `table` for its chunks' slots.
+    fn cached_into<C: Interpolate, const B: usize, const K: usize, const N: usize>(
+        &self,
+        mesh: &ValidMesh<'_>,
+        model: &Mat4<T>,
+        color: C,
+        cache: &mut [Cached<T, S>],
+        table: &mut SlotTable<B, K>,
+        bins: &mut heapless::Vec<ScreenTriangle<S>, N>,
+    ) -> Result<MeshStats, Error> {
+        let mesh = mesh.mesh();
+        let whole = mesh.vertex_count() <= cache.len();
         let mut bins = bins::BinWriter::new(bins);
         let mut run = || {
             let mut stats = MeshStats::default();
@@ -147,13 +171,13 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
             };
             let inside = inside::InsideView::new(&setup.ctx.mvp, setup.planes).contains(mesh.bounding_sphere);
             if !whole {
-                self.draw_chunked(&setup, mesh, &mut cache.v, inside, &mut stats, |tri| {
+                self.draw_chunked(&setup, mesh, cache, table, inside, &mut stats, |tri| {
                     bins.push(tri);
                     Ok(())
                 })?;
                 return Ok(stats);
             }
-            let cache = &mut cache.v[..mesh.vertex_count()];
+            let cache = &mut cache[..mesh.vertex_count()];
             let triangles = mesh.indices.iter().map(|t| t.map(usize::from));
             let cached = cache::Slots { slots: cache, inside };
             self.draw_cached(&setup, mesh, &Uniform, cached, triangles, &mut stats, |tri, _| {
@@ -225,4 +249,91 @@ pub(super) fn triangle_in_view<T: Scalar>(
     let clip = [0, 1, 2].map(|k| ctx.position(pos[k], yw[k]));
     let class = classify(clip, planes);
     Ok((class != Class::Outside).then_some((pos, clip, class)))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::light::Lighting;
+    use crate::math::{Fx, transform};
+    use crate::mesh::{icosphere, torus};
+    use embedded_graphics_core::pixelcolor::Rgb565;
+
+    type Bins = heapless::Vec<ScreenTriangle<4>, 1200>;
+
+    /// [`Pipeline::draw_valid_mesh`] (its vertices through an 8-entry cache
+    /// on the stack, chunk by chunk) gives the per-corner path's triangles,
+    /// in order, and its counts: over a sphere and a torus turned through
+    /// the view, some through the near plane (clipped), both shadings,
+    /// whole frames and bands, `f32` and `Fx`.
+    fn stack_cache_is_per_corner<T: Scalar>() {
+        let (mut sp, mut sn, mut si) = ([[0.0; 3]; 162], [[0.0; 3]; 162], [[0; 3]; 320]);
+        let (mut tp, mut tn, mut ti) = ([[0.0; 3]; 96], [[0.0; 3]; 96], [[0; 3]; 192]);
+        let meshes = [
+            icosphere(2, &mut sp, &mut sn, &mut si).unwrap(),
+            torus(12, 8, 1.0, 0.35, &mut tp, &mut tn, &mut ti).unwrap(),
+        ];
+        let f = T::from_f32;
+        let view = transform::look_at(
+            Vec3::new(f(0.0), f(0.8), f(3.2)),
+            Vec3::new(f(0.0), f(0.0), f(0.0)),
+            Vec3::new(f(0.0), f(1.0), f(0.0)),
+        )
+        .unwrap();
+        let light =
+            Lighting::new(f(0.2), Vec3::new(f(-0.4), f(0.7), f(0.6)), f(0.8)).with_specular(f(0.5), 16);
+        let base = Pipeline::<T, 4>::perspective(view, f(0.9), f(1.0), f(20.0), 160, 120).unwrap();
+        let base = base.with_lighting(light);
+        let (mut a, mut b) = (Bins::new(), Bins::new());
+        let (mut emitted, mut clipped) = (0, 0);
+        for mesh in &meshes {
+            let mesh = ValidMesh::new(*mesh).unwrap();
+            for i in 0..16 {
+                let t = i as f32 * 0.4;
+                // From well inside the view to across the near plane.
+                let model = transform::translation(Vec3::new(f(0.3 * t.sin()), f(0.0), f(0.16 * i as f32)))
+                    * transform::rotation_y(f(t))
+                    * transform::rotation_x(f(0.7 * t));
+                for shade in [Shade::Gouraud, Shade::Flat] {
+                    for rows in [None, Some((0, 15)), Some((40, 47)), Some((-20, 3))] {
+                        let mut p = base;
+                        (p.shade, p.rows) = (shade, rows);
+                        a.clear();
+                        b.clear();
+                        let color = Rgb565::new(25, 40, 10);
+                        let sa = p.valid_mesh_into(&mesh, &model, color, &Uniform, |tri| {
+                            a.push(tri).map_err(|_| Error::CapacityExceeded { needed: 0, capacity: 0 })
+                        });
+                        let sb = p.draw_valid_mesh(&mesh, &model, color, &mut b);
+                        assert_eq!(sa, sb, "{i} {shade:?} {rows:?}");
+                        assert!(a == b, "{i} {shade:?} {rows:?}: {} vs {} triangles", a.len(), b.len());
+                        let s = sa.unwrap();
+                        (emitted, clipped) = (emitted + s.emitted, clipped + s.clipped);
+                    }
+                }
+            }
+        }
+        assert!(emitted > 5_000 && clipped > 1_000, "{emitted} emitted, {clipped} clipped");
+    }
+
+    #[test]
+    fn stack_cache_is_per_corner_f32() {
+        stack_cache_is_per_corner::<f32>();
+    }
+
+    #[test]
+    fn stack_cache_is_per_corner_fx() {
+        stack_cache_is_per_corner::<Fx>();
+    }
+
+    /// The stack cache of [`Pipeline::draw_valid_mesh`] is as small as its
+    /// docs say (about 420 bytes with its slot table).
+    #[test]
+    fn stack_cache_size() {
+        let size = |c: usize, t: usize| c * SMALL_SLOTS + t;
+        let table = core::mem::size_of::<SmallTable>();
+        let f = size(core::mem::size_of::<Cached<f32, 4>>(), table);
+        let x = size(core::mem::size_of::<Cached<Fx, 4>>(), table);
+        assert!((380..=460).contains(&f) && (380..=460).contains(&x), "{f} {x}");
+    }
 }
