@@ -46,7 +46,9 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     /// subdivided spheres) share most corners this way (`docs/setup_cost.md`,
     /// twenty-ninth pass). The triangles, their order and the counts are
     /// those of a transform per corner (tested). A larger cache the caller
-    /// owns ([`Pipeline::draw_valid_mesh_cached`]) shares more.
+    /// owns ([`Pipeline::draw_valid_mesh_cached`]) shares more; an empty one
+    /// (`VertexCache<T, S, 0>`) takes each corner on its own, with the
+    /// least code and stack.
     ///
     /// Errors: [`Error::CapacityExceeded`] if `bins` fills up, with the
     /// length it needed (the mesh's triangles are counted to the end, and
@@ -133,9 +135,14 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     /// the mesh (a 64-entry cache, `VertexCache<T, S, 64>`, is 3,072 bytes
     /// for `f32` and [`Fx`](crate::math::Fx)).
     ///
+    /// An empty cache, `VertexCache<T, S, 0>`, transforms, snaps and lights
+    /// each vertex once per triangle corner instead: the same output again,
+    /// with neither the cache nor the cached stage's code: the smallest
+    /// build, and the least stack.
+    ///
     /// Errors: those of [`Pipeline::draw_valid_mesh`], and first
-    /// [`Error::CapacityExceeded`] with `needed` 3 if `V < 3` and the mesh
-    /// has more than `V` vertices (nothing done).
+    /// [`Error::CapacityExceeded`] with `needed` 3 if `0 < V < 3` and the
+    /// mesh has more than `V` vertices (nothing done).
     pub fn draw_valid_mesh_cached<C: Interpolate, const V: usize, const N: usize>(
         &self,
         mesh: &ValidMesh<'_>,
@@ -144,6 +151,15 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         cache: &mut VertexCache<T, S, V>,
         bins: &mut heapless::Vec<ScreenTriangle<S>, N>,
     ) -> Result<MeshStats, Error> {
+        if V == 0 {
+            // Per corner (a type's choice: the branch folds away).
+            let mut bins = bins::BinWriter::new(bins);
+            let result = self.valid_mesh_into(mesh, model, color, &Uniform, |tri| {
+                bins.push(tri);
+                Ok(())
+            });
+            return bins.finish(result);
+        }
         if mesh.mesh().vertex_count() > V && V < 3 {
             return Err(Error::CapacityExceeded { needed: 3, capacity: V });
         }
@@ -162,7 +178,10 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         bins: &mut heapless::Vec<ScreenTriangle<S>, N>,
     ) -> Result<MeshStats, Error> {
         let mesh = mesh.mesh();
-        let whole = mesh.vertex_count() <= cache.len();
+        // A mesh that fits a small table is one chunk of it: no second
+        // instance of the cached stage (for the mesh as its own source) in
+        // `draw_valid_mesh`'s code.
+        let whole = K > SMALL_SLOTS && mesh.vertex_count() <= cache.len();
         let mut bins = bins::BinWriter::new(bins);
         let mut run = || {
             let mut stats = MeshStats::default();
@@ -262,7 +281,8 @@ mod tests {
     type Bins = heapless::Vec<ScreenTriangle<4>, 1200>;
 
     /// [`Pipeline::draw_valid_mesh`] (its vertices through an 8-entry cache
-    /// on the stack, chunk by chunk) gives the per-corner path's triangles,
+    /// on the stack, chunk by chunk) and the empty cache
+    /// (`VertexCache<T, S, 0>`) give the per-corner path's triangles,
     /// in order, and its counts: over a sphere and a torus turned through
     /// the view, some through the near plane (clipped), both shadings,
     /// whole frames and bands, `f32` and `Fx`.
@@ -307,6 +327,11 @@ mod tests {
                         let sb = p.draw_valid_mesh(&mesh, &model, color, &mut b);
                         assert_eq!(sa, sb, "{i} {shade:?} {rows:?}");
                         assert!(a == b, "{i} {shade:?} {rows:?}: {} vs {} triangles", a.len(), b.len());
+                        // The empty cache: the per-corner path itself.
+                        b.clear();
+                        let empty = &mut VertexCache::<T, 4, 0>::new();
+                        let sc = p.draw_valid_mesh_cached(&mesh, &model, color, empty, &mut b);
+                        assert!(sa == sc && a == b, "{i} {shade:?} {rows:?}: empty cache");
                         let s = sa.unwrap();
                         (emitted, clipped) = (emitted + s.emitted, clipped + s.clipped);
                     }
