@@ -18,7 +18,7 @@
 //! vertices map to local slots through a table of twice as many buckets
 //! with linear probing, at most half full, so a lookup ends after a few
 //! probes; the table and the slot list live on the stack (about 400 bytes
-//! for 64 slots, 50 for 8).
+//! for 64 slots, 40 for 8).
 
 use super::cache::{Cached, Slots};
 use super::cluster::ClusterSource;
@@ -31,8 +31,8 @@ use crate::raster3d::ScreenTriangle;
 /// Most vertices of one chunk: a cluster's ([`ClusterCache`](super::ClusterCache)'s size).
 pub(super) const CHUNK_SLOTS: usize = MAX_MESHLET_VERTICES;
 
-/// The vertices of one chunk of [`Pipeline::draw_valid_mesh`] (its cache
-/// on the stack, [`STACK_CACHE`](super::mesh_bins)): at most 8.
+/// The vertices of one chunk of [`Pipeline::draw_valid_mesh`], whose
+/// cache is on the stack: at most 8.
 pub(super) const SMALL_SLOTS: usize = 8;
 
 /// Mesh vertex → local slot of the chunk being built or drawn: `C` slots

@@ -74,9 +74,10 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     /// [`Pipeline::draw_valid_mesh`]'s triangles, in the same order, handed
     /// to `sink` instead of a bin, each vertex transformed once per corner
     /// (no cache): with [`Pipeline::rows`] set to a band's rows, the vertex
-    /// stage draws straight into that band, no bins (the `view3d` front). `material` gives each vertex its material colour
-    /// ([`Uniform`]: `color`). Errors: those of
-    /// [`Pipeline::draw_valid_mesh`], with `sink`'s in place of a full bin.
+    /// stage draws straight into that band, no bins (the `view3d` front).
+    /// `material` gives each vertex its material colour ([`Uniform`]:
+    /// `color`). Errors: those of [`Pipeline::draw_valid_mesh`], with
+    /// `sink`'s in place of a full bin.
     pub(crate) fn valid_mesh_into<C: Interpolate, M: Material<T>>(
         &self,
         mesh: &ValidMesh<'_>,
