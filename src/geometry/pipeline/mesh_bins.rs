@@ -179,10 +179,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         bins: &mut heapless::Vec<ScreenTriangle<S>, N>,
     ) -> Result<MeshStats, Error> {
         let mesh = mesh.mesh();
-        // A mesh that fits a small table is one chunk of it: no second
-        // instance of the cached stage (for the mesh as its own source) in
-        // `draw_valid_mesh`'s code.
-        let whole = K > SMALL_SLOTS && mesh.vertex_count() <= cache.len();
+        let whole = mesh.vertex_count() <= cache.len();
         let mut bins = bins::BinWriter::new(bins);
         let mut run = || {
             let mut stats = MeshStats::default();
