@@ -119,6 +119,14 @@ pub enum Work {
     /// renderer holds).
     #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
     KnotTall(u16),
+    /// The standard scene through the one-call front
+    /// ([`View3d::draw`](microraster::view3d::View3d::draw): `f32`,
+    /// perspective-correct, the vertex stage per band straight into each
+    /// band, no bins), with the scene's camera, light and shading: the
+    /// frame of `Frame3d(F32, Perspective)` (tested equal,
+    /// `tests/integration/view3d.rs`). Cortex-M4F only.
+    #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+    Front3d,
     /// The 2D kit's dashboard ([`dashboard::dashboard`]: shapes with
     /// gradients, anti-aliasing and translucency, an alpha sprite, text),
     /// built and drawn in every band by `render::from_fn`.
@@ -221,6 +229,8 @@ pub const M4F: &[Bench] = &[
     // Last, so the rows above keep their indices.
     #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
     bench("knot20k-rows", Work::KnotTall(TALL_20 as u16)),
+    #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+    bench("scene3d", Work::Front3d),
 ];
 
 /// Rows of a band of [`Work::KnotTall`] whose colour and `Depth16` rows
@@ -282,6 +292,8 @@ impl Work {
             Work::KnotStage(Fix, Stage::NoWrites) => "Fx affine: all but pixel writes",
             Work::Dashboard => "2D kit, drawn per band",
             #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+            Work::Front3d => "View3d front, f32, persp.-correct, per band",
+            #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
             Work::KnotVertexRows(rows) => match rows {
                 16 => "f32 vertex stage only, 16-row bands",
                 32 => "f32 vertex stage only, 32-row bands",
@@ -310,6 +322,8 @@ impl Work {
             Work::Vertex3dChunked => "BINS,CHUNK",
             Work::Frame3dChunked => "BAND,DEPTH,BINS,CHUNK",
             Work::Frame3d(..) | Work::PerBand3d(..) => "BAND,DEPTH,BINS",
+            #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+            Work::Front3d => "VIEW",
             Work::Meshlets(F32, _) | Work::MeshletsFar(_) | Work::KnotStage(F32, _) => "BAND,DEPTH,CLUSTER",
             Work::Meshlets(Fix, _) | Work::KnotStage(Fix, _) => "BAND,DEPTH,CLUSTER_FX",
             #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
@@ -352,6 +366,6 @@ mod knot;
 mod scene3d;
 
 #[allow(unused_imports)] // the firmware uses some, the host's table all
-pub use frame::{Buffers, Cache, Tall, frame, prepare};
+pub use frame::{Buffers, Cache, Tall, View, frame, prepare};
 #[allow(unused_imports)]
 pub use scene3d::primitives;

@@ -96,6 +96,9 @@ mod firmware {
             Band::new(BACKGROUND);
         static mut DEPTH240: DepthBand<Depth16, { benches::M4F_SIZE.0 }, { benches::TALL_240 }> =
             DepthBand::zeroed();
+        // The one-call front, with its own bands and cluster cache.
+        static mut VIEW: benches::View<{ benches::M4F_SIZE.0 }, { benches::M4F_BAND }> =
+            benches::View::new(BACKGROUND);
         let cluster = Some((CLUSTER, CLUSTER_FX));
         let tall = Some(benches::Tall {
             band20: BAND20,
@@ -105,8 +108,9 @@ mod firmware {
             band240: BAND240,
             depth240: DEPTH240,
         });
-        let (cache, chunk) = (Some(CACHE), Some(CHUNK));
-        let b = Buffers { prims: PRIMS, band: BAND, depth: DEPTH, bins: BINS, cache, cluster, chunk, tall };
+        let (cache, chunk, view) = (Some(CACHE), Some(CHUNK), Some(VIEW));
+        let b =
+            Buffers { prims: PRIMS, band: BAND, depth: DEPTH, bins: BINS, cache, cluster, chunk, tall, view };
         finish(run(benches::M4F, benches::M4F_SIZE.1, b))
     }
 

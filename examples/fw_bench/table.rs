@@ -67,6 +67,7 @@ fn records<const W: usize, const H: usize, const N: usize, const P: usize>(
     let (mut band20, mut depth20) = (Box::new(Band::new(BACKGROUND)), Box::new(DepthBand::new()));
     let (mut band48, mut depth48) = (Box::new(Band::new(BACKGROUND)), Box::new(DepthBand::new()));
     let (mut band240, mut depth240) = (Box::new(Band::new(BACKGROUND)), Box::new(DepthBand::new()));
+    let mut view = Box::new(benches::View::new(BACKGROUND));
     let mut b: Buffers<'_, W, H, N, P> = Buffers {
         prims: &mut prims,
         band: &mut band,
@@ -83,6 +84,7 @@ fn records<const W: usize, const H: usize, const N: usize, const P: usize>(
             band240: &mut band240,
             depth240: &mut depth240,
         }),
+        view: Some(&mut view),
     };
     let mut out = Vec::new();
     let select = std::env::var(benches::SELECT_VAR).ok();
@@ -317,10 +319,10 @@ pub fn table(input: &str) -> Result<(String, String), String> {
         let run = &runs[t];
         // The symbols are fw_bench's; the CRC firmware has the same buffers
         // but the taller bands (`BAND20`, `BAND48`, `BAND240` and their
-        // depth rows).
+        // depth rows) and the front's (`VIEW`).
         let list = |all: bool| {
-            let tall = |k: &str| k.ends_with("20") || k.ends_with("48") || k.ends_with("240");
-            let b = run.symbols.iter().filter(|(k, _)| all || !tall(k));
+            let own = |k: &str| k.ends_with("20") || k.ends_with("48") || k.ends_with("240") || k == "VIEW";
+            let b = run.symbols.iter().filter(|(k, _)| all || !own(k));
             b.map(|(k, v)| format!("{k} {}", group(*v))).collect::<Vec<_>>().join(", ")
         };
         for (name, text, data, bss) in &run.sizes {

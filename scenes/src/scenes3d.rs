@@ -17,6 +17,7 @@ use microraster::mesh::{
 };
 use microraster::pipeline::{MeshStats, Pipeline, Shade, VertexCache};
 use microraster::raster3d::ScreenTriangle;
+use microraster::view3d::{Camera, Object};
 use microraster::{Error, Interpolate};
 
 mod meshes;
@@ -127,11 +128,33 @@ impl Scene3d {
             Vec3::new(f(0.0), f(0.0), f(0.0)),
             Vec3::new(f(0.0), f(1.0), f(0.0)),
         )?;
-        let light =
-            Lighting::new(f(0.25), Vec3::new(f(-0.4), f(0.7), f(0.6)), f(0.75)).with_specular(f(0.4), 24);
-        let mut p = Pipeline::perspective(view, f(0.9), f(1.0), f(20.0), width, height)?.with_lighting(light);
+        let mut p = Pipeline::perspective(view, f(0.9), f(1.0), f(20.0), width, height)?
+            .with_lighting(Self::lighting());
         p.shade = Shade::Gouraud;
         Ok(p)
+    }
+
+    /// The standard scene's light: ambient 0.25, one directional light,
+    /// specular 0.4 with exponent 24.
+    pub fn lighting<T: Scalar>() -> Lighting<T> {
+        let f = T::from_f32;
+        Lighting::new(f(0.25), Vec3::new(f(-0.4), f(0.7), f(0.6)), f(0.75)).with_specular(f(0.4), 24)
+    }
+
+    /// The standard scene's camera for the one-call front
+    /// ([`View3d`](microraster::view3d::View3d)): the eye, target and lens
+    /// of [`Scene3d::pipeline`].
+    pub const fn camera() -> Camera {
+        Camera::look_at([0.0, 1.9, 5.6], [0.0; 3]).perspective(0.9, 1.0, 20.0)
+    }
+
+    /// The three meshes as the front's objects at animation angle `angle`:
+    /// the models and colours of [`Scene3d::draw`] (each model matrix
+    /// applied whole, so the vertices are the same bit for bit).
+    pub fn objects<C: Interpolate>(angle: f32) -> [Object<'static, C>; 3] {
+        let [a, b, c] = Self::models::<f32, C>(angle);
+        let object = |mesh, (model, color): (Mat4<f32>, C)| Object::new(mesh, color).then(model);
+        [object(&VALID[0], a), object(&VALID[1], b), object(&VALID[2], c)]
     }
 
     /// Runs the vertex stage of the standard scene at animation angle

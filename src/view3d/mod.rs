@@ -280,8 +280,10 @@ impl<C: Interpolate, const W: usize, const H: usize> View3d<C, W, H> {
     /// Draws one frame of `objects` seen by `camera` into `display`, band
     /// by band: each band is cleared, every object's triangles that touch
     /// it are drawn straight into it (no bins: the vertex stage runs per
-    /// band, [`Pipeline::rows`] set to the band's rows; meshlet meshes go
-    /// through [`Pipeline::draw_meshlets`]), and the band is sent with one
+    /// band, [`Pipeline::rows`] set to the band's rows, a plain mesh's
+    /// vertices through the 8-entry stack cache of
+    /// [`Pipeline::draw_valid_mesh`] unless it has a colour per face;
+    /// meshlet meshes go through [`Pipeline::draw_meshlets`]), and the band is sent with one
     /// `fill_contiguous`. The image does not depend on `H`.
     ///
     /// ```
@@ -369,9 +371,9 @@ fn draw_object<C: Interpolate, Mat: Material<f32>, const W: usize>(
     };
     match o.geometry() {
         Geometry::Mesh(m) => {
-            banded.valid_mesh_into(&ValidMesh::trusted(m), &model, color, material, &mut into_band)?
+            banded.mesh_into(&ValidMesh::trusted(m), &model, color, material, &mut into_band)?
         }
-        Geometry::Valid(m) => banded.valid_mesh_into(&m, &model, color, material, &mut into_band)?,
+        Geometry::Valid(m) => banded.mesh_into(&m, &model, color, material, &mut into_band)?,
         Geometry::Meshlets(m) => banded.draw_meshlets_with(m, &model, color, material, cache, band)?,
     };
     Ok(())

@@ -138,6 +138,39 @@ fn front_draws_what_the_explicit_api_draws() {
     }
 }
 
+/// The standard scene (`Scene3d`, the benchmarks' scene) through the front
+/// at full size (320 × 240, 16-row bands: its vertex stage per band through
+/// the stack cache) draws the binned path's frame exactly
+/// (`Scene3d::draw` into one frame's bins, then `Triangles3d`), over a turn
+/// of its animation; the `fw_bench` row of the front times this frame.
+#[test]
+fn front_draws_the_standard_scene_as_the_binned_path() {
+    use microraster_scenes::scenes3d::{BINS, Scene3d};
+    const SW: usize = 320;
+    const SH: u32 = 240;
+    let mut view = Box::new(View3d::<Rgb565, SW, 16>::new(BG));
+    let p = Scene3d::pipeline::<f32, 4>(SW as u32, SH).unwrap();
+    view.set_lighting(p.lighting);
+    view.set_cull(p.cull);
+    view.set_shade(p.shade);
+    let mut bins = Box::new(heapless::Vec::<_, BINS>::new());
+    let (mut band, mut depth) =
+        (Box::new(Band::<Rgb565, SW, 16>::new(BG)), Box::new(DepthBand::<Depth16, SW, 16>::new()));
+    for angle in [0.0f32, 0.6, 1.7, 2.9, 4.4, 5.8] {
+        let mut front = Framebuffer::new(SW as u32, SH, BG);
+        view.draw(&Scene3d::camera(), &Scene3d::objects(angle), &mut front).unwrap();
+        bins.clear();
+        Scene3d.draw::<f32, Rgb565, 4, BINS>(&p, angle, &mut bins).unwrap();
+        let mut binned = Framebuffer::new(SW as u32, SH, BG);
+        let frame = Triangles3d::new(&bins, &mut *depth, DepthState::LESS_WRITE, PerspectiveCorrect);
+        Renderer::new(SH, BG).render(frame, &mut *band, &mut binned).unwrap();
+        let differ = front.pixels.iter().zip(&binned.pixels).filter(|(a, b)| a != b).count();
+        assert_eq!(differ, 0, "angle {angle}: {differ} pixels differ");
+        let covered = front.pixels.iter().filter(|&&c| c != BG).count();
+        assert!(covered > 15_000 && colours(&front.pixels, 0) > 100, "angle {angle}: {covered} pixels drawn");
+    }
+}
+
 #[test]
 fn image_does_not_depend_on_the_band_height() {
     let ball = sphere();

@@ -12,6 +12,8 @@ use microraster::mesh::MAX_MESHLET_VERTICES;
 use microraster::pipeline::{ClusterCache, VertexCache};
 use microraster::raster3d::{Affine, PerspectiveCorrect, ScreenTriangle};
 use microraster::render::{Triangles3d, from_fn};
+#[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+use microraster::view3d::View3d;
 use microraster::{Band, Error, Primitive, RenderError, Renderer};
 use microraster_scenes::scenes;
 use microraster_scenes::scenes3d::CACHE_VERTICES;
@@ -22,6 +24,8 @@ use super::Vertex::{F32, Fx as Fix};
 use super::dashboard;
 #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
 use super::knot::{knot_stage, knot_tall, knot_vertex_rows, meshlets};
+#[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+use super::scene3d::front3d;
 use super::scene3d::{cached_vertex_stage, frame3d, per_band3d, vertex3d, vertex3d_per_band};
 use super::{Sink, TALL_20, TALL_48, TALL_240, Work};
 use crate::workload::{self, DEPTH_STATE, S};
@@ -51,7 +55,15 @@ pub struct Buffers<'a, const W: usize, const H: usize, const N: usize, const P: 
     /// stack has no room for even this field's bytes.
     #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
     pub tall: Option<Tall<'a, W>>,
+    /// The one-call front with its own bands and cluster cache
+    /// ([`Work::Front3d`]); not on the Cortex-M0.
+    #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+    pub view: Option<&'a mut View<W, H>>,
 }
+
+/// The front of [`Work::Front3d`].
+#[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+pub type View<const W: usize, const H: usize> = View3d<Rgb565, W, H>;
 
 /// The colour and depth bands of [`Work::KnotTall`].
 pub struct Tall<'a, const W: usize> {
@@ -116,6 +128,9 @@ pub fn frame<const W: usize, const H: usize, const N: usize, const P: usize>(
             let c = b.cluster.as_mut().ok_or(Error::BufferTooSmall)?;
             let t = b.tall.as_mut().ok_or(Error::BufferTooSmall)?;
             return knot_tall::<W>(Renderer::new(height, bg), rows, t, c.0, sink);
+        }
+        Work::Front3d => {
+            return front3d(b.view.as_deref_mut().ok_or(Error::BufferTooSmall)?, height, bg, sink);
         }
         _ => {}
     }
@@ -194,7 +209,7 @@ fn frame_other<const W: usize, const H: usize, const N: usize, const P: usize>(
             (Fix, c) => knot_stage::<Fx, W, H>(r, b.band, b.depth, c.1, stage, sink),
         },
         #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
-        Work::KnotVertexRows(_) | Work::KnotTall(_) => Err(Error::InvalidParameter), // in `frame`
+        Work::KnotVertexRows(_) | Work::KnotTall(_) | Work::Front3d => Err(Error::InvalidParameter), // in `frame`
         #[cfg(not(any(not(target_os = "none"), target_abi = "eabihf")))]
         Work::Meshlets(..) | Work::MeshletsFar(_) | Work::KnotStage(..) => Err(Error::InvalidParameter),
     }

@@ -8,6 +8,8 @@ use microraster::math::{Fx, Scalar};
 use microraster::pipeline::{MeshStats, VertexCache};
 use microraster::raster3d::{Interpolation, ScreenTriangle};
 use microraster::render::{PerBand3d, Triangles3d};
+#[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+use microraster::view3d::View3d;
 use microraster::{Error, Primitive, Renderer};
 use microraster_scenes::scenes3d::Scene3d;
 
@@ -100,6 +102,25 @@ pub(super) fn per_band3d<
         .map_err(input)
 }
 
+/// The standard scene through the one-call front ([`Work::Front3d`]): the
+/// camera, light and shading of [`Scene3d::pipeline`], frames of `height`
+/// rows on background `bg`.
+#[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+pub(super) fn front3d<const W: usize, const H: usize>(
+    view: &mut View3d<Rgb565, W, H>,
+    height: u32,
+    bg: Rgb565,
+    sink: &mut Sink,
+) -> Result<(), Error> {
+    let p = Scene3d::pipeline::<f32, S>(W as u32, height)?;
+    view.set_height(Some(height));
+    view.set_background(bg);
+    view.set_lighting(p.lighting);
+    view.set_cull(p.cull);
+    view.set_shade(p.shade);
+    view.draw(&Scene3d::camera(), &Scene3d::objects(ANGLE), sink).map_err(input)
+}
+
 /// Triangles and lines of one frame of `work` (each triangle counted once,
 /// in the band of its top row, when the vertex stage runs per band).
 pub fn primitives<const W: usize, const H: usize, const N: usize, const P: usize>(
@@ -139,6 +160,8 @@ pub fn primitives<const W: usize, const H: usize, const N: usize, const P: usize
         Work::Meshlets(..) | Work::MeshletsFar(_) | Work::KnotStage(..) => Err(Error::InvalidParameter),
         Work::Frame2d(scene) | Work::Streamed2d(scene) => count_2d(scene),
         Work::Vertex3dCached | Work::Vertex3dChunked | Work::Frame3dChunked => count_3d(F32),
+        #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+        Work::Front3d => count_3d(F32),
         Work::Vertex3d(t) | Work::VertexPerBand3d(t) | Work::Frame3d(t, _) | Work::PerBand3d(t, _) => {
             count_3d(t)
         }

@@ -22,7 +22,7 @@
 
 use super::cache::{Cached, Slots};
 use super::cluster::ClusterSource;
-use super::{MeshSetup, MeshStats, Pipeline, Uniform};
+use super::{Material, MeshSetup, MeshStats, Pipeline};
 use crate::Error;
 use crate::math::Scalar;
 use crate::mesh::{MAX_MESHLET_VERTICES, Mesh};
@@ -116,12 +116,14 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     /// [`Pipeline::draw_cached`] over the whole of `mesh` with `cache`
     /// smaller than its vertex count, chunk by chunk (module docs), with
     /// `table` for its slots; every triangle goes to `sink` in the mesh's
-    /// order. `cache` has at least three entries.
+    /// order, coloured by `material` (not per face). `cache` has at least
+    /// three entries.
     #[allow(clippy::too_many_arguments)]
-    pub(super) fn draw_chunked<const B: usize, const C: usize>(
+    pub(super) fn draw_chunked<M: Material<T>, const B: usize, const C: usize>(
         &self,
         setup: &MeshSetup<T>,
         mesh: &Mesh<'_>,
+        material: &M,
         cache: &mut [Cached<T, S>],
         table: &mut SlotTable<B, C>,
         inside: bool,
@@ -140,7 +142,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
             let src = ClusterSource { mesh, vertices: &table.vertex[..table.len] };
             let triangles = chunk.iter().map(|t| t.map(|v| table.slot(v)));
             let slots = Slots { slots: &mut cache[..table.len], inside };
-            self.draw_cached(setup, &src, &Uniform, slots, triangles, stats, |tri, _| sink(tri))?;
+            self.draw_cached(setup, &src, material, slots, triangles, stats, |tri, _| sink(tri))?;
         }
         Ok(())
     }

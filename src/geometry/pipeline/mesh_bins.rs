@@ -67,18 +67,53 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         color: C,
         bins: &mut heapless::Vec<ScreenTriangle<S>, N>,
     ) -> Result<MeshStats, Error> {
-        let mut cache = [Cached::EMPTY; SMALL_SLOTS];
-        self.cached_into(mesh, model, color, &mut cache, &mut SmallTable::new(), bins)
+        let mut bins = bins::BinWriter::new(bins);
+        let result = self.stack_cached_into(mesh, model, color, &Uniform, |tri| {
+            bins.push(tri);
+            Ok(())
+        });
+        bins.finish(result)
     }
 
     /// [`Pipeline::draw_valid_mesh`]'s triangles, in the same order, handed
-    /// to `sink` instead of a bin, each vertex transformed once per corner
-    /// (no cache): with [`Pipeline::rows`] set to a band's rows, the vertex
-    /// stage draws straight into that band, no bins (the `view3d` front).
-    /// `material` gives each vertex its material colour ([`Uniform`]:
-    /// `color`). Errors: those of [`Pipeline::draw_valid_mesh`], with
+    /// to `sink` instead of a bin: with [`Pipeline::rows`] set to a band's
+    /// rows, the vertex stage draws straight into that band, no bins (the
+    /// `view3d` front). `material` gives each vertex its material colour
+    /// ([`Uniform`]: `color`). Through the 8-entry stack cache, except for
+    /// a colour per face (one lit colour per vertex cannot hold it): then
+    /// per corner. Errors: those of [`Pipeline::draw_valid_mesh`], with
     /// `sink`'s in place of a full bin.
-    pub(crate) fn valid_mesh_into<C: Interpolate, M: Material<T>>(
+    pub(crate) fn mesh_into<C: Interpolate, M: Material<T>>(
+        &self,
+        mesh: &ValidMesh<'_>,
+        model: &Mat4<T>,
+        color: C,
+        material: &M,
+        sink: impl FnMut(ScreenTriangle<S>) -> Result<(), Error>,
+    ) -> Result<MeshStats, Error> {
+        if M::PER_FACE {
+            return self.valid_mesh_into(mesh, model, color, material, sink);
+        }
+        self.stack_cached_into(mesh, model, color, material, sink)
+    }
+
+    /// The cached path with 8 entries on the stack ([`SMALL_SLOTS`]).
+    fn stack_cached_into<C: Interpolate, M: Material<T>>(
+        &self,
+        mesh: &ValidMesh<'_>,
+        model: &Mat4<T>,
+        color: C,
+        material: &M,
+        sink: impl FnMut(ScreenTriangle<S>) -> Result<(), Error>,
+    ) -> Result<MeshStats, Error> {
+        let mut cache = [Cached::EMPTY; SMALL_SLOTS];
+        self.cached_into(mesh, model, color, material, &mut cache, &mut SmallTable::new(), sink)
+    }
+
+    /// [`Pipeline::mesh_into`] with each vertex transformed once per
+    /// corner (no cache): the empty cache's path, and that of a colour per
+    /// face.
+    fn valid_mesh_into<C: Interpolate, M: Material<T>>(
         &self,
         mesh: &ValidMesh<'_>,
         model: &Mat4<T>,
@@ -164,47 +199,44 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         if mesh.mesh().vertex_count() > V && V < 3 {
             return Err(Error::CapacityExceeded { needed: 3, capacity: V });
         }
-        self.cached_into(mesh, model, color, &mut cache.v, &mut WideTable::new(), bins)
+        let mut bins = bins::BinWriter::new(bins);
+        let result =
+            self.cached_into(mesh, model, color, &Uniform, &mut cache.v, &mut WideTable::new(), |tri| {
+                bins.push(tri);
+                Ok(())
+            });
+        bins.finish(result)
     }
 
-    /// [`Pipeline::draw_valid_mesh_cached`] with `cache` (at least three
-    /// entries, or the whole mesh) and `table` for its chunks' slots.
-    fn cached_into<C: Interpolate, const B: usize, const K: usize, const N: usize>(
+    /// The cached path over `mesh` with `cache` (at least three entries, or
+    /// the whole mesh) and `table` for its chunks' slots, every triangle to
+    /// `sink`; `material` is not per face.
+    #[allow(clippy::too_many_arguments)]
+    fn cached_into<C: Interpolate, M: Material<T>, const B: usize, const K: usize>(
         &self,
         mesh: &ValidMesh<'_>,
         model: &Mat4<T>,
         color: C,
+        material: &M,
         cache: &mut [Cached<T, S>],
         table: &mut SlotTable<B, K>,
-        bins: &mut heapless::Vec<ScreenTriangle<S>, N>,
+        mut sink: impl FnMut(ScreenTriangle<S>) -> Result<(), Error>,
     ) -> Result<MeshStats, Error> {
         let mesh = mesh.mesh();
-        let whole = mesh.vertex_count() <= cache.len();
-        let mut bins = bins::BinWriter::new(bins);
-        let mut run = || {
-            let mut stats = MeshStats::default();
-            let Some(setup) = self.mesh_setup(mesh, model, color, &mut stats)? else {
-                return Ok(stats);
-            };
-            let inside = inside::InsideView::new(&setup.ctx.mvp, setup.planes).contains(mesh.bounding_sphere);
-            if !whole {
-                self.draw_chunked(&setup, mesh, cache, table, inside, &mut stats, |tri| {
-                    bins.push(tri);
-                    Ok(())
-                })?;
-                return Ok(stats);
-            }
-            let cache = &mut cache[..mesh.vertex_count()];
-            let triangles = mesh.indices.iter().map(|t| t.map(usize::from));
-            let cached = cache::Slots { slots: cache, inside };
-            self.draw_cached(&setup, mesh, &Uniform, cached, triangles, &mut stats, |tri, _| {
-                bins.push(tri);
-                Ok(())
-            })?;
-            Ok(stats)
+        let mut stats = MeshStats::default();
+        let Some(setup) = self.mesh_setup(mesh, model, color, &mut stats)? else {
+            return Ok(stats);
         };
-        let result = run();
-        bins.finish(result)
+        let inside = inside::InsideView::new(&setup.ctx.mvp, setup.planes).contains(mesh.bounding_sphere);
+        if mesh.vertex_count() > cache.len() {
+            self.draw_chunked(&setup, mesh, material, cache, table, inside, &mut stats, sink)?;
+            return Ok(stats);
+        }
+        let cache = &mut cache[..mesh.vertex_count()];
+        let triangles = mesh.indices.iter().map(|t| t.map(usize::from));
+        let cached = cache::Slots { slots: cache, inside };
+        self.draw_cached(&setup, mesh, material, cached, triangles, &mut stats, |tri, _| sink(tri))?;
+        Ok(stats)
     }
 
     /// Clips a triangle that crosses a plane and hands each piece that
@@ -271,6 +303,7 @@ pub(super) fn triangle_in_view<T: Scalar>(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::geometry::pipeline::PerVertex;
     use crate::light::Lighting;
     use crate::math::{Fx, transform};
     use crate::mesh::{icosphere, torus};
@@ -281,7 +314,8 @@ mod tests {
     /// [`Pipeline::draw_valid_mesh`] (its vertices through an 8-entry cache
     /// on the stack, chunk by chunk) and the empty cache
     /// (`VertexCache<T, S, 0>`) give the per-corner path's triangles,
-    /// in order, and its counts: over a sphere and a torus turned through
+    /// in order, and its counts, and so does [`Pipeline::mesh_into`] with
+    /// a colour per vertex: over a sphere and a torus turned through
     /// the view, some through the near plane (clipped), both shadings,
     /// whole frames and bands, `f32` and `Fx`.
     fn stack_cache_is_per_corner<T: Scalar>() {
@@ -303,6 +337,8 @@ mod tests {
         let base = Pipeline::<T, 4>::perspective(view, f(0.9), f(1.0), f(20.0), 160, 120).unwrap();
         let base = base.with_lighting(light);
         let (mut a, mut b) = (Bins::new(), Bins::new());
+        let vertex_colors: [Rgb565; 162] =
+            core::array::from_fn(|k| Rgb565::new((k * 5 % 32) as u8, (k * 7 % 64) as u8, (k * 3 % 32) as u8));
         let (mut emitted, mut clipped) = (0, 0);
         for mesh in &meshes {
             let mesh = ValidMesh::new(*mesh).unwrap();
@@ -330,6 +366,18 @@ mod tests {
                         let empty = &mut VertexCache::<T, 4, 0>::new();
                         let sc = p.draw_valid_mesh_cached(&mesh, &model, color, empty, &mut b);
                         assert!(sa == sc && a == b, "{i} {shade:?} {rows:?}: empty cache");
+                        // A colour per vertex, through the stack cache (the
+                        // `view3d` front's path) and per corner.
+                        a.clear();
+                        b.clear();
+                        let pv = PerVertex(&vertex_colors);
+                        let sa = p.valid_mesh_into(&mesh, &model, color, &pv, |tri| {
+                            a.push(tri).map_err(|_| Error::CapacityExceeded { needed: 0, capacity: 0 })
+                        });
+                        let sb = p.mesh_into(&mesh, &model, color, &pv, |tri| {
+                            b.push(tri).map_err(|_| Error::CapacityExceeded { needed: 0, capacity: 0 })
+                        });
+                        assert!(sa == sb && a == b, "{i} {shade:?} {rows:?}: per-vertex colours");
                         let s = sa.unwrap();
                         (emitted, clipped) = (emitted + s.emitted, clipped + s.clipped);
                     }
