@@ -12,7 +12,6 @@ use microraster::mesh::MAX_MESHLET_VERTICES;
 use microraster::pipeline::{ClusterCache, VertexCache};
 use microraster::raster3d::{Affine, PerspectiveCorrect, ScreenTriangle};
 use microraster::render::{Triangles3d, from_fn};
-#[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
 use microraster::view3d::View3d;
 use microraster::{Band, Error, Primitive, RenderError, Renderer};
 use microraster_scenes::scenes;
@@ -61,8 +60,7 @@ pub struct Buffers<'a, const W: usize, const H: usize, const N: usize, const P: 
     pub view: Option<&'a mut View<W, H>>,
 }
 
-/// The front of [`Work::Front3d`].
-#[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+/// The front of [`Work::Front3d`] (Cortex-M4F only).
 pub type View<const W: usize, const H: usize> = View3d<Rgb565, W, H>;
 
 /// The colour and depth bands of [`Work::KnotTall`].
