@@ -33,6 +33,7 @@
 mod band;
 mod bins;
 mod cache;
+mod chunk_record;
 mod chunked;
 mod cluster;
 mod eager;
@@ -54,6 +55,7 @@ use mesh_setup::{row_f32, rows_f32, view_planes};
 use vertex_ctx::{MeshSetup, VertexCtx, channels, finite_color};
 
 pub use cache::VertexCache;
+pub(crate) use chunk_record::{ChunkMemo, FrameChunks, NoMemo};
 pub use cluster::ClusterCache;
 pub use frame_clusters::{FRAME_CLUSTERS, FRAME_MESHES};
 pub(crate) use material::{Material, PerFace, PerVertex, Uniform};

@@ -48,7 +48,9 @@ use crate::edge::Cull;
 use crate::light::{Lighting, Viewer};
 use crate::math::Vec3;
 use crate::mesh::ValidMesh;
-use crate::pipeline::{ClusterCache, Material, PerFace, PerVertex, Pipeline, Shade, Uniform};
+use crate::pipeline::{
+    ChunkMemo, ClusterCache, FrameChunks, Material, PerFace, PerVertex, Pipeline, Shade, Uniform,
+};
 use crate::raster3d::PerspectiveCorrect;
 use crate::render::{Band3d, Direct3d};
 use crate::{Error, Interpolate, MAX_FRAME_DIM, RenderError, Renderer};
@@ -72,7 +74,7 @@ pub const DEFAULT_LIGHTING: Lighting<f32> = Lighting {
 /// use embedded_graphics::pixelcolor::{Rgb565, RgbColor};
 /// use microraster::view3d::View240x240;
 /// let view = View240x240::new(Rgb565::BLACK);
-/// assert!(core::mem::size_of_val(&view) < 240 * 16 * 4 + 5_600);
+/// assert!(core::mem::size_of_val(&view) < 240 * 16 * 4 + 8_400);
 /// ```
 pub type View240x240 = View3d<Rgb565, 240, 16>;
 
@@ -99,14 +101,17 @@ pub type View320x240 = View3d<Rgb565, 320, 16>;
 pub type View160x128 = View3d<Rgb565, 160, 8>;
 
 /// The buffers and settings of 3D frames `W` pixels wide drawn in bands of
-/// `H` rows: the colour [`Band`], its 16-bit [`DepthBand`] and the
-/// [`ClusterCache`] of meshlet meshes. The frame is as tall as the display
+/// `H` rows: the colour [`Band`], its 16-bit [`DepthBand`], the
+/// [`ClusterCache`] of meshlet meshes and a record of plain meshes' chunks. The frame is as tall as the display
 /// ([`View3d::set_height`] to use fewer rows); rows, not columns, are
 /// banded, so `W` must not exceed the display's width.
 ///
-/// Size: `W × H × 4` bytes plus about 5.2 KB (the cluster cache: one
-/// cluster's vertices and the frame's cluster record, which up to four
-/// meshlet objects share).
+/// Size: `W × H × 4` bytes plus about 8.3 KB: the cluster cache (5.1 KB:
+/// one cluster's vertices and the frame's cluster record, which up to four
+/// meshlet objects share) and the frame's chunk record (3.1 KB: for each
+/// chunk of up to 8 vertices of the first 8 plain-mesh objects, up to 256
+/// chunks in all, its triangle count and rows, so the bands it misses skip
+/// it).
 ///
 /// ```
 /// use embedded_graphics::mock_display::MockDisplay;
@@ -124,6 +129,7 @@ pub struct View3d<C, const W: usize, const H: usize> {
     band: Band<C, W, H>,
     depth: DepthBand<Depth16, W, H>,
     cache: ClusterCache<f32, 4>,
+    chunks: FrameChunks,
     background: C,
     height: Option<u32>,
     lighting: Option<Lighting<f32>>,
@@ -139,7 +145,7 @@ impl<C: Interpolate, const W: usize, const H: usize> View3d<C, W, H> {
     /// use embedded_graphics::pixelcolor::{Rgb565, RgbColor};
     /// use microraster::Cull;
     /// use microraster::view3d::{DEFAULT_LIGHTING, View3d};
-    /// // `const`: it can be a `static` in firmware (W × H × 4 bytes plus the cluster cache).
+    /// // `const`: it can be a `static` in firmware (W × H × 4 bytes plus about 8.3 KB).
     /// static VIEW: View3d<Rgb565, 320, 16> = View3d::new(Rgb565::BLACK);
     /// let view = View3d::<Rgb565, 64, 8>::new(Rgb565::BLUE);
     /// assert_eq!(view.background(), Rgb565::BLUE);
@@ -151,6 +157,7 @@ impl<C: Interpolate, const W: usize, const H: usize> View3d<C, W, H> {
             band: Band::new(background),
             depth: DepthBand::new(),
             cache: ClusterCache::new(),
+            chunks: FrameChunks::new(),
             background,
             height: None,
             lighting: Some(DEFAULT_LIGHTING),
@@ -282,7 +289,9 @@ impl<C: Interpolate, const W: usize, const H: usize> View3d<C, W, H> {
     /// it are drawn straight into it (no bins: the vertex stage runs per
     /// band, [`Pipeline::rows`] set to the band's rows, a plain mesh's
     /// vertices through the 8-entry stack cache of
-    /// [`Pipeline::draw_valid_mesh`] unless it has a colour per face;
+    /// [`Pipeline::draw_valid_mesh`] unless it has a colour per face, its
+    /// chunks recorded in the first band that reaches them and skipped by
+    /// the bands they miss;
     /// meshlet meshes go through [`Pipeline::draw_meshlets`]), and the band is sent with one
     /// `fill_contiguous`. The image does not depend on `H`.
     ///
@@ -336,16 +345,18 @@ impl<C: Interpolate, const W: usize, const H: usize> View3d<C, W, H> {
             }
             o.check_colors()?;
         }
-        let cache = &mut self.cache;
+        let (cache, chunks) = (&mut self.cache, &mut self.chunks);
+        chunks.clear();
         let frame = Direct3d::new(&mut self.depth, DepthState::LESS_WRITE, PerspectiveCorrect, |band| {
             let mut banded = pipe;
             banded.rows = Some(band.rows());
-            for o in objects {
+            for (i, o) in objects.iter().enumerate() {
+                let memo = &mut chunks.object(i);
                 // The colour source is a type, chosen once per object.
                 match o.colors() {
-                    Colors::Material => draw_object(&banded, o, &Uniform, cache, band)?,
-                    Colors::PerVertex(c) => draw_object(&banded, o, &PerVertex(c), cache, band)?,
-                    Colors::PerFace(c) => draw_object(&banded, o, &PerFace(c), cache, band)?,
+                    Colors::Material => draw_object(&banded, o, &Uniform, cache, memo, band)?,
+                    Colors::PerVertex(c) => draw_object(&banded, o, &PerVertex(c), cache, memo, band)?,
+                    Colors::PerFace(c) => draw_object(&banded, o, &PerFace(c), cache, memo, band)?,
                 }
             }
             Ok(())
@@ -354,14 +365,16 @@ impl<C: Interpolate, const W: usize, const H: usize> View3d<C, W, H> {
     }
 }
 
-/// One object into a band: through the vertex stage straight into it, or
-/// cluster by cluster for a meshlet mesh ([`Pipeline::rows`] of `banded`
-/// set to the band's rows).
+/// One object into a band: through the vertex stage straight into it
+/// (its chunks through the frame's record, `memo`), or cluster by cluster
+/// for a meshlet mesh ([`Pipeline::rows`] of `banded` set to the band's
+/// rows).
 fn draw_object<C: Interpolate, Mat: Material<f32>, const W: usize>(
     banded: &Pipeline<f32, 4>,
     o: &Object<'_, C>,
     material: &Mat,
     cache: &mut ClusterCache<f32, 4>,
+    memo: &mut impl ChunkMemo<f32>,
     band: &mut Band3d<'_, '_, C, Depth16, PerspectiveCorrect, W>,
 ) -> Result<(), Error> {
     let (model, color) = (o.model(), o.color());
@@ -371,9 +384,9 @@ fn draw_object<C: Interpolate, Mat: Material<f32>, const W: usize>(
     };
     match o.geometry() {
         Geometry::Mesh(m) => {
-            banded.mesh_into(&ValidMesh::trusted(m), &model, color, material, &mut into_band)?
+            banded.mesh_into(&ValidMesh::trusted(m), &model, color, material, memo, &mut into_band)?
         }
-        Geometry::Valid(m) => banded.mesh_into(&m, &model, color, material, &mut into_band)?,
+        Geometry::Valid(m) => banded.mesh_into(&m, &model, color, material, memo, &mut into_band)?,
         Geometry::Meshlets(m) => banded.draw_meshlets_with(m, &model, color, material, cache, band)?,
     };
     Ok(())

@@ -37,10 +37,10 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
 /// and `w` as evaluated: clipping only moves vertices along the triangle, a
 /// convex combination that stays on the same side.)
 #[derive(Clone, Copy)]
-pub(super) struct Band<T> {
+pub(crate) struct Band<T> {
     pub(super) above: Option<T>,
     pub(super) below: Option<T>,
-    w_min: T,
+    pub(super) w_min: T,
     /// `above` and `below` as `f32` bounds that a missing side turns into
     /// ±∞, which no `y` passes (not read for `Fx`, which has no infinity).
     bounds: (T, T),

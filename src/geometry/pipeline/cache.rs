@@ -60,7 +60,7 @@ impl<T: Scalar, const S: u32, const V: usize> core::fmt::Debug for VertexCache<T
 
 /// One vertex of a [`VertexCache`].
 #[derive(Clone, Copy)]
-pub(super) struct Cached<T, const S: u32> {
+pub(crate) struct Cached<T, const S: u32> {
     /// Clip position (only y and w until `CLIP` is set).
     pub(super) clip: [T; 4],
     /// `Band` side bits and the flags below.

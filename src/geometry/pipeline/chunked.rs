@@ -22,7 +22,7 @@
 
 use super::cache::{Cached, Slots};
 use super::cluster::ClusterSource;
-use super::{Material, MeshSetup, MeshStats, Pipeline};
+use super::{ChunkMemo, Material, MeshSetup, MeshStats, Pipeline};
 use crate::Error;
 use crate::math::Scalar;
 use crate::mesh::{MAX_MESHLET_VERTICES, Mesh};
@@ -124,6 +124,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         setup: &MeshSetup<T>,
         mesh: &Mesh<'_>,
         material: &M,
+        memo: &mut impl ChunkMemo<T>,
         cache: &mut [Cached<T, S>],
         table: &mut SlotTable<B, C>,
         inside: bool,
@@ -133,6 +134,10 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         let cap = cache.len().min(C);
         let mut rest = mesh.indices;
         while !rest.is_empty() {
+            if let Some(n) = memo.skip(&setup.band) {
+                rest = rest.get(n..).unwrap_or(&[]);
+                continue;
+            }
             table.clear();
             // A triangle has at most three new vertices and cap ≥ 3: every
             // chunk takes at least one triangle.
@@ -143,6 +148,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
             let triangles = chunk.iter().map(|t| t.map(|v| table.slot(v)));
             let slots = Slots { slots: &mut cache[..table.len], inside };
             self.draw_cached(setup, &src, material, slots, triangles, stats, |tri, _| sink(tri))?;
+            memo.drawn(n, &cache[..table.len], &setup.band);
         }
         Ok(())
     }

@@ -6,7 +6,9 @@
 
 use super::cache::Cached;
 use super::chunked::{SMALL_SLOTS, SlotTable, SmallTable, WideTable};
-use super::{Band, Material, MeshSetup, MeshStats, Pipeline, Shade, Uniform, VertexCache, VertexCtx};
+use super::{
+    Band, ChunkMemo, Material, MeshSetup, MeshStats, NoMemo, Pipeline, Shade, Uniform, VertexCache, VertexCtx,
+};
 use super::{bins, cache, channels, inside};
 use crate::clip3d::{Class, ClipPlanes, ClipVertex, classify, clip_triangle};
 use crate::math::{Mat4, Scalar, Vec3};
@@ -68,7 +70,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         bins: &mut heapless::Vec<ScreenTriangle<S>, N>,
     ) -> Result<MeshStats, Error> {
         let mut bins = bins::BinWriter::new(bins);
-        let result = self.stack_cached_into(mesh, model, color, &Uniform, |tri| {
+        let result = self.stack_cached_into(mesh, model, color, &Uniform, &mut NoMemo, |tri| {
             bins.push(tri);
             Ok(())
         });
@@ -81,20 +83,22 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     /// `view3d` front). `material` gives each vertex its material colour
     /// ([`Uniform`]: `color`). Through the 8-entry stack cache, except for
     /// a colour per face (one lit colour per vertex cannot hold it): then
-    /// per corner. Errors: those of [`Pipeline::draw_valid_mesh`], with
-    /// `sink`'s in place of a full bin.
+    /// per corner. `memo` records the chunks or skips those that miss the
+    /// band ([`super::chunk_record`]; [`NoMemo`]: none). Errors: those of
+    /// [`Pipeline::draw_valid_mesh`], with `sink`'s in place of a full bin.
     pub(crate) fn mesh_into<C: Interpolate, M: Material<T>>(
         &self,
         mesh: &ValidMesh<'_>,
         model: &Mat4<T>,
         color: C,
         material: &M,
+        memo: &mut impl ChunkMemo<T>,
         sink: impl FnMut(ScreenTriangle<S>) -> Result<(), Error>,
     ) -> Result<MeshStats, Error> {
         if M::PER_FACE {
             return self.valid_mesh_into(mesh, model, color, material, sink);
         }
-        self.stack_cached_into(mesh, model, color, material, sink)
+        self.stack_cached_into(mesh, model, color, material, memo, sink)
     }
 
     /// The cached path with 8 entries on the stack ([`SMALL_SLOTS`]).
@@ -104,10 +108,11 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         model: &Mat4<T>,
         color: C,
         material: &M,
+        memo: &mut impl ChunkMemo<T>,
         sink: impl FnMut(ScreenTriangle<S>) -> Result<(), Error>,
     ) -> Result<MeshStats, Error> {
         let mut cache = [Cached::EMPTY; SMALL_SLOTS];
-        self.cached_into(mesh, model, color, material, &mut cache, &mut SmallTable::new(), sink)
+        self.cached_into(mesh, model, color, material, memo, &mut cache, &mut SmallTable::new(), sink)
     }
 
     /// [`Pipeline::mesh_into`] with each vertex transformed once per
@@ -200,11 +205,19 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
             return Err(Error::CapacityExceeded { needed: 3, capacity: V });
         }
         let mut bins = bins::BinWriter::new(bins);
-        let result =
-            self.cached_into(mesh, model, color, &Uniform, &mut cache.v, &mut WideTable::new(), |tri| {
+        let result = self.cached_into(
+            mesh,
+            model,
+            color,
+            &Uniform,
+            &mut NoMemo,
+            &mut cache.v,
+            &mut WideTable::new(),
+            |tri| {
                 bins.push(tri);
                 Ok(())
-            });
+            },
+        );
         bins.finish(result)
     }
 
@@ -218,6 +231,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         model: &Mat4<T>,
         color: C,
         material: &M,
+        memo: &mut impl ChunkMemo<T>,
         cache: &mut [Cached<T, S>],
         table: &mut SlotTable<B, K>,
         mut sink: impl FnMut(ScreenTriangle<S>) -> Result<(), Error>,
@@ -229,7 +243,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         };
         let inside = inside::InsideView::new(&setup.ctx.mvp, setup.planes).contains(mesh.bounding_sphere);
         if mesh.vertex_count() > cache.len() {
-            self.draw_chunked(&setup, mesh, material, cache, table, inside, &mut stats, sink)?;
+            self.draw_chunked(&setup, mesh, material, memo, cache, table, inside, &mut stats, sink)?;
             return Ok(stats);
         }
         let cache = &mut cache[..mesh.vertex_count()];
@@ -374,7 +388,7 @@ mod tests {
                         let sa = p.valid_mesh_into(&mesh, &model, color, &pv, |tri| {
                             a.push(tri).map_err(|_| Error::CapacityExceeded { needed: 0, capacity: 0 })
                         });
-                        let sb = p.mesh_into(&mesh, &model, color, &pv, |tri| {
+                        let sb = p.mesh_into(&mesh, &model, color, &pv, &mut NoMemo, |tri| {
                             b.push(tri).map_err(|_| Error::CapacityExceeded { needed: 0, capacity: 0 })
                         });
                         assert!(sa == sb && a == b, "{i} {shade:?} {rows:?}: per-vertex colours");
