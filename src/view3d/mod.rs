@@ -37,6 +37,7 @@ mod object;
 
 pub use camera::{Camera, DEFAULT_PROJECTION, Projection};
 pub use cube::CUBE;
+use object::draw_object;
 pub use object::{Colors, Geometry, Object};
 
 use embedded_graphics_core::draw_target::DrawTarget;
@@ -47,12 +48,9 @@ use crate::depth::{Depth16, DepthBand, DepthState};
 use crate::edge::Cull;
 use crate::light::{Lighting, Viewer};
 use crate::math::Vec3;
-use crate::mesh::ValidMesh;
-use crate::pipeline::{
-    ChunkMemo, ClusterCache, FrameChunks, Material, PerFace, PerVertex, Pipeline, Shade, Uniform,
-};
+use crate::pipeline::{ClusterCache, FrameChunks, PerFace, PerVertex, Pipeline, Shade, Uniform};
 use crate::raster3d::PerspectiveCorrect;
-use crate::render::{Band3d, Direct3d};
+use crate::render::Direct3d;
 use crate::{Error, Interpolate, MAX_FRAME_DIM, RenderError, Renderer};
 
 /// The front's lighting unless told otherwise: ambient 0.25 and a light of
@@ -363,33 +361,6 @@ impl<C: Interpolate, const W: usize, const H: usize> View3d<C, W, H> {
         });
         renderer.render(frame, &mut self.band, display)
     }
-}
-
-/// One object into a band: through the vertex stage straight into it
-/// (its chunks through the frame's record, `memo`), or cluster by cluster
-/// for a meshlet mesh ([`Pipeline::rows`] of `banded` set to the band's
-/// rows).
-fn draw_object<C: Interpolate, Mat: Material<f32>, const W: usize>(
-    banded: &Pipeline<f32, 4>,
-    o: &Object<'_, C>,
-    material: &Mat,
-    cache: &mut ClusterCache<f32, 4>,
-    memo: &mut impl ChunkMemo<f32>,
-    band: &mut Band3d<'_, '_, C, Depth16, PerspectiveCorrect, W>,
-) -> Result<(), Error> {
-    let (model, color) = (o.model(), o.color());
-    let mut into_band = |t| {
-        band.draw(&t);
-        Ok(())
-    };
-    match o.geometry() {
-        Geometry::Mesh(m) => {
-            banded.mesh_into(&ValidMesh::trusted(m), &model, color, material, memo, &mut into_band)?
-        }
-        Geometry::Valid(m) => banded.mesh_into(&m, &model, color, material, memo, &mut into_band)?,
-        Geometry::Meshlets(m) => banded.draw_meshlets_with(m, &model, color, material, cache, band)?,
-    };
-    Ok(())
 }
 
 impl<C: core::fmt::Debug, const W: usize, const H: usize> core::fmt::Debug for View3d<C, W, H> {

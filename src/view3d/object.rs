@@ -2,9 +2,13 @@
 //! translate, rotate and scale steps) and its material colour, one for the
 //! object or one per vertex or per face.
 
-use crate::Error;
+use crate::depth::Depth16;
 use crate::math::{Mat4, Vec3, transform};
 use crate::mesh::{Mesh, ValidMesh, ValidMeshletMesh};
+use crate::pipeline::{ChunkMemo, ClusterCache, Material, Pipeline};
+use crate::raster3d::PerspectiveCorrect;
+use crate::render::Band3d;
+use crate::{Error, Interpolate};
 
 /// The mesh of an [`Object`]. Build it with `into()` from a reference to
 /// any of the three mesh types; [`Object::new`] does that for you.
@@ -231,6 +235,33 @@ impl<'a, C: Copy> Object<'a, C> {
     pub fn geometry(&self) -> Geometry<'a> {
         self.geometry
     }
+}
+
+/// One object into a band: through the vertex stage straight into it
+/// (its chunks through the frame's record, `memo`), or cluster by cluster
+/// for a meshlet mesh ([`Pipeline::rows`] of `banded` set to the band's
+/// rows).
+pub(super) fn draw_object<C: Interpolate, Mat: Material<f32>, const W: usize>(
+    banded: &Pipeline<f32, 4>,
+    o: &Object<'_, C>,
+    material: &Mat,
+    cache: &mut ClusterCache<f32, 4>,
+    memo: &mut impl ChunkMemo<f32>,
+    band: &mut Band3d<'_, '_, C, Depth16, PerspectiveCorrect, W>,
+) -> Result<(), Error> {
+    let (model, color) = (o.model(), o.color());
+    let mut into_band = |t| {
+        band.draw(&t);
+        Ok(())
+    };
+    match o.geometry() {
+        Geometry::Mesh(m) => {
+            banded.mesh_into(&ValidMesh::trusted(m), &model, color, material, memo, &mut into_band)?
+        }
+        Geometry::Valid(m) => banded.mesh_into(&m, &model, color, material, memo, &mut into_band)?,
+        Geometry::Meshlets(m) => banded.draw_meshlets_with(m, &model, color, material, cache, band)?,
+    };
+    Ok(())
 }
 
 #[cfg(test)]
