@@ -116,7 +116,9 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     /// [`Pipeline::draw_cached`] over the whole of `mesh` with `cache`
     /// smaller than its vertex count, chunk by chunk (module docs), with
     /// `table` for its slots; every triangle goes to `sink` in the mesh's
-    /// order, coloured by `material` (not per face). `cache` has at least
+    /// order, coloured by `material` (not per face). `memo` skips the
+    /// chunks a record says miss the band, and records the others
+    /// ([`super::chunk_record`]; `NoMemo` for none). `cache` has at least
     /// three entries.
     #[allow(clippy::too_many_arguments)]
     pub(super) fn draw_chunked<M: Material<T>, const B: usize, const C: usize>(
