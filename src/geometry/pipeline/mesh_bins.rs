@@ -70,7 +70,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         bins: &mut heapless::Vec<ScreenTriangle<S>, N>,
     ) -> Result<MeshStats, Error> {
         let mut bins = bins::BinWriter::new(bins);
-        let result = self.stack_cached_into(mesh, model, color, &Uniform, &mut NoMemo, |tri| {
+        let result = self.mesh_into(mesh, model, color, &Uniform, &mut NoMemo, |tri| {
             bins.push(tri);
             Ok(())
         });
@@ -98,19 +98,6 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         if M::PER_FACE {
             return self.valid_mesh_into(mesh, model, color, material, sink);
         }
-        self.stack_cached_into(mesh, model, color, material, memo, sink)
-    }
-
-    /// The cached path with 8 entries on the stack ([`SMALL_SLOTS`]).
-    fn stack_cached_into<C: Interpolate, M: Material<T>>(
-        &self,
-        mesh: &ValidMesh<'_>,
-        model: &Mat4<T>,
-        color: C,
-        material: &M,
-        memo: &mut impl ChunkMemo<T>,
-        sink: impl FnMut(ScreenTriangle<S>) -> Result<(), Error>,
-    ) -> Result<MeshStats, Error> {
         let mut cache = [Cached::EMPTY; SMALL_SLOTS];
         self.cached_into(mesh, model, color, material, memo, &mut cache, &mut SmallTable::new(), sink)
     }
