@@ -32,6 +32,15 @@ impl<'a, X, const N: usize> BinWriter<'a, X, N> {
         }
     }
 
+    /// [`BinWriter::push`] as the sink a vertex stage hands its items to.
+    #[inline]
+    pub(super) fn sink(&mut self) -> impl FnMut(X) -> Result<(), Error> + '_ {
+        move |item| {
+            self.push(item);
+            Ok(())
+        }
+    }
+
     /// Ends the call: `result` if every item fitted and it is `Ok`;
     /// otherwise the bins go back to their length at entry and the error is
     /// `result`'s, or [`Error::CapacityExceeded`] when only the room ran out.

@@ -145,10 +145,10 @@ impl ChunkMemo<f32> for ObjectChunks<'_> {
         }
         // Only the run that ends the record grows, one chunk after the other.
         let end = usize::from(self.run.start) + usize::from(self.run.len);
-        let (Some(e), Ok(triangles)) = (self.entries.get_mut(end), u16::try_from(triangles)) else { return };
         if end != *self.used || c != usize::from(self.run.len) {
             return;
         }
+        let (Some(e), Ok(triangles)) = (self.entries.get_mut(end), u16::try_from(triangles)) else { return };
         let (mut lo, mut hi) = (f32::INFINITY, f32::NEG_INFINITY);
         for s in slots {
             let (y, w) = (s.clip[1], s.clip[3]);

@@ -70,10 +70,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         bins: &mut heapless::Vec<ScreenTriangle<S>, N>,
     ) -> Result<MeshStats, Error> {
         let mut bins = bins::BinWriter::new(bins);
-        let result = self.mesh_into(mesh, model, color, &Uniform, &mut NoMemo, |tri| {
-            bins.push(tri);
-            Ok(())
-        });
+        let result = self.mesh_into(mesh, model, color, &Uniform, &mut NoMemo, bins.sink());
         bins.finish(result)
     }
 
@@ -182,10 +179,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         if V == 0 {
             // Per corner (a type's choice: the branch folds away).
             let mut bins = bins::BinWriter::new(bins);
-            let result = self.valid_mesh_into(mesh, model, color, &Uniform, |tri| {
-                bins.push(tri);
-                Ok(())
-            });
+            let result = self.valid_mesh_into(mesh, model, color, &Uniform, bins.sink());
             return bins.finish(result);
         }
         if mesh.mesh().vertex_count() > V && V < 3 {
@@ -200,10 +194,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
             &mut NoMemo,
             &mut cache.v,
             &mut WideTable::new(),
-            |tri| {
-                bins.push(tri);
-                Ok(())
-            },
+            bins.sink(),
         );
         bins.finish(result)
     }
