@@ -126,12 +126,15 @@ impl Camera {
     ///
     /// Errors: those of [`transform::look_at`] (NaN or infinite input:
     /// [`Error::NonFiniteCoordinate`]; eye on the target or up along the
-    /// view direction: [`Error::InvalidParameter`]).
+    /// view direction: [`Error::InvalidParameter`]; a difference or entry
+    /// that overflows `f32`, input near `f32::MAX`:
+    /// [`Error::CoordinateOutOfRange`]).
     ///
     /// ```
     /// use microraster::{view3d::Camera, Error};
     /// assert!(Camera::look_at([0.0, 0.0, 3.0], [0.0; 3]).view().is_ok());
     /// assert_eq!(Camera::look_at([f32::NAN, 0.0, 3.0], [0.0; 3]).view(), Err(Error::NonFiniteCoordinate));
+    /// assert_eq!(Camera::look_at([f32::MAX, 0.0, 0.0], [0.0; 3]).view(), Err(Error::CoordinateOutOfRange));
     /// ```
     pub fn view(&self) -> Result<Mat4<f32>, Error> {
         transform::look_at(Vec3::from_f32(self.eye), Vec3::from_f32(self.target), Vec3::from_f32(self.up))

@@ -185,9 +185,9 @@ impl<C: Interpolate, const W: usize, const H: usize> View3d<C, W, H> {
         self.height = rows;
     }
 
-    /// The lighting (`None`: material colours unlit). A bad light (a zero or
-    /// non-finite direction) fails the frame, as in
-    /// [`Lighting::validate`]. For a highlight:
+    /// The lighting (`None`: material colours unlit). A bad light (a
+    /// non-finite factor, a direction that is not a unit vector) fails the
+    /// frame before any band is sent, as [`Lighting::validate`] fails. For a highlight:
     /// `view.set_lighting(Some(DEFAULT_LIGHTING.with_specular(0.5, 16)))`.
     ///
     /// ```
@@ -262,7 +262,8 @@ impl<C: Interpolate, const W: usize, const H: usize> View3d<C, W, H> {
     /// Errors: [`Error::InvalidFrameSize`] for 0 or more than
     /// [`MAX_FRAME_DIM`] rows, then those of the camera ([`Camera::view`]
     /// and its lens, as [`Pipeline::perspective`] and
-    /// [`transform::orthographic`](crate::math::transform::orthographic)).
+    /// [`transform::orthographic`](crate::math::transform::orthographic)),
+    /// then the lighting's ([`Lighting::validate`]).
     ///
     /// ```
     /// use embedded_graphics::pixelcolor::{Rgb565, RgbColor};
@@ -278,6 +279,11 @@ impl<C: Interpolate, const W: usize, const H: usize> View3d<C, W, H> {
             return Err(Error::InvalidFrameSize);
         }
         let mut p = camera.pipeline(W as u32, rows, self.lighting)?;
+        // Checked here as well as by the vertex stage, so that a bad light
+        // fails every frame, one without objects too, before any band.
+        if let Some(light) = &self.lighting {
+            light.validate()?;
+        }
         (p.cull, p.shade) = (self.cull, self.shade);
         Ok((p, Renderer::new(rows, self.background)))
     }

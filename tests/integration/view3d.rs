@@ -275,6 +275,15 @@ fn wrong_inputs_are_errors() {
         run(&mut view, &camera(), &flat, W as u32, H).0,
         Err(RenderError::Input(Error::InvalidParameter))
     );
+    // A bad light fails the frame before any band, with no objects too.
+    for direction in [Vec3::new(0.0, 0.0, f32::INFINITY), Vec3::new(0.0, 0.0, 2.0)] {
+        view.set_lighting(Some(microraster::light::Lighting { direction, ..DEFAULT_LIGHTING }));
+        let want = if direction.z.is_finite() { Error::InvalidParameter } else { Error::NonFiniteCoordinate };
+        for objects in [&cube[..], &[]] {
+            assert_eq!(run(&mut view, &camera(), objects, W as u32, H), (Err(RenderError::Input(want)), 0));
+        }
+    }
+    view.set_lighting(Some(DEFAULT_LIGHTING));
     // And the view still works afterwards, on a display taller than the band is wide.
     assert_eq!(run(&mut view, &camera(), &cube, W as u32, H).0, Ok(()));
     view.set_height(Some(40));

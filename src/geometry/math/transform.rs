@@ -16,8 +16,9 @@
 //! Bad parameters never panic: the view and projection constructors return
 //! [`Error::NonFiniteCoordinate`] for NaN or infinite inputs,
 //! [`Error::InvalidParameter`] for degenerate ones (near ≤ 0, far ≤ near, zero
-//! aspect, eye = target, …) and [`Error::CoordinateOutOfRange`] where an `Fx`
-//! result would saturate. The model constructors cannot fail; NaN input gives
+//! aspect, eye = target, …) and [`Error::CoordinateOutOfRange`] where a
+//! result would saturate (`Fx`) or overflow to infinity (`f32`: finite input
+//! near `f32::MAX`, or a field of view so small that `1/tan` overflows). The model constructors cannot fail; NaN input gives
 //! NaN entries, which [`Viewport::project`] reports.
 //!
 //! # Accuracy, and the `Fx` envelope
@@ -111,8 +112,8 @@ pub fn rotation_z<T: Scalar>(angle: T) -> Mat4<T> {
 ///
 /// Errors: [`Error::NonFiniteCoordinate`] for NaN or infinite input;
 /// [`Error::InvalidParameter`] if `eye == target` or `up` is zero or parallel
-/// to the view direction; [`Error::CoordinateOutOfRange`] if an `Fx`
-/// difference or entry saturates. With `Fx` the side axis `view × up` is
+/// to the view direction; [`Error::CoordinateOutOfRange`] if a difference
+/// or entry saturates (`Fx`) or overflows (`f32`, input near `f32::MAX`). With `Fx` the side axis `view × up` is
 /// accurate to about `2^-16 / sin θ` for the angle θ between `up` and the
 /// view direction, so keep θ away from 0 rather than just nonzero.
 ///
@@ -159,7 +160,8 @@ pub fn look_at<T: Scalar>(eye: Vec3<T>, target: Vec3<T>, up: Vec3<T>) -> Result<
 ///
 /// Errors: [`Error::NonFiniteCoordinate`] for NaN or infinite input;
 /// [`Error::InvalidParameter`] if `fov_y ∉ (0, π)`, `aspect ≤ 0`, `near ≤ 0` or `far ≤ near`; and
-/// [`Error::CoordinateOutOfRange`] if an `Fx` entry saturates (tiny fov or aspect).
+/// [`Error::CoordinateOutOfRange`] if an entry saturates (`Fx`) or overflows
+/// (`f32`; tiny fov or aspect, `far − near` tiny against `far`).
 ///
 /// ```
 /// use microraster::math::{transform::perspective, Vec3};
@@ -192,7 +194,8 @@ pub fn perspective<T: Scalar>(fov_y: T, aspect: T, near: T, far: T) -> Result<Ma
 ///
 /// Errors: [`Error::NonFiniteCoordinate`] for NaN or infinite input;
 /// [`Error::InvalidParameter`] unless `left < right`, `bottom < top` and `near < far`; and
-/// [`Error::CoordinateOutOfRange`] if an `Fx` difference or entry saturates.
+/// [`Error::CoordinateOutOfRange`] if a difference or entry saturates
+/// (`Fx`) or overflows (`f32`).
 ///
 /// ```
 /// use microraster::math::{transform::orthographic, Vec3};
