@@ -108,7 +108,7 @@ fn camera(inp: &mut Input<'_>) -> Camera {
         }
         _ => Camera::look_at([f32::from(inp.u8() as i8) / 32.0, 1.0, 4.0], [0.0; 3]),
     };
-    let cam = if inp.u8() % 8 == 0 { cam.with_up(vec3(inp)) } else { cam };
+    let cam = if inp.u8().is_multiple_of(8) { cam.with_up(vec3(inp)) } else { cam };
     match inp.u8() % 8 {
         0 => cam.perspective(inp.f32(), inp.f32(), inp.f32()),
         1 => cam.perspective(0.2 + f32::from(inp.u8()) / 90.0, 0.05 + f32::from(inp.u8()) / 64.0, 8.0),
@@ -142,9 +142,9 @@ impl Fuzzed {
         let positions: Vec<[f32; 3]> =
             (0..nv).map(|_| [(); 3].map(|()| f32::from(inp.u8() as i8) / 64.0)).collect();
         let (c, _) = mesh::bounding_sphere(&positions);
-        let s = if inp.u8() % 4 == 0 { -1.0 } else { 1.0 };
+        let s = if inp.u8().is_multiple_of(4) { -1.0 } else { 1.0 };
         let normals = positions.iter().map(|p| [0, 1, 2].map(|i| s * (p[i] - c[i]))).collect();
-        let range = nv as u16 + u16::from(inp.u8() % 16 == 0);
+        let range = nv as u16 + u16::from(inp.u8().is_multiple_of(16));
         let indices = (0..1 + inp.u8() % 32).map(|_| [(); 3].map(|()| inp.u16() % range)).collect();
         Fuzzed { positions, normals, indices }
     }
