@@ -260,10 +260,10 @@ impl<C: Interpolate, const W: usize, const H: usize> View3d<C, W, H> {
     /// [`Direct3d`], or for comparing.
     ///
     /// Errors: [`Error::InvalidFrameSize`] for 0 or more than
-    /// [`MAX_FRAME_DIM`] rows, then those of the camera ([`Camera::view`]
-    /// and its lens, as [`Pipeline::perspective`] and
-    /// [`transform::orthographic`](crate::math::transform::orthographic)),
-    /// then the lighting's ([`Lighting::validate`]).
+    /// [`MAX_FRAME_DIM`] rows, then the lighting's ([`Lighting::validate`]),
+    /// then those of the camera ([`Camera::view`] and its lens, as
+    /// [`Pipeline::perspective`] and
+    /// [`transform::orthographic`](crate::math::transform::orthographic)).
     ///
     /// ```
     /// use embedded_graphics::pixelcolor::{Rgb565, RgbColor};
@@ -278,12 +278,14 @@ impl<C: Interpolate, const W: usize, const H: usize> View3d<C, W, H> {
         if rows == 0 || rows > MAX_FRAME_DIM || W as u32 > MAX_FRAME_DIM {
             return Err(Error::InvalidFrameSize);
         }
-        let mut p = camera.pipeline(W as u32, rows, self.lighting)?;
         // Checked here as well as by the vertex stage, so that a bad light
         // fails every frame, one without objects too, before any band.
+        // Before the camera: after it, the check cost `draw` 384 B of
+        // stack (a second copy of the pipeline; `fw_bench` row 30).
         if let Some(light) = &self.lighting {
             light.validate()?;
         }
+        let mut p = camera.pipeline(W as u32, rows, self.lighting)?;
         (p.cull, p.shade) = (self.cull, self.shade);
         Ok((p, Renderer::new(rows, self.background)))
     }
@@ -318,7 +320,7 @@ impl<C: Interpolate, const W: usize, const H: usize> View3d<C, W, H> {
     ///
     /// Errors (nothing is sent unless stated): [`Error::InvalidFrameSize`]
     /// for a display (or [`View3d::set_height`]) of 0 rows or more than
-    /// [`MAX_FRAME_DIM`]; the camera's errors ([`View3d::pipeline`]); a mesh's
+    /// [`MAX_FRAME_DIM`]; the light's, then the camera's ([`View3d::pipeline`]); a mesh's
     /// ([`Mesh::check_winding`](crate::mesh::Mesh::check_winding), including
     /// [`Error::WindingMismatch`]); [`Error::InvalidParameter`] for an
     /// object's per-vertex or per-face colours that do not match its mesh

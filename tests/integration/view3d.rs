@@ -282,6 +282,8 @@ fn wrong_inputs_are_errors() {
         for objects in [&cube[..], &[]] {
             assert_eq!(run(&mut view, &camera(), objects, W as u32, H), (Err(RenderError::Input(want)), 0));
         }
+        // The light's error comes before the camera's.
+        assert_eq!(run(&mut view, &nan, &cube, W as u32, H), (Err(RenderError::Input(want)), 0));
     }
     view.set_lighting(Some(DEFAULT_LIGHTING));
     // And the view still works afterwards, on a display taller than the band is wide.
