@@ -187,8 +187,8 @@ impl<C: Interpolate, const W: usize, const H: usize> View3d<C, W, H> {
 
     /// The lighting (`None`: material colours unlit). A bad light (a
     /// non-finite factor, a direction that is not a unit vector) fails the
-    /// frame before any band is sent, as [`Lighting::validate`] fails. For a highlight:
-    /// `view.set_lighting(Some(DEFAULT_LIGHTING.with_specular(0.5, 16)))`.
+    /// frame before any band is sent, as [`Lighting::validate`] fails. For
+    /// a highlight: `view.set_lighting(Some(DEFAULT_LIGHTING.with_specular(0.5, 16)))`.
     ///
     /// ```
     /// use embedded_graphics::{mock_display::MockDisplay, prelude::Point};
@@ -320,7 +320,8 @@ impl<C: Interpolate, const W: usize, const H: usize> View3d<C, W, H> {
     ///
     /// Errors (nothing is sent unless stated): [`Error::InvalidFrameSize`]
     /// for a display (or [`View3d::set_height`]) of 0 rows or more than
-    /// [`MAX_FRAME_DIM`]; the light's, then the camera's ([`View3d::pipeline`]); a mesh's
+    /// [`MAX_FRAME_DIM`]; the light's, then the camera's
+    /// ([`View3d::pipeline`]); a mesh's
     /// ([`Mesh::check_winding`](crate::mesh::Mesh::check_winding), including
     /// [`Error::WindingMismatch`]); [`Error::InvalidParameter`] for an
     /// object's per-vertex or per-face colours that do not match its mesh

@@ -18,8 +18,9 @@
 //! [`Error::InvalidParameter`] for degenerate ones (near ≤ 0, far ≤ near, zero
 //! aspect, eye = target, …) and [`Error::CoordinateOutOfRange`] where a
 //! result would saturate (`Fx`) or overflow to infinity (`f32`: finite input
-//! near `f32::MAX`, or a field of view so small that `1/tan` overflows). The model constructors cannot fail; NaN input gives
-//! NaN entries, which [`Viewport::project`] reports.
+//! near `f32::MAX`, or a field of view so small that `1/tan` overflows).
+//! The model constructors cannot fail; NaN input gives NaN entries, which
+//! [`Viewport::project`] reports.
 //!
 //! # Accuracy, and the `Fx` envelope
 //!
@@ -113,9 +114,10 @@ pub fn rotation_z<T: Scalar>(angle: T) -> Mat4<T> {
 /// Errors: [`Error::NonFiniteCoordinate`] for NaN or infinite input;
 /// [`Error::InvalidParameter`] if `eye == target` or `up` is zero or parallel
 /// to the view direction; [`Error::CoordinateOutOfRange`] if a difference
-/// or entry saturates (`Fx`) or overflows (`f32`, input near `f32::MAX`). With `Fx` the side axis `view × up` is
-/// accurate to about `2^-16 / sin θ` for the angle θ between `up` and the
-/// view direction, so keep θ away from 0 rather than just nonzero.
+/// or entry saturates (`Fx`) or overflows (`f32`, input near `f32::MAX`).
+/// With `Fx` the side axis `view × up` is accurate to about `2^-16 / sin θ`
+/// for the angle θ between `up` and the view direction, so keep θ away
+/// from 0 rather than just nonzero.
 ///
 /// ```
 /// use microraster::math::{transform::look_at, Vec3};
@@ -161,7 +163,8 @@ pub fn look_at<T: Scalar>(eye: Vec3<T>, target: Vec3<T>, up: Vec3<T>) -> Result<
 /// Errors: [`Error::NonFiniteCoordinate`] for NaN or infinite input;
 /// [`Error::InvalidParameter`] if `fov_y ∉ (0, π)`, `aspect ≤ 0`, `near ≤ 0` or `far ≤ near`; and
 /// [`Error::CoordinateOutOfRange`] if an entry saturates (`Fx`) or overflows
-/// (`f32`; tiny fov or aspect, `far − near` tiny against `far`).
+/// (`f32`: a fov or aspect near 0, or `near` and `far` huge and close
+/// together).
 ///
 /// ```
 /// use microraster::math::{transform::perspective, Vec3};

@@ -311,3 +311,24 @@ fn pipeline_to_screen() {
     assert!(close > 500 && worst[1][0] < 0.1 && worst[1][1] < 0.03 && f32_far < 0.01);
     assert!(worst[0][0] < 1.0 && worst[0][1].max(worst[0][2]).max(worst[0][3]) < 0.25);
 }
+
+/// Finite `f32` input whose matrix overflows is `CoordinateOutOfRange`
+/// (the `f32` case of the constructors' docs), and a slightly milder input
+/// of each kind is accepted.
+#[test]
+fn f32_overflow_is_coordinate_out_of_range() {
+    let out = Err(Error::CoordinateOutOfRange);
+    let v = |x: f32, y: f32, z: f32| Vec3::new(x, y, z);
+    let up = v(0.0, 1.0, 0.0);
+    assert_eq!(look_at(v(f32::MAX, 0.0, 0.0), v(0.0, 0.0, 0.0), up).map(|_| ()), out);
+    assert_eq!(look_at(v(f32::MAX, 0.0, 0.0), v(-f32::MAX, 0.0, 0.0), up).map(|_| ()), out);
+    assert!(look_at(v(1e30, 0.0, 0.0), v(0.0, 0.0, 0.0), up).is_ok());
+    // A fov or aspect near 0 (1/tan overflows); near and far huge and close.
+    assert_eq!(perspective(1e-40f32, 1.0, 0.5, 10.0).map(|_| ()), out);
+    assert_eq!(perspective(1.0f32, 1e-40, 0.5, 10.0).map(|_| ()), out);
+    let near = 1e37f32;
+    assert_eq!(perspective(1.0f32, 1.0, near, f32::from_bits(near.to_bits() + 1)).map(|_| ()), out);
+    assert!(perspective(1e-30f32, 1e-6, 1e30, 2e30).is_ok());
+    assert_eq!(orthographic(-f32::MAX, f32::MAX, -1.0, 1.0, 0.5, 10.0).map(|_| ()), out);
+    assert!(orthographic(-1e30f32, 1e30, -1.0, 1.0, 0.5, 10.0).is_ok());
+}
