@@ -272,7 +272,7 @@ fuzz_target!(|data: &[u8]| {
         (16, front::<16>(settings, &cam, &objects, rows)),
     ];
     for (bh, (got, other)) in others {
-        assert_eq!(format!("{got:?}"), format!("{want:?}"), "{bh}-row bands");
+        assert_eq!(got, want, "{bh}-row bands");
         if want.is_ok() {
             let differ = image.iter().zip(&other).filter(|(a, b)| a != b).count();
             assert_eq!(differ, 0, "{bh}-row bands: {differ} pixels differ from one band");
@@ -300,10 +300,11 @@ fuzz_target!(|data: &[u8]| {
                 );
             }
         }
-        // The camera's errors first (`View3d::pipeline`), then the objects'
-        // (a mesh's validation and winding, colours that do not fit it).
+        // The light's, then the camera's errors first (`View3d::pipeline`),
+        // then the objects' (a mesh's validation and winding, colours that
+        // do not fit it).
         Err(e) => match view::<8>(settings).pipeline(&cam, rows) {
-            Err(camera) => assert_eq!(e, RenderError::Input(camera)),
+            Err(first) => assert_eq!(e, RenderError::Input(first)),
             Ok(_) => assert!(
                 matches!(
                     e,
