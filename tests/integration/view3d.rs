@@ -291,3 +291,30 @@ fn wrong_inputs_are_errors() {
     view.set_height(Some(40));
     assert_eq!(run(&mut view, &camera(), &cube, W as u32, 200), (Ok(()), 3));
 }
+
+/// A model that overflows its normal matrix (scales of 10^30), on a mesh
+/// whose bounding sphere reaches behind the eye, is the same error for
+/// every band height: the singular check comes before the band test (the
+/// band tests of such a sphere are not nested; the fuzz target `view3d`
+/// found 1-row bands failing where one band passed).
+#[test]
+fn a_singular_model_fails_for_every_band_height() {
+    use microraster::math::Mat4;
+    let model = Mat4::from_rows([
+        [5.366036e29, 0.0, -8.559218e30, -5.625],
+        [0.0, -5.75, 0.0, -8.125],
+        [-2.6198564, 0.0, -0.16424683, 9.452896],
+        [0.0, 0.0, 0.0, 1.0],
+    ]);
+    let cube = [Object::new(&CUBE, Rgb565::RED).then(model)];
+    let cam = Camera::look_at([0.0, 0.0, 6.0], [0.0; 3]);
+    let run = |bands: u32| {
+        let mut fb = Framebuffer::new(W as u32, 2, BG);
+        match bands {
+            1 => Box::new(View3d::<Rgb565, W, 1>::new(BG)).draw(&cam, &cube, &mut fb),
+            _ => Box::new(View3d::<Rgb565, W, 3>::new(BG)).draw(&cam, &cube, &mut fb),
+        }
+    };
+    let want = Err(RenderError::Input(Error::InvalidParameter));
+    assert_eq!((run(1), run(3)), (want, want));
+}

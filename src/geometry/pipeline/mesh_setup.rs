@@ -44,10 +44,14 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         if fx && !fx_coordinates_fit(mesh, &model_view, &mvp) {
             return Err(Error::CoordinateOutOfRange);
         }
+        // A singular model is an error wherever the mesh is visible, before
+        // the band test: the band tests of a sphere that reaches behind the
+        // eye are not nested, so after it the error depended on the band
+        // height (fuzz target `view3d`).
+        let normal_matrix = model_view.normal_matrix().ok_or(Error::InvalidParameter)?;
         if !band.sphere_touches(&mvp, mesh.bounding_sphere) {
             return Ok(None);
         }
-        let normal_matrix = model_view.normal_matrix().ok_or(Error::InvalidParameter)?;
         // A guard band beyond what snapping can represent would drop visible
         // triangles; clamp it (the `clip` field is public).
         let range = guard_band_for_range(self.size.0, self.size.1, S);
