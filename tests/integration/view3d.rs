@@ -311,10 +311,36 @@ fn a_singular_model_fails_for_every_band_height() {
     let run = |bands: u32| {
         let mut fb = Framebuffer::new(W as u32, 2, BG);
         match bands {
-            1 => Box::new(View3d::<Rgb565, W, 1>::new(BG)).draw(&cam, &cube, &mut fb),
-            _ => Box::new(View3d::<Rgb565, W, 3>::new(BG)).draw(&cam, &cube, &mut fb),
+            1 => View3d::<Rgb565, W, 1>::new(BG).draw(&cam, &cube, &mut fb),
+            _ => View3d::<Rgb565, W, 3>::new(BG).draw(&cam, &cube, &mut fb),
         }
     };
     let want = Err(RenderError::Input(Error::InvalidParameter));
     assert_eq!((run(1), run(3)), (want, want));
+}
+
+/// A singular model is an error whether or not its mesh is in view: a cube
+/// scaled by 0 behind the eye fails the front in every band height and the
+/// binned path, as one in view does (`Object::scale`'s docs), rather than
+/// passing silently where the view cull drops it first.
+#[test]
+fn a_singular_model_out_of_view_is_an_error() {
+    let want = Err(RenderError::Input(Error::InvalidParameter));
+    let cam = camera();
+    for at in [[0.0, 0.2, 0.0], [0.0, 0.0, 40.0], [300.0, 0.0, 0.0]] {
+        let cube = [Object::new(&CUBE, Rgb565::RED).scale(0.0).translate(at)];
+        let mut fb = Framebuffer::new(W as u32, H, BG);
+        let one = View3d::<Rgb565, W, 1>::new(BG).draw(&cam, &cube, &mut fb);
+        let tall = View3d::<Rgb565, W, 48>::new(BG).draw(&cam, &cube, &mut fb);
+        assert_eq!((one, tall), (want, want), "cube at {at:?}");
+        assert!(fb.pixels.iter().all(|&c| c == BG), "cube at {at:?}: nothing drawn");
+        let (pipeline, _) = View3d::<Rgb565, W, 1>::new(BG).pipeline(&cam, H).unwrap();
+        let model = transform::translation(Vec3::new(at[0], at[1], at[2]))
+            * transform::scaling(Vec3::new(0.0, 0.0, 0.0));
+        let mut bins = heapless::Vec::<_, 64>::new();
+        assert_eq!(
+            pipeline.draw_mesh(CUBE.mesh(), &model, Rgb565::RED, &mut bins).err(),
+            Some(Error::InvalidParameter)
+        );
+    }
 }

@@ -35,6 +35,11 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         let model_view = self.view * *model;
         let mvp = self.projection * model_view;
         let band = self.band_bounds();
+        // A singular model is an error whether or not the mesh is in view.
+        // Checked after the band test, the error depended on the band
+        // height: the band tests of a sphere that reaches behind the eye
+        // are not nested (fuzz target `view3d`).
+        let normal_matrix = model_view.normal_matrix().ok_or(Error::InvalidParameter)?;
         if !self.sphere_visible(&mvp, mesh.bounding_sphere) {
             stats.mesh_culled = true;
             return Ok(None);
@@ -44,11 +49,6 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         if fx && !fx_coordinates_fit(mesh, &model_view, &mvp) {
             return Err(Error::CoordinateOutOfRange);
         }
-        // A singular model is an error wherever the mesh is visible, before
-        // the band test: the band tests of a sphere that reaches behind the
-        // eye are not nested, so after it the error depended on the band
-        // height (fuzz target `view3d`).
-        let normal_matrix = model_view.normal_matrix().ok_or(Error::InvalidParameter)?;
         if !band.sphere_touches(&mvp, mesh.bounding_sphere) {
             return Ok(None);
         }
