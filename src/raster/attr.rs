@@ -86,6 +86,16 @@ impl Plane {
     pub fn step_x(&self) -> i64 {
         self.gx
     }
+
+    /// The plane with its values multiplied by `2^s` modulo 2^64 (`s < 64`):
+    /// its [`Plane::at`] and [`Plane::step_x`] are exactly this plane's
+    /// shifted left by `s`, wrapping, as multiplying by `2^s` commutes with
+    /// the wrapping sums and products `at` takes. Shifted once per triangle
+    /// instead of at each span's start.
+    #[inline]
+    pub fn wrapping_shl(&mut self, s: u32) {
+        (self.base, self.gx, self.gy) = (self.base << s, self.gx << s, self.gy << s);
+    }
 }
 
 /// The part of plane set-up shared by every value of one triangle: the

@@ -67,8 +67,9 @@ pub(super) fn channels_in_range<C: Interpolate, const S: u32>(tri: &ScreenTriang
 }
 
 /// Gouraud colour set-up for one triangle: per channel a plane of the
-/// colour (affine) or of `c·q`, plus one of `q` (perspective-correct).
-/// Channels the colour type lacks get no plane and stay 0. `CLAMP`: each
+/// colour (affine) or of `c·q`, plus one of `q` (perspective-correct; these
+/// scaled by 2^(32 − [`DEPTH_FRAC`]) modulo 2^64, as [`GouraudSpan`] keeps
+/// them). Channels the colour type lacks get no plane and stay 0. `CLAMP`: each
 /// pixel's channels are clamped to `0..=max`; without it (affine, vertex
 /// channels in range: [`channels_in_range`]) they are in range already
 /// ([`channel_in_range`]).
@@ -101,11 +102,15 @@ impl<C: Interpolate, M: Interpolation, const CLAMP: bool> Gouraud<C, M, CLAMP> {
         if M::PERSPECTIVE {
             // 23 bits keep c·q within u32 for a channel c ≤ 255.
             let q = normalised_q(tri, Q_BITS);
+            // Each plane scaled by 2^(32 − DEPTH_FRAC) here, once, for the
+            // accumulators (`GouraudSpan`), not at each span's start.
             setup.plane_into(q.map(|q| q << DEPTH_FRAC), &mut planes[3]);
+            planes[3].wrapping_shl(32 - DEPTH_FRAC);
             for (k, p) in planes.iter_mut().take(3).enumerate() {
                 if max[k] > 0 {
                     let cq = |i: usize| (tri.v[i].color[k] as i64 * q[i]) << DEPTH_FRAC;
                     setup.plane_into([cq(0), cq(1), cq(2)], p);
+                    p.wrapping_shl(32 - DEPTH_FRAC);
                 }
             }
         } else {
@@ -138,7 +143,8 @@ impl<C: Interpolate, M: Interpolation, const CLAMP: bool> Shader<C> for Gouraud<
             }
             let d = p.step_x();
             if M::PERSPECTIVE {
-                (s.persp[k], s.persp_step[k]) = (p.at(x, y) << (32 - DEPTH_FRAC), d << (32 - DEPTH_FRAC));
+                // Scaled by `set_up` already.
+                (s.persp[k], s.persp_step[k]) = (p.at(x, y), d);
             } else {
                 // The `i32` accumulator keeps the low 32 bits only, with
                 // the rounding's half step added once (`channel_in_range`).
