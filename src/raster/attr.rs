@@ -68,8 +68,15 @@ impl Plane {
     /// The value at the centre of pixel `(x, y)`.
     #[inline]
     pub fn at(&self, x: i32, y: i32) -> i64 {
-        let (dx, dy) = ((x - self.rx) as i64, (y - self.ry) as i64);
-        self.base.wrapping_add(self.gx.wrapping_mul(dx)).wrapping_add(self.gy.wrapping_mul(dy))
+        self.at_offset(x - self.rx, y - self.ry)
+    }
+
+    /// [`Plane::at`] of the pixel `(dx, dy)` from the reference pixel, for
+    /// callers that sample several planes of one [`PlaneSetup`] (one
+    /// reference, [`PlaneSetup::reference`]) at the same pixel.
+    #[inline]
+    pub fn at_offset(&self, dx: i32, dy: i32) -> i64 {
+        self.base.wrapping_add(self.gx.wrapping_mul(dx.into())).wrapping_add(self.gy.wrapping_mul(dy.into()))
     }
 
     /// [`Plane::at`] modulo 2^32 (its low 32 bits), for accumulators whose
@@ -156,6 +163,12 @@ impl PlaneSetup {
         // dbits + ebits + 1 + max(shift, pbits) ≤ 63 (see `plane`).
         let dlimit = 62u32.saturating_sub(ebits + frame.shift.max(pbits));
         Some(PlaneSetup { ex, ey, p, det, div, shift: frame.shift, ebits, pbits, dlimit, rx, ry, need })
+    }
+
+    /// The reference pixel of every plane made from this set-up.
+    #[inline]
+    pub fn reference(&self) -> (i32, i32) {
+        (self.rx, self.ry)
     }
 
     /// Planes made from now on will be sampled only along the span of `len`

@@ -75,6 +75,11 @@ pub(super) fn channels_in_range<C: Interpolate, const S: u32>(tri: &ScreenTriang
 /// ([`channel_in_range`]).
 pub(super) struct Gouraud<C, M, const CLAMP: bool> {
     pub(super) planes: [Plane; 4],
+    /// The planes' reference pixel ([`PlaneSetup::reference`]): one offset
+    /// per span for the four perspective-correct planes. (The affine
+    /// channels keep [`Plane::at_low32`]: the shared offset measured no
+    /// faster there, `docs/setup_cost.md`.)
+    pub(super) reference: (i32, i32),
     pub(super) _m: core::marker::PhantomData<(C, M)>,
 }
 
@@ -100,6 +105,7 @@ impl<C: Interpolate, M: Interpolation, const CLAMP: bool> Gouraud<C, M, CLAMP> {
         let max = C::CHANNEL_MAX;
         let planes = &mut self.planes;
         if M::PERSPECTIVE {
+            self.reference = setup.reference();
             // 23 bits keep c·q within u32 for a channel c ≤ 255.
             let q = normalised_q(tri, Q_BITS);
             // Each plane scaled by 2^(32 − DEPTH_FRAC) here, once, for the
@@ -137,6 +143,7 @@ impl<C: Interpolate, M: Interpolation, const CLAMP: bool> Shader<C> for Gouraud<
             persp_step: [0; 4],
             _m: core::marker::PhantomData,
         };
+        let (dx, dy) = (x - self.reference.0, y - self.reference.1);
         for (k, p) in self.planes.iter().enumerate() {
             if k == 3 && !M::PERSPECTIVE || k < 3 && max[k] == 0 {
                 continue;
@@ -144,7 +151,7 @@ impl<C: Interpolate, M: Interpolation, const CLAMP: bool> Shader<C> for Gouraud<
             let d = p.step_x();
             if M::PERSPECTIVE {
                 // Scaled by `set_up` already.
-                (s.persp[k], s.persp_step[k]) = (p.at(x, y), d);
+                (s.persp[k], s.persp_step[k]) = (p.at_offset(dx, dy), d);
             } else {
                 // The `i32` accumulator keeps the low 32 bits only, with
                 // the rounding's half step added once (`channel_in_range`).
