@@ -94,13 +94,13 @@ impl Plane {
         self.gx
     }
 
-    /// The plane with its values multiplied by `2^s` modulo 2^64 (`s < 64`):
-    /// its [`Plane::at`] and [`Plane::step_x`] are exactly this plane's
-    /// shifted left by `s`, wrapping, as multiplying by `2^s` commutes with
-    /// the wrapping sums and products `at` takes. Shifted once per triangle
-    /// instead of at each span's start.
+    /// Multiplies the plane's values by `2^s` modulo 2^64 (`s < 64`, in
+    /// place): its [`Plane::at`] and [`Plane::step_x`] become exactly the
+    /// old ones shifted left by `s`, the bits above 64 dropped, as
+    /// multiplying by `2^s` commutes with the wrapping sums and products
+    /// `at` takes. Done once per triangle instead of at each span's start.
     #[inline]
-    pub fn wrapping_shl(&mut self, s: u32) {
+    pub fn mul_pow2_wrapping(&mut self, s: u32) {
         (self.base, self.gx, self.gy) = (self.base << s, self.gx << s, self.gy << s);
     }
 }

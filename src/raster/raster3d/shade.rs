@@ -111,12 +111,12 @@ impl<C: Interpolate, M: Interpolation, const CLAMP: bool> Gouraud<C, M, CLAMP> {
             // Each plane scaled by 2^(32 − DEPTH_FRAC) here, once, for the
             // accumulators (`GouraudSpan`), not at each span's start.
             setup.plane_into(q.map(|q| q << DEPTH_FRAC), &mut planes[3]);
-            planes[3].wrapping_shl(32 - DEPTH_FRAC);
+            planes[3].mul_pow2_wrapping(32 - DEPTH_FRAC);
             for (k, p) in planes.iter_mut().take(3).enumerate() {
                 if max[k] > 0 {
                     let cq = |i: usize| (tri.v[i].color[k] as i64 * q[i]) << DEPTH_FRAC;
                     setup.plane_into([cq(0), cq(1), cq(2)], p);
-                    p.wrapping_shl(32 - DEPTH_FRAC);
+                    p.mul_pow2_wrapping(32 - DEPTH_FRAC);
                 }
             }
         } else {
