@@ -71,9 +71,16 @@ impl Plane {
         self.at_offset(x - self.rx, y - self.ry)
     }
 
-    /// [`Plane::at`] of the pixel `(dx, dy)` from the reference pixel, for
-    /// callers that sample several planes of one [`PlaneSetup`] (one
-    /// reference, [`PlaneSetup::reference`]) at the same pixel.
+    /// The pixel `(rx, ry)` the plane is referenced at; every plane of one
+    /// [`PlaneSetup`] has the same.
+    #[inline]
+    pub fn reference(&self) -> (i32, i32) {
+        (self.rx, self.ry)
+    }
+
+    /// [`Plane::at`] of the pixel `(dx, dy)` from the reference pixel
+    /// ([`Plane::reference`]), for callers that sample several planes of one
+    /// [`PlaneSetup`] at the same pixel: one offset for all.
     #[inline]
     pub fn at_offset(&self, dx: i32, dy: i32) -> i64 {
         self.base.wrapping_add(self.gx.wrapping_mul(dx.into())).wrapping_add(self.gy.wrapping_mul(dy.into()))
@@ -163,12 +170,6 @@ impl PlaneSetup {
         // dbits + ebits + 1 + max(shift, pbits) ≤ 63 (see `plane`).
         let dlimit = 62u32.saturating_sub(ebits + frame.shift.max(pbits));
         Some(PlaneSetup { ex, ey, p, det, div, shift: frame.shift, ebits, pbits, dlimit, rx, ry, need })
-    }
-
-    /// The reference pixel of every plane made from this set-up.
-    #[inline]
-    pub fn reference(&self) -> (i32, i32) {
-        (self.rx, self.ry)
     }
 
     /// Planes made from now on will be sampled only along the span of `len`

@@ -75,11 +75,6 @@ pub(super) fn channels_in_range<C: Interpolate, const S: u32>(tri: &ScreenTriang
 /// ([`channel_in_range`]).
 pub(super) struct Gouraud<C, M, const CLAMP: bool> {
     pub(super) planes: [Plane; 4],
-    /// The planes' reference pixel ([`PlaneSetup::reference`]): one offset
-    /// per span for the four perspective-correct planes. (The affine
-    /// channels keep [`Plane::at_low32`]: the shared offset measured no
-    /// faster there, `docs/setup_cost.md`.)
-    pub(super) reference: (i32, i32),
     pub(super) _m: core::marker::PhantomData<(C, M)>,
 }
 
@@ -105,7 +100,6 @@ impl<C: Interpolate, M: Interpolation, const CLAMP: bool> Gouraud<C, M, CLAMP> {
         let max = C::CHANNEL_MAX;
         let planes = &mut self.planes;
         if M::PERSPECTIVE {
-            self.reference = setup.reference();
             // 23 bits keep c·q within u32 for a channel c ≤ 255.
             let q = normalised_q(tri, Q_BITS);
             // Each plane scaled by 2^(32 − DEPTH_FRAC) here, once, for the
@@ -143,7 +137,12 @@ impl<C: Interpolate, M: Interpolation, const CLAMP: bool> Shader<C> for Gouraud<
             persp_step: [0; 4],
             _m: core::marker::PhantomData,
         };
-        let (dx, dy) = (x - self.reference.0, y - self.reference.1);
+        // Perspective-correct: one offset for the four planes (they share
+        // the `q` plane's reference pixel). The affine channels keep
+        // `Plane::at_low32`: the shared offset measured no faster there
+        // (`docs/setup_cost.md`).
+        let (rx, ry) = self.planes[3].reference();
+        let (dx, dy) = (x - rx, y - ry);
         for (k, p) in self.planes.iter().enumerate() {
             if k == 3 && !M::PERSPECTIVE || k < 3 && max[k] == 0 {
                 continue;

@@ -82,11 +82,7 @@ fn gouraud_spans<C, F, M, const CLAMP: bool, const S: u32, const W: usize, R>(
     R: SpanRest,
 {
     // Made in place: built and returned, its planes were copied twice.
-    let mut shade = Gouraud::<C, M, CLAMP> {
-        planes: [Plane::default(); 4],
-        reference: (0, 0),
-        _m: core::marker::PhantomData,
-    };
+    let mut shade = Gouraud::<C, M, CLAMP> { planes: [Plane::default(); 4], _m: core::marker::PhantomData };
     shade.set_up(tri, setup);
     draw_with_test::<C, F, _, _, W>(spans, color, depth, state, zplane, &shade);
 }
