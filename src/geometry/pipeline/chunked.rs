@@ -17,8 +17,11 @@
 //! [`Pipeline::draw_valid_mesh`]'s own) or the cache, if smaller. Its mesh
 //! vertices map to local slots through a table of twice as many buckets
 //! with linear probing, at most half full, so a lookup ends after a few
-//! probes; the table and the slot list live on the stack (about 400 bytes
-//! for 64 slots, 40 for 8).
+//! probes. Each triangle's local slots are kept as it joins (a chunk of `C`
+//! slots takes at most `2·C` triangles, more than a closed mesh's `2·C − 4`),
+//! so drawing the chunk looks nothing up again. The table, the slot list
+//! and the triangles live on the stack (about 800 bytes for 64 slots, 90
+//! for 8).
 
 use super::cache::{Cached, Slots};
 use super::cluster::ClusterSource;
@@ -45,6 +48,10 @@ pub(super) struct SlotTable<const B: usize, const C: usize> {
     vertex: [u16; C],
     /// Slots in use.
     len: usize,
+    /// The local slots of the chunk's triangles (`B` = 2·`C` at most).
+    triangles: [[u8; 3]; B],
+    /// Triangles in the chunk.
+    count: usize,
 }
 
 /// The table of chunks of up to [`CHUNK_SLOTS`] vertices (a caller's cache).
@@ -58,12 +65,13 @@ impl<const B: usize, const C: usize> SlotTable<B, C> {
 
     pub(super) fn new() -> Self {
         let () = Self::SIZES;
-        SlotTable { bucket: [0; B], vertex: [0; C], len: 0 }
+        SlotTable { bucket: [0; B], vertex: [0; C], len: 0, triangles: [[0; 3]; B], count: 0 }
     }
 
     fn clear(&mut self) {
         self.bucket = [0; B];
         self.len = 0;
+        self.count = 0;
     }
 
     /// The bucket holding `v`, or the empty one where it would go: the
@@ -80,19 +88,19 @@ impl<const B: usize, const C: usize> SlotTable<B, C> {
         }
     }
 
-    /// The slot of `v`, which the chunk holds.
-    #[inline]
-    fn slot(&self, v: u16) -> usize {
-        usize::from(self.bucket[self.find(v)]).wrapping_sub(1)
-    }
-
-    /// Adds the vertices of `t` not yet held if, with them, at most `cap`
-    /// slots are used; else changes nothing and returns false.
+    /// Adds triangle `t` and its vertices not yet held if, with them, at
+    /// most `cap` slots and `B` triangles are used; else changes nothing and
+    /// returns false.
     fn add(&mut self, t: [u16; 3], cap: usize) -> bool {
+        if self.count == B {
+            return false;
+        }
+        let mut local = [0u8; 3];
         let mut added = [usize::MAX; 3];
         for (k, &v) in t.iter().enumerate() {
             let h = self.find(v);
             if self.bucket[h] != 0 {
+                local[k] = self.bucket[h] - 1;
                 continue;
             }
             if self.len == cap {
@@ -104,10 +112,13 @@ impl<const B: usize, const C: usize> SlotTable<B, C> {
                 return false;
             }
             self.vertex[self.len] = v;
+            local[k] = self.len as u8;
             self.len += 1;
             self.bucket[h] = self.len as u8;
             added[k] = h;
         }
+        self.triangles[self.count] = local;
+        self.count += 1;
         true
     }
 }
@@ -144,10 +155,9 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
             // A triangle has at most three new vertices and cap ≥ 3: every
             // chunk takes at least one triangle.
             let n = rest.iter().take_while(|&&t| table.add(t, cap)).count();
-            let (chunk, after) = rest.split_at(n);
-            rest = after;
+            rest = &rest[n..];
             let src = ClusterSource { mesh, vertices: &table.vertex[..table.len] };
-            let triangles = chunk.iter().map(|t| t.map(|v| table.slot(v)));
+            let triangles = table.triangles[..table.count].iter().map(|t| t.map(usize::from));
             let slots = Slots { slots: &mut cache[..table.len], inside };
             self.draw_cached(setup, &src, material, slots, triangles, stats, |tri, _| sink(tri))?;
             memo.drawn(n, &cache[..table.len], &setup.band);

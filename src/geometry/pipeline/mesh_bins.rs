@@ -42,7 +42,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     /// Each vertex is transformed, snapped and lit once per run of
     /// consecutive triangles that share it: the triangles are taken in their
     /// order in chunks of at most 8 vertices, held in a cache on the stack
-    /// (about 420 bytes for `f32` and [`Fx`](crate::math::Fx)), as
+    /// (about 480 bytes for `f32` and [`Fx`](crate::math::Fx)), as
     /// [`Pipeline::draw_valid_mesh_cached`] does with a cache of 8. Meshes
     /// whose index order keeps neighbours together (strips, grids,
     /// subdivided spheres) share most corners this way (`docs/setup_cost.md`,

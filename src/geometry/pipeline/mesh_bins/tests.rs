@@ -95,12 +95,42 @@ fn stack_cache_is_per_corner_fx() {
 }
 
 /// The stack cache of [`Pipeline::draw_valid_mesh`] is as small as its
-/// docs say (about 420 bytes with its slot table).
+/// docs say (about 480 bytes with its slot table).
 #[test]
 fn stack_cache_size() {
     let size = |c: usize, t: usize| c * SMALL_SLOTS + t;
     let table = core::mem::size_of::<SmallTable>();
     let f = size(core::mem::size_of::<Cached<f32, 4>>(), table);
     let x = size(core::mem::size_of::<Cached<Fx, 4>>(), table);
-    assert!((380..=460).contains(&f) && (380..=460).contains(&x), "{f} {x}");
+    assert!((440..=520).contains(&f) && (440..=520).contains(&x), "{f} {x}");
+}
+
+/// A chunk ends when its triangle list is full (`2·C` triangles for `C`
+/// slots), not only when its slots are: a tetrahedron whose faces each
+/// repeat 140 times (560 triangles over 4 vertices) gives the per-corner
+/// path's triangles and counts through the stack cache (8 slots, chunks of
+/// 16 triangles) and through a caller's cache of 3 (a chunk per run of one
+/// face, 128 triangles at most).
+#[test]
+fn chunks_end_when_their_triangle_list_is_full() {
+    let s = 1.0 / 3.0f32.sqrt();
+    let positions = [[s, s, s], [s, -s, -s], [-s, s, -s], [-s, -s, s]];
+    let faces = [[0u16, 1, 2], [0, 3, 1], [0, 2, 3], [1, 3, 2]];
+    let indices: [[u16; 3]; 560] = core::array::from_fn(|t| faces[t / 140]);
+    let mesh = ValidMesh::new(Mesh::new(&positions, &positions, &indices, ([0.0; 3], 1.0))).unwrap();
+    let view =
+        transform::look_at(Vec3::new(0.4, 0.9, 3.0), Vec3::new(0.0, 0.0, 0.0), Vec3::new(0.0, 1.0, 0.0));
+    let p = Pipeline::<f32, 4>::perspective(view.unwrap(), 0.9, 1.0, 20.0, 160, 120).unwrap();
+    let model = transform::rotation_y(0.5);
+    let color = Rgb565::new(25, 40, 10);
+    let (mut a, mut b) = (Bins::new(), Bins::new());
+    let sa = p.valid_mesh_into(&mesh, &model, color, &Uniform, |tri| {
+        a.push(tri).map_err(|_| Error::CapacityExceeded { needed: 0, capacity: 0 })
+    });
+    assert!(a.len() >= 280, "{} triangles", a.len());
+    let sb = p.draw_valid_mesh(&mesh, &model, color, &mut b);
+    assert!(sa == sb && a == b, "stack cache: {} vs {} triangles", a.len(), b.len());
+    b.clear();
+    let sc = p.draw_valid_mesh_cached(&mesh, &model, color, &mut VertexCache::<f32, 4, 3>::new(), &mut b);
+    assert!(sa == sc && a == b, "cache of 3: {} vs {} triangles", a.len(), b.len());
 }
