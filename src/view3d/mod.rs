@@ -347,7 +347,9 @@ impl<C: Interpolate, const W: usize, const H: usize> View3d<C, W, H> {
         for o in objects {
             match o.geometry() {
                 Geometry::Mesh(m) => m.check_winding()?,
-                Geometry::Valid(m) => m.mesh().check_winding()?,
+                // Validated already, and its winding found then.
+                Geometry::Valid(m) if m.winding_agrees() => {}
+                Geometry::Valid(m) => m.mesh().const_data().check_winding_unvalidated()?,
                 Geometry::Meshlets(_) => {}
             }
             o.check_colors()?;

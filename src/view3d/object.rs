@@ -17,8 +17,9 @@ pub enum Geometry<'a> {
     /// A mesh checked ([`Mesh::check_winding`], which validates it too) at
     /// the start of every frame; the frame fails with its error.
     Mesh(Mesh<'a>),
-    /// A mesh validated beforehand; its winding is still checked against its
-    /// normals at the start of every frame ([`Mesh::check_winding`]).
+    /// A mesh validated beforehand. [`ValidMesh::new`] found whether its
+    /// winding agrees with its normals ([`ValidMesh::winding_agrees`]); if
+    /// not, every frame fails with [`Error::WindingMismatch`].
     Valid(ValidMesh<'a>),
     /// A large mesh in clusters: drawn per band through
     /// [`Pipeline::draw_meshlets`](crate::pipeline::Pipeline::draw_meshlets),
@@ -256,7 +257,7 @@ pub(super) fn draw_object<C: Interpolate, Mat: Material<f32>, const W: usize>(
     };
     match o.geometry() {
         Geometry::Mesh(m) => {
-            banded.mesh_into(&ValidMesh::trusted(m), &model, color, material, memo, &mut into_band)?
+            banded.mesh_into(&ValidMesh::trusted(m, true), &model, color, material, memo, &mut into_band)?
         }
         Geometry::Valid(m) => banded.mesh_into(&m, &model, color, material, memo, &mut into_band)?,
         Geometry::Meshlets(m) => banded.draw_meshlets_with(m, &model, color, material, cache, band)?,

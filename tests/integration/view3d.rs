@@ -269,6 +269,17 @@ fn wrong_inputs_are_errors() {
         run(&mut view, &camera(), &bad, W as u32, H),
         (Err(RenderError::Input(Error::WindingMismatch)), 0)
     );
+    // The same mesh validated beforehand: its winding, found by
+    // `ValidMesh::new`, still fails every frame.
+    let valid = microraster::mesh::ValidMesh::new(inside_out).unwrap();
+    assert!(!valid.winding_agrees() && CUBE.winding_agrees());
+    let bad = [Object::new(&valid, Rgb565::RED)];
+    for _ in 0..2 {
+        assert_eq!(
+            run(&mut view, &camera(), &bad, W as u32, H),
+            (Err(RenderError::Input(Error::WindingMismatch)), 0)
+        );
+    }
     // A singular model fails in the first band that draws the mesh.
     let flat = [Object::new(&CUBE, Rgb565::RED).scale(0.0)];
     assert_eq!(

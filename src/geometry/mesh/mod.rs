@@ -264,27 +264,55 @@ pub(crate) fn face_normal_of([a, b, c]: [[f32; 3]; 3]) -> Option<[f32; 3]> {
 /// assert!(ValidMesh::new(bad).is_err());
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct ValidMesh<'a>(Mesh<'a>);
+pub struct ValidMesh<'a> {
+    mesh: Mesh<'a>,
+    /// [`Mesh::check_winding`] passes (known to the front, which then
+    /// skips it; false where not looked at).
+    wound: bool,
+}
 
 impl<'a> ValidMesh<'a> {
-    /// `mesh` if it passes [`Mesh::validate`], else that error.
+    /// `mesh` if it passes [`Mesh::validate`], else that error. Whether its
+    /// winding agrees with its normals is found here too, once
+    /// ([`ValidMesh::winding_agrees`]; O(triangles)), so the `view3d`
+    /// front need not check it every frame.
     pub const fn new(mesh: Mesh<'a>) -> Result<Self, Error> {
         match mesh.validate() {
-            Ok(()) => Ok(ValidMesh(mesh)),
+            Ok(()) => Ok(ValidMesh { mesh, wound: mesh.const_data().check_winding_unvalidated().is_ok() }),
             Err(e) => Err(e),
         }
     }
 
     /// The mesh.
     pub const fn mesh(&self) -> &Mesh<'a> {
-        &self.0
+        &self.mesh
     }
 
-    /// `mesh`, which the caller has just checked ([`Mesh::validate`] or
-    /// [`Mesh::check_winding`]): the `view3d` front checks a plain mesh
-    /// once per frame, not once per band.
-    pub(crate) const fn trusted(mesh: Mesh<'a>) -> Self {
-        ValidMesh(mesh)
+    /// Whether [`Mesh::check_winding`] passes: every triangle is wound
+    /// counter-clockwise seen from the side its vertex normals point to (a
+    /// mesh without normals passes). Found by [`ValidMesh::new`].
+    ///
+    /// ```
+    /// use microraster::mesh::{Mesh, ValidMesh};
+    /// let positions = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]];
+    /// let up = [[0.0, 0.0, 1.0]; 3];
+    /// let sphere = ([0.5, 0.5, 0.0], 0.71);
+    /// let good = ValidMesh::new(Mesh::new(&positions, &up, &[[0, 1, 2]], sphere)).unwrap();
+    /// let inside_out = ValidMesh::new(Mesh::new(&positions, &up, &[[0, 2, 1]], sphere)).unwrap();
+    /// assert!(good.winding_agrees() && !inside_out.winding_agrees());
+    /// ```
+    pub const fn winding_agrees(&self) -> bool {
+        self.wound
+    }
+
+    /// `mesh`, which the caller has just checked ([`Mesh::validate`], and
+    /// [`Mesh::check_winding`] if `wound`): [`Pipeline::draw_mesh`]
+    /// validates on every call; the `view3d` front checks a plain mesh once
+    /// per frame, not once per band.
+    ///
+    /// [`Pipeline::draw_mesh`]: crate::pipeline::Pipeline::draw_mesh
+    pub(crate) const fn trusted(mesh: Mesh<'a>, wound: bool) -> Self {
+        ValidMesh { mesh, wound }
     }
 }
 

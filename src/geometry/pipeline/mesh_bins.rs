@@ -31,7 +31,9 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         bins: &mut heapless::Vec<ScreenTriangle<S>, N>,
     ) -> Result<MeshStats, Error> {
         // A bad mesh is an error, never a silent cull or an out-of-range index.
-        self.draw_valid_mesh(&ValidMesh::new(*mesh)?, model, color, bins)
+        // (The winding is not looked at here.)
+        mesh.validate()?;
+        self.draw_valid_mesh(&ValidMesh::trusted(*mesh, false), model, color, bins)
     }
 
     /// [`Pipeline::draw_mesh`] for a mesh checked once beforehand
