@@ -20,7 +20,7 @@
 //! probes. Each triangle's local slots are kept as it joins (a chunk of `C`
 //! slots takes at most `2·C` triangles, more than a closed mesh's `2·C − 4`),
 //! so drawing the chunk looks nothing up again. The table, the slot list
-//! and the triangles live on the stack (about 800 bytes for 64 slots, 90
+//! and the triangles live on the stack (about 650 bytes for 64 slots, 90
 //! for 8).
 
 use super::cache::{Cached, Slots};
