@@ -66,16 +66,17 @@ pub fn mr_knot<T: Scalar, M: Interpolation + Default>(
     depth: &mut DepthBand<microraster::depth::Depth16, W, 16>,
     target: &mut impl Frame,
 ) {
-    mr_knot_of::<T, M, f32>(&VALID_KNOT, pipeline, cache, band, depth, target);
+    mr_knot_of::<T, M, f32, 16>(&VALID_KNOT, pipeline, cache, band, depth, target);
 }
 
-/// [`mr_knot`] of `mesh` (the knot, its data in `f32` or, `KNOT_FX`, in 16.16).
-pub fn mr_knot_of<T: Scalar, M: Interpolation + Default, P: Scalar>(
+/// [`mr_knot`] of `mesh` (the knot, its data in `f32` or, `KNOT_FX`, in
+/// 16.16), in bands of `R` rows.
+pub fn mr_knot_of<T: Scalar, M: Interpolation + Default, P: Scalar, const R: usize>(
     mesh: &ValidMeshletMesh<'static, P>,
     pipeline: &Pipeline<T, 4>,
     cache: &mut ClusterCache<T, 4>,
-    band: &mut Band<Rgb565, W, 16>,
-    depth: &mut DepthBand<microraster::depth::Depth16, W, 16>,
+    band: &mut Band<Rgb565, W, R>,
+    depth: &mut DepthBand<microraster::depth::Depth16, W, R>,
     target: &mut impl Frame,
 ) {
     let model = knot_model::<T>();
@@ -88,6 +89,40 @@ pub fn mr_knot_of<T: Scalar, M: Interpolation + Default, P: Scalar>(
             target,
         )
         .unwrap();
+}
+
+/// The band loop and the vertex stage of [`mr_knot`] alone: each 16-row
+/// band cleared and sent, its triangles
+/// ([`Pipeline::meshlet_triangles`], what `draw_meshlets` would draw) only
+/// counted, no pixel drawn (`examples/fw_bench`'s stage row "band loop +
+/// vertex stage only").
+pub fn mr_knot_vertex_only<T: Scalar>(
+    pipeline: &Pipeline<T, 4>,
+    cache: &mut ClusterCache<T, 4>,
+    band: &mut Band<Rgb565, W, 16>,
+    target: &mut impl Frame,
+) {
+    let model = knot_model::<T>();
+    let mut result = Ok(());
+    Renderer::new(H as u32, BG3)
+        .render(
+            microraster::render::from_fn(|view| {
+                let mut n = 0u32;
+                let rows = (view.y0(), view.y1() - 1);
+                let s = pipeline.meshlet_triangles(&VALID_KNOT, &model, KNOT_COLOR, cache, rows, |t| {
+                    n = n.wrapping_add(std::hint::black_box(t).v[0].depth >> 16)
+                });
+                std::hint::black_box(n);
+                if result.is_ok() {
+                    result = s.map(|_| ());
+                }
+                Ok(())
+            }),
+            band,
+            target,
+        )
+        .unwrap();
+    result.unwrap();
 }
 
 /// Fragments of the knot's frame: every pixel of every screen triangle the

@@ -16,6 +16,7 @@ pub(crate) fn document(
     ceiling: f64,
     peers: &[Peer],
     breakdown: &[Breakdown],
+    knot_split: &knot::Split,
     s2: &[Row2d],
     s3: &[Row3d],
     setups: &[(usize, usize)],
@@ -36,7 +37,7 @@ pub(crate) fn document(
     let _ = writeln!(w, "![microraster against its peers](charts/peers.png)\n");
 
     // --- Targets
-    let targets = targets::section(w, memset_ns, ceiling, peers, breakdown, s3, counts, fw);
+    let targets = targets::section(w, memset_ns, ceiling, peers, breakdown, knot_split, s3, counts, fw);
 
     // --- Peers
     let _ = writeln!(w, "## microraster against its peers\n");

@@ -7,7 +7,7 @@ use super::Peer;
 use crate::common::*;
 use crate::cortex::{Counts, FwBench};
 use crate::knot_mesh::VALID_KNOT_FX;
-use crate::knot_renderers::{self as knot, EucKnot, mr_knot, mr_knot_of};
+use crate::knot_renderers::{self as knot, EucKnot, mr_knot, mr_knot_of, mr_knot_vertex_only};
 use crate::timing::median_ns;
 use embedded_graphics_core::pixelcolor::{Rgb565, RgbColor};
 use microraster::Band;
@@ -27,11 +27,25 @@ pub const EUC: &str = "knot20k/euc";
 /// The fixed-point path reading the knot's data in 16.16 (`KNOT_FX`).
 pub const FX_MESH: &str = "knot20k/Fx/D16/affine/band16/S4/fx-mesh";
 
+/// Where the knot's host time goes (the report's reason for its host
+/// verdict), measured in the same run as [`peers`]' frames.
+pub struct Split {
+    /// The band loop and the vertex stage alone, 16-row bands, `f32`:
+    /// every band's triangles only counted ([`mr_knot_vertex_only`]).
+    pub vertex_ns: f64,
+    /// The `f32` perspective-correct frame in one 240-row band: a whole
+    /// colour and depth frame, as euc holds.
+    pub one_band_ns: f64,
+    /// Pixels of that frame that differ from the 16-row bands' frame
+    /// (band invariance: 0).
+    pub one_band_differs: usize,
+}
+
 /// Times the knot through microraster (both paths, both interpolations) and
 /// through euc, same frame, and adds them to `peers`. "covered" is the
 /// frame's fragments (pixels of every front-facing screen triangle, before
-/// the depth test), as for the standard 3D scene.
-pub fn peers(peers: &mut Vec<Peer>) {
+/// the depth test), as for the standard 3D scene. Returns the host [`Split`].
+pub fn peers(peers: &mut Vec<Peer>) -> Split {
     let (p32, pfx) = (pipeline3d::<f32, 4>(), pipeline3d::<Fx, 4>());
     let (mut c32, mut cfx) = (Box::new(ClusterCache::new()), Box::new(ClusterCache::new()));
     let mut band = Box::new(Band::<Rgb565, W, 16>::new(BG3));
@@ -57,12 +71,28 @@ pub fn peers(peers: &mut Vec<Peer>) {
     let t = median_ns(|| mr_knot::<Fx, Affine>(&pfx, &mut cfx, &mut band, &mut depth, &mut slice));
     add("microraster, Fx, affine", "knot20k/Fx/D16/affine/band16/S4", t, diff(&slice.px));
     let t = median_ns(|| {
-        mr_knot_of::<Fx, Affine, Fx>(&VALID_KNOT_FX, &pfx, &mut cfx, &mut band, &mut depth, &mut slice)
+        mr_knot_of::<Fx, Affine, Fx, 16>(&VALID_KNOT_FX, &pfx, &mut cfx, &mut band, &mut depth, &mut slice)
     });
     add("microraster, Fx, affine, mesh in 16.16", FX_MESH, t, diff(&slice.px));
     let mut euc = EucKnot::new();
     let t = median_ns(|| euc.frame());
     add("euc 0.5 (f32 depth, framebuffer)", EUC, t, diff(euc.pixels()));
+
+    let vertex_ns = median_ns(|| mr_knot_vertex_only(&p32, &mut c32, &mut band, &mut slice));
+    let mut tall = Box::new(Band::<Rgb565, W, H>::new(BG3));
+    let mut tall_depth = Box::new(DepthBand::<Depth16, W, H>::new());
+    let one_band_ns = median_ns(|| {
+        mr_knot_of::<f32, PerspectiveCorrect, f32, H>(
+            &crate::knot_mesh::VALID_KNOT,
+            &p32,
+            &mut c32,
+            &mut tall,
+            &mut tall_depth,
+            &mut slice,
+        )
+    });
+    let one_band_differs = slice.px.iter().zip(&mine).filter(|(a, b)| a != b).count();
+    Split { vertex_ns, one_band_ns, one_band_differs }
 }
 
 /// The README's summary of the knot (between its `knot:begin/end`

@@ -109,7 +109,7 @@ fn main() -> Res<()> {
     peers2d(&mut peers, &mut breakdown, "tiny", scenes::tiny, scenes::tiny, None);
     peers2d(&mut peers, &mut breakdown, "lines", scenes::lines, scenes::lines, None);
     peers3d(&mut peers);
-    knot::peers(&mut peers);
+    let knot_split = knot::peers(&mut peers);
 
     eprintln!("report: sweep (2D)");
     let fine = sweep::fine_scene();
@@ -212,7 +212,7 @@ fn main() -> Res<()> {
 
     eprintln!("report: charts and tables");
     let (mut doc, targets) =
-        document(&cpu, memset_ns, ceiling, &peers, &breakdown, &s2, &s3, &setups, &counts, &fw);
+        document(&cpu, memset_ns, ceiling, &peers, &breakdown, &knot_split, &s2, &s3, &setups, &counts, &fw);
     doc.push_str(&fragment_section(&frag, aliased_coverage, &peers, &counts));
     doc.push_str(&shapes_section());
     std::fs::write(out.join("tradeoffs.md"), doc)?;
