@@ -4,7 +4,8 @@
 //! mesh, and each vertex is lit with its model normal and position: no
 //! normal matrix, no model-view product, no normalised eye-space normal;
 //! for `f32` the Blinn–Phong half vector's two normalisations become two
-//! reciprocal square roots (`Fx` keeps its two table unit vectors).
+//! reciprocal square roots, or one and a division for an even exponent
+//! (`Fx` keeps its two table unit vectors).
 //!
 //! # Same lighting
 //! With `MV = s·R` (`R` a rotation) and translation `t`, the eye-space
@@ -14,7 +15,9 @@
 //! eye in model space. The half vector's dot product is then `n̂ · h =
 //! (n̂·L_m + n̂·v̂)/√(|L_m|² + 2·L_m·v̂ + 1)` with `v̂ = (E_m − p)/|E_m − p|`,
 //! which needs `1/|E_m − p|` and one more reciprocal square root instead of
-//! two normalised vectors. In exact arithmetic this is the eye-space
+//! two normalised vectors; for an even exponent `e`, `(n̂·h)^e` is the
+//! square `(n̂·L_m + n̂·v̂)²/(|L_m|² + 2·L_m·v̂ + 1)` raised to `e/2`, so
+//! that second root becomes one division. In exact arithmetic this is the eye-space
 //! [`Lighting::shade`]; in `f32` the two differ by rounding: each rounded
 //! value here is within a few units of `2^-24` relative of its exact value
 //! (the reciprocal square roots within `5·2^-24`, as
@@ -138,15 +141,44 @@ impl<T: Scalar> ModelLight<T> {
         let k = self.ambient + self.diffuse * lambert;
         let spec = match self.specular {
             Some((strength, exp)) if lambert > T::ZERO => {
-                let nh = match self.half {
-                    Some(h) => positive(n.dot(h)),
-                    None => self.half_dot(n, nl, p),
+                let power = match self.half {
+                    Some(h) => powi(positive(n.dot(h)), exp),
+                    None => self.half_power(n, nl, p, exp),
                 };
-                strength * powi(nh, exp)
+                strength * power
             }
             _ => T::ZERO,
         };
         base.map(|b| b * k + spec)
+    }
+
+    /// `max(0, n̂ · h)^exp` for the Blinn–Phong half vector `h` at `p`. For
+    /// `f32` and an even `exp`, from the square `(n̂·h)² = (n̂·L_m +
+    /// n̂·v̂)²/(|L_m|² + 2·L_m·v̂ + 1)` (module docs) raised to `exp/2`: one
+    /// division where the square root's reciprocal took a Newton iteration
+    /// (three Newton steps of 4 operations each; fewer instructions and
+    /// cycles, the Cortex-M4F's `VDIV` included). Error: the numerator's
+    /// and the denominator's own rounding enter both forms alike; squaring
+    /// and dividing add `2·2^-24` relative to the square, where the root
+    /// form's reciprocal square root (`5·2^-24`) and its product added
+    /// `2·6·2^-24`: within the module docs' bound (tested against `f64`
+    /// with an even and an odd exponent). Otherwise (`Fx`, odd `exp`)
+    /// [`ModelLight::half_dot`] to the power `exp`.
+    #[inline(always)]
+    fn half_power(&self, n: Vec3<T>, nl: T, p: Vec3<T>, exp: u32) -> T {
+        if crate::math::vec::is_float::<T>() && exp & 1 == 0 {
+            let f = |v: Vec3<T>| Vec3::new(v.x.to_f32(), v.y.to_f32(), v.z.to_f32());
+            let (n, d, l) = (f(n), f(self.eye - p), f(self.l));
+            if let Some(r) = rsqrt_f32(d.dot(d)) {
+                let (nv, lv) = (n.dot(d) * r, l.dot(d) * r);
+                let (x, h2) = (nl.to_f32() + nv, self.l2_plus_1.to_f32() + 2.0 * lv);
+                // h2 = |h|²: outside rsqrt_f32's range the square-root path
+                // gave 0 too (h = 0: the viewer exactly against the light).
+                let q = if x > 0.0 && (7.9e-31..=1.2e30).contains(&h2) { x * x / h2 } else { 0.0 };
+                return powi(T::from_f32(q), exp / 2);
+            }
+        }
+        powi(self.half_dot(n, nl, p), exp)
     }
 
     /// `max(0, n̂ · h)` for the Blinn–Phong half vector `h` at `p`: for
@@ -187,24 +219,31 @@ mod tests {
     /// refused.
     #[test]
     fn model_space_is_eye_space() {
-        model_space_is_eye_space_for(Viewer::Local);
+        model_space_is_eye_space_for(Viewer::Local, 24);
+    }
+
+    /// The same with an odd exponent: the `f32` half vector through its
+    /// second reciprocal square root, not the square (`half_power`).
+    #[test]
+    fn model_space_is_eye_space_odd_exponent() {
+        model_space_is_eye_space_for(Viewer::Local, 25);
     }
 
     /// The same with the viewer at infinity (one half vector per mesh).
     #[test]
     fn model_space_is_eye_space_infinite_viewer() {
-        model_space_is_eye_space_for(Viewer::Infinite);
+        model_space_is_eye_space_for(Viewer::Infinite, 24);
     }
 
-    fn model_space_is_eye_space_for(viewer: Viewer) {
+    fn model_space_is_eye_space_for(viewer: Viewer, exp: u32) {
         let mut rng = crate::math::vec::tests::Rng(0x0DE1_5EED);
         let mut rnd = || (rng.next() >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0;
         let light = Lighting::<f32>::new(0.15, Vec3::new(0.3, 0.8, 0.5), 0.7)
-            .with_specular(0.6, 24)
+            .with_specular(0.6, exp)
             .with_viewer(viewer);
         let light_fx =
             Lighting::<Fx>::new(Fx::from_f32(0.15), Vec3::from_f32([0.3, 0.8, 0.5]), Fx::from_f32(0.7))
-                .with_specular(Fx::from_f32(0.6), 24)
+                .with_specular(Fx::from_f32(0.6), exp)
                 .with_viewer(viewer);
         let (mut worst, mut worst_fx) = (0.0f64, 0.0f64);
         let mut n_spec = 0;
@@ -247,7 +286,7 @@ mod tests {
                     Viewer::Infinite => [0.0, 0.0, 1.0],
                 };
                 let h = unit([0, 1, 2].map(|i| l[i] + v[i]));
-                let spec = if lam > 0.0 { 0.6 * dot(ne, h).max(0.0).powi(24) } else { 0.0 };
+                let spec = if lam > 0.0 { 0.6 * dot(ne, h).max(0.0).powi(exp as i32) } else { 0.0 };
                 n_spec += usize::from(spec > 0.01);
                 let want = [1.0, 0.5, 0.25].map(|b: f64| b * (0.15 + 0.7 * lam) + spec);
                 for k in 0..3 {
@@ -268,8 +307,9 @@ mod tests {
         assert!(n_spec > 1000, "{n_spec}");
         // Fx: the half vector comes from two table unit vectors (within 2^-16
         // per component, so n·h within 4·2^-16 with its products), and the
-        // exponent (24) multiplies that error: (24·4 + 8)·2^-16 in all.
-        assert!(worst_fx < 104.0 / 65536.0 && worst_fx > 2f64.powi(-16), "{worst_fx:e}");
+        // exponent multiplies that error: (e·4 + 8)·2^-16 in all.
+        let bound_fx = f64::from(exp * 4 + 8) / 65536.0;
+        assert!(worst_fx < bound_fx && worst_fx > 2f64.powi(-16), "{worst_fx:e}");
         // A shear or a non-uniform scale keeps eye-space lighting.
         assert!(ModelLight::new(&light, &transform::scaling(Vec3::new(1.0, 1.1, 1.0))).is_none());
         let mut shear = Mat4::<f32>::IDENTITY;
