@@ -195,8 +195,8 @@ pub(super) fn issue12(
                 "With the specular term's viewer at infinity (`Viewer::Infinite`: one half vector per mesh, \
                  OpenGL's default light model and TGX's; only the highlights move) the frame takes {:.0} \
                  instructions per mesh triangle affine ({:.2}× the budget) and {:.0} perspective-correct \
-                 ({:.2}× its budget): the local viewer's half vector (two reciprocal square roots per lit \
-                 vertex) costs {:.1} % of the affine frame, not the gap. ",
+                 ({:.2}× its budget): the local viewer's half vector (with the knot's even exponent, a \
+                 reciprocal square root and a division per lit vertex) costs {:.1} % of the affine frame, not the gap. ",
                 per(fa.instructions),
                 per(fa.instructions) / PER_TRI_AFFINE,
                 per(fp.instructions),
