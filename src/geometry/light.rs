@@ -59,8 +59,9 @@ pub struct Lighting<T> {
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum Viewer {
     /// At the eye (the origin of eye space): the half vector is
-    /// `normalize(L + normalize(−p))` at each lit point `p`, two square
-    /// roots per lit vertex.
+    /// `normalize(L + normalize(−p))` at each lit point `p`: two square
+    /// roots per lit vertex, or (lit in model space, `f32`, an even
+    /// exponent) one and a division.
     #[default]
     Local,
     /// Infinitely far along +z (OpenGL's `GL_LIGHT_MODEL_LOCAL_VIEWER`
