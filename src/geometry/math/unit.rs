@@ -29,12 +29,20 @@ pub(crate) fn unit_f32(v: Vec3<f32>) -> Vec3<f32> {
     Vec3::new(v.x * r, v.y * r, v.z * r)
 }
 
+/// Whether `s` lies in [`rsqrt_f32`]'s domain, `[2^-100, 2^100]` (about;
+/// NaN does not).
+#[inline]
+pub(crate) fn in_rsqrt_domain(s: f32) -> bool {
+    (7.9e-31..=1.2e30).contains(&s)
+}
+
 /// `1/√s` for `s` in `[2^-100, 2^100]` (about; `None` outside, NaN
-/// included), within `5·2^-24` relative: the bit-pattern estimate and three
-/// Newton steps of [`unit_f32`] (its derivation).
+/// included, [`in_rsqrt_domain`]), within `5·2^-24` relative: the
+/// bit-pattern estimate and three Newton steps of [`unit_f32`] (its
+/// derivation).
 #[inline]
 pub(crate) fn rsqrt_f32(s: f32) -> Option<f32> {
-    if !(7.9e-31..=1.2e30).contains(&s) {
+    if !in_rsqrt_domain(s) {
         return None;
     }
     // The classic estimate of 1/√s from the exponent and mantissa bits.

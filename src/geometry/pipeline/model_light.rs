@@ -42,7 +42,7 @@
 //! eye space.
 
 use crate::light::{Lighting, Viewer, positive, powi};
-use crate::math::unit::{rsqrt_f32, unit_f32};
+use crate::math::unit::{in_rsqrt_domain, rsqrt_f32, unit_f32};
 use crate::math::{Mat4, Scalar, Vec3};
 
 /// Per mesh: the lighting carried into model space (module docs), in the
@@ -169,14 +169,10 @@ impl<T: Scalar> ModelLight<T> {
     #[inline(always)]
     fn half_power(&self, n: Vec3<T>, nl: T, p: Vec3<T>, exp: u32) -> T {
         if crate::math::vec::is_float::<T>() && exp & 1 == 0 {
-            let f = |v: Vec3<T>| Vec3::new(v.x.to_f32(), v.y.to_f32(), v.z.to_f32());
-            let (n, d, l) = (f(n), f(self.eye - p), f(self.l));
-            if let Some(r) = rsqrt_f32(d.dot(d)) {
-                let (nv, lv) = (n.dot(d) * r, l.dot(d) * r);
-                let (x, h2) = (nl.to_f32() + nv, self.l2_plus_1.to_f32() + 2.0 * lv);
-                // h2 = |h|²: outside rsqrt_f32's range the square-root path
-                // gave 0 too (h = 0: the viewer exactly against the light).
-                let q = if x > 0.0 && (7.9e-31..=1.2e30).contains(&h2) { x * x / h2 } else { 0.0 };
+            if let Some((x, h2)) = self.half_terms_f32(n, nl, p) {
+                // Outside rsqrt_f32's domain the root form gave 0 too (h = 0:
+                // the viewer exactly against the light).
+                let q = if x > 0.0 && in_rsqrt_domain(h2) { x * x / h2 } else { 0.0 };
                 return powi(T::from_f32(q), exp / 2);
             }
         }
@@ -187,26 +183,36 @@ impl<T: Scalar> ModelLight<T> {
     /// `f32` by two reciprocal square roots, for `Fx` (whose unit vectors
     /// come from a table, [`Vec3::normalize_fast`]) by two unit vectors.
     fn half_dot(&self, n: Vec3<T>, nl: T, p: Vec3<T>) -> T {
-        let d = self.eye - p;
         let nh = if crate::math::vec::is_float::<T>() {
-            let f = |v: Vec3<T>| Vec3::new(v.x.to_f32(), v.y.to_f32(), v.z.to_f32());
-            let (n, d, l) = (f(n), f(d), f(self.l));
-            let nh = match rsqrt_f32(d.dot(d)) {
-                Some(r) => {
-                    let (nv, lv) = (n.dot(d) * r, l.dot(d) * r);
-                    match rsqrt_f32(self.l2_plus_1.to_f32() + 2.0 * lv) {
-                        Some(rh) => (nl.to_f32() + nv) * rh,
-                        None => 0.0, // h = 0: the viewer exactly against the light
-                    }
-                }
+            let nh = match self.half_terms_f32(n, nl, p) {
+                Some((x, h2)) => match rsqrt_f32(h2) {
+                    Some(rh) => x * rh,
+                    None => 0.0, // h = 0: the viewer exactly against the light
+                },
                 // The vertex at the eye, or out of range: the vectors themselves.
-                None => n.dot(unit_f32(l + unit_f32(d))),
+                None => {
+                    let f = |v: Vec3<T>| Vec3::new(v.x.to_f32(), v.y.to_f32(), v.z.to_f32());
+                    let (n, d, l) = (f(n), f(self.eye - p), f(self.l));
+                    n.dot(unit_f32(l + unit_f32(d)))
+                }
             };
             T::from_f32(nh)
         } else {
-            n.dot((self.l + d.normalize_fast()).normalize_fast())
+            n.dot((self.l + (self.eye - p).normalize_fast()).normalize_fast())
         };
         positive(nh)
+    }
+
+    /// In `f32`, `n̂·h·|h| = n̂·L_m + n̂·v̂` and `|h|² = |L_m|² + 2·L_m·v̂ + 1`
+    /// (module docs) at `p`, with `v̂` from one reciprocal square root; `None`
+    /// where `|E_m − p|²` is outside [`rsqrt_f32`]'s domain.
+    #[inline(always)]
+    fn half_terms_f32(&self, n: Vec3<T>, nl: T, p: Vec3<T>) -> Option<(f32, f32)> {
+        let f = |v: Vec3<T>| Vec3::new(v.x.to_f32(), v.y.to_f32(), v.z.to_f32());
+        let (n, d, l) = (f(n), f(self.eye - p), f(self.l));
+        let r = rsqrt_f32(d.dot(d))?;
+        let (nv, lv) = (n.dot(d) * r, l.dot(d) * r);
+        Some((nl.to_f32() + nv, self.l2_plus_1.to_f32() + 2.0 * lv))
     }
 }
 
