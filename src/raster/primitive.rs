@@ -3,6 +3,11 @@
 //! Primitives hold snapped vertices (so every coordinate is already validated)
 //! and the range of pixel rows they can touch, which lets the band renderer
 //! skip a primitive that misses a band with two comparisons.
+//!
+//! Both kinds keep those rows as their first field (`repr(C)`), so a
+//! [`Primitive`]'s rows lie at one offset whichever kind it holds (tested):
+//! the band loop reads them with no branch on the kind. The slice pass
+//! makes that test for every primitive in every band.
 
 use crate::attr::{COLOR_FRAC, COLOR_HALF, Plane, PlaneFrame, channel_clamped};
 use crate::blit::Blitter;
@@ -29,11 +34,12 @@ pub enum Shading<C> {
 /// # Ok::<(), microraster::Error>(())
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[repr(C)]
 pub struct Triangle<C, const S: u32> {
-    vertices: [SubPoint<S>; 3],
-    shading: Shading<C>,
     // Computed once here: the band renderer asks for it in every band.
     rows: (i32, i32),
+    vertices: [SubPoint<S>; 3],
+    shading: Shading<C>,
 }
 
 impl<C: Interpolate, const S: u32> Triangle<C, S> {
@@ -153,12 +159,13 @@ impl<C: Interpolate, const S: u32> Triangle<C, S> {
 /// # Ok::<(), microraster::RenderError<core::convert::Infallible>>(())
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[repr(C)]
 pub struct Line<C, const S: u32> {
+    // Computed once here: the band renderer asks for it in every band.
+    rows: (i32, i32),
     start: SubPoint<S>,
     end: SubPoint<S>,
     color: C,
-    // Computed once here: the band renderer asks for it in every band.
-    rows: (i32, i32),
 }
 
 impl<C: Interpolate, const S: u32> Line<C, S> {
@@ -265,4 +272,39 @@ pub(crate) const fn center_rows<const S: u32>(lo: i32, hi: i32) -> (i32, i32) {
     let (lo, hi) = (2 * lo, 2 * hi);
     let (one, half) = (1i32 << (S + 1), 1i32 << S);
     ((lo - half + one - 1) >> (S + 1), (hi - half) >> (S + 1))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{Interpolate, Line, Primitive, SubPoint, Triangle};
+    use embedded_graphics::pixelcolor::{BinaryColor, Rgb565, Rgb888};
+
+    /// The offsets of a triangle's and a line's rows within their
+    /// [`Primitive`] (module docs: equal, so the band loop's row test does not
+    /// branch on the kind). This guards the layout the speed depends on.
+    fn row_offsets<C: Interpolate>(color: C) -> [usize; 2] {
+        let p = |x, y| SubPoint::<4>::from_pixels(x, y).unwrap();
+        let prims = [
+            Primitive::from(Triangle::flat([p(0, 0), p(4, 0), p(0, 4)], color)),
+            Primitive::from(Line::new(p(0, 0), p(4, 4), color)),
+        ];
+        prims.each_ref().map(|prim| {
+            let rows = match prim {
+                Primitive::Triangle(t) => &t.rows,
+                Primitive::Line(l) => &l.rows,
+            };
+            rows as *const (i32, i32) as usize - prim as *const Primitive<C, 4> as usize
+        })
+    }
+
+    #[test]
+    fn rows_lie_at_one_offset_for_both_kinds() {
+        for offsets in [
+            row_offsets(Rgb565::new(31, 0, 0)),
+            row_offsets(Rgb888::new(255, 0, 0)),
+            row_offsets(BinaryColor::On),
+        ] {
+            assert_eq!(offsets[0], offsets[1]);
+        }
+    }
 }
