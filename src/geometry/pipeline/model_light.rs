@@ -87,8 +87,7 @@ impl<T: Scalar> ModelLight<T> {
             return None;
         }
         let s = crate::math::scalar::sqrt_f32(s2);
-        let d = lighting.direction;
-        let d = Vec3::new(d.x.to_f32(), d.y.to_f32(), d.z.to_f32());
+        let d = in_f32(lighting.direction);
         // Mᵀ·v: the dot products of v with the columns.
         let mt = |v: Vec3<f32>| Vec3::new(c0.dot(v), c1.dot(v), c2.dot(v));
         let l = mt(d) * (1.0 / s);
@@ -191,8 +190,7 @@ impl<T: Scalar> ModelLight<T> {
                 },
                 // The vertex at the eye, or out of range: the vectors themselves.
                 None => {
-                    let f = |v: Vec3<T>| Vec3::new(v.x.to_f32(), v.y.to_f32(), v.z.to_f32());
-                    let (n, d, l) = (f(n), f(self.eye - p), f(self.l));
+                    let (n, d, l) = (in_f32(n), in_f32(self.eye - p), in_f32(self.l));
                     n.dot(unit_f32(l + unit_f32(d)))
                 }
             };
@@ -208,12 +206,18 @@ impl<T: Scalar> ModelLight<T> {
     /// where `|E_m − p|²` is outside [`rsqrt_f32`]'s domain.
     #[inline(always)]
     fn half_terms_f32(&self, n: Vec3<T>, nl: T, p: Vec3<T>) -> Option<(f32, f32)> {
-        let f = |v: Vec3<T>| Vec3::new(v.x.to_f32(), v.y.to_f32(), v.z.to_f32());
-        let (n, d, l) = (f(n), f(self.eye - p), f(self.l));
+        let (n, d, l) = (in_f32(n), in_f32(self.eye - p), in_f32(self.l));
         let r = rsqrt_f32(d.dot(d))?;
         let (nv, lv) = (n.dot(d) * r, l.dot(d) * r);
         Some((nl.to_f32() + nv, self.l2_plus_1.to_f32() + 2.0 * lv))
     }
+}
+
+/// `v`'s components as `f32`, each as [`Scalar::to_f32`] gives it (exact
+/// for `f32`, and for `Fx` below 2^8 in magnitude; else rounded to nearest).
+#[inline(always)]
+fn in_f32<T: Scalar>(v: Vec3<T>) -> Vec3<f32> {
+    Vec3::from_f32(v.to_f32())
 }
 
 #[cfg(test)]
