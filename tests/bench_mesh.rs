@@ -4,6 +4,8 @@
 //! wound, about 10,000 vertices and 20,000 triangles, full compact clusters,
 //! 1–2 pixels per triangle with the standard camera.
 
+#[path = "bench_mesh/closed.rs"]
+mod closed;
 #[path = "../examples/gen_bench_mesh.rs"]
 #[allow(dead_code)]
 mod gen_bench_mesh;
