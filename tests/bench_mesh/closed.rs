@@ -173,14 +173,14 @@ fn the_standard_scene_covers_each_centre_as_often_by_front_as_by_back_faces() {
                 let cache = &mut cache;
                 banded(rows, |band, sink| {
                     let mut bins = Box::new(heapless::Vec::<ScreenTriangle<4>, 2400>::new());
-                    let mut p = pipeline.clone();
+                    let mut p = pipeline;
                     p.rows = Some(band);
                     let stats = if cached {
                         Scene3d.draw_cached::<T, Rgb565, 4, V, 2400>(&p, angle, cache, &mut bins)
                     } else {
                         Scene3d.draw::<T, Rgb565, 4, 2400>(&p, angle, &mut bins)
                     };
-                    bins.iter().for_each(|t| sink(t));
+                    bins.iter().for_each(&mut *sink);
                     stats.expect("the standard scene fits its bins")
                 })
             };
