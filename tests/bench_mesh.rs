@@ -11,6 +11,8 @@ mod closed;
 mod gen_bench_mesh;
 #[path = "../examples/common/knot_mesh.rs"]
 mod knot_mesh;
+#[path = "bench_mesh/placed.rs"]
+mod placed;
 
 use std::collections::HashSet;
 
