@@ -1,0 +1,149 @@
+//! Closed meshes through the 3D pipeline have no cracks: a tetrahedron or a
+//! deformed cube (any points, consistently wound faces: a closed surface,
+//! folded, flat or degenerate as the points make it) under a fuzzed camera,
+//! lens, model matrix, frame size, band height and clipping, on the `f32`
+//! and `Fx` paths at `S ∈ {0, 4, 8}`, drawn band by band into bins with
+//! culling off. Check: every pixel centre of the frame is covered by as
+//! many front faces as back faces (`tests/bench_mesh/closed.rs` says why:
+//! the top-left rule samples each centre as if moved by an infinitesimal,
+//! and a closed surface's image covers any point as often each way).
+//!
+//! Premise, checked in `f64` from the pipeline's own matrices with a margin
+//! for the path's rounding: every vertex lies strictly inside the near and
+//! far planes and above `w_min`, with clip coordinates within ±2^63 (a
+//! cut there, or the clipper's discarding of a triangle with a coordinate
+//! beyond ±2^64, opens the mesh). Cuts at the
+//! guard band lie outside the frame, or within a subpixel of its edge
+//! (`Pipeline::confined`), which no centre sees. Inputs the pipeline
+//! rejects with a documented error (`Fx` beyond 16.16) are skipped.
+#![no_main]
+
+use embedded_graphics_core::pixelcolor::Rgb565;
+use libfuzzer_sys::fuzz_target;
+use microraster::edge::{Cull, TriangleSpans};
+use microraster::math::{Fx, Mat4, Scalar, Vec3, transform};
+use microraster::mesh::{Mesh, bounding_sphere};
+use microraster::pipeline::Pipeline;
+use microraster::raster3d::ScreenTriangle;
+use microraster::{ClipRect, SubPoint};
+use microraster_fuzz::Input;
+
+const TETRAHEDRON: [[u16; 3]; 4] = [[0, 2, 1], [0, 1, 3], [1, 2, 3], [0, 3, 2]];
+/// The faces of a cube with corners `x + 2y + 4z`, wound one way round.
+const CUBE: [[u16; 3]; 12] = [
+    [0, 2, 3],
+    [0, 3, 1],
+    [4, 5, 7],
+    [4, 7, 6],
+    [0, 1, 5],
+    [0, 5, 4],
+    [2, 6, 7],
+    [2, 7, 3],
+    [0, 4, 6],
+    [0, 6, 2],
+    [1, 3, 7],
+    [1, 7, 5],
+];
+
+fuzz_target!(|data: &[u8]| {
+    let mut inp = Input::new(data);
+    match inp.u8() % 6 {
+        0 => run::<f32, 0>(&mut inp),
+        1 => run::<f32, 4>(&mut inp),
+        2 => run::<f32, 8>(&mut inp),
+        3 => run::<Fx, 0>(&mut inp),
+        4 => run::<Fx, 4>(&mut inp),
+        _ => run::<Fx, 8>(&mut inp),
+    }
+});
+
+/// A coordinate: mostly on a coarse grid in ±8, sometimes any `f32`.
+fn coord(inp: &mut Input) -> f32 {
+    if inp.u8().is_multiple_of(8) { inp.f32() } else { f32::from(inp.u8() as i8) / 16.0 }
+}
+
+fn run<T: Scalar, const S: u32>(inp: &mut Input) {
+    let (w, h) = (1 + u32::from(inp.u8() % 96), 1 + u32::from(inp.u8() % 96));
+    let v = |p: [f32; 3]| Vec3::new(T::from_f32(p[0]), T::from_f32(p[1]), T::from_f32(p[2]));
+    let eye = [(); 3].map(|()| coord(inp));
+    let target = [(); 3].map(|()| coord(inp));
+    let up = if inp.bool() { [0.0, 1.0, 0.0] } else { [(); 3].map(|()| coord(inp)) };
+    let Ok(view) = transform::look_at(v(eye), v(target), v(up)) else { return };
+    let fov = 0.05 + f32::from(inp.u8()) / 85.0;
+    let near = inp.pick(&[1.0e-3f32, 0.1, 1.0]);
+    let far = near * inp.pick(&[2.0f32, 100.0, 1.0e4]);
+    let (t, f) = (T::from_f32, |x: T| f64::from(x.to_f32()));
+    let Ok(mut p) = Pipeline::<T, S>::perspective(view, t(fov), t(near), t(far), w, h) else { return };
+    let Ok(proj) = transform::perspective(t(fov), t(w as f32 / h as f32), t(near), t(far)) else { return };
+    if inp.bool() {
+        p = p.confined();
+    }
+    p.cull = Cull::None;
+    let rows = inp.pick(&[1, 3, 16, 64]);
+
+    let cube = inp.bool();
+    let positions: Vec<[f32; 3]> =
+        (0..if cube { 8 } else { 4 }).map(|_| [(); 3].map(|()| coord(inp))).collect();
+    let indices: &[[u16; 3]] = if cube { &CUBE } else { &TETRAHEDRON };
+    let model = if inp.bool() {
+        Mat4::IDENTITY
+    } else {
+        Mat4::from_f32(core::array::from_fn(|_| [(); 4].map(|()| coord(inp))))
+    };
+    let mesh = Mesh::new(&positions, &[], indices, bounding_sphere(&positions));
+
+    // The premise, in f64 from the matrices as the path holds them, with
+    // each coordinate's magnitude bound (products of absolute values) for
+    // the rounding margin.
+    let cols = |m: Mat4<T>| m.to_f32().map(|c| c.map(f64::from));
+    let abs = |m: Mat4<T>| cols(m).map(|c| c.map(f64::abs));
+    let mul = |a: [[f64; 4]; 4], b: [[f64; 4]; 4]| -> [[f64; 4]; 4] {
+        core::array::from_fn(|c| core::array::from_fn(|r| (0..4).map(|k| a[k][r] * b[c][k]).sum()))
+    };
+    let mvp = mul(cols(proj), mul(cols(p.view()), cols(model)));
+    let size = mul(abs(proj), mul(abs(p.view()), abs(model)));
+    let fx = T::from_f32(f32::NAN).to_f32().is_finite();
+    let w_min = f64::from(p.clip.w_min());
+    let clear = positions.iter().all(|q| {
+        let hq = [f(t(q[0])), f(t(q[1])), f(t(q[2])), 1.0];
+        let row =
+            |m: &[[f64; 4]; 4], r: usize, a: fn(f64) -> f64| (0..4).map(|k| m[k][r] * a(hq[k])).sum::<f64>();
+        let (z, wc) = (row(&mvp, 2, |x| x), row(&mvp, 3, |x| x));
+        let s = row(&size, 2, f64::abs) + row(&size, 3, f64::abs);
+        let tol = if fx { 0.05 + 2e-3 * s } else { 1e-4 * s };
+        // The clipper discards a triangle with a coordinate beyond ±2^64
+        // (documented): the mesh would open there.
+        let in_range = (0..4).all(|r| row(&size, r, f64::abs) < 2f64.powi(63));
+        s.is_finite() && in_range && (!fx || s < 4000.0) && z > tol && wc - z > tol && wc > w_min + tol
+    });
+    if !clear {
+        return;
+    }
+
+    let (fw, fh) = (w as usize, h as usize);
+    let (mut front, mut back) = (vec![0u16; fw * fh], vec![0u16; fw * fh]);
+    for y0 in (0..h as i32).step_by(rows) {
+        let y1 = (y0 + rows as i32).min(h as i32) - 1;
+        let mut band = p;
+        band.rows = Some((y0, y1));
+        let mut bins = heapless::Vec::<ScreenTriangle<S>, 128>::new();
+        if band.draw_mesh(&mesh, &model, Rgb565::new(31, 0, 0), &mut bins).is_err() {
+            return; // a documented rejection (Fx range): nothing to check
+        }
+        let clip = ClipRect::new(0, y0, w as i32, y1 + 1);
+        for tri in &bins {
+            let v: [SubPoint<S>; 3] = tri.v.map(|v| v.pos);
+            let d = |i: usize| (i64::from(v[i].x() - v[0].x()), i64::from(v[i].y() - v[0].y()));
+            let ((ax, ay), (bx, by)) = (d(1), d(2));
+            let counts = if ax * by - bx * ay > 0 { &mut back } else { &mut front };
+            for s in TriangleSpans::new(v, clip, Cull::None) {
+                for x in s.x..s.x + s.len as i32 {
+                    counts[s.y as usize * fw + x as usize] += 1;
+                }
+            }
+        }
+    }
+    for (i, (f, b)) in front.iter().zip(&back).enumerate() {
+        assert_eq!(f, b, "pixel ({}, {}): {f} front, {b} back faces", i % fw, i / fw);
+    }
+}
