@@ -21,7 +21,7 @@
 use embedded_graphics_core::pixelcolor::Rgb565;
 use libfuzzer_sys::fuzz_target;
 use microraster::edge::{Cull, TriangleSpans};
-use microraster::math::{Fx, Mat4, Scalar, Vec3, transform};
+use microraster::math::{Mat4, Scalar, Vec3, transform};
 use microraster::mesh::{Mesh, bounding_sphere};
 use microraster::pipeline::Pipeline;
 use microraster::raster3d::ScreenTriangle;
@@ -46,15 +46,7 @@ const CUBE: [[u16; 3]; 12] = [
 ];
 
 fuzz_target!(|data: &[u8]| {
-    let mut inp = Input::new(data);
-    match inp.u8() % 6 {
-        0 => run::<f32, 0>(&mut inp),
-        1 => run::<f32, 4>(&mut inp),
-        2 => run::<f32, 8>(&mut inp),
-        3 => run::<Fx, 0>(&mut inp),
-        4 => run::<Fx, 4>(&mut inp),
-        _ => run::<Fx, 8>(&mut inp),
-    }
+    microraster_fuzz::each_path!(&mut Input::new(data), run);
 });
 
 /// A coordinate: mostly on a coarse grid in ±8, sometimes any `f32`.

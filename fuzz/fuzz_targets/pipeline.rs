@@ -33,7 +33,7 @@ use microraster::clip3d::ClipPlanes;
 use microraster::depth::{DepthState, DepthTest};
 use microraster::edge::Cull;
 use microraster::light::{Lighting, Viewer};
-use microraster::math::{Fx, Mat4, Scalar, Vec3, transform};
+use microraster::math::{Mat4, Scalar, Vec3, transform};
 use microraster::mesh::{Mesh, bounding_sphere};
 use microraster::pipeline::{Pipeline, Shade};
 use microraster::raster3d::ScreenTriangle;
@@ -50,15 +50,7 @@ const FW: usize = 64;
 const BINS: usize = 24;
 
 fuzz_target!(|data: &[u8]| {
-    let mut inp = Input::new(data);
-    match inp.u8() % 6 {
-        0 => run::<f32, 0>(&mut inp),
-        1 => run::<f32, 4>(&mut inp),
-        2 => run::<f32, 8>(&mut inp),
-        3 => run::<Fx, 0>(&mut inp),
-        4 => run::<Fx, 4>(&mut inp),
-        _ => run::<Fx, 8>(&mut inp),
-    }
+    microraster_fuzz::each_path!(&mut Input::new(data), run);
 });
 
 fn run<T: Scalar, const S: u32>(inp: &mut Input) {

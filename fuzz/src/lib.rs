@@ -272,3 +272,20 @@ impl<C: embedded_graphics_core::pixelcolor::PixelColor> embedded_graphics_core::
         Ok(())
     }
 }
+
+/// Calls `$run::<T, S>(inp)` (`inp` the `&mut Input` `$inp`) for the numeric path and subpixel precision
+/// that `$inp`'s next byte picks: `f32` or `Fx`, each at `S` = 0, 4 or 8.
+#[macro_export]
+macro_rules! each_path {
+    ($inp:expr, $run:ident) => {{
+        let inp: &mut $crate::Input = $inp;
+        match inp.u8() % 6 {
+            0 => $run::<f32, 0>(inp),
+            1 => $run::<f32, 4>(inp),
+            2 => $run::<f32, 8>(inp),
+            3 => $run::<::microraster::math::Fx, 0>(inp),
+            4 => $run::<::microraster::math::Fx, 4>(inp),
+            _ => $run::<::microraster::math::Fx, 8>(inp),
+        }
+    }};
+}
