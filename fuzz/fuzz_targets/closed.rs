@@ -20,13 +20,13 @@
 
 use embedded_graphics_core::pixelcolor::Rgb565;
 use libfuzzer_sys::fuzz_target;
+use microraster::ClipRect;
 use microraster::edge::{Cull, TriangleSpans};
 use microraster::math::{Mat4, Scalar, Vec3, transform};
 use microraster::mesh::{Mesh, bounding_sphere};
 use microraster::pipeline::Pipeline;
 use microraster::raster3d::ScreenTriangle;
-use microraster::{ClipRect, SubPoint};
-use microraster_fuzz::Input;
+use microraster_fuzz::{Input, clip_matrix_f64, is_f32, signed_area2};
 
 const TETRAHEDRON: [[u16; 3]; 4] = [[0, 2, 1], [0, 1, 3], [1, 2, 3], [0, 3, 2]];
 /// The faces of a cube with corners `x + 2y + 4z`, wound one way round.
@@ -84,17 +84,10 @@ fn run<T: Scalar, const S: u32>(inp: &mut Input) {
     };
     let mesh = Mesh::new(&positions, &[], indices, bounding_sphere(&positions));
 
-    // The premise, in f64 from the matrices as the path holds them, with
-    // each coordinate's magnitude bound (products of absolute values) for
-    // the rounding margin.
-    let cols = |m: Mat4<T>| m.to_f32().map(|c| c.map(f64::from));
-    let abs = |m: Mat4<T>| cols(m).map(|c| c.map(f64::abs));
-    let mul = |a: [[f64; 4]; 4], b: [[f64; 4]; 4]| -> [[f64; 4]; 4] {
-        core::array::from_fn(|c| core::array::from_fn(|r| (0..4).map(|k| a[k][r] * b[c][k]).sum()))
-    };
-    let mvp = mul(cols(proj), mul(cols(p.view()), cols(model)));
-    let size = mul(abs(proj), mul(abs(p.view()), abs(model)));
-    let fx = T::from_f32(f32::NAN).to_f32().is_finite();
+    // The premise, in f64, with each coordinate's magnitude bound for the
+    // rounding margin.
+    let (mvp, size) = clip_matrix_f64(proj, p.view(), model);
+    let fx = !is_f32::<T>();
     let w_min = f64::from(p.clip.w_min());
     let clear = positions.iter().all(|q| {
         let hq = [f(t(q[0])), f(t(q[1])), f(t(q[2])), 1.0];
@@ -124,11 +117,8 @@ fn run<T: Scalar, const S: u32>(inp: &mut Input) {
         }
         let clip = ClipRect::new(0, y0, w as i32, y1 + 1);
         for tri in &bins {
-            let v: [SubPoint<S>; 3] = tri.v.map(|v| v.pos);
-            let d = |i: usize| (i64::from(v[i].x() - v[0].x()), i64::from(v[i].y() - v[0].y()));
-            let ((ax, ay), (bx, by)) = (d(1), d(2));
-            let counts = if ax * by - bx * ay > 0 { &mut back } else { &mut front };
-            for s in TriangleSpans::new(v, clip, Cull::None) {
+            let counts = if signed_area2(tri) > 0 { &mut back } else { &mut front };
+            for s in TriangleSpans::new(tri.v.map(|v| v.pos), clip, Cull::None) {
                 for x in s.x..s.x + s.len as i32 {
                     counts[s.y as usize * fw + x as usize] += 1;
                 }

@@ -23,10 +23,10 @@ mod frame;
 #[path = "pipeline/inputs.rs"]
 mod inputs;
 
-use checks::{all_behind_eye, check_ctor, signed_area2};
+use checks::{all_behind_eye, check_ctor};
 use embedded_graphics_core::pixelcolor::Rgb565;
 use frame::render_any;
-use inputs::{is_f32, matrix, small, vec3};
+use inputs::{matrix, small, vec3};
 use libfuzzer_sys::fuzz_target;
 use microraster::Error;
 use microraster::clip3d::ClipPlanes;
@@ -37,7 +37,7 @@ use microraster::math::{Mat4, Scalar, Vec3, transform};
 use microraster::mesh::{Mesh, bounding_sphere};
 use microraster::pipeline::{Pipeline, Shade};
 use microraster::raster3d::ScreenTriangle;
-use microraster_fuzz::Input;
+use microraster_fuzz::{Input, is_f32, signed_area2};
 
 /// Whether drawn pixels must lie inside the viewport itself. A pipeline
 /// that is not `confined` (or given an origin) clips x/y at the guard band

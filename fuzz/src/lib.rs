@@ -6,8 +6,13 @@
 //! * [`exact_covers`]: the top-left fill rule at pixel centres, in `i128`;
 //! * [`line_reference`]: the midpoint-line rule of `microraster::line`, in `i128`;
 //! * [`snap_reference`]: round-to-nearest-even snapping with the range check.
+//!
+//! and what the 3D targets share: [`each_path!`], [`is_f32`],
+//! [`signed_area2`], [`clip_matrix_f64`].
 
 use microraster::ClipRect;
+use microraster::math::{Mat4, Scalar};
+use microraster::raster3d::ScreenTriangle;
 
 /// Reads parameters from the fuzzer's bytes; past the end every read is 0.
 pub struct Input<'a> {
@@ -273,8 +278,9 @@ impl<C: embedded_graphics_core::pixelcolor::PixelColor> embedded_graphics_core::
     }
 }
 
-/// Calls `$run::<T, S>(inp)` (`inp` the `&mut Input` `$inp`) for the numeric path and subpixel precision
-/// that `$inp`'s next byte picks: `f32` or `Fx`, each at `S` = 0, 4 or 8.
+/// Calls `$run::<T, S>(inp)`, `inp` the `&mut Input` `$inp`, for the
+/// numeric path and subpixel precision that its next byte picks: `f32` or
+/// `Fx`, each at `S` = 0, 4 or 8.
 #[macro_export]
 macro_rules! each_path {
     ($inp:expr, $run:ident) => {{
@@ -288,4 +294,33 @@ macro_rules! each_path {
             _ => $run::<::microraster::math::Fx, 8>(inp),
         }
     }};
+}
+
+/// Whether `T` is `f32` (it holds NaN; `Fx` does not).
+pub fn is_f32<T: Scalar>() -> bool {
+    T::from_f32(f32::NAN).to_f32().is_nan()
+}
+
+/// Twice the signed area of `t`'s snapped corners, exactly.
+pub fn signed_area2<const S: u32>(t: &ScreenTriangle<S>) -> i64 {
+    let p = t.v.map(|v| (i64::from(v.pos.x()), i64::from(v.pos.y())));
+    (p[1].0 - p[0].0) * (p[2].1 - p[0].1) - (p[2].0 - p[0].0) * (p[1].1 - p[0].1)
+}
+
+/// `proj · view · model` in `f64` (columns, from the matrices as the path
+/// holds them), and the same product of their entries' absolute values: row
+/// `r` of the second, applied to `|x|, |y|, |z|, 1`, bounds the terms of a
+/// point's clip coordinate `r`, the scale of the path's rounding.
+pub fn clip_matrix_f64<T: Scalar>(
+    proj: Mat4<T>,
+    view: Mat4<T>,
+    model: Mat4<T>,
+) -> ([[f64; 4]; 4], [[f64; 4]; 4]) {
+    let cols = |m: Mat4<T>| m.to_f32().map(|c| c.map(f64::from));
+    let mul = |a: [[f64; 4]; 4], b: [[f64; 4]; 4]| -> [[f64; 4]; 4] {
+        core::array::from_fn(|c| core::array::from_fn(|r| (0..4).map(|k| a[k][r] * b[c][k]).sum()))
+    };
+    let abs = |a: [[f64; 4]; 4]| a.map(|c| c.map(f64::abs));
+    let (p, v, m) = (cols(proj), cols(view), cols(model));
+    (mul(p, mul(v, m)), mul(abs(p), mul(abs(v), abs(m))))
 }

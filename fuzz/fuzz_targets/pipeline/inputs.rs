@@ -1,12 +1,8 @@
 //! Fuzzer bytes to the pipeline's inputs: vectors, moderate-or-extreme
-//! values and matrices, on the `f32` or `Fx` path (`is_f32`).
+//! values and matrices, on the `f32` or `Fx` path.
 
 use microraster::math::{Mat4, Scalar, Vec3};
 use microraster_fuzz::Input;
-
-pub(super) fn is_f32<T: Scalar>() -> bool {
-    T::from_f32(f32::NAN).to_f32().is_nan()
-}
 
 pub(super) fn vec3<T: Scalar>(inp: &mut Input) -> ([f32; 3], Vec3<T>) {
     let v = [inp.f32(), inp.f32(), inp.f32()];
