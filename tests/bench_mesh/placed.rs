@@ -95,6 +95,8 @@ fn meshlets<T: Scalar, P: Scalar>(
     at: Placement,
     cull: Cull,
 ) -> Option<Cover> {
+    // The premise from the `f32` knot's positions: the 16.16 knot holds the
+    // same values (`fx_knot_holds_the_f32_knot_values`).
     let (mut pipeline, model) = at.pipeline::<T, 4>(VALID_KNOT.get().mesh.positions)?;
     pipeline.cull = cull;
     let mut cache = Box::new(ClusterCache::<T, 4>::new());
