@@ -8,19 +8,30 @@
 //! the top-left rule samples each centre as if moved by an infinitesimal,
 //! and a closed surface's image covers any point as often each way).
 //!
+//! The lens is the usual perspective one, or (from bytes read after the
+//! mesh, so inputs written before they were added replay unchanged) a
+//! perturbed perspective, an orthographic or a raw projection matrix
+//! through `Pipeline::new`; the viewport is the whole frame, or one placed
+//! by `Pipeline::with_origin` in a frame of its own size, hanging off it
+//! or inside it; the far plane on or off, `w_min` the default or fuzzed,
+//! the guard band the fast path's, a small one or `ClipPlanes::for_viewport`'s.
+//!
 //! Premise, checked in `f64` from the pipeline's own matrices with a margin
 //! for the path's rounding: every vertex lies strictly inside the near and
-//! far planes and above `w_min`, with clip coordinates within ±2^63 (a
-//! cut there, or the clipper's discarding of a triangle with a coordinate
-//! beyond ±2^64, opens the mesh). Cuts at the
-//! guard band lie outside the frame, or within a subpixel of its edge
-//! (`Pipeline::confined`), which no centre sees. Inputs the pipeline
+//! (when clipped) far planes and above `w_min`, with clip coordinates
+//! within ±2^63 (a cut there, or the clipper's discarding of a triangle
+//! with a coordinate beyond ±2^64, opens the mesh). Cuts at the guard band
+//! lie outside the viewport, or within a subpixel of its edge
+//! (`Pipeline::confined`), which no centre sees: the check holds at every
+//! centre of the viewport, and a confined viewport inside a larger frame
+//! must leave every centre outside it uncovered. Inputs the pipeline
 //! rejects with a documented error (`Fx` beyond 16.16) are skipped.
 #![no_main]
 
 use embedded_graphics_core::pixelcolor::Rgb565;
 use libfuzzer_sys::fuzz_target;
 use microraster::ClipRect;
+use microraster::clip3d::ClipPlanes;
 use microraster::edge::{Cull, TriangleSpans};
 use microraster::math::{Mat4, Scalar, Vec3, transform};
 use microraster::mesh::{Mesh, bounding_sphere};
@@ -65,12 +76,9 @@ fn run<T: Scalar, const S: u32>(inp: &mut Input) {
     let near = inp.pick(&[1.0e-3f32, 0.1, 1.0]);
     let far = near * inp.pick(&[2.0f32, 100.0, 1.0e4]);
     let (t, f) = (T::from_f32, |x: T| f64::from(x.to_f32()));
-    let Ok(mut p) = Pipeline::<T, S>::perspective(view, t(fov), t(near), t(far), w, h) else { return };
+    let Ok(p) = Pipeline::<T, S>::perspective(view, t(fov), t(near), t(far), w, h) else { return };
     let Ok(proj) = transform::perspective(t(fov), t(w as f32 / h as f32), t(near), t(far)) else { return };
-    if inp.bool() {
-        p = p.confined();
-    }
-    p.cull = Cull::None;
+    let confined = inp.bool();
     let rows = inp.pick(&[1, 3, 16, 64]);
 
     let cube = inp.bool();
@@ -83,6 +91,12 @@ fn run<T: Scalar, const S: u32>(inp: &mut Input) {
         Mat4::from_f32(core::array::from_fn(|_| [(); 4].map(|()| coord(inp))))
     };
     let mesh = Mesh::new(&positions, &[], indices, bounding_sphere(&positions));
+    let Some(Setup { mut p, proj, frame, viewport }) =
+        setup(inp, p, proj, (w, h), (view, near, far, confined))
+    else {
+        return;
+    };
+    p.cull = Cull::None;
 
     // The premise, in f64, with each coordinate's magnitude bound for the
     // rounding margin.
@@ -99,23 +113,24 @@ fn run<T: Scalar, const S: u32>(inp: &mut Input) {
         // The clipper discards a triangle with a coordinate beyond ±2^64
         // (documented): the mesh would open there.
         let in_range = (0..4).all(|r| row(&size, r, f64::abs) < 2f64.powi(63));
-        s.is_finite() && in_range && (!fx || s < 4000.0) && z > tol && wc - z > tol && wc > w_min + tol
+        let inside_far = !p.clip.far() || wc - z > tol;
+        s.is_finite() && in_range && (!fx || s < 4000.0) && z > tol && inside_far && wc > w_min + tol
     });
     if !clear {
         return;
     }
 
-    let (fw, fh) = (w as usize, h as usize);
+    let (fw, fh) = (frame.0 as usize, frame.1 as usize);
     let (mut front, mut back) = (vec![0u16; fw * fh], vec![0u16; fw * fh]);
-    for y0 in (0..h as i32).step_by(rows) {
-        let y1 = (y0 + rows as i32).min(h as i32) - 1;
+    for y0 in (0..fh as i32).step_by(rows) {
+        let y1 = (y0 + rows as i32).min(fh as i32) - 1;
         let mut band = p;
         band.rows = Some((y0, y1));
         let mut bins = heapless::Vec::<ScreenTriangle<S>, 128>::new();
         if band.draw_mesh(&mesh, &model, Rgb565::new(31, 0, 0), &mut bins).is_err() {
             return; // a documented rejection (Fx range): nothing to check
         }
-        let clip = ClipRect::new(0, y0, w as i32, y1 + 1);
+        let clip = ClipRect::new(0, y0, fw as i32, y1 + 1);
         for tri in &bins {
             let counts = if signed_area2(tri) > 0 { &mut back } else { &mut front };
             for s in TriangleSpans::new(tri.v.map(|v| v.pos), clip, Cull::None) {
@@ -126,6 +141,95 @@ fn run<T: Scalar, const S: u32>(inp: &mut Input) {
         }
     }
     for (i, (f, b)) in front.iter().zip(&back).enumerate() {
-        assert_eq!(f, b, "pixel ({}, {}): {f} front, {b} back faces", i % fw, i / fw);
+        let (x, y) = ((i % fw) as i32, (i / fw) as i32);
+        if viewport.contains(x, y) {
+            assert_eq!(f, b, "pixel ({x}, {y}): {f} front, {b} back faces");
+        } else {
+            // Only a confined viewport smaller than the frame leaves any.
+            assert_eq!((f, b), (&0, &0), "pixel ({x}, {y}) outside the viewport {viewport:?} covered");
+        }
     }
+}
+
+/// The pipeline and frame [`run`] checks: lens, viewport and clip planes.
+struct Setup<T: Scalar, const S: u32> {
+    p: Pipeline<T, S>,
+    proj: Mat4<T>,
+    frame: (u32, u32),
+    viewport: ClipRect,
+}
+
+/// From the bytes after the mesh (all 0 past the input's end: the
+/// perspective pipeline `p` of a `w × h` viewport with projection `proj`, the viewport the whole
+/// frame, confined as `confined` says): the lens, the viewport's place and
+/// the clip planes. `None` where `Pipeline::new` rejects the lens.
+fn setup<T: Scalar, const S: u32>(
+    inp: &mut Input,
+    mut p: Pipeline<T, S>,
+    mut proj: Mat4<T>,
+    (w, h): (u32, u32),
+    (view, near, far, confined): (Mat4<T>, f32, f32, bool),
+) -> Option<Setup<T, S>> {
+    let t = T::from_f32;
+    let raw = |proj: [[f32; 4]; 4], w_ref: f32| -> Option<(Pipeline<T, S>, Mat4<T>)> {
+        let proj = Mat4::from_f32(proj);
+        Some((Pipeline::new(view, proj, t(w_ref), w, h).ok()?, proj))
+    };
+    (p, proj) = match inp.u8() % 4 {
+        0 => (p, proj),
+        // The perspective lens with entries moved by up to ±2 in 1/64 steps.
+        1 => {
+            let mut m = proj.to_f32();
+            for c in &mut m {
+                for e in c.iter_mut() {
+                    if inp.bool() {
+                        *e += f32::from(inp.u8() as i8) / 64.0;
+                    }
+                }
+            }
+            raw(m, near)?
+        }
+        // Orthographic: a box of half-height r (the frame's aspect) from
+        // `near` to `far` in front of the eye, w = 1.
+        2 => {
+            let r = 0.25 + f32::from(inp.u8()) / 16.0;
+            let (sx, sy, d) = (h as f32 / (w as f32 * r), 1.0 / r, far - near);
+            raw(
+                [
+                    [sx, 0.0, 0.0, 0.0],
+                    [0.0, sy, 0.0, 0.0],
+                    [0.0, 0.0, -1.0 / d, 0.0],
+                    [0.0, 0.0, -near / d, 1.0],
+                ],
+                1.0,
+            )?
+        }
+        _ => raw([(); 4].map(|()| [(); 4].map(|()| coord(inp))), inp.pick(&[near, 1.0]))?,
+    };
+    let mut frame = (w, h);
+    let mut viewport = ClipRect::new(0, 0, w as i32, h as i32);
+    if inp.bool() {
+        // A frame of its own size; the viewport placed in it, off its
+        // edges or inside it, and confined (`with_origin`).
+        frame = (1 + u32::from(inp.u8() % 96), 1 + u32::from(inp.u8() % 96));
+        let (x, y) = (i32::from(inp.u8() as i8) / 2, i32::from(inp.u8() as i8) / 2);
+        p = p.with_origin(x, y);
+        viewport = ClipRect::new(x, y, x + w as i32, y + h as i32);
+    } else {
+        p.clip = match inp.u8() % 4 {
+            0 | 1 => p.clip,
+            2 => p.clip.with_guard_band(1.0 + f32::from(inp.u8()) / 64.0),
+            _ => ClipPlanes::for_viewport(w, h, S),
+        };
+        if confined {
+            p = p.confined();
+        }
+    }
+    if inp.bool() {
+        p.clip = p.clip.with_far(false);
+    }
+    if inp.bool() {
+        p.clip = p.clip.with_w_min(inp.pick(&[1.0e-9f32, 1.0e-3, 0.1, 1.0]));
+    }
+    Some(Setup { p, proj, frame, viewport })
 }

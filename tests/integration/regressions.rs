@@ -12,6 +12,7 @@ use microraster::clip3d::ClipPlanes;
 use microraster::depth::{Depth16, DepthBand, DepthState};
 use microraster::edge::{Cull, fast_path_extent_px};
 use microraster::math::Mat4;
+use microraster::math::transform::orthographic;
 use microraster::mesh::{Mesh, bounding_sphere};
 use microraster::pipeline::Pipeline;
 use microraster::raster3d::{Affine, ScreenTriangle};
@@ -248,4 +249,43 @@ fn nan_lighting_is_an_error_or_clamped() {
         let r = p.draw_mesh(&mesh, &Mat4::IDENTITY, Gray8::new(255), &mut bins);
         assert!(r.is_err() || !bins.is_empty(), "NaN ambient, {tri:?}: {r:?}, nothing drawn and no error");
     }
+}
+
+/// Bug 7 (found by the `closed` fuzz target, 2026-12-02): with the far
+/// plane off, a vertex whose depth `z/w` lies beyond 2^8 (an orthographic
+/// lens, `w = 1`, geometry 256 depth ranges away) failed to snap: its
+/// depth quotient left `div_scaled_by`'s range, and its triangles were
+/// dropped as degenerate. Beyond the far plane the depth saturates to the
+/// farthest code, as it already did between 1 and 2^8.
+#[test]
+fn far_plane_off_draws_geometry_far_beyond_it() {
+    fn check<T: microraster::math::Scalar>() {
+        let t = T::from_f32;
+        // Depth range 1 (z = -0.5 at depth 0.4); the third vertex inside it
+        // (depth 0.9), then 199, 999 and 29,999 ranges beyond it.
+        let ortho = orthographic(t(-1.0), t(1.0), t(-1.0), t(1.0), t(0.1), t(1.1)).unwrap();
+        let mut p = Pipeline::<T, 4>::new(Mat4::IDENTITY, ortho, T::ONE, 32, 32).unwrap();
+        p.clip = p.clip.with_far(false);
+        p.cull = Cull::None;
+        for far_z in [-1.0, -200.0, -1000.0, -30000.0] {
+            let tri = [[-0.9, -0.9, -0.5], [0.9, -0.9, -0.5], [0.0, 0.9, far_z]];
+            let mesh = Mesh::new(&tri, &[], &ONE_TRIANGLE, bounding_sphere(&tri));
+            let mut bins = heapless::Vec::<ScreenTriangle<4>, 16>::new();
+            let st = p.draw_mesh(&mesh, &Mat4::IDENTITY, Gray8::new(255), &mut bins).unwrap();
+            assert_eq!((st.emitted, st.degenerate, bins.len()), (1, 0, 1), "z = {far_z}: {st:?}");
+            let depth = bins[0].v.map(|v| i64::from(v.depth));
+            // 0.4 of the range at the near corners, 0.9 at the third (f32
+            // and 16.16 round them differently), the farthest depth beyond
+            // the far plane.
+            let code = |d: f64| (d * f64::from(u32::MAX)) as i64;
+            assert!((depth[0] - code(0.4)).abs() < 1 << 17, "{depth:?}");
+            if far_z > -1.1 {
+                assert!((depth[2] - code(0.9)).abs() < 1 << 17, "{depth:?}");
+            } else {
+                assert_eq!(depth[2], i64::from(u32::MAX), "z = {far_z}: {depth:?}");
+            }
+        }
+    }
+    check::<f32>();
+    check::<microraster::math::Fx>();
 }

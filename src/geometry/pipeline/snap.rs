@@ -54,11 +54,24 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         SubPoint::new(i32::try_from(px).ok()?, i32::try_from(py).ok()?).ok()
     }
 
-    /// The depth and `1/w` of [`Pipeline::snap_vertex`].
+    /// The depth and `1/w` of [`Pipeline::snap_vertex`]; `None` only for a
+    /// `z` that is not finite.
+    ///
+    /// A depth `z/w` beyond `[0, 1]` is clamped to it. That happens only
+    /// with the far plane off (`ClipPlanes::with_far`): a vertex beyond it
+    /// gets the farthest depth. The quotient's range ends at `|z/w| = 2^8`
+    /// ([`Scalar::div_scaled_by`]); beyond it the depth saturates the same
+    /// way instead of failing, which dropped the vertex's triangles (an
+    /// orthographic lens with the far plane off lost geometry `2^8` times
+    /// its depth range away; found by the `closed` fuzz target).
     #[inline]
     pub(super) fn snap_depth(&self, [_, _, z, _]: [T; 4], w: T::Divisor) -> Option<(u32, u32)> {
+        let depth = match z.div_scaled_by(w, u32::MAX as i64) {
+            Some(d) => d.clamp(0, u32::MAX as i64) as u32,
+            None => saturated_depth(z)?,
+        };
         Some((
-            z.div_scaled_by(w, u32::MAX as i64)?.clamp(0, u32::MAX as i64) as u32,
+            depth,
             // Only ratios of 1/w matter; a vertex nearer than w_ref/4 (which
             // the w_ref contract excludes) saturates rather than vanishing.
             if self.with_inv_w {
@@ -128,6 +141,16 @@ pub(super) fn signed_area2(e1x: i32, e1y: i32, e2x: i32, e2y: i32) -> i64 {
 pub(super) fn signed_area2_small(e1x: i32, e1y: i32, e2x: i32, e2y: i32) -> Option<i64> {
     let small = |v: i32| v.unsigned_abs() < 1 << 15;
     (small(e1x) && small(e1y) && small(e2x) && small(e2y)).then(|| i64::from(e1x * e2y - e2x * e1y))
+}
+
+/// The depth of a vertex whose `z/w` is beyond the quotient's range
+/// ([`Pipeline::snap_depth`]): saturated as the clamp to `[0, 1]` would,
+/// `None` for a `z` that is not finite. Out of line and cold: only a lens
+/// without the far plane gets here.
+#[cold]
+#[inline(never)]
+fn saturated_depth<T: Scalar>(z: T) -> Option<u32> {
+    z.is_finite().then_some(if z > T::ZERO { u32::MAX } else { 0 })
 }
 
 #[cfg(test)]

@@ -141,29 +141,49 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     /// Inline since [`Pipeline::complete`] is (sixth pass: out of line, the
     /// Fx knot was 0.6 % dearer, f32 the same).
     fn depth_entry(&self, e: &mut Cached<T, S>) {
-        let fast = if crate::math::vec::is_float::<T>() {
+        let d = if crate::math::vec::is_float::<T>() {
             depth_f32(e.clip[2].to_f32(), e.clip[3].to_f32(), self.with_inv_w.then(|| self.w_ref.to_f32()))
+                .or_else(|| self.depth_general(e))
         } else {
-            None
+            self.depth_general(e)
         };
-        // The divisor from the word `snap_deferred` kept in the depth.
-        let d = fast
-            .or_else(|| e.clip[3].divisor_from_word(e.screen.depth).and_then(|w| self.snap_depth(e.clip, w)));
         if let Some((depth, inv_w)) = d {
             (e.screen.depth, e.screen.inv_w) = (depth, inv_w);
         }
         e.state |= Cached::<T, S>::DEPTH;
     }
 
+    /// [`Pipeline::depth_entry`]'s depth and `1/w` by [`Pipeline::snap_depth`],
+    /// the divisor rebuilt from the word `snap_deferred` kept in the depth.
+    /// Inline for `Fx` (its only path); for `f32` only where the fast
+    /// quotients leave their range (`w_ref/w` beyond 2^10), so out of line:
+    /// inlined, its saturating depth cost the `f32` knot 0.1 %.
+    #[inline(always)]
+    fn depth_general(&self, e: &Cached<T, S>) -> Option<(u32, u32)> {
+        if crate::math::vec::is_float::<T>() {
+            self.depth_general_cold(e)
+        } else {
+            e.clip[3].divisor_from_word(e.screen.depth).and_then(|w| self.snap_depth(e.clip, w))
+        }
+    }
+
+    #[cold]
+    #[inline(never)]
+    fn depth_general_cold(&self, e: &Cached<T, S>) -> Option<(u32, u32)> {
+        e.clip[3].divisor_from_word(e.screen.depth).and_then(|w| self.snap_depth(e.clip, w))
+    }
+
     /// [`Pipeline::snap_vertex`] with the depth and `1/w` left for later
     /// (`inv_w` 0, which a snapped vertex never has) where they cannot
     /// fail: a back face needs neither, and they are two of its four
-    /// divisions. They fail only for a non-finite `z` or `|z/w|·2^32`
-    /// beyond 2^40 (`1/w` never), so with `z` finite and `|z| ≤ 128·w`
-    /// (for `f32`, `128·w` exact, or infinite only for `w > 2^121`, where
-    /// `|z/w| < 2^7` anyway; for `Fx`, saturated only for `w ≥ 2^8`, where
-    /// `|z/w| < 2^7` too) they are deferred; otherwise computed now, so a
-    /// vertex fails here exactly when [`Pipeline::snap_vertex`] fails.
+    /// divisions. They fail only for a non-finite `z` (`1/w` never; a depth
+    /// beyond the quotient's range saturates, [`Pipeline::snap_depth`]).
+    /// They are deferred with `z` finite and `|z| ≤ 128·w` (the domain of
+    /// [`depth_f32`]; for `f32`, `128·w`
+    /// exact, or infinite only for `w > 2^121`, where `|z/w| < 2^7` anyway;
+    /// for `Fx`, saturated only for `w ≥ 2^8`, where `|z/w| < 2^7` too);
+    /// otherwise computed now, so a vertex fails here exactly when
+    /// [`Pipeline::snap_vertex`] fails.
     /// Until then the depth field holds [`Scalar::divisor_word`] of `w`
     /// (`Fx`: its reciprocal), so `Fx` does not prepare its divisor twice.
     fn snap_deferred(&self, c: [T; 4]) -> Option<ScreenVertex<S>> {
