@@ -6,7 +6,9 @@
 //! culling off. Check: every pixel centre of the frame is covered by as
 //! many front faces as back faces (`tests/bench_mesh/closed.rs` says why:
 //! the top-left rule samples each centre as if moved by an infinitesimal,
-//! and a closed surface's image covers any point as often each way).
+//! and a closed surface's image covers any point as often each way). Then
+//! the same mesh as a cluster through the meshlet stage band by band, with
+//! culling off and on (`meshlets_agree`).
 //!
 //! The lens is the usual perspective one, or (from bytes read after the
 //! mesh, so inputs written before they were added replay unchanged) a
@@ -34,8 +36,11 @@ use microraster::ClipRect;
 use microraster::clip3d::ClipPlanes;
 use microraster::edge::{Cull, TriangleSpans};
 use microraster::math::{Mat4, Scalar, Vec3, transform};
-use microraster::mesh::{Mesh, bounding_sphere};
-use microraster::pipeline::Pipeline;
+use microraster::mesh::{
+    Mesh, Meshlet, ValidMeshletMesh, bounding_sphere, build_meshlets, meshlet_bound, meshlet_scratch_len,
+    meshlet_vertex_bound,
+};
+use microraster::pipeline::{ClusterCache, Pipeline};
 use microraster::raster3d::ScreenTriangle;
 use microraster_fuzz::{Input, clip_matrix_f64, is_f32, signed_area2};
 
@@ -103,8 +108,14 @@ fn run<T: Scalar, const S: u32>(inp: &mut Input) {
     let (mvp, size) = clip_matrix_f64(proj, p.view(), model);
     let fx = !is_f32::<T>();
     let w_min = f64::from(p.clip.w_min());
+    let homogeneous = |q: &[f32; 3]| [f(t(q[0])), f(t(q[1])), f(t(q[2])), 1.0];
+    // Each vertex's clip position, for the cone's check.
+    let clip: Vec<[f64; 4]> = positions
+        .iter()
+        .map(|q| core::array::from_fn(|r| (0..4).map(|k| mvp[k][r] * homogeneous(q)[k]).sum()))
+        .collect();
     let clear = positions.iter().all(|q| {
-        let hq = [f(t(q[0])), f(t(q[1])), f(t(q[2])), 1.0];
+        let hq = homogeneous(q);
         let row =
             |m: &[[f64; 4]; 4], r: usize, a: fn(f64) -> f64| (0..4).map(|k| m[k][r] * a(hq[k])).sum::<f64>();
         let (z, wc) = (row(&mvp, 2, |x| x), row(&mvp, 3, |x| x));
@@ -121,32 +132,123 @@ fn run<T: Scalar, const S: u32>(inp: &mut Input) {
     }
 
     let (fw, fh) = (frame.0 as usize, frame.1 as usize);
-    let (mut front, mut back) = (vec![0u16; fw * fh], vec![0u16; fw * fh]);
-    for y0 in (0..fh as i32).step_by(rows) {
-        let y1 = (y0 + rows as i32).min(fh as i32) - 1;
+    let mut drawn = Coverage::new(fw, fh);
+    for (y0, y1) in bands(fh, rows) {
         let mut band = p;
         band.rows = Some((y0, y1));
         let mut bins = heapless::Vec::<ScreenTriangle<S>, 128>::new();
         if band.draw_mesh(&mesh, &model, Rgb565::new(31, 0, 0), &mut bins).is_err() {
             return; // a documented rejection (Fx range): nothing to check
         }
-        let clip = ClipRect::new(0, y0, fw as i32, y1 + 1);
         for tri in &bins {
-            let counts = if signed_area2(tri) > 0 { &mut back } else { &mut front };
-            for s in TriangleSpans::new(tri.v.map(|v| v.pos), clip, Cull::None) {
-                for x in s.x..s.x + s.len as i32 {
-                    counts[s.y as usize * fw + x as usize] += 1;
-                }
-            }
+            drawn.add(tri, y0, y1);
         }
     }
-    for (i, (f, b)) in front.iter().zip(&back).enumerate() {
+    for (i, (f, b)) in drawn.front.iter().zip(&drawn.back).enumerate() {
         let (x, y) = ((i % fw) as i32, (i / fw) as i32);
         if viewport.contains(x, y) {
             assert_eq!(f, b, "pixel ({x}, {y}): {f} front, {b} back faces");
         } else {
             // Only a confined viewport smaller than the frame leaves any.
             assert_eq!((f, b), (&0, &0), "pixel ({x}, {y}) outside the viewport {viewport:?} covered");
+        }
+    }
+    meshlets_agree(inp, p, mesh, &model, (rows, &clip), &drawn);
+}
+
+/// A frame's `rows`-row bands, first and last row.
+fn bands(h: usize, rows: usize) -> impl Iterator<Item = (i32, i32)> {
+    (0..h as i32).step_by(rows).map(move |y0| (y0, (y0 + rows as i32).min(h as i32) - 1))
+}
+
+/// How many front and back faces cover each pixel centre of a frame.
+#[derive(PartialEq, Debug)]
+struct Coverage {
+    w: usize,
+    front: Vec<u16>,
+    back: Vec<u16>,
+}
+
+impl Coverage {
+    fn new(w: usize, h: usize) -> Self {
+        Coverage { w, front: vec![0; w * h], back: vec![0; w * h] }
+    }
+
+    /// `tri`'s centres in frame rows `y0..=y1`, counted by its winding.
+    fn add<const S: u32>(&mut self, tri: &ScreenTriangle<S>, y0: i32, y1: i32) {
+        let counts = if signed_area2(tri) > 0 { &mut self.back } else { &mut self.front };
+        let clip = ClipRect::new(0, y0, self.w as i32, y1 + 1);
+        for s in TriangleSpans::new(tri.v.map(|v| v.pos), clip, Cull::None) {
+            for x in s.x..s.x + s.len as i32 {
+                counts[s.y as usize * self.w + x as usize] += 1;
+            }
+        }
+    }
+}
+
+/// The same mesh built into clusters (one: it has at most 12 triangles)
+/// through the meshlet stage band by band (`Pipeline::meshlet_triangles`,
+/// with the frame's record of the cluster or without). Culling off, the
+/// coverage must be `draw_mesh`'s: the cluster tests against the band's
+/// slab and the view volume reject only what has no triangle there. Back
+/// faces culled, it must be the front faces' alone; where the normal cone
+/// rejected the cluster, none of it, and no triangle may face the eye (in
+/// `f64`, with a margin; in exact arithmetic none does, and a front face of
+/// `draw_mesh`'s is then a sliver that snapping inverted).
+fn meshlets_agree<T: Scalar, const S: u32>(
+    inp: &mut Input,
+    p: Pipeline<T, S>,
+    mesh: Mesh<'_, f32>,
+    model: &Mat4<T>,
+    (rows, clip): (usize, &[[f64; 4]]),
+    drawn: &Coverage,
+) {
+    let (nv, nt) = (mesh.positions.len(), mesh.indices.len());
+    let mut meshlets = vec![Meshlet::default(); meshlet_bound(nt)];
+    let mut vertices = vec![0; meshlet_vertex_bound(nt)];
+    let mut triangles = vec![[0; 3]; nt];
+    let mut scratch = vec![0; meshlet_scratch_len(nv, nt)];
+    let Ok(built) = build_meshlets(mesh, &mut meshlets, &mut vertices, &mut triangles, &mut scratch) else {
+        return;
+    };
+    let Ok(m) = ValidMeshletMesh::new(built) else { return };
+    let recorded = inp.bool();
+    let h = drawn.front.len() / drawn.w;
+    for cull in [Cull::None, Cull::Clockwise] {
+        let mut q = p;
+        q.cull = cull;
+        let (mut record, mut plain) = (ClusterCache::<T, S>::new(), ClusterCache::<T, S, 0, 0>::sized());
+        let mut got = Coverage::new(drawn.w, h);
+        let mut away = false;
+        for (y0, y1) in bands(h, rows) {
+            let color = Rgb565::new(31, 0, 0);
+            let sink = |tri: &ScreenTriangle<S>| got.add(tri, y0, y1);
+            let stats = if recorded {
+                q.meshlet_triangles(&m, model, color, &mut record, (y0, y1), sink)
+            } else {
+                q.meshlet_triangles(&m, model, color, &mut plain, (y0, y1), sink)
+            };
+            let Ok(stats) = stats else { return }; // a documented rejection, as above
+            away |= stats.clusters_back_facing > 0;
+        }
+        match cull {
+            Cull::None => assert_eq!(&got, drawn, "the meshlet stage's coverage differs from draw_mesh's"),
+            _ if away => {
+                assert!(got.front.iter().chain(&got.back).all(|&c| c == 0), "a rejected cluster drew");
+                // Rejected rightly: no triangle faces the eye (in f64, with
+                // a margin for the paths' rounding of positions and matrices).
+                for t in mesh.indices {
+                    let c = t.map(|i| clip[usize::from(i)]);
+                    let s = c.map(|c| (c[0] / c[3], -c[1] / c[3]));
+                    let (a, b) =
+                        ((s[1].0 - s[0].0) * (s[2].1 - s[0].1), (s[2].0 - s[0].0) * (s[1].1 - s[0].1));
+                    assert!(a - b >= -1e-4 * (a.abs() + b.abs()), "the cone rejected a front face: {s:?}");
+                }
+            }
+            _ => {
+                assert_eq!(got.front, drawn.front, "culled: front faces' coverage differs");
+                assert!(got.back.iter().all(|&c| c == 0), "culled: a back face drawn");
+            }
         }
     }
 }

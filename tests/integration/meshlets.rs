@@ -8,6 +8,7 @@
 
 mod binned;
 mod cluster_cache;
+mod cones;
 mod fx_data;
 
 use crate::framebuffer::Framebuffer;
@@ -157,9 +158,18 @@ fn binned<T: Scalar, M: Interpolation, const BH: usize>(
     p: &Pipeline<T, 4>,
     angle: f32,
 ) -> Vec<Rgb565> {
+    binned_with::<T, M, BH>(c, p, &model::<T>(angle))
+}
+
+/// [`binned`] with the torus placed by `model`.
+fn binned_with<T: Scalar, M: Interpolation, const BH: usize>(
+    c: &Clustered,
+    p: &Pipeline<T, 4>,
+    model: &Mat4<T>,
+) -> Vec<Rgb565> {
     let mut bins = heapless::Vec::<_, 8192>::new();
     let mesh = ValidMesh::new(c.mesh()).unwrap();
-    p.draw_valid_mesh(&mesh, &model::<T>(angle), Rgb565::new(28, 44, 12), &mut bins).unwrap();
+    p.draw_valid_mesh(&mesh, model, Rgb565::new(28, 44, 12), &mut bins).unwrap();
     let mut fb = Framebuffer::new(W as u32, H, BG);
     let (mut band, mut depth) = (Band::<Rgb565, W, BH>::new(BG), DepthBand::<Depth16, W, BH>::new());
     Renderer::new(H, BG)
@@ -194,15 +204,24 @@ fn direct_of<T: Scalar, M: Interpolation, const BH: usize, P: Scalar>(
     angle: f32,
     interp: M,
 ) -> (Vec<Rgb565>, [u32; 2]) {
+    direct_with::<T, M, BH, P>(mesh, p, &model::<T>(angle), interp)
+}
+
+/// [`direct_of`] with the mesh placed by `model`.
+fn direct_with<T: Scalar, M: Interpolation, const BH: usize, P: Scalar>(
+    mesh: &ValidMeshletMesh<'_, P>,
+    p: &Pipeline<T, 4>,
+    model: &Mat4<T>,
+    interp: M,
+) -> (Vec<Rgb565>, [u32; 2]) {
     let mut skipped = [0; 2];
     let mut cache = ClusterCache::<T, 4>::new();
     let mut fb = Framebuffer::new(W as u32, H, BG);
     let (mut band, mut depth) = (Band::<Rgb565, W, BH>::new(BG), DepthBand::<Depth16, W, BH>::new());
-    let model = model::<T>(angle);
     Renderer::new(H, BG)
         .render(
             Direct3d::new(&mut depth, DepthState::LESS_WRITE, interp, |band| {
-                let s = p.draw_meshlets(mesh, &model, Rgb565::new(28, 44, 12), &mut cache, band)?;
+                let s = p.draw_meshlets(mesh, model, Rgb565::new(28, 44, 12), &mut cache, band)?;
                 skipped[0] += s.clusters_outside;
                 skipped[1] += s.clusters_back_facing;
                 Ok(())

@@ -74,9 +74,10 @@ pub struct Meshlet {
 ///   position of a cluster within `radius · (1 + SPHERE_TOLERANCE)` of its
 ///   centre (the [`Mesh::validate`](super::Mesh::validate) rule);
 /// * every cone has a unit axis and a cutoff `≥ 0`, and, unless the
-///   cutoff is `≥ 1`, contains the face normal of every non-degenerate
-///   triangle of its cluster (within [`CONE_TOLERANCE`]; degenerate as in
-///   [`DEGENERATE_SIN2`](super::DEGENERATE_SIN2));
+///   cutoff is `≥ 1`, every triangle of its cluster is non-degenerate
+///   ([`DEGENERATE_SIN2`](super::DEGENERATE_SIN2): a needle's normal is
+///   rounding noise, yet its image can cover pixel centres) and its face
+///   normal lies in the cone (within [`CONE_TOLERANCE`]);
 /// * if the mesh has normals, the windings of its own triangles and of
 ///   every cluster triangle agree with them
 ///   ([`Mesh::check_winding`](super::Mesh::check_winding)).
@@ -207,12 +208,15 @@ impl MeshletData<'_> {
                 return Err(Error::WindingMismatch);
             }
             if cutoff < 1.0 {
-                if let Some((n, len2)) = face_cross(p) {
-                    let s = cross(axis, n);
-                    // Both sides are finite: `face_cross` bounds `len2`.
-                    if dot(axis, n) < 0.0 || dot(s, s) > bound * bound * len2 {
-                        return Err(Error::InvalidMeshlet);
-                    }
+                // A degenerate triangle's normal is rounding noise: no cone
+                // can vouch that it faces away.
+                let Some((n, len2)) = face_cross(p) else {
+                    return Err(Error::InvalidMeshlet);
+                };
+                let s = cross(axis, n);
+                // Both sides are finite: `face_cross` bounds `len2`.
+                if dot(axis, n) < 0.0 || dot(s, s) > bound * bound * len2 {
+                    return Err(Error::InvalidMeshlet);
                 }
             }
             t += 1;

@@ -4,10 +4,13 @@
 
 use super::{cross, dot, sub};
 
-/// A triangle is degenerate, and skipped by [`Mesh::check_winding`](super::Mesh::check_winding) and the
-/// meshlet cone checks, when `|e1 × e2|² ≤ DEGENERATE_SIN2 · |e1|² · |e2|²`
-/// (the sine of the angle between its edges `e1`, `e2` from the first
+/// A triangle is degenerate when `|e1 × e2|² ≤ DEGENERATE_SIN2 · |e1|² ·
+/// |e2|²` (the sine of the angle between its edges `e1`, `e2` from the first
 /// corner is at most 10⁻⁴): its face normal is then mostly rounding noise.
+/// [`Mesh::check_winding`](super::Mesh::check_winding) skips it; a meshlet
+/// cluster with one has no normal cone (cutoff `≥ 1`,
+/// [`MeshletMesh::validate`](super::MeshletMesh::validate)), since its
+/// image can still cover pixel centres whichever way it faces.
 pub const DEGENERATE_SIN2: f32 = 1.0e-8;
 
 /// The unnormalised face normal `(b − a) × (c − a)` of a triangle and its

@@ -14,8 +14,9 @@
 //! clusters the tests reject. The slab and view-volume tests only reject
 //! clusters with no triangle in the band or in view (conservative, with a
 //! slack for rounding). The cone test rejects clusters whose every triangle
-//! faces away from the eye in exact arithmetic (module docs of
-//! [`crate::mesh::MeshletMesh`]); back-face culling after snapping would
+//! the screen's winding culls in exact arithmetic: each faces away from the
+//! eye (module docs of [`crate::mesh::MeshletMesh`]), or towards it where
+//! the matrix mirrors (`cull::eye_point`); back-face culling after snapping would
 //! drop them too, except a snap-inverted sliver, which on a closed mesh lies
 //! behind the front surface. `tests/integration/meshlets.rs` compares the
 //! images.

@@ -1,11 +1,14 @@
 //! The meshlet stage against the binned path: images and triangle counts.
 
-use super::{BG, H, W, binned, covered, direct, direct_stats, model, pipeline, pipeline_far, torus};
+use super::{
+    BG, H, W, binned, binned_with, covered, direct, direct_stats, direct_with, model, pipeline, pipeline_far,
+    torus,
+};
 use crate::framebuffer::Framebuffer;
 use embedded_graphics_core::pixelcolor::Rgb565;
 use microraster::depth::{Depth16, DepthBand, DepthState};
 use microraster::edge::Cull;
-use microraster::math::{Fx, Scalar};
+use microraster::math::{Fx, Scalar, Vec3, transform};
 use microraster::mesh::ValidMesh;
 use microraster::pipeline::ClusterCache;
 use microraster::raster3d::{Affine, PerspectiveCorrect};
@@ -105,4 +108,34 @@ fn count_both<T: Scalar>() -> (u32, u32) {
         if got.clipped == 0 { inside += 1 } else { cut += 1 }
     }
     (inside, cut)
+}
+
+/// A model matrix that mirrors (negative determinant) turns the torus's
+/// outward faces clockwise on screen: culling keeps the faces that face away
+/// from the eye, and the normal cones must reject the clusters that face it
+/// (found by the `closed` fuzz target, 2026-12-02: the cone test rejected
+/// clusters facing away in 3D, which a mirror shows counter-clockwise, and
+/// the image lost them). The same holds for a mirroring projection or view.
+#[test]
+fn mirrored_models_draw_the_binned_image() {
+    fn check<T: Scalar>() {
+        let c = torus();
+        let f = T::from_f32;
+        for i in 0..4 {
+            let angle = i as f32 * 0.83;
+            let eye = [0.4 * i as f32 - 1.5, 1.2, 3.2 + 0.3 * i as f32];
+            let p = pipeline::<T>(Cull::Clockwise, eye);
+            for s in [[-1.0, 1.0, 1.0], [1.0, -1.0, 1.0], [-1.0, -1.0, -1.0], [1.0, 1.0, 1.0]] {
+                let mirror = transform::scaling(Vec3::new(f(s[0]), f(s[1]), f(s[2])));
+                let m = model::<T>(angle) * mirror;
+                let reference = binned_with::<T, Affine, 16>(&c, &p, &m);
+                assert!(covered(&reference) > 1000, "the torus is in view: {}", covered(&reference));
+                let (img, skipped) = direct_with::<T, Affine, 16, f32>(&c.meshlets(), &p, &m, Affine);
+                assert_eq!(img, reference, "{i} {s:?}");
+                assert!(skipped[1] > 0, "the cones reject clusters: {skipped:?}");
+            }
+        }
+    }
+    check::<f32>();
+    check::<Fx>();
 }

@@ -73,9 +73,13 @@ impl Output<'_> {
 /// The normal cone `(axis, cutoff)` of triangles given by their corners: the
 /// axis is the mean unit face normal; the cutoff the largest sine between it
 /// and a face normal, rounded up so [`MeshletMesh::validate`] passes without
-/// its tolerance, or 1 (never rejects) if the spread reaches 90°.
+/// its tolerance, or 1 (never rejects) if the spread reaches 90° or a
+/// triangle is degenerate (its normal cannot be vouched for, `validate`).
 fn normal_cone<I: Iterator<Item = [[f32; 3]; 3]> + Clone>(tris: I) -> ([f32; 3], f32) {
     const NEVER: ([f32; 3], f32) = ([0.0, 0.0, 1.0], 1.0);
+    if tris.clone().any(|t| face_cross(t).is_none()) {
+        return NEVER;
+    }
     let mut sum = [0.0f32; 3];
     for (n, len2) in tris.clone().filter_map(face_cross) {
         let len = sqrt(len2);

@@ -24,16 +24,18 @@ pub(crate) struct ClusterCull {
     /// How many of `planes` are the slab's (0 to 2).
     slab: usize,
     /// The eye as a homogeneous model-space point `(e, ew)`, `ew ≥ 0`
-    /// (`ew = 0`: orthographic, `e` points towards the viewer); `None`: no
-    /// cone test.
-    eye: Option<(Vec3<f32>, f32)>,
+    /// (`ew = 0`: orthographic, `e` points towards the viewer), and the sign
+    /// (±1) that turns a normal into one the screen culls when it faces
+    /// away from the eye: −1 where the matrix mirrors ([`eye_point`]);
+    /// `None`: no cone test.
+    eye: Option<(Vec3<f32>, f32, f32)>,
 }
 
 impl ClusterCull {
     /// The tests for a model-view-projection matrix given by its rows in
     /// `f32` ([`rows_f32`](super::super::rows_f32)).
     pub(super) fn new<T: Scalar>(rows: [Vec4<f32>; 4], far: bool, band: &Band<T>, cone: bool) -> Self {
-        let [x, y, z, w] = rows;
+        let [x, y, _, w] = rows;
         let mut planes = [(Vec4::new(0.0, 0.0, 0.0, 0.0), 0.0); 8];
         let mut count = 0;
         let mut add = |p: Vec4<f32>| {
@@ -51,7 +53,7 @@ impl ClusterCull {
         for p in view_planes(rows, far) {
             add(p);
         }
-        ClusterCull { planes, count, slab, eye: if cone { eye_point(x, y, z, w) } else { None } }
+        ClusterCull { planes, count, slab, eye: if cone { eye_point(x, y, w) } else { None } }
     }
 
     /// Counts and drops a cluster that certainly has no triangle in the band
@@ -90,12 +92,15 @@ impl ClusterCull {
     }
 
     /// The cone's part of [`ClusterCull::keeps`]: true if every triangle of
-    /// the cluster faces away from the eye (the same for every band).
+    /// the cluster is one the screen culls (the same for every band): faces
+    /// away from the eye, or towards it where the matrix mirrors.
     #[inline]
     pub(crate) fn faces_away(&self, m: &Meshlet) -> bool {
         let ((c, r), (axis, cutoff)) = (m.sphere, m.cone);
         match self.eye {
-            Some((e, ew)) if cutoff < 1.0 => faces_away(Vec3::from_f32(c), r, axis, cutoff, e, ew),
+            Some((e, ew, sign)) if cutoff < 1.0 => {
+                faces_away(Vec3::from_f32(c), r, axis.map(|a| a * sign), cutoff, e, ew)
+            }
             _ => false,
         }
     }
@@ -116,33 +121,40 @@ fn faces_away(c: Vec3<f32>, r: f32, axis: [f32; 3], cutoff: f32, e: Vec3<f32>, e
 }
 
 /// The centre of projection in model space: the homogeneous point `E` with
-/// clip `x = y = w = 0`, the 4D cross product of those rows, signed so that
-/// moving towards it decreases depth (`z · E < 0`) and scaled so that its
-/// largest component is 1. `None` if the rows are degenerate.
-fn eye_point(a: Vec4<f32>, b: Vec4<f32>, zr: Vec4<f32>, c: Vec4<f32>) -> Option<(Vec3<f32>, f32)> {
-    let (a, b, c, zr) =
-        ([a.x, a.y, a.z, a.w], [b.x, b.y, b.z, b.w], [c.x, c.y, c.z, c.w], [zr.x, zr.y, zr.z, zr.w]);
+/// clip `x = y = w = 0`, the 4D cross product of those rows, scaled so that
+/// its largest component is 1, with `ew ≥ 0`; and the sign that orients the
+/// cone test as the screen orients triangles. `None` if the rows are
+/// degenerate.
+///
+/// # Why the sign comes from the rows
+/// A triangle of model points `v_i` with winding normal
+/// `n = (v1 − v0) × (v2 − v0)` lands on screen (y down) with twice the
+/// signed area `−det[X_i, Y_i, W_i] / (W0·W1·W2)` (times the viewport's
+/// positive scales), and by the Cauchy–Binet formula
+/// `det[X_i, Y_i, W_i] = −n · (v0·Ew − Ee)` for `(Ee, Ew)` the cofactors
+/// below. With every `W_i > 0` (what the clipper leaves), the screen culls
+/// it (`Cull::Clockwise`: area above 0) exactly when `n · (v0·ew − e) > 0`
+/// for `(e, ew) = (Ee, Ew)`, which is [`faces_away`]'s test. Scaled to
+/// `ew ≥ 0`, a negative `Ew` flips the normals' sense (sign −1): a matrix
+/// that mirrors (a model matrix of negative determinant, a mirroring view
+/// or projection) shows the faces away from the eye counter-clockwise. An
+/// earlier version signed `E` by the depth row instead, which agrees with
+/// the rows for an ordinary camera only: with a mirror, the cones rejected
+/// clusters the screen keeps (found by the `closed` fuzz target).
+fn eye_point(a: Vec4<f32>, b: Vec4<f32>, c: Vec4<f32>) -> Option<(Vec3<f32>, f32, f32)> {
+    let (a, b, c) = ([a.x, a.y, a.z, a.w], [b.x, b.y, b.z, b.w], [c.x, c.y, c.z, c.w]);
     let det3 = |i: usize, j: usize, k: usize| {
         a[i] * (b[j] * c[k] - b[k] * c[j]) - a[j] * (b[i] * c[k] - b[k] * c[i])
             + a[k] * (b[i] * c[j] - b[j] * c[i])
     };
-    let mut e = [det3(1, 2, 3), -det3(0, 2, 3), det3(0, 1, 3), -det3(0, 1, 2)];
-    let depth = zr[0] * e[0] + zr[1] * e[1] + zr[2] * e[2] + zr[3] * e[3];
-    if !depth.is_finite() || depth == 0.0 {
-        return None;
-    }
-    if depth > 0.0 {
-        e = e.map(|v| -v);
-    }
-    if e[3] < 0.0 {
-        return None; // an eye behind the scene's w: not a camera
-    }
+    let e = [det3(1, 2, 3), -det3(0, 2, 3), det3(0, 1, 3), -det3(0, 1, 2)];
+    let sign = if e[3] < 0.0 { -1.0 } else { 1.0 };
     let m = e.iter().fold(0.0f32, |m, v| m.max(v.abs()));
     if !(m > 0.0 && m.is_finite()) {
         return None;
     }
-    let e = e.map(|v| v / m);
-    Some((Vec3::new(e[0], e[1], e[2]), e[3]))
+    let e = e.map(|v| v * sign / m);
+    Some((Vec3::new(e[0], e[1], e[2]), e[3], sign))
 }
 
 #[cfg(test)]
