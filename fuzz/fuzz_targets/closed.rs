@@ -109,21 +109,20 @@ fn run<T: Scalar, const S: u32>(inp: &mut Input) {
     let fx = !is_f32::<T>();
     let w_min = f64::from(p.clip.w_min());
     let homogeneous = |q: &[f32; 3]| [f(t(q[0])), f(t(q[1])), f(t(q[2])), 1.0];
-    // Each vertex's clip position, for the cone's check.
-    let clip: Vec<[f64; 4]> = positions
-        .iter()
-        .map(|q| core::array::from_fn(|r| (0..4).map(|k| mvp[k][r] * homogeneous(q)[k]).sum()))
-        .collect();
-    let clear = positions.iter().all(|q| {
+    let row = |m: &[[f64; 4]; 4], r: usize, hq: [f64; 4], a: fn(f64) -> f64| {
+        (0..4).map(|k| m[k][r] * a(hq[k])).sum::<f64>()
+    };
+    // Each vertex's clip position: the premise's and the cone check's.
+    let clip: Vec<[f64; 4]> =
+        positions.iter().map(|q| core::array::from_fn(|r| row(&mvp, r, homogeneous(q), |x| x))).collect();
+    let clear = positions.iter().zip(&clip).all(|(q, c)| {
         let hq = homogeneous(q);
-        let row =
-            |m: &[[f64; 4]; 4], r: usize, a: fn(f64) -> f64| (0..4).map(|k| m[k][r] * a(hq[k])).sum::<f64>();
-        let (z, wc) = (row(&mvp, 2, |x| x), row(&mvp, 3, |x| x));
-        let s = row(&size, 2, f64::abs) + row(&size, 3, f64::abs);
+        let (z, wc) = (c[2], c[3]);
+        let s = row(&size, 2, hq, f64::abs) + row(&size, 3, hq, f64::abs);
         let tol = if fx { 0.05 + 2e-3 * s } else { 1e-4 * s };
         // The clipper discards a triangle with a coordinate beyond ±2^64
         // (documented): the mesh would open there.
-        let in_range = (0..4).all(|r| row(&size, r, f64::abs) < 2f64.powi(63));
+        let in_range = (0..4).all(|r| row(&size, r, hq, f64::abs) < 2f64.powi(63));
         let inside_far = !p.clip.far() || wc - z > tol;
         s.is_finite() && in_range && (!fx || s < 4000.0) && z > tol && inside_far && wc > w_min + tol
     });

@@ -20,13 +20,23 @@ const NEEDLES: [[f32; 3]; 4] =
     [[-32768.0, -10.75, -5.5], [1.3125, -2.5625, 0.0625], [-2.5625, -2.5625, -2.5625], [-6.75, -5.5, -1.375]];
 const FACES: [[u16; 3]; 4] = [[0, 2, 1], [0, 1, 3], [1, 2, 3], [0, 3, 2]];
 
-/// Whether face `f` of [`NEEDLES`] is degenerate by the documented rule.
-fn degenerate(f: [u16; 3]) -> bool {
+fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+}
+
+/// Face `f` of [`NEEDLES`] in `f64`: its edges from the first corner and
+/// their cross product (the face normal).
+fn face(f: [u16; 3]) -> ([f64; 3], [f64; 3], [f64; 3]) {
     let p = f.map(|i| NEEDLES[usize::from(i)].map(f64::from));
     let (e1, e2) = ([0, 1, 2].map(|k| p[1][k] - p[0][k]), [0, 1, 2].map(|k| p[2][k] - p[0][k]));
     let n = [e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]];
-    let d = |a: [f64; 3], b: [f64; 3]| a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-    d(n, n) <= f64::from(DEGENERATE_SIN2) * d(e1, e1) * d(e2, e2)
+    (e1, e2, n)
+}
+
+/// Whether face `f` of [`NEEDLES`] is degenerate by the documented rule.
+fn degenerate(f: [u16; 3]) -> bool {
+    let (e1, e2, n) = face(f);
+    dot(n, n) <= f64::from(DEGENERATE_SIN2) * dot(e1, e1) * dot(e2, e2)
 }
 
 #[test]
@@ -48,11 +58,9 @@ fn a_cluster_with_a_needle_has_no_cone() {
     m.validate().unwrap();
 
     // The narrow cone of the one proper face is not valid for the cluster.
-    let p = FACES[2].map(|i| NEEDLES[usize::from(i)]);
-    let (e1, e2) = ([0, 1, 2].map(|k| p[1][k] - p[0][k]), [0, 1, 2].map(|k| p[2][k] - p[0][k]));
-    let n = [e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]];
-    let len = (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt();
-    let narrow = Meshlet { cone: (n.map(|x| x / len), 0.01), ..m.meshlets[0] };
+    let (_, _, n) = face(FACES[2]);
+    let len = dot(n, n).sqrt();
+    let narrow = Meshlet { cone: (n.map(|x| (x / len) as f32), 0.01), ..m.meshlets[0] };
     let cluster = [narrow];
     let with_cone = MeshletMesh { meshlets: &cluster, ..m };
     assert_eq!(with_cone.validate(), Err(Error::InvalidMeshlet));

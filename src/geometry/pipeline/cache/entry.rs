@@ -143,7 +143,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     fn depth_entry(&self, e: &mut Cached<T, S>) {
         let d = if crate::math::vec::is_float::<T>() {
             depth_f32(e.clip[2].to_f32(), e.clip[3].to_f32(), self.with_inv_w.then(|| self.w_ref.to_f32()))
-                .or_else(|| self.depth_general(e))
+                .or_else(|| self.depth_general_cold(e))
         } else {
             self.depth_general(e)
         };
@@ -154,23 +154,20 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     }
 
     /// [`Pipeline::depth_entry`]'s depth and `1/w` by [`Pipeline::snap_depth`],
-    /// the divisor rebuilt from the word `snap_deferred` kept in the depth.
-    /// Inline for `Fx` (its only path); for `f32` only where the fast
-    /// quotients leave their range (`w_ref/w` beyond 2^10), so out of line:
-    /// inlined, its saturating depth cost the `f32` knot 0.1 %.
+    /// the divisor rebuilt from the word `snap_deferred` kept in the depth:
+    /// `Fx`'s only path, inline.
     #[inline(always)]
     fn depth_general(&self, e: &Cached<T, S>) -> Option<(u32, u32)> {
-        if crate::math::vec::is_float::<T>() {
-            self.depth_general_cold(e)
-        } else {
-            e.clip[3].divisor_from_word(e.screen.depth).and_then(|w| self.snap_depth(e.clip, w))
-        }
+        e.clip[3].divisor_from_word(e.screen.depth).and_then(|w| self.snap_depth(e.clip, w))
     }
 
+    /// [`Pipeline::depth_general`] out of line, for `f32`, which takes it
+    /// only where the fast quotients leave their range (`w_ref/w` beyond
+    /// 2^10): inlined, its saturating depth cost the `f32` knot 0.1 %.
     #[cold]
     #[inline(never)]
     fn depth_general_cold(&self, e: &Cached<T, S>) -> Option<(u32, u32)> {
-        e.clip[3].divisor_from_word(e.screen.depth).and_then(|w| self.snap_depth(e.clip, w))
+        self.depth_general(e)
     }
 
     /// [`Pipeline::snap_vertex`] with the depth and `1/w` left for later
