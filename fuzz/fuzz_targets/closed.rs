@@ -1,14 +1,16 @@
-//! Closed meshes through the 3D pipeline have no cracks: a tetrahedron or a
-//! deformed cube (any points, consistently wound faces: a closed surface,
-//! folded, flat or degenerate as the points make it) under a fuzzed camera,
+//! Closed meshes through the 3D pipeline have no cracks: a tetrahedron, a
+//! deformed cube or a box, either with its faces cut into up to 6 × 6
+//! quads (any points, consistently wound faces: a closed surface,
+//! folded, flat or degenerate as the points make it; `closed/surface.rs`) under a fuzzed camera,
 //! lens, model matrix, frame size, band height and clipping, on the `f32`
 //! and `Fx` paths at `S ∈ {0, 4, 8}`, drawn band by band into bins with
 //! culling off. Check: every pixel centre of the frame is covered by as
 //! many front faces as back faces (`tests/bench_mesh/closed.rs` says why:
 //! the top-left rule samples each centre as if moved by an infinitesimal,
 //! and a closed surface's image covers any point as often each way). Then
-//! the same mesh as a cluster through the meshlet stage band by band, with
-//! culling off and on (`meshlets_agree`).
+//! the same mesh as clusters (one, or several for a cut cube) through the
+//! meshlet stage band by band, whole and cluster by cluster, with culling
+//! off and on (`closed/meshlets.rs`).
 //!
 //! The lens is the usual perspective one, or (from bytes read after the
 //! mesh, so inputs written before they were added replay unchanged) a
@@ -28,38 +30,28 @@
 //! centre of the viewport, and a confined viewport inside a larger frame
 //! must leave every centre outside it uncovered. Inputs the pipeline
 //! rejects with a documented error (`Fx` beyond 16.16) are skipped.
+//!
+//! The cuts and the box come from the last bytes read: inputs written
+//! before they were added mostly end earlier, read 0 there and replay the
+//! plain cube.
 #![no_main]
 
-use embedded_graphics_core::pixelcolor::Rgb565;
 use libfuzzer_sys::fuzz_target;
 use microraster::ClipRect;
 use microraster::clip3d::ClipPlanes;
-use microraster::edge::{Cull, TriangleSpans};
+use microraster::edge::Cull;
 use microraster::math::{Mat4, Scalar, Vec3, transform};
-use microraster::mesh::{
-    Mesh, Meshlet, ValidMeshletMesh, bounding_sphere, build_meshlets, meshlet_bound, meshlet_scratch_len,
-    meshlet_vertex_bound,
-};
-use microraster::pipeline::{ClusterCache, Pipeline};
-use microraster::raster3d::ScreenTriangle;
-use microraster_fuzz::{Input, clip_matrix_f64, is_f32, signed_area2};
+use microraster::mesh::{Mesh, bounding_sphere};
+use microraster::pipeline::Pipeline;
+use microraster_fuzz::{Input, clip_matrix_f64, is_f32};
 
-const TETRAHEDRON: [[u16; 3]; 4] = [[0, 2, 1], [0, 1, 3], [1, 2, 3], [0, 3, 2]];
-/// The faces of a cube with corners `x + 2y + 4z`, wound one way round.
-const CUBE: [[u16; 3]; 12] = [
-    [0, 2, 3],
-    [0, 3, 1],
-    [4, 5, 7],
-    [4, 7, 6],
-    [0, 1, 5],
-    [0, 5, 4],
-    [2, 6, 7],
-    [2, 7, 3],
-    [0, 4, 6],
-    [0, 6, 2],
-    [1, 3, 7],
-    [1, 7, 5],
-];
+#[path = "closed/meshlets.rs"]
+mod meshlets;
+#[path = "closed/surface.rs"]
+mod surface;
+
+use meshlets::{draw_mesh, meshlets_agree};
+use surface::{CUBE, MAX_CUTS, TETRAHEDRON, subdivided_cube};
 
 fuzz_target!(|data: &[u8]| {
     microraster_fuzz::each_path!(&mut Input::new(data), run);
@@ -87,7 +79,7 @@ fn run<T: Scalar, const S: u32>(inp: &mut Input) {
     let rows = inp.pick(&[1, 3, 16, 64]);
 
     let cube = inp.bool();
-    let positions: Vec<[f32; 3]> =
+    let mut positions: Vec<[f32; 3]> =
         (0..if cube { 8 } else { 4 }).map(|_| [(); 3].map(|()| coord(inp))).collect();
     let indices: &[[u16; 3]] = if cube { &CUBE } else { &TETRAHEDRON };
     let model = if inp.bool() {
@@ -95,13 +87,26 @@ fn run<T: Scalar, const S: u32>(inp: &mut Input) {
     } else {
         Mat4::from_f32(core::array::from_fn(|_| [(); 4].map(|()| coord(inp))))
     };
-    let mesh = Mesh::new(&positions, &[], indices, bounding_sphere(&positions));
     let Some(Setup { mut p, proj, frame, viewport }) =
         setup(inp, p, proj, (w, h), (view, near, far, confined))
     else {
         return;
     };
     p.cull = Cull::None;
+    let recorded = inp.bool();
+    // The cube's faces cut into n × n quads (several clusters); or the
+    // cube a box, the one spanned by its first and last corners (flat
+    // faces: clusters with narrow normal cones).
+    let cuts = 1 + usize::from(inp.u8()) % MAX_CUTS;
+    if cube && inp.bool() {
+        let (lo, hi) = (positions[0], positions[7]);
+        for (c, q) in positions.iter_mut().enumerate() {
+            *q = core::array::from_fn(|a| if c >> a & 1 == 1 { hi[a] } else { lo[a] });
+        }
+    }
+    let (positions, indices) =
+        if cube && cuts > 1 { subdivided_cube(&positions, cuts) } else { (positions, indices.to_vec()) };
+    let mesh = Mesh::new(&positions, &[], &indices, bounding_sphere(&positions));
 
     // The premise, in f64, with each coordinate's magnitude bound for the
     // rounding margin.
@@ -131,18 +136,9 @@ fn run<T: Scalar, const S: u32>(inp: &mut Input) {
     }
 
     let (fw, fh) = (frame.0 as usize, frame.1 as usize);
-    let mut drawn = Coverage::new(fw, fh);
-    for (y0, y1) in bands(fh, rows) {
-        let mut band = p;
-        band.rows = Some((y0, y1));
-        let mut bins = heapless::Vec::<ScreenTriangle<S>, 128>::new();
-        if band.draw_mesh(&mesh, &model, Rgb565::new(31, 0, 0), &mut bins).is_err() {
-            return; // a documented rejection (Fx range): nothing to check
-        }
-        for tri in &bins {
-            drawn.add(tri, y0, y1);
-        }
-    }
+    let Some(drawn) = draw_mesh(&p, &mesh, &model, (fw, fh, rows)) else {
+        return; // a documented rejection (Fx range): nothing to check
+    };
     for (i, (f, b)) in drawn.front.iter().zip(&drawn.back).enumerate() {
         let (x, y) = ((i % fw) as i32, (i / fw) as i32);
         if viewport.contains(x, y) {
@@ -152,104 +148,7 @@ fn run<T: Scalar, const S: u32>(inp: &mut Input) {
             assert_eq!((f, b), (&0, &0), "pixel ({x}, {y}) outside the viewport {viewport:?} covered");
         }
     }
-    meshlets_agree(inp, p, mesh, &model, (rows, &clip), &drawn);
-}
-
-/// A frame's `rows`-row bands, first and last row.
-fn bands(h: usize, rows: usize) -> impl Iterator<Item = (i32, i32)> {
-    (0..h as i32).step_by(rows).map(move |y0| (y0, (y0 + rows as i32).min(h as i32) - 1))
-}
-
-/// How many front and back faces cover each pixel centre of a frame.
-#[derive(PartialEq, Debug)]
-struct Coverage {
-    w: usize,
-    front: Vec<u16>,
-    back: Vec<u16>,
-}
-
-impl Coverage {
-    fn new(w: usize, h: usize) -> Self {
-        Coverage { w, front: vec![0; w * h], back: vec![0; w * h] }
-    }
-
-    /// `tri`'s centres in frame rows `y0..=y1`, counted by its winding.
-    fn add<const S: u32>(&mut self, tri: &ScreenTriangle<S>, y0: i32, y1: i32) {
-        let counts = if signed_area2(tri) > 0 { &mut self.back } else { &mut self.front };
-        let clip = ClipRect::new(0, y0, self.w as i32, y1 + 1);
-        for s in TriangleSpans::new(tri.v.map(|v| v.pos), clip, Cull::None) {
-            for x in s.x..s.x + s.len as i32 {
-                counts[s.y as usize * self.w + x as usize] += 1;
-            }
-        }
-    }
-}
-
-/// The same mesh built into clusters (one: it has at most 12 triangles)
-/// through the meshlet stage band by band (`Pipeline::meshlet_triangles`,
-/// with the frame's record of the cluster or without). Culling off, the
-/// coverage must be `draw_mesh`'s: the cluster tests against the band's
-/// slab and the view volume reject only what has no triangle there. Back
-/// faces culled, it must be the front faces' alone; where the normal cone
-/// rejected the cluster, none of it, and no triangle may face the eye (in
-/// `f64`, with a margin; in exact arithmetic none does, and a front face of
-/// `draw_mesh`'s is then a sliver that snapping inverted).
-fn meshlets_agree<T: Scalar, const S: u32>(
-    inp: &mut Input,
-    p: Pipeline<T, S>,
-    mesh: Mesh<'_, f32>,
-    model: &Mat4<T>,
-    (rows, clip): (usize, &[[f64; 4]]),
-    drawn: &Coverage,
-) {
-    let (nv, nt) = (mesh.positions.len(), mesh.indices.len());
-    let mut meshlets = vec![Meshlet::default(); meshlet_bound(nt)];
-    let mut vertices = vec![0; meshlet_vertex_bound(nt)];
-    let mut triangles = vec![[0; 3]; nt];
-    let mut scratch = vec![0; meshlet_scratch_len(nv, nt)];
-    let Ok(built) = build_meshlets(mesh, &mut meshlets, &mut vertices, &mut triangles, &mut scratch) else {
-        return;
-    };
-    let Ok(m) = ValidMeshletMesh::new(built) else { return };
-    let recorded = inp.bool();
-    let h = drawn.front.len() / drawn.w;
-    for cull in [Cull::None, Cull::Clockwise] {
-        let mut q = p;
-        q.cull = cull;
-        let (mut record, mut plain) = (ClusterCache::<T, S>::new(), ClusterCache::<T, S, 0, 0>::sized());
-        let mut got = Coverage::new(drawn.w, h);
-        let mut away = false;
-        for (y0, y1) in bands(h, rows) {
-            let color = Rgb565::new(31, 0, 0);
-            let sink = |tri: &ScreenTriangle<S>| got.add(tri, y0, y1);
-            let stats = if recorded {
-                q.meshlet_triangles(&m, model, color, &mut record, (y0, y1), sink)
-            } else {
-                q.meshlet_triangles(&m, model, color, &mut plain, (y0, y1), sink)
-            };
-            let Ok(stats) = stats else { return }; // a documented rejection, as above
-            away |= stats.clusters_back_facing > 0;
-        }
-        match cull {
-            Cull::None => assert_eq!(&got, drawn, "the meshlet stage's coverage differs from draw_mesh's"),
-            _ if away => {
-                assert!(got.front.iter().chain(&got.back).all(|&c| c == 0), "a rejected cluster drew");
-                // Rejected rightly: no triangle faces the eye (in f64, with
-                // a margin for the paths' rounding of positions and matrices).
-                for t in mesh.indices {
-                    let c = t.map(|i| clip[usize::from(i)]);
-                    let s = c.map(|c| (c[0] / c[3], -c[1] / c[3]));
-                    let (a, b) =
-                        ((s[1].0 - s[0].0) * (s[2].1 - s[0].1), (s[2].0 - s[0].0) * (s[1].1 - s[0].1));
-                    assert!(a - b >= -1e-4 * (a.abs() + b.abs()), "the cone rejected a front face: {s:?}");
-                }
-            }
-            _ => {
-                assert_eq!(got.front, drawn.front, "culled: front faces' coverage differs");
-                assert!(got.back.iter().all(|&c| c == 0), "culled: a back face drawn");
-            }
-        }
-    }
+    meshlets_agree(p, mesh, &model, (rows, recorded, &clip), &drawn);
 }
 
 /// The pipeline and frame [`run`] checks: lens, viewport and clip planes.
