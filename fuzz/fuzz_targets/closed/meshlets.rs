@@ -102,7 +102,8 @@ pub fn meshlets_agree<T: Scalar, const S: u32>(
     p: Pipeline<T, S>,
     mesh: Mesh<'_, f32>,
     model: &Mat4<T>,
-    (rows, recorded, clip): (usize, bool, &[[f64; 4]]),
+    (rows, recorded): (usize, bool),
+    (clip, margin): (&[[f64; 4]], &[[f64; 4]]),
     drawn: &Coverage,
 ) {
     let (nv, nt) = (mesh.positions.len(), mesh.indices.len());
@@ -153,11 +154,16 @@ pub fn meshlets_agree<T: Scalar, const S: u32>(
             // Rejected rightly: no triangle faces the eye (in f64, with
             // a margin for the paths' rounding of positions and matrices).
             for t in &indices {
-                let v = t.map(|i| clip[usize::from(i)]);
-                let s = v.map(|c| (c[0] / c[3], -c[1] / c[3]));
-                let (a, b) = ((s[1].0 - s[0].0) * (s[2].1 - s[0].1), (s[2].0 - s[0].0) * (s[1].1 - s[0].1));
+                let v = t.map(|i| screen(clip[usize::from(i)], margin[usize::from(i)]));
+                let (s, d) = (v.map(|v| v.0), v.map(|v| v.1));
+                let (e1, e2) = ((s[1].0 - s[0].0, s[1].1 - s[0].1), (s[2].0 - s[0].0, s[2].1 - s[0].1));
+                let (a, b) = (e1.0 * e2.1, e2.0 * e1.1);
+                // Each edge vector moves by at most the sum of its ends'
+                // margins, the cross product by what that makes of it.
+                let (u1, u2) = (d[0] + d[1], d[0] + d[2]);
+                let moved = u1 * (e2.0.abs() + e2.1.abs()) + u2 * (e1.0.abs() + e1.1.abs()) + 2.0 * u1 * u2;
                 assert!(
-                    a - b >= -1e-4 * (a.abs() + b.abs()),
+                    a - b >= -(moved + 1e-4 * (a.abs() + b.abs())),
                     "cluster {c}: the cone rejected a front face: {s:?}"
                 );
             }
@@ -173,4 +179,14 @@ pub fn meshlets_agree<T: Scalar, const S: u32>(
     assert_eq!(off, all_off, "the whole meshlet mesh's coverage differs from its clusters'");
     let Some((on, _)) = meshlet_draw(&culled, built) else { return };
     assert_eq!(on, all_culled, "culled: the whole meshlet mesh's coverage differs from its clusters'");
+}
+
+/// A vertex's screen position `(x/w, −y/w)` from its clip position `c`, and
+/// how far it can move when each clip coordinate moves by at most its
+/// `margin`: `(m_xy + max(|x|, |y|)/|w|·m_w)/(w − m_w)` (the premise keeps
+/// `w − m_w` above `w_min`).
+fn screen(c: [f64; 4], margin: [f64; 4]) -> ((f64, f64), f64) {
+    let s = (c[0] / c[3], -c[1] / c[3]);
+    let d = (margin[0].max(margin[1]) + s.0.abs().max(s.1.abs()) * margin[3]) / (c[3] - margin[3]);
+    (s, d)
 }
