@@ -1,8 +1,8 @@
 //! Closed meshes through the 3D pipeline have no cracks: a tetrahedron, a
-//! deformed cube or a box, either with its faces cut into up to 6 × 6
-//! quads (any points, consistently wound faces: a closed surface,
-//! folded, flat or degenerate as the points make it; `closed/surface.rs`) under a fuzzed camera,
-//! lens, model matrix, frame size, band height and clipping, on the `f32`
+//! deformed cube or a box, either with its faces cut into up to 10 × 10
+//! quads (any points, consistently wound faces: a closed surface, folded,
+//! flat or degenerate as the points make it; `closed/surface.rs`) under a
+//! fuzzed camera, lens, model matrix, frame size, band height and clipping, on the `f32`
 //! and `Fx` paths at `S ∈ {0, 4, 8}`, drawn band by band into bins with
 //! culling off. Check: every pixel centre of the frame is covered by as
 //! many front faces as back faces (`tests/bench_mesh/closed.rs` says why:
@@ -117,24 +117,28 @@ fn run<T: Scalar, const S: u32>(inp: &mut Input) {
     let row = |m: &[[f64; 4]; 4], r: usize, hq: [f64; 4], a: fn(f64) -> f64| {
         (0..4).map(|k| m[k][r] * a(hq[k])).sum::<f64>()
     };
-    // Each vertex's clip position, and how far the path's rounding can move
-    // each coordinate (from its magnitude bound): the premise's and the
-    // cone check's.
-    let clip: Vec<[f64; 4]> =
-        positions.iter().map(|q| core::array::from_fn(|r| row(&mvp, r, homogeneous(q), |x| x))).collect();
-    let slack = |s: f64| if fx { 0.05 + 2e-3 * s } else { 1e-4 * s };
-    let margin: Vec<[f64; 4]> = positions
+    // Each vertex's clip position and each clip coordinate's magnitude
+    // bound, and from that how far the path's rounding can move the
+    // coordinate: the premise's and the cone check's.
+    let (clip, magnitude): (Vec<[f64; 4]>, Vec<[f64; 4]>) = positions
         .iter()
-        .map(|q| core::array::from_fn(|r| slack(row(&size, r, homogeneous(q), f64::abs))))
-        .collect();
-    let clear = positions.iter().zip(&clip).all(|(q, c)| {
-        let hq = homogeneous(q);
+        .map(|q| {
+            let hq = homogeneous(q);
+            (
+                core::array::from_fn(|r| row(&mvp, r, hq, |x| x)),
+                core::array::from_fn(|r| row(&size, r, hq, f64::abs)),
+            )
+        })
+        .unzip();
+    let slack = |s: f64| if fx { 0.05 + 2e-3 * s } else { 1e-4 * s };
+    let margin: Vec<[f64; 4]> = magnitude.iter().map(|m| m.map(slack)).collect();
+    let clear = clip.iter().zip(&magnitude).all(|(c, m)| {
         let (z, wc) = (c[2], c[3]);
-        let s = row(&size, 2, hq, f64::abs) + row(&size, 3, hq, f64::abs);
+        let s = m[2] + m[3];
         let tol = slack(s);
         // The clipper discards a triangle with a coordinate beyond ±2^64
         // (documented): the mesh would open there.
-        let in_range = (0..4).all(|r| row(&size, r, hq, f64::abs) < 2f64.powi(63));
+        let in_range = m.iter().all(|&v| v < 2f64.powi(63));
         let inside_far = !p.clip.far() || wc - z > tol;
         s.is_finite() && in_range && (!fx || s < 4000.0) && z > tol && inside_far && wc > w_min + tol
     });

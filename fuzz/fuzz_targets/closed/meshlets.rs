@@ -4,6 +4,7 @@
 
 use embedded_graphics_core::pixelcolor::Rgb565;
 use microraster::ClipRect;
+use microraster::clip3d::MAX_POLYGON_VERTICES;
 use microraster::edge::{Cull, TriangleSpans};
 use microraster::math::{Mat4, Scalar};
 use microraster::mesh::{
@@ -14,9 +15,13 @@ use microraster::pipeline::{ClusterCache, Pipeline};
 use microraster::raster3d::ScreenTriangle;
 use microraster_fuzz::signed_area2;
 
-/// Capacity of one band's bins in [`draw_mesh`]: [`super::surface`]'s
-/// largest mesh has 432 triangles, and clipping makes at most seven of one.
-const BINS: usize = 8192;
+use super::surface::MAX_TRIANGLES;
+
+/// Capacity of one band's bins in [`draw_mesh`]: every triangle of the
+/// largest mesh, each clipped into a polygon of at most
+/// `MAX_POLYGON_VERTICES` corners (a fan of two fewer triangles), so no
+/// input is skipped for want of room.
+const BINS: usize = MAX_TRIANGLES * (MAX_POLYGON_VERTICES - 2);
 
 /// A frame's `rows`-row bands, first and last row.
 pub fn bands(h: usize, rows: usize) -> impl Iterator<Item = (i32, i32)> {
@@ -24,7 +29,7 @@ pub fn bands(h: usize, rows: usize) -> impl Iterator<Item = (i32, i32)> {
 }
 
 /// How many front and back faces cover each pixel centre of a frame.
-#[derive(PartialEq, Debug, Clone)]
+#[derive(PartialEq, Debug)]
 pub struct Coverage {
     pub w: usize,
     pub front: Vec<u16>,

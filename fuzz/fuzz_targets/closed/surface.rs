@@ -22,9 +22,11 @@ pub const CUBE: [[u16; 3]; 12] = [
     [1, 7, 5],
 ];
 
-/// Largest `n` of [`subdivided_cube`]: `6n² + 2 = 218` vertices and
-/// `12n² = 432` triangles, at least four clusters of 64 vertices.
+/// Largest `n` of [`subdivided_cube`]: `6n² + 2 = 602` vertices and
+/// [`MAX_TRIANGLES`] triangles, at least ten clusters of 64 vertices.
 pub const MAX_CUTS: usize = 10;
+/// Most triangles of a mesh here: `12n²` for `n = MAX_CUTS`.
+pub const MAX_TRIANGLES: usize = 12 * MAX_CUTS * MAX_CUTS;
 
 /// The cube whose eight corners are `corners` (index `x + 2y + 4z`), each
 /// face cut into `n × n` quads (`1 ≤ n ≤ MAX_CUTS`) of two triangles wound
