@@ -9,6 +9,7 @@
 //! cargo run --release --example cluster_visits -- slabs 16   # slabs of 16 vertices
 //! cargo run --release --example cluster_visits -- flat       # clusters built flatter in y
 //! cargo run --release --example cluster_visits -- done       # finished triangles skipped
+//! cargo run --release --example cluster_visits -- handed     # what the raster is handed
 //! ```
 //!
 //! * `slabs N`: each cluster's vertices sorted along the axis of its
@@ -24,6 +25,11 @@
 //!   the next band): the triangle visits and vertex `y`/`w` computations
 //!   a cluster's later visits would keep (only the live triangles and
 //!   their vertices).
+//! * `handed` (thirty-ninth pass): the triangles the meshlet stage itself
+//!   hands to the raster in each 16-row band
+//!   (`Pipeline::meshlet_triangles`), their candidate centres (the
+//!   bounding box's columns times its rows in the band), the centres they
+//!   cover, how many cover none, and how many have no centre row at all.
 
 #[path = "../benches/common/mod.rs"]
 mod common;
@@ -50,6 +56,7 @@ fn main() {
     match args.next().as_deref() {
         Some("flat") => flat(&mvp),
         Some("done") => done(&mvp),
+        Some("handed") => handed(),
         _ => slabs(&mvp, args.next().map_or(16, |a| a.parse().expect("a slab size"))),
     }
 }
@@ -217,5 +224,42 @@ fn done(mvp: &Mat4<f32>) {
         "{visits} cluster visits ({revisits} revisits); areas by sign {back_total:?}\n\
          triangle visits {tri_all}, live {tri_live} (revisits: {tri_re} of them)\n\
          vertex y/w {vert_all}, needed {vert_live} (revisits: {vert_re} of them)"
+    );
+}
+
+/// The `handed` study (module docs).
+fn handed() {
+    use microraster::edge::{Cull, TriangleSpans};
+    use microraster::{ClipRect, raster3d::ScreenTriangle};
+    let p = common::pipeline3d::<f32, 4>();
+    let mut cache = Box::new(microraster::pipeline::ClusterCache::<f32, 4>::default());
+    let model = knot::knot_model::<f32>();
+    let (mut handed, mut candidates, mut covered, mut none, mut no_row) = (0u32, 0i64, 0u64, 0u32, 0u32);
+    for y0 in (0..common::H as i32).step_by(BAND as usize) {
+        let rows = (y0, y0 + BAND as i32 - 1);
+        let band = ClipRect::new(0, y0, common::W as i32, rows.1 + 1);
+        let mut each = |t: &ScreenTriangle<4>| {
+            handed += 1;
+            let (lo, hi) = t.rows();
+            no_row += (lo > hi) as u32;
+            // Pixel centres x + 0.5 between the leftmost and rightmost vertex.
+            let xs = t.v.map(|v| 2 * v.pos.x());
+            let (x_lo, x_hi) = (xs.into_iter().min().unwrap_or(0), xs.into_iter().max().unwrap_or(0));
+            let cols = ((x_hi - 16) >> 5) - ((x_lo - 16 + 31) >> 5) + 1;
+            let rows_in = hi.min(rows.1) - lo.max(rows.0) + 1;
+            candidates += i64::from(cols.max(0) * rows_in.max(0));
+            let n: u32 = TriangleSpans::new(t.v.map(|v| v.pos), band, Cull::None).map(|s| s.len).sum();
+            covered += u64::from(n);
+            none += (n == 0) as u32;
+        };
+        p.meshlet_triangles(&knot_mesh::VALID_KNOT, &model, knot::KNOT_COLOR, &mut cache, rows, &mut each)
+            .expect("the knot's frame");
+    }
+    println!(
+        "handed to the raster: {handed} triangle-band pairs, {:.2} candidate centres and {:.2} covered \
+         centres each; {none} ({:.1} %) cover no centre of their band, {no_row} have no centre row",
+        candidates as f64 / handed as f64,
+        covered as f64 / handed as f64,
+        100.0 * none as f64 / handed as f64,
     );
 }
