@@ -242,10 +242,13 @@ fn handed() {
             handed += 1;
             let (lo, hi) = t.rows();
             no_row += (lo > hi) as u32;
-            // Pixel centres x + 0.5 between the leftmost and rightmost vertex.
+            // Columns whose centre x + 0.5 lies between the leftmost and
+            // rightmost vertex, as `ScreenTriangle::rows` finds the rows (in
+            // internal units of 2^-(S + 1) px, S = 4).
+            let (one, half) = (1 << 5, 1 << 4);
             let xs = t.v.map(|v| 2 * v.pos.x());
             let (x_lo, x_hi) = (xs.into_iter().min().unwrap_or(0), xs.into_iter().max().unwrap_or(0));
-            let cols = ((x_hi - 16) >> 5) - ((x_lo - 16 + 31) >> 5) + 1;
+            let cols = ((x_hi - half) >> 5) - ((x_lo - half + one - 1) >> 5) + 1;
             let rows_in = hi.min(rows.1) - lo.max(rows.0) + 1;
             candidates += i64::from(cols.max(0) * rows_in.max(0));
             let n: u32 = TriangleSpans::new(t.v.map(|v| v.pos), band, Cull::None).map(|s| s.len).sum();
