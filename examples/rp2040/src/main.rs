@@ -15,7 +15,12 @@
 //! compare-and-swap, and none is needed: only the core whose band is next
 //! writes it).
 //!
-//! It cannot run under QEMU (QEMU has no RP2040 machine); CI builds it.
+//! QEMU has no RP2040 machine; CI builds this firmware as it is and runs
+//! its emulator build (`--features emu`: the same program, plus a CRC of
+//! every band sent, SPI0 in loopback and a one-core mode) in the
+//! `rp2040-emu` crate, whose frames must equal the host's
+//! (`cargo run -- crc N`, src/scene.rs): `bash scripts/firmware.sh rp2040`,
+//! examples/rp2040/emu.
 //!
 //! # Wiring (Pico pin numbers: GPIO)
 //!
@@ -32,6 +37,21 @@
 //! or convert the ELF with `elf2uf2-rs` and copy it to the Pico's USB drive.
 #![cfg_attr(target_os = "none", no_std, no_main)]
 
+mod scene;
+
+// The CRC-32 and the records of the other firmware (examples/firmware).
+#[cfg_attr(target_os = "none", allow(dead_code))]
+#[path = "../../firmware/workload/crc.rs"]
+mod crc;
+/// Where records go (crc.rs's `CrcTarget`).
+#[cfg(not(target_os = "none"))]
+type Out<'a> = &'a mut dyn FnMut(&crc::Record);
+
+#[cfg(all(target_os = "none", feature = "emu"))]
+mod emu;
+#[cfg(feature = "emu")]
+mod mailbox;
+
 #[cfg(target_os = "none")]
 mod firmware {
     use core::cell::RefCell;
@@ -39,15 +59,11 @@ mod firmware {
     use core::sync::atomic::{AtomicUsize, Ordering};
 
     use critical_section::Mutex;
-    use embedded_graphics_core::pixelcolor::{IntoStorage, Rgb565, RgbColor};
+    use embedded_graphics_core::pixelcolor::{IntoStorage, Rgb565};
     use embedded_graphics_core::primitives::Rectangle;
     use embedded_hal::digital::OutputPin;
     use embedded_hal::spi::SpiBus;
-    use microraster::depth::{Depth16, DepthBand, DepthState};
-    use microraster::raster3d::{PerspectiveCorrect, ScreenTriangle, draw_triangle};
-    use microraster::render::{BandSink, Lent, from_fn};
-    use microraster_scenes::scenes3d::{BINS, Scene3d};
-    use microraster::{Band, Renderer};
+    use microraster::render::{BandSink, Lent};
     use rp2040_hal::fugit::RateExtU32;
     use rp2040_hal::gpio::{FunctionSioOutput, FunctionSpi, Pin, PullDown, bank0};
     use rp2040_hal::multicore::{Multicore, Stack};
@@ -57,13 +73,10 @@ mod firmware {
     #[used]
     static BOOT2_FIRMWARE: [u8; 256] = rp2040_boot2::BOOT_LOADER_W25Q080;
 
-    /// Frame size (landscape), band rows, bands a frame, subpixel bits.
-    const W: usize = 320;
-    const H: u32 = 240;
-    const BAND: usize = 16;
-    const BANDS: usize = H as usize / BAND;
-    const S: u32 = 4;
-    const BACKGROUND: Rgb565 = Rgb565::BLACK;
+    use crate::scene::{self, BACKGROUND, BANDS, Bands, Bins, Depth, W};
+    #[cfg(feature = "emu")]
+    use crate::{emu, mailbox};
+
     const CORE_HZ: u32 = 125_000_000;
 
     type Spi0 = spi::Spi<
@@ -126,55 +139,64 @@ mod firmware {
     /// Sends this core's bands in turn; hands the others back untouched.
     struct Share {
         core: usize,
+        /// Cores rendering: 2, or 1 (core 0 alone; the emulator build's
+        /// one-core mode).
+        cores: usize,
         frame: usize,
+    }
+
+    /// Whether band `index` is core `core`'s.
+    fn mine(core: usize, cores: usize, index: usize) -> bool {
+        cores == 1 || index % 2 == core
+    }
+
+    /// What core `core` does now (the emulator build reports it).
+    #[cfg_attr(not(feature = "emu"), allow(unused_variables))]
+    fn state(core: usize, state: u32) {
+        #[cfg(feature = "emu")]
+        emu::state(core, state);
+    }
+
+    #[cfg(not(feature = "emu"))]
+    mod mailbox {
+        pub const RENDER: u32 = 1;
+        pub const WAIT: u32 = 2;
+        pub const SEND: u32 = 3;
     }
 
     impl<'a> BandSink<'a, Rgb565, W> for Share {
         type Error = Infallible;
 
         fn submit(&mut self, band: Lent<'a, Rgb565, W>) -> Result<Option<Lent<'a, Rgb565, W>>, Infallible> {
-            if band.index() % 2 == self.core {
+            if mine(self.core, self.cores, band.index()) {
                 let turn = self.frame.wrapping_mul(BANDS).wrapping_add(band.index());
+                state(self.core, mailbox::WAIT);
                 while TURN.load(Ordering::Acquire) != turn {
                     core::hint::spin_loop();
                 }
+                state(self.core, mailbox::SEND);
                 critical_section::with(|cs| {
                     if let Some(panel) = PANEL.borrow_ref_mut(cs).as_mut() {
                         panel.send(band.area(), band.pixels());
                     }
+                    #[cfg(feature = "emu")]
+                    emu::band(cs, self.frame, band.index(), band.area(), band.pixels());
                 });
                 TURN.store(turn.wrapping_add(1), Ordering::Release);
+                state(self.core, mailbox::RENDER);
             }
             Ok(Some(band))
         }
     }
 
     /// One core's endless loop: its bins, its bands, its share of each frame.
-    fn render(
-        core: usize,
-        bins: &mut heapless::Vec<ScreenTriangle<S>, BINS>,
-        bands: &mut [Band<Rgb565, W, BAND>; 2],
-        depth: &mut DepthBand<Depth16, W, BAND>,
-    ) -> ! {
-        let pipeline = Scene3d::pipeline::<f32, S>(W as u32, H).unwrap();
-        let renderer = Renderer::new(H, BACKGROUND);
-        let mut sink = Share { core, frame: 0 };
+    fn render(core: usize, cores: usize, bins: &mut Bins, bands: &mut Bands, depth: &mut Depth) -> ! {
+        let pipeline = scene::pipeline();
+        let mut sink = Share { core, cores, frame: 0 };
+        state(core, mailbox::RENDER);
         loop {
-            bins.clear();
-            Scene3d.draw::<f32, Rgb565, S, BINS>(&pipeline, sink.frame as f32 * 0.05, bins).unwrap();
-            renderer
-                .render_linked(from_fn(|view| {
-                    if (view.y0() as usize / BAND) % 2 != core {
-                        return Ok(());
-                    }
-                    let rows = view.height();
-                    depth.clear(rows);
-                    let mut z = depth.rows_mut(rows);
-                    for tri in bins.iter() {
-                        draw_triangle(tri, view, &mut z, DepthState::LESS_WRITE, PerspectiveCorrect);
-                    }
-                    Ok(()) }), bands, &mut sink)
-                .unwrap();
+            let frame = sink.frame;
+            scene::frame(&pipeline, frame, |i| mine(core, cores, i), bins, bands, depth, &mut sink).unwrap();
             sink.frame += 1;
         }
     }
@@ -186,12 +208,12 @@ mod firmware {
     #[rp2040_hal::entry]
     fn main() -> ! {
         // cortex-m-rt's `&'static mut` statics (.bss): one set per core.
-        static mut BINS0: heapless::Vec<ScreenTriangle<S>, BINS> = heapless::Vec::new();
-        static mut BINS1: heapless::Vec<ScreenTriangle<S>, BINS> = heapless::Vec::new();
-        static mut BANDS0: [Band<Rgb565, W, BAND>; 2] = [const { Band::new(BACKGROUND) }; 2];
-        static mut BANDS1: [Band<Rgb565, W, BAND>; 2] = [const { Band::new(BACKGROUND) }; 2];
-        static mut DEPTH0: DepthBand<Depth16, W, BAND> = DepthBand::zeroed();
-        static mut DEPTH1: DepthBand<Depth16, W, BAND> = DepthBand::zeroed();
+        static mut BINS0: Bins = heapless::Vec::new();
+        static mut BINS1: Bins = heapless::Vec::new();
+        static mut BANDS0: Bands = [const { microraster::Band::new(BACKGROUND) }; 2];
+        static mut BANDS1: Bands = [const { microraster::Band::new(BACKGROUND) }; 2];
+        static mut DEPTH0: Depth = microraster::depth::DepthBand::zeroed();
+        static mut DEPTH1: Depth = microraster::depth::DepthBand::zeroed();
 
         let mut pac = pac::Peripherals::take().unwrap();
         let mut watchdog = Watchdog::new(pac.WATCHDOG);
@@ -216,6 +238,8 @@ mod firmware {
                     62_500_000u32.Hz(),
                     embedded_hal::spi::MODE_3,
                 );
+        #[cfg(feature = "emu")]
+        emu::loopback();
         let mut panel =
             Panel { spi, dc: pins.gpio16.into_push_pull_output(), cs: pins.gpio17.into_push_pull_output() };
         let mut rst = pins.gpio20.into_push_pull_output();
@@ -235,25 +259,57 @@ mod firmware {
         panel.command(0x29, &[]);
         critical_section::with(|cs| PANEL.borrow_ref_mut(cs).replace(panel));
 
-        let (bins1, bands1, depth1) = (BINS1, BANDS1, DEPTH1);
-        let mut mc = Multicore::new(&mut pac.PSM, &mut pac.PPB, &mut sio.fifo);
-        let core1 = &mut mc.cores()[1];
-        core1.spawn(CORE1_STACK.take().unwrap(), move || render(1, bins1, bands1, depth1)).unwrap();
-        render(0, BINS0, BANDS0, DEPTH0)
+        #[cfg(feature = "emu")]
+        let cores = emu::cores();
+        #[cfg(not(feature = "emu"))]
+        let cores = 2;
+        if cores == 2 {
+            let (bins1, bands1, depth1) = (BINS1, BANDS1, DEPTH1);
+            let mut mc = Multicore::new(&mut pac.PSM, &mut pac.PPB, &mut sio.fifo);
+            let core1 = &mut mc.cores()[1];
+            core1.spawn(CORE1_STACK.take().unwrap(), move || render(1, 2, bins1, bands1, depth1)).unwrap();
+        }
+        render(0, cores, BINS0, BANDS0, DEPTH0)
     }
 
     #[panic_handler]
     fn panic(_: &core::panic::PanicInfo) -> ! {
+        #[cfg(feature = "emu")]
+        emu::panicked();
         loop {
             cortex_m::asm::bkpt();
         }
     }
 }
 
+/// On the host: a note, or with `crc N` the reference the emulator run
+/// must match, frames 0 to N - 1 of src/scene.rs rendered into crc.rs's
+/// `CrcTarget` (one record per band, one per frame), each line prefixed
+/// with its frame number.
 #[cfg(not(target_os = "none"))]
 fn main() {
-    println!(
-        "microraster-rp2040: firmware for an RP2040 (both cores) with an ST7789 SPI display; build it with \
-         `bash scripts/firmware.sh build-rp2040` and flash it with probe-rs (see src/main.rs)"
-    );
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    let frames = match args.as_slice() {
+        [] => {
+            println!(
+                "microraster-rp2040: firmware for an RP2040 (both cores) with an ST7789 SPI display; build it with \
+                 `bash scripts/firmware.sh build-rp2040` and flash it with probe-rs (see src/main.rs); \
+                 `-- crc N` prints the frames the emulator run must match"
+            );
+            return;
+        }
+        [crc, n] if crc == "crc" => n.parse::<usize>().unwrap_or_else(|e| panic!("crc N: {e}")),
+        _ => panic!("usage: microraster-rp2040 [crc N]"),
+    };
+    let pipeline = scene::pipeline();
+    let mut bins = Box::new(scene::Bins::new());
+    let mut bands = Box::new([const { microraster::Band::new(scene::BACKGROUND) }; 2]);
+    let mut depth = Box::new(scene::Depth::new());
+    for n in 0..frames {
+        let mut print = |r: &crc::Record| println!("{n} {r}");
+        let mut target = crc::CrcTarget::new("rp2040/320x240", scene::W as u32, scene::H, &mut print);
+        let mut sink = microraster::render::Blocking(&mut target);
+        scene::frame(&pipeline, n, |_| true, &mut bins, &mut bands, &mut depth, &mut sink).unwrap();
+        target.finish();
+    }
 }
