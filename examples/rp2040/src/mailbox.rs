@@ -19,19 +19,21 @@ pub const MAGIC: u32 = 0x4D52_4346;
 pub const CORES: usize = 1;
 /// Word 2: frames finished (their last band sent).
 pub const FRAMES: usize = 2;
-/// Words 3 and 4: what core 0 and core 1 are doing ([`RENDER`], [`WAIT`],
-/// [`SEND`]; 0 before they start).
+/// Words 3 and 4: what core 0 and core 1 are doing ([`VERTEX`], [`RENDER`],
+/// [`WAIT`], [`SEND`]; 0 before they start).
 pub const STATE: usize = 3;
 /// Word 5: [`PANICKED`] once the firmware has panicked.
 pub const PANIC: usize = 5;
 /// The value of word [`PANIC`] after a panic.
 pub const PANICKED: u32 = 0xDEAD_DEAD;
-/// A core's state: rendering (vertex stage, rasterising its bands).
+/// A core's state: rasterising its bands (and clearing the others).
 pub const RENDER: u32 = 1;
 /// A core's state: its band is finished, waiting for its turn at the panel.
 pub const WAIT: u32 = 2;
 /// A core's state: sending its band (SPI) and folding it into the CRCs.
 pub const SEND: u32 = 3;
+/// A core's state: the vertex stage (each core runs it for the whole frame).
+pub const VERTEX: u32 = 4;
 /// Word where slot 0 starts.
 pub const SLOT0: usize = 16;
 /// Words of a slot: four per band, three for the frame.

@@ -43,13 +43,13 @@ mod scene;
 #[cfg_attr(target_os = "none", allow(dead_code))]
 #[path = "../../firmware/workload/crc.rs"]
 mod crc;
-/// Where records go (crc.rs's `CrcTarget`).
-#[cfg(not(target_os = "none"))]
+/// Where records go (crc.rs's `CrcTarget`, used on the host).
+#[cfg_attr(target_os = "none", allow(dead_code))]
 type Out<'a> = &'a mut dyn FnMut(&crc::Record);
 
 #[cfg(all(target_os = "none", feature = "emu"))]
 mod emu;
-#[cfg(feature = "emu")]
+#[cfg(all(target_os = "none", feature = "emu"))]
 mod mailbox;
 
 #[cfg(target_os = "none")]
@@ -162,6 +162,7 @@ mod firmware {
         pub const RENDER: u32 = 1;
         pub const WAIT: u32 = 2;
         pub const SEND: u32 = 3;
+        pub const VERTEX: u32 = 4;
     }
 
     impl<'a> BandSink<'a, Rgb565, W> for Share {
@@ -193,10 +194,11 @@ mod firmware {
     fn render(core: usize, cores: usize, bins: &mut Bins, bands: &mut Bands, depth: &mut Depth) -> ! {
         let pipeline = scene::pipeline();
         let mut sink = Share { core, cores, frame: 0 };
-        state(core, mailbox::RENDER);
         loop {
-            let frame = sink.frame;
-            scene::frame(&pipeline, frame, |i| mine(core, cores, i), bins, bands, depth, &mut sink).unwrap();
+            state(core, mailbox::VERTEX);
+            scene::vertex(&pipeline, sink.frame, bins).unwrap();
+            state(core, mailbox::RENDER);
+            scene::raster(|i| mine(core, cores, i), bins, bands, depth, &mut sink).unwrap();
             sink.frame += 1;
         }
     }
@@ -309,7 +311,8 @@ fn main() {
         let mut print = |r: &crc::Record| println!("{n} {r}");
         let mut target = crc::CrcTarget::new("rp2040/320x240", scene::W as u32, scene::H, &mut print);
         let mut sink = microraster::render::Blocking(&mut target);
-        scene::frame(&pipeline, n, |_| true, &mut bins, &mut bands, &mut depth, &mut sink).unwrap();
+        scene::vertex(&pipeline, n, &mut bins).unwrap();
+        scene::raster(|_| true, &bins, &mut bands, &mut depth, &mut sink).unwrap();
         target.finish();
     }
 }

@@ -9,7 +9,7 @@ use microraster::depth::{Depth16, DepthBand, DepthState};
 use microraster::pipeline::Pipeline;
 use microraster::raster3d::{PerspectiveCorrect, ScreenTriangle, draw_triangle};
 use microraster::render::{BandSink, from_fn};
-use microraster::{Band, RenderError, Renderer};
+use microraster::{Band, Error, RenderError, Renderer};
 use microraster_scenes::scenes3d::{BINS, Scene3d};
 
 /// Frame width (landscape).
@@ -19,6 +19,7 @@ pub const H: u32 = 240;
 /// Rows of a band.
 pub const BAND: usize = 16;
 /// Bands of a frame.
+#[cfg_attr(not(target_os = "none"), allow(dead_code))] // the firmware's
 pub const BANDS: usize = H as usize / BAND;
 /// Subpixel bits.
 pub const S: u32 = 4;
@@ -44,20 +45,22 @@ pub fn renderer() -> Renderer<Rgb565> {
     Renderer::new(H, BACKGROUND)
 }
 
-/// Frame `frame`: the vertex stage into `bins`, then the linked band loop
-/// over `bands`, drawing the bands for which `mine(index)` holds (the
-/// others are only cleared) and handing every band to `sink`.
-pub fn frame<'a, K: BandSink<'a, Rgb565, W>>(
-    pipeline: &Pipeline<f32, S>,
-    frame: usize,
+/// Frame `frame`'s vertex stage: its visible triangles into `bins`.
+pub fn vertex(pipeline: &Pipeline<f32, S>, frame: usize, bins: &mut Bins) -> Result<(), Error> {
+    bins.clear();
+    Scene3d.draw::<f32, Rgb565, S, BINS>(pipeline, frame as f32 * 0.05, bins).map(|_| ())
+}
+
+/// The frame's bands: the linked band loop over `bands`, drawing `bins`
+/// into the bands for which `mine(index)` holds (the others are only
+/// cleared) and handing every band to `sink`.
+pub fn raster<'a, K: BandSink<'a, Rgb565, W>>(
     mine: impl Fn(usize) -> bool,
-    bins: &mut Bins,
+    bins: &Bins,
     bands: &'a mut Bands,
     depth: &mut Depth,
     sink: &mut K,
 ) -> Result<(), RenderError<K::Error>> {
-    bins.clear();
-    Scene3d.draw::<f32, Rgb565, S, BINS>(pipeline, frame as f32 * 0.05, bins)?;
     let pass = from_fn(|view| {
         if !mine(view.y0() as usize / BAND) {
             return Ok(());
