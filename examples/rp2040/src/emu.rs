@@ -45,7 +45,7 @@ pub fn cores() -> usize {
     if read(CONFIG) == MAGIC && read(CORES) == 1 { 1 } else { 2 }
 }
 
-/// Core `core` now does `state` ([`RENDER`], [`WAIT`], [`SEND`]).
+/// Core `core` now does `state` ([`VERTEX`], [`RENDER`], [`WAIT`], [`SEND`]).
 pub fn state(core: usize, state: u32) {
     compiler_fence(Ordering::SeqCst);
     write(STATE + core, state);
