@@ -54,6 +54,7 @@ mod line_aa;
 mod lines;
 mod link;
 mod link_async;
+mod mesh_range;
 mod meshlets;
 mod mock_display;
 mod passes;
