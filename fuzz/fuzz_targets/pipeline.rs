@@ -259,7 +259,8 @@ fn run<T: Scalar, const S: u32>(inp: &mut Input) {
         // Fx: a coordinate 16.16 cannot hold (issue 13); f32: a clip
         // coordinate beyond the clipper's ±2^64 (issue 60).
         Err(Error::CoordinateOutOfRange) => assert!(
-            !is_f32::<T>() || proj.is_some_and(|proj| clip_beyond_range(&p, proj, &model, &positions, &indices)),
+            !is_f32::<T>()
+                || proj.is_some_and(|proj| clip_beyond_range(&p, proj, &model, &positions, &indices)),
             "f32 draw_mesh: CoordinateOutOfRange within the clipper's range"
         ),
         Err(e @ (Error::InvalidMesh | Error::NonFiniteCoordinate)) => {
