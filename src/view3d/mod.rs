@@ -348,10 +348,8 @@ impl<C: Interpolate, const W: usize, const H: usize> View3d<C, W, H> {
     {
         let rows = self.height.unwrap_or(display.bounding_box().size.height);
         let (pipe, renderer) = self.pipeline(camera, rows)?;
-        // Whole-mesh checks once per frame, before any band is sent: the
-        // mesh, its colours, then what the vertex stage would find in every
-        // band (a singular model, coordinates out of range), so no band
-        // fails after others were sent.
+        // Whole-mesh checks once per frame, before any band is sent, with
+        // what the vertex stage would find in every band (singular model).
         for o in objects {
             let mesh = match o.geometry() {
                 Geometry::Mesh(m) => {
@@ -360,10 +358,7 @@ impl<C: Interpolate, const W: usize, const H: usize> View3d<C, W, H> {
                 }
                 // Validated already, and its winding found then.
                 Geometry::Valid(m) if m.winding_agrees() => *m.mesh(),
-                Geometry::Valid(m) => {
-                    m.mesh().const_data().check_winding_unvalidated()?;
-                    *m.mesh()
-                }
+                Geometry::Valid(m) => m.mesh().const_data().check_winding_unvalidated().map(|_| *m.mesh())?,
                 Geometry::Meshlets(m) => m.get().mesh,
             };
             o.check_colors()?;
