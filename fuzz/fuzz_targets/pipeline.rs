@@ -6,7 +6,9 @@
 //! * no panic and no arithmetic overflow (overflow checks are on);
 //! * constructors fail with the documented typed errors (invalid viewport
 //!   size, non-finite camera parameters), and successful ones give finite
-//!   matrices; `draw_mesh` fails only as documented;
+//!   matrices; `draw_mesh` fails only as documented (f32
+//!   `CoordinateOutOfRange` only for a clip coordinate near or beyond
+//!   ±2^64, by an f64 computation);
 //! * every binned triangle has non-zero snapped area, the winding its cull
 //!   mode keeps, and touches the requested rows;
 //! * nothing from behind the eye: a mesh whose every vertex has clip
@@ -23,7 +25,7 @@ mod frame;
 #[path = "pipeline/inputs.rs"]
 mod inputs;
 
-use checks::{all_behind_eye, check_ctor};
+use checks::{all_behind_eye, check_ctor, clip_beyond_range};
 use embedded_graphics_core::pixelcolor::Rgb565;
 use frame::render_any;
 use inputs::{matrix, small, vec3};
@@ -254,8 +256,13 @@ fn run<T: Scalar, const S: u32>(inp: &mut Input) {
         Err(e) if light_error.is_some() => {
             assert_eq!(light_error, Some(e), "draw_mesh error {e:?} with bad lighting")
         }
-        // Fx: a coordinate 16.16 cannot hold (issue 13); never f32.
-        Err(Error::CoordinateOutOfRange) => assert!(!is_f32::<T>(), "f32 draw_mesh: CoordinateOutOfRange"),
+        // Fx: a coordinate 16.16 cannot hold (issue 13); f32: a clip
+        // coordinate beyond the clipper's ±2^64 (issue 60).
+        Err(Error::CoordinateOutOfRange) => assert!(
+            !is_f32::<T>()
+                || proj.is_some_and(|proj| clip_beyond_range(&p, proj, &model, &positions, &indices)),
+            "f32 draw_mesh: CoordinateOutOfRange within the clipper's range"
+        ),
         Err(e @ (Error::InvalidMesh | Error::NonFiniteCoordinate)) => {
             panic!("draw_mesh error {e:?} without validate's")
         }

@@ -116,8 +116,11 @@ impl<T: Scalar, const A: usize> ClipVertex<T, A> {
     }
 }
 
-/// Largest accepted input magnitude, 2^64 (see the module docs).
-const INPUT_LIMIT: f32 = 18446744073709551616.0;
+/// Largest accepted input magnitude, 2^64 (see the module docs). The
+/// vertex stage returns [`Error::CoordinateOutOfRange`](crate::Error) for a
+/// visible mesh with a clip coordinate beyond it, rather than let a
+/// triangle be discarded here.
+pub(crate) const INPUT_LIMIT: f32 = 18446744073709551616.0;
 
 /// Most vertices a clipped triangle can have: each of the 7 planes adds at
 /// most one to a convex polygon, so `3 + 7 = 10`.

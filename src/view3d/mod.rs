@@ -321,16 +321,21 @@ impl<C: Interpolate, const W: usize, const H: usize> View3d<C, W, H> {
     /// Errors (nothing is sent unless stated): [`Error::InvalidFrameSize`]
     /// for a display (or [`View3d::set_height`]) of 0 rows or more than
     /// [`MAX_FRAME_DIM`]; the light's, then the camera's
-    /// ([`View3d::pipeline`]); a mesh's
+    /// ([`View3d::pipeline`]); then object by object, a mesh's
     /// ([`Mesh::check_winding`](crate::mesh::Mesh::check_winding), including
-    /// [`Error::WindingMismatch`]); [`Error::InvalidParameter`] for an
-    /// object's per-vertex or per-face colours that do not match its mesh
-    /// ([`Object::with_vertex_colors`], [`Object::with_face_colors`]);
-    /// [`Error::FrameOutsideTarget`] if `W`
-    /// columns or the frame's rows do not fit the display; errors of the
-    /// vertex stage in a band ([`Pipeline::draw_valid_mesh`], for example
-    /// [`Error::InvalidParameter`] for a singular model, [`Error::InvalidMeshlet`]),
-    /// which stop the frame after the bands already sent; and
+    /// [`Error::WindingMismatch`]), [`Error::InvalidParameter`] for
+    /// per-vertex or per-face colours that do not match its mesh
+    /// ([`Object::with_vertex_colors`], [`Object::with_face_colors`]), and
+    /// the vertex stage's errors that do not depend on the band
+    /// ([`Pipeline::draw_valid_mesh`]: [`Error::InvalidParameter`] for a
+    /// singular model, [`Error::CoordinateOutOfRange`] for a mesh in view
+    /// with a clip coordinate beyond ±2^64); [`Error::FrameOutsideTarget`]
+    /// if `W` columns or the frame's rows do not fit the display; all
+    /// these before the first band. Should the vertex stage still fail in
+    /// a band ([`Error::InvalidMeshlet`], say), the frame goes on as
+    /// [`Renderer::render`] documents: the bands before it are sent as
+    /// drawn, that band as far as it was drawn, the remaining bands
+    /// cleared to the background, and the result is that error. Last,
     /// [`RenderError::Target`] from the display.
     pub fn draw<D>(
         &mut self,
@@ -343,16 +348,21 @@ impl<C: Interpolate, const W: usize, const H: usize> View3d<C, W, H> {
     {
         let rows = self.height.unwrap_or(display.bounding_box().size.height);
         let (pipe, renderer) = self.pipeline(camera, rows)?;
-        // Whole-mesh checks once per frame, before any band is sent.
+        // Whole-mesh checks once per frame, before any band is sent, with
+        // what the vertex stage would find in every band (singular model).
         for o in objects {
-            match o.geometry() {
-                Geometry::Mesh(m) => m.check_winding()?,
+            let mesh = match o.geometry() {
+                Geometry::Mesh(m) => {
+                    m.check_winding()?;
+                    m
+                }
                 // Validated already, and its winding found then.
-                Geometry::Valid(m) if m.winding_agrees() => {}
-                Geometry::Valid(m) => m.mesh().const_data().check_winding_unvalidated()?,
-                Geometry::Meshlets(_) => {}
-            }
+                Geometry::Valid(m) if m.winding_agrees() => *m.mesh(),
+                Geometry::Valid(m) => m.mesh().const_data().check_winding_unvalidated().map(|_| *m.mesh())?,
+                Geometry::Meshlets(m) => m.get().mesh,
+            };
             o.check_colors()?;
+            pipe.check_mesh(&mesh, &o.model())?;
         }
         let (cache, chunks) = (&mut self.cache, &mut self.chunks);
         chunks.clear();

@@ -110,7 +110,7 @@ impl<'a, C: Copy> Object<'a, C> {
 
     /// Then scales it by `factor` about the world's origin. A zero factor
     /// makes the model singular: the frame fails with
-    /// [`Error::InvalidParameter`].
+    /// [`Error::InvalidParameter`] before any band is sent.
     pub fn scale(self, factor: f32) -> Self {
         self.scale_xyz([factor; 3])
     }

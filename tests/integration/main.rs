@@ -30,6 +30,8 @@
 //! - `view3d`: the one-call 3D front draws what the explicit API draws, for every band
 //!   height; its defaults (culling, lighting, winding check) and errors.
 //! - `view3d_colors`: the front's per-vertex and per-face colours.
+//! - `mesh_range`: issue 60's whole-mesh checks: clip coordinates beyond ±2^64, a singular
+//!   model before the first band, an inside-out `ValidMesh` on the explicit path.
 //! - `framebuffer`: a recording host `DrawTarget` used by the suites above.
 
 mod affine3d;
@@ -54,6 +56,7 @@ mod line_aa;
 mod lines;
 mod link;
 mod link_async;
+mod mesh_range;
 mod meshlets;
 mod mock_display;
 mod passes;

@@ -280,11 +280,11 @@ fn wrong_inputs_are_errors() {
             (Err(RenderError::Input(Error::WindingMismatch)), 0)
         );
     }
-    // A singular model fails in the first band that draws the mesh.
+    // A singular model fails before the first band (issue 60).
     let flat = [Object::new(&CUBE, Rgb565::RED).scale(0.0)];
     assert_eq!(
-        run(&mut view, &camera(), &flat, W as u32, H).0,
-        Err(RenderError::Input(Error::InvalidParameter))
+        run(&mut view, &camera(), &flat, W as u32, H),
+        (Err(RenderError::Input(Error::InvalidParameter)), 0)
     );
     // A bad light fails the frame before any band, with no objects too.
     for direction in [Vec3::new(0.0, 0.0, f32::INFINITY), Vec3::new(0.0, 0.0, 2.0)] {

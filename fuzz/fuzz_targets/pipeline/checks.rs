@@ -56,3 +56,28 @@ pub(super) fn all_behind_eye<T: Scalar, const S: u32>(
         })
     })
 }
+
+/// True if a vertex some triangle uses may have an `f32` clip coordinate
+/// beyond the clipper's input range, ±2^64 (the vertex stage's
+/// `CoordinateOutOfRange`): in f64 from the pipeline's matrices, `|v|` plus
+/// the path's rounding (`1e-5` of the sum of magnitudes, as above) reaches
+/// 2^64, or a value is not finite.
+pub(super) fn clip_beyond_range<T: Scalar, const S: u32>(
+    p: &Pipeline<T, S>,
+    proj: Mat4<T>,
+    model: &Mat4<T>,
+    pos: &[[f32; 3]],
+    idx: &[[u16; 3]],
+) -> bool {
+    let (mvp, mag) = clip_matrix_f64(proj, p.view(), *model);
+    let limit = 2f64.powi(64);
+    idx.iter().flatten().any(|&i| {
+        let q = pos[usize::from(i)].map(f64::from);
+        let h = [q[0], q[1], q[2], 1.0];
+        (0..4).any(|r| {
+            let v: f64 = (0..4).map(|k| mvp[k][r] * h[k]).sum();
+            let size: f64 = (0..4).map(|k| mag[k][r] * h[k].abs()).sum();
+            !(v.abs() + 1e-5 * size < limit)
+        })
+    })
+}

@@ -198,7 +198,11 @@ macro_rules! storage_impls {
             ///
             /// Normals are not checked for unit length. Data in 16.16 is
             /// read as the nearest `f32` (the module docs of
-            /// [`Mesh`](super::Mesh)).
+            /// [`Mesh`](super::Mesh)). How large a mesh the 3D pipeline can
+            /// draw also depends on the camera and the model: a vertex whose
+            /// clip coordinate lies beyond ±2^64 (the clipper's input range)
+            /// is [`Error::CoordinateOutOfRange`] when the mesh is drawn
+            /// ([`Pipeline::draw_valid_mesh`](crate::pipeline::Pipeline::draw_valid_mesh)).
             ///
             /// # Errors
             ///

@@ -11,6 +11,7 @@ use super::{
 };
 use super::{bins, cache, channels, inside};
 use crate::clip3d::{Class, ClipPlanes, ClipVertex, classify, clip_triangle};
+use crate::edge::Cull;
 use crate::math::{Mat4, Scalar, Vec3};
 use crate::mesh::{Mesh, ValidMesh};
 use crate::raster3d::{ScreenTriangle, ScreenVertex};
@@ -33,7 +34,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         // A bad mesh is an error, never a silent cull or an out-of-range index.
         // (The winding is not looked at here.)
         mesh.validate()?;
-        self.draw_valid_mesh(&ValidMesh::trusted(*mesh, false), model, color, bins)
+        self.binned(&ValidMesh::trusted(*mesh, false), model, color, bins)
     }
 
     /// [`Pipeline::draw_mesh`] for a mesh checked once beforehand
@@ -54,7 +55,11 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     /// (`VertexCache<T, S, 0>`) takes each corner on its own, with the
     /// least code and stack.
     ///
-    /// Errors: [`Error::CapacityExceeded`] if `bins` fills up, with the
+    /// Errors: first [`Error::WindingMismatch`] if [`Pipeline::cull`] is
+    /// not [`Cull::None`] and the mesh is wound against its normals
+    /// ([`ValidMesh::winding_agrees`] is false: culling would show its
+    /// inside, as the `view3d` front and [`MeshletMesh::validate`](crate::mesh::MeshletMesh::validate) say too;
+    /// nothing done); [`Error::CapacityExceeded`] if `bins` fills up, with the
     /// length it needed (the mesh's triangles are counted to the end, and
     /// `bins` is left as it was: on any error no triangle of the mesh is
     /// kept); [`Error::InvalidParameter`] if `model` is singular;
@@ -63,8 +68,55 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     /// `view · model` or `projection · view · model` saturates 16.16, or if
     /// the mesh is not culled whole and one of its model, eye or clip
     /// coordinates (or a partial sum of one) reaches ±32767: 16.16 cannot
-    /// hold it, and a saturated coordinate would change what is drawn.
+    /// hold it, and a saturated coordinate would change what is drawn; for
+    /// `f32`, [`Error::CoordinateOutOfRange`] if the mesh is not culled
+    /// whole and a vertex one of its triangles uses has a clip coordinate
+    /// beyond ±2^64 (or one that overflows `f32`), which the clipper
+    /// ([`clip3d`](crate::clip3d)) would discard with its triangle.
+    ///
+    /// ```
+    /// use embedded_graphics::pixelcolor::{Rgb565, RgbColor};
+    /// use microraster::math::{Mat4, Vec3, transform};
+    /// use microraster::mesh::{Mesh, ValidMesh};
+    /// use microraster::pipeline::Pipeline;
+    /// use microraster::{Cull, Error};
+    /// let positions = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]];
+    /// let up = [[0.0, 0.0, 1.0]; 3];
+    /// // Wound clockwise seen from the side its normals point to: inside out.
+    /// let inside_out = ValidMesh::new(Mesh::new(&positions, &up, &[[0, 2, 1]], ([0.5, 0.5, 0.0], 0.71)))?;
+    /// let eye = transform::look_at(Vec3::new(0.0, 0.0, 3.0), Vec3::new(0.0, 0.0, 0.0), Vec3::new(0.0, 1.0, 0.0))?;
+    /// let mut pipeline = Pipeline::<f32, 4>::perspective(eye, 1.0, 0.5, 10.0, 64, 64)?;
+    /// let mut bins = microraster::heapless::Vec::<_, 8>::new();
+    /// let r = pipeline.draw_valid_mesh(&inside_out, &Mat4::IDENTITY, Rgb565::RED, &mut bins);
+    /// assert_eq!(r.err(), Some(Error::WindingMismatch));
+    /// pipeline.cull = Cull::None; // both sides drawn: the winding does not matter
+    /// assert_eq!(pipeline.draw_valid_mesh(&inside_out, &Mat4::IDENTITY, Rgb565::RED, &mut bins)?.emitted, 1);
+    /// # Ok::<(), Error>(())
+    /// ```
     pub fn draw_valid_mesh<C: Interpolate, const N: usize>(
+        &self,
+        mesh: &ValidMesh<'_>,
+        model: &Mat4<T>,
+        color: C,
+        bins: &mut heapless::Vec<ScreenTriangle<S>, N>,
+    ) -> Result<MeshStats, Error> {
+        self.check_winding(mesh)?;
+        self.binned(mesh, model, color, bins)
+    }
+
+    /// [`Error::WindingMismatch`] if back faces (or front faces) are culled
+    /// and `mesh` is wound against its normals: culling would drop the
+    /// faces that should show ([`Pipeline::draw_valid_mesh`]).
+    pub(super) fn check_winding(&self, mesh: &ValidMesh<'_>) -> Result<(), Error> {
+        if self.cull != Cull::None && !mesh.winding_agrees() {
+            return Err(Error::WindingMismatch);
+        }
+        Ok(())
+    }
+
+    /// [`Pipeline::draw_valid_mesh`] without the winding test
+    /// ([`Pipeline::draw_mesh`] does not look at the winding).
+    fn binned<C: Interpolate, const N: usize>(
         &self,
         mesh: &ValidMesh<'_>,
         model: &Mat4<T>,
@@ -167,8 +219,8 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     /// with neither the cache nor the cached stage's code: the smallest
     /// build, and the least stack.
     ///
-    /// Errors: those of [`Pipeline::draw_valid_mesh`], and first
-    /// [`Error::CapacityExceeded`] with `needed` 3 if `0 < V < 3` and the
+    /// Errors: those of [`Pipeline::draw_valid_mesh`] ([`Error::WindingMismatch`]
+    /// first), then [`Error::CapacityExceeded`] with `needed` 3 if `0 < V < 3` and the
     /// mesh has more than `V` vertices (nothing done).
     pub fn draw_valid_mesh_cached<C: Interpolate, const V: usize, const N: usize>(
         &self,
@@ -178,6 +230,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         cache: &mut VertexCache<T, S, V>,
         bins: &mut heapless::Vec<ScreenTriangle<S>, N>,
     ) -> Result<MeshStats, Error> {
+        self.check_winding(mesh)?;
         if V == 0 {
             // Per corner (a type's choice: the branch folds away).
             let mut bins = bins::BinWriter::new(bins);

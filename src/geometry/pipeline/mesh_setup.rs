@@ -1,12 +1,14 @@
 //! The per-mesh part of the vertex stage, before any vertex work: the
 //! matrices, the whole-mesh culls (the view volume's planes against the
-//! bounding sphere, then the band) and, for `Fx`, the range checks that
-//! let a mesh be drawn in 16.16 only if nothing can saturate.
+//! bounding sphere, then the band) and the range checks: for `Fx`, that
+//! nothing saturates 16.16; for `f32`, that no clip coordinate leaves the
+//! clipper's input range (±2^64), where it would discard the triangle.
 
 use super::model_light::ModelLight;
 use super::{MeshSetup, MeshStats, Pipeline, VertexCtx, material};
+use crate::clip3d::INPUT_LIMIT as CLIP_INPUT_LIMIT;
 use crate::clip3d::guard_band_for_range;
-use crate::math::{Mat4, Scalar, Vec4};
+use crate::math::{Mat3, Mat4, Scalar, Vec3, Vec4};
 use crate::mesh::Mesh;
 use crate::{Error, Interpolate};
 
@@ -21,34 +23,11 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         color: C,
         stats: &mut MeshStats,
     ) -> Result<Option<MeshSetup<T>>, Error> {
-        if let Some(l) = &self.lighting {
-            l.validate()?;
-        }
-        let fx = !crate::math::vec::is_float::<T>();
-        // Fx: a matrix product that saturates changes what is drawn.
-        if fx
-            && !(fx_product_fits(&self.view, model)
-                && fx_product_fits(&self.projection, &(self.view * *model)))
-        {
-            return Err(Error::CoordinateOutOfRange);
-        }
-        let model_view = self.view * *model;
-        let mvp = self.projection * model_view;
-        let band = self.band_bounds();
-        // A singular model is an error whether or not the mesh is in view.
-        // Checked after the band test, the error depended on the band
-        // height: the band tests of a sphere that reaches behind the eye
-        // are not nested (fuzz target `view3d`).
-        let normal_matrix = model_view.normal_matrix().ok_or(Error::InvalidParameter)?;
-        if !self.sphere_visible(&mvp, mesh.bounding_sphere) {
+        let Some((model_view, mvp, normal_matrix)) = self.mesh_matrices(mesh, model)? else {
             stats.mesh_culled = true;
             return Ok(None);
-        }
-        // Fx: a visible mesh whose coordinates 16.16 cannot hold is an error
-        // (checked before the band test, so every band agrees).
-        if fx && !fx_coordinates_fit(mesh, &model_view, &mvp) {
-            return Err(Error::CoordinateOutOfRange);
-        }
+        };
+        let band = self.band_bounds();
         if !band.sphere_touches(&mvp, mesh.bounding_sphere) {
             return Ok(None);
         }
@@ -65,6 +44,61 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         let ctx =
             VertexCtx { mv: model_view, mvp, nm: normal_matrix, base, lighting: self.lighting, model_light };
         Ok(Some(MeshSetup { ctx, planes, band, max }))
+    }
+
+    /// The checks of [`Pipeline::mesh_setup`] that do not depend on
+    /// [`Pipeline::rows`], in its order, and the matrices they yield
+    /// (model-view, model-view-projection, normal matrix); `None` when the
+    /// mesh lies wholly outside the view volume. The same in every band, so
+    /// the `view3d` front runs it once before the first band
+    /// ([`Pipeline::check_mesh`]).
+    #[allow(clippy::type_complexity)]
+    fn mesh_matrices<P: Scalar>(
+        &self,
+        mesh: &Mesh<'_, P>,
+        model: &Mat4<T>,
+    ) -> Result<Option<(Mat4<T>, Mat4<T>, Mat3<T>)>, Error> {
+        if let Some(l) = &self.lighting {
+            l.validate()?;
+        }
+        let fx = !crate::math::vec::is_float::<T>();
+        // Fx: a matrix product that saturates changes what is drawn.
+        if fx
+            && !(fx_product_fits(&self.view, model)
+                && fx_product_fits(&self.projection, &(self.view * *model)))
+        {
+            return Err(Error::CoordinateOutOfRange);
+        }
+        let model_view = self.view * *model;
+        let mvp = self.projection * model_view;
+        // A singular model is an error whether or not the mesh is in view.
+        // Checked before the band test, the error cannot depend on the
+        // band height: the band tests of a sphere that reaches behind the
+        // eye are not nested (fuzz target `view3d`).
+        let normal_matrix = model_view.normal_matrix().ok_or(Error::InvalidParameter)?;
+        if !self.sphere_visible(&mvp, mesh.bounding_sphere) {
+            return Ok(None);
+        }
+        // A visible mesh whose coordinates cannot be held is an error, not
+        // a silent loss (checked before the band test, so every band
+        // agrees): for Fx where 16.16 saturates, for f32 where the clipper
+        // would discard a triangle (a clip coordinate beyond 2^64).
+        if fx && !fx_coordinates_fit(mesh, &model_view, &mvp) {
+            return Err(Error::CoordinateOutOfRange);
+        }
+        if !fx && !clip_coordinates_fit(mesh, &mvp) {
+            return Err(Error::CoordinateOutOfRange);
+        }
+        Ok(Some((model_view, mvp, normal_matrix)))
+    }
+
+    /// The errors [`Pipeline::draw_valid_mesh`] (and every `draw_*` mesh
+    /// call) would return for `mesh` placed by `model`, whatever
+    /// [`Pipeline::rows`] says, found without any vertex work beyond the
+    /// range check: the `view3d` front calls it for every object before
+    /// the first band, so such an error sends nothing.
+    pub(crate) fn check_mesh<P: Scalar>(&self, mesh: &Mesh<'_, P>, model: &Mat4<T>) -> Result<(), Error> {
+        self.mesh_matrices(mesh, model).map(|_| ())
     }
 
     /// False if the sphere lies entirely outside one plane of the view volume.
@@ -160,4 +194,41 @@ pub(super) fn fx_coordinates_fit<T: Scalar, P: Scalar>(
         } else {
             mesh.indices.iter().flatten().all(|&i| mesh.positions.get(usize::from(i)).is_none_or(fits_at))
         }
+}
+
+/// `f32`: true if every clip coordinate of the vertices the mesh's
+/// triangles use is finite and at most [`CLIP_INPUT_LIMIT`] (2^64) in
+/// magnitude, as the vertex stage computes it: beyond that the clipper
+/// discards the triangle ([`clip3d`](crate::clip3d)), and a visible
+/// triangle would vanish with `Ok`. A bound over the bounding sphere
+/// decides at once for nearly every mesh; otherwise every vertex a
+/// triangle uses is transformed and checked exactly as the clipper checks
+/// it (an unused far vertex is no error; a meshlet mesh has no `indices`,
+/// so all its vertices count).
+pub(super) fn clip_coordinates_fit<T: Scalar, P: Scalar>(mesh: &Mesh<'_, P>, mvp: &Mat4<T>) -> bool {
+    let m = mvp.to_f32();
+    let (c, radius) = mesh.bounding_sphere;
+    let r = radius * (1.0 + 2.0 * crate::mesh::SPHERE_TOLERANCE);
+    let e = c.map(|c| c.abs() + r);
+    // `Σ|m_ri|·e_i + |m_r3|` bounds `|row · (p, 1)|` over the sphere; half
+    // the limit leaves room for rounding (NaN and overflow fail it).
+    let bound = |row: usize| (0..3).map(|i| m[i][row].abs() * e[i]).sum::<f32>() + m[3][row].abs();
+    if (0..4).all(|row| bound(row) < 0.5 * CLIP_INPUT_LIMIT) {
+        return true;
+    }
+    let [a, b, cz, d] = &mvp.cols;
+    let lim = T::from_f32(CLIP_INPUT_LIMIT);
+    let fits_at = |p: &[P; 3]| {
+        let p = Vec3::<T>::from_data(*p);
+        // The rows of `VertexCtx::row`, the test of `clip3d::classify`.
+        (0..4).all(|r| {
+            let v = T::row_in_range([a[r], b[r], cz[r]], [p.x, p.y, p.z], d[r]);
+            v.is_finite() && v.abs() <= lim
+        })
+    };
+    if mesh.indices.is_empty() {
+        mesh.positions.iter().all(fits_at)
+    } else {
+        mesh.indices.iter().flatten().all(|&i| mesh.positions.get(usize::from(i)).is_none_or(fits_at))
+    }
 }

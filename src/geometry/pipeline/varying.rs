@@ -50,7 +50,9 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     ///
     /// Errors: [`Error::CapacityExceeded`] if `bins` fills up, with the
     /// length it needed (`bins` is left as it was, as on any error);
-    /// [`Error::InvalidParameter`] if `model` is singular.
+    /// [`Error::InvalidParameter`] if `model` is singular; the others of
+    /// [`Pipeline::draw_valid_mesh`], [`Error::WindingMismatch`] (culling
+    /// on, the mesh wound against its normals) first.
     pub fn draw_mesh_varying<C: Interpolate, const A: usize, const N: usize>(
         &self,
         mesh: &ValidMesh<'_>,
@@ -59,6 +61,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         varying: impl Fn(&VertexInput<T>) -> [i32; A],
         bins: &mut heapless::Vec<FragTriangle<S, A>, N>,
     ) -> Result<MeshStats, Error> {
+        self.check_winding(mesh)?;
         let mut bins = BinWriter::new(bins);
         let result = self.varying_into(mesh.mesh(), model, color, varying, &mut bins);
         bins.finish(result)
