@@ -17,6 +17,8 @@
 
 mod antialiased;
 mod curves;
+mod far;
+mod group;
 mod polygons;
 
 use crate::reference::Rng;

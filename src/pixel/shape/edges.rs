@@ -241,6 +241,21 @@ impl<const N: usize> EdgeList<N> {
         if flip { self.push(b, a) } else { self.push(a, b) }
     }
 
+    /// Reverses the edges from index `from` on if the winding number they
+    /// enclose integrates to less than zero (`∫w = −Σ dir·(x0 + x1)·(y1 − y0)/2`
+    /// over closed contours), so every group member adds coverage with the
+    /// same sign. `i128`: each term is below 2^59, their sum is not.
+    pub(crate) fn orient_from(&mut self, from: usize) {
+        let edges = &mut self.edges[from.min(self.len)..self.len];
+        let twice: i128 = edges
+            .iter()
+            .map(|e| -i128::from(e.dir) * (i128::from(e.x0) + i128::from(e.x1)) * i128::from(e.y1 - e.y0))
+            .sum();
+        if twice < 0 {
+            edges.iter_mut().for_each(|e| e.dir = -e.dir);
+        }
+    }
+
     /// Sorts the edges by their top, which the scan's active-edge list
     /// needs (`core`'s unstable sort: no allocation).
     pub(crate) fn sort_by_top(&mut self) {
@@ -299,5 +314,13 @@ impl<const N: usize> Active<N> {
 
     pub(crate) fn edges<'e>(&self, edges: &'e [Edge]) -> impl Iterator<Item = &'e Edge> + use<'_, 'e, N> {
         self.idx[..self.n].iter().map(move |&i| &edges[i as usize])
+    }
+
+    /// [`Self::edges`] with each edge's index in `edges`.
+    pub(crate) fn indexed<'e>(
+        &self,
+        edges: &'e [Edge],
+    ) -> impl Iterator<Item = (u32, &'e Edge)> + use<'_, 'e, N> {
+        self.idx[..self.n].iter().map(move |&i| (i, &edges[i as usize]))
     }
 }

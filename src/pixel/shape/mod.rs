@@ -14,8 +14,13 @@
 //!   shape and a triangle) sharing an edge never both cover, and never both
 //!   miss, a pixel on it;
 //! * **anti-aliased** ([`AntiAliased`]): each pixel gets the exact area of
-//!   the snapped contours inside it as its alpha (`src/pixel/shape/area.rs`). Two shapes
-//!   sharing an edge sum to full coverage along it (no dark seam). Where a
+//!   the snapped contours inside it as its alpha, rounded, to within
+//!   `1/256` of a level anywhere in the coordinate range (`src/pixel/shape/area.rs`).
+//!   Two shapes sharing an edge have coverages that sum to one along it, but
+//!   drawn one after the other the second blends over the first's partial
+//!   pixels: two white halves of a pixel on black leave it at 192, not 255 (a
+//!   dark seam). Draw them as one [`Group`] to sum the coverages before the
+//!   one blend (no seam). Where a
 //!   shape overlaps itself inside one pixel (self-intersecting polygons, the
 //!   joins of thick polylines), that pixel's alpha is the integral of the
 //!   clamped winding number, which can exceed the area by the overlap.
@@ -45,7 +50,7 @@
 //!
 //! # Memory
 //! Drawing keeps the edges on the stack: [`MAX_EDGES`] edges of 20 bytes,
-//! plus one row's crossings (8 bytes each, aliased) or edge pieces (12 bytes
+//! plus one row's crossings (8 bytes each, aliased) or edge pieces (32 bytes
 //! each, anti-aliased). More edges than that is [`Error::BufferTooSmall`](crate::Error::BufferTooSmall)
 //! when the [`Styled`] is built.
 
@@ -53,6 +58,7 @@ mod area;
 mod canvas;
 pub mod edges;
 pub mod flatten;
+mod group;
 mod paint;
 mod scan;
 mod shapes;
@@ -62,6 +68,7 @@ mod style;
 pub use canvas::{Canvas, TargetCanvas};
 pub use edges::EdgeList;
 pub use flatten::{MAX_SEGMENTS, TOLERANCE};
+pub use group::Group;
 pub use paint::{LinearGradient, Paint, RadialGradient};
 pub use shapes::{Arc, Circle, Ellipse, Polygon, Polyline, Rect, RoundedRect, Sector, Shape};
 pub use style::{Cap, Join, ShapeStyle, Styled};

@@ -37,8 +37,8 @@ pub struct Styled<S, C, A = Aliased> {
 }
 
 /// Edge capacity of the scratch lists of a shape drawn with few edges. Every
-/// draw zeroes its edge list and the coverage's per-edge arrays (36 bytes
-/// per edge slot when anti-aliased); at [`MAX_EDGES`] that is 9 KB per shape
+/// draw zeroes its edge list and the coverage's per-edge arrays (56 bytes
+/// per edge slot when anti-aliased); at [`MAX_EDGES`] that is 14 KB per shape
 /// and band, most of a small shape's cost. Rectangles, lines, ticks and
 /// small polygons fit 32.
 const SMALL_EDGES: usize = 32;
