@@ -54,6 +54,7 @@ mod line_aa;
 mod lines;
 mod link;
 mod link_async;
+mod link_failures;
 mod meshlets;
 mod mock_display;
 mod passes;

@@ -211,6 +211,14 @@ impl<C: Interpolate> Renderer<C> {
     /// refuses, or [`Error::InvalidParameter`] if the sink breaks its
     /// contract (keeps a band but `reclaim` returns `None`).
     ///
+    /// After [`RenderError::Target`] the frame stopped at the failed
+    /// transfer: the bands before it were sent, the failed band may be
+    /// partly on the display, and the later bands were not drawn or sent
+    /// (the display still shows the previous frame there). To repair the
+    /// display, render the frame again (a [`DirtyBands`](super::DirtyBands)
+    /// sink sends the failed band again by itself, see there); the bands
+    /// are all back (or dropped by the sink) when this returns.
+    ///
     /// ```
     /// use embedded_graphics::mock_display::MockDisplay;
     /// use embedded_graphics::pixelcolor::BinaryColor;
