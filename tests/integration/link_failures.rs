@@ -2,7 +2,9 @@
 //! only once its transfer succeeded. After a frame whose transfer failed at
 //! some band, a frame whose transfers all succeed leaves the display equal
 //! to that frame rendered in full, whether the inner sink sends each band
-//! before `submit` returns or keeps it on the wire until `reclaim`.
+//! before `submit` returns or keeps it on the wire until `reclaim`; and the
+//! frame that fails waits for the transfers still running, so that none of
+//! them finishes during a later frame.
 
 use crate::framebuffer::Framebuffer;
 use embedded_graphics_core::pixelcolor::Rgb565;
@@ -24,9 +26,9 @@ fn colour(f: u8, x: i32, y: i32) -> Rgb565 {
     Rgb565::new(f % 32, (x * 8 + y) as u8 % 64, (f / 32 + 1) % 32)
 }
 
-fn render<'a, S>(
+fn render<'a, S, const N: usize>(
     f: u8,
-    bands: &'a mut [Band<Rgb565, W, H>; 2],
+    bands: &'a mut [Band<Rgb565, W, H>; N],
     sink: &mut S,
 ) -> Result<(), RenderError<S::Error>>
 where
@@ -101,19 +103,29 @@ fn dirty_bands_resend_a_band_whose_blocking_transfer_failed() {
     }
 }
 
-/// Keeps the last band on the wire until the renderer needs a buffer or the
-/// frame ends (as DMA does); the transfer of band `fail` fails when it is
-/// waited for, in `reclaim` or in the `submit` after it.
+/// Keeps up to `depth` bands on the wire until the renderer needs a buffer
+/// or the frame ends (as DMA does), finishing the oldest first; the
+/// transfer of band `fail` fails when it is waited for, in `reclaim` or in
+/// a `submit` after it.
 struct Dma<'a> {
     fb: Framebuffer<Rgb565>,
-    wire: Option<Lent<'a, Rgb565, W>>,
+    wire: Vec<Lent<'a, Rgb565, W>>,
+    depth: usize,
     fail: Option<usize>,
 }
 
 impl<'a> Dma<'a> {
-    /// Waits for the band on the wire: writes it to the display, or fails.
+    fn new(depth: usize) -> Self {
+        Dma { fb: Framebuffer::new(W as u32, HEIGHT, BG), wire: Vec::new(), depth, fail: None }
+    }
+
+    /// Waits for the oldest band on the wire: writes it to the display, or
+    /// fails (and drops it).
     fn finish(&mut self) -> Result<Option<Lent<'a, Rgb565, W>>, ()> {
-        let Some(band) = self.wire.take() else { return Ok(None) };
+        if self.wire.is_empty() {
+            return Ok(None);
+        }
+        let band = self.wire.remove(0);
         if self.fail == Some(band.index()) {
             self.fail = None;
             return Err(());
@@ -127,8 +139,8 @@ impl<'a> BandSink<'a, Rgb565, W> for Dma<'a> {
     type Error = ();
 
     fn submit(&mut self, band: Lent<'a, Rgb565, W>) -> Result<Option<Lent<'a, Rgb565, W>>, ()> {
-        let done = self.finish()?;
-        self.wire = Some(band);
+        let done = if self.wire.len() < self.depth { None } else { self.finish()? };
+        self.wire.push(band);
         Ok(done)
     }
 
@@ -139,20 +151,25 @@ impl<'a> BandSink<'a, Rgb565, W> for Dma<'a> {
 
 #[test]
 fn dirty_bands_resend_a_band_whose_transfer_failed_on_the_wire() {
-    for k in 0..BANDS {
-        // A sink that holds bands is tied to their borrow: one pair of
-        // bands a frame, all borrowed as long as the sink lives.
-        let mut pairs = [const { [const { Band::<Rgb565, W, H>::new(BG) }; 2] }; 4];
-        let [a, b, c, d] = &mut pairs;
-        let fb = Framebuffer::new(W as u32, HEIGHT, BG);
-        let mut sink = DirtyBands::<_, BANDS>::new(Dma { fb, wire: None, fail: None });
+    for (depth, k) in [1, 2].into_iter().flat_map(|d| (0..BANDS).map(move |k| (d, k))) {
+        // A sink that holds bands is tied to their borrow: bands of their
+        // own for each frame, all borrowed as long as the sink lives.
+        let mut pools = [const { [const { Band::<Rgb565, W, H>::new(BG) }; 3] }; 4];
+        let [a, b, c, d] = &mut pools;
+        let mut sink = DirtyBands::<_, BANDS>::new(Dma::new(depth));
         render(0, a, &mut sink).unwrap();
         sink.inner().fail = Some(k);
-        assert_eq!(render(1, b, &mut sink), Err(RenderError::Target(())), "k = {k}");
+        assert_eq!(render(1, b, &mut sink), Err(RenderError::Target(())), "depth {depth}, k = {k}");
+        // The other transfers were waited for: none can finish later, over
+        // a later frame's band.
+        assert!(sink.inner().wire.is_empty(), "depth {depth}, k = {k}: bands left on the wire");
         render(1, c, &mut sink).unwrap();
-        assert!(sink.inner().fb.pixels == expected(1), "band {k} failed on the wire, then was skipped");
+        assert!(
+            sink.inner().fb.pixels == expected(1),
+            "depth {depth}: band {k} failed on the wire, then was skipped"
+        );
         let sent = sink.sent_bands();
         render(1, d, &mut sink).unwrap();
-        assert_eq!(sink.sent_bands(), sent, "k = {k}");
+        assert_eq!(sink.sent_bands(), sent, "depth {depth}, k = {k}");
     }
 }

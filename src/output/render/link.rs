@@ -115,7 +115,11 @@ impl FrameBands {
 /// it; `reclaim` waits until a band it keeps is done and returns it, in any
 /// order, and returns `None` only when it keeps none. The renderer calls
 /// `reclaim` when it needs a buffer and at the end of the frame, so when
-/// `render_*` returns every band is back and every transfer finished.
+/// `render_*` returns every band is back and every transfer finished. An
+/// error drops one band: a `submit` that fails keeps none of the band it
+/// was given, a `reclaim` that fails drops the band whose transfer failed;
+/// the renderer then still reclaims the bands kept before it returns the
+/// error.
 ///
 /// ```
 /// use embedded_graphics::pixelcolor::Gray8;
@@ -214,10 +218,12 @@ impl<C: Interpolate> Renderer<C> {
     /// After [`RenderError::Target`] the frame stopped at the failed
     /// transfer: the bands before it were sent, the failed band may be
     /// partly on the display, and the later bands were not drawn or sent
-    /// (the display still shows the previous frame there). To repair the
-    /// display, render the frame again (a [`DirtyBands`](super::DirtyBands)
-    /// sink sends the failed band again by itself, see there); the bands
-    /// are all back (or dropped by the sink) when this returns.
+    /// (the display still shows the previous frame there). The transfers
+    /// still running were waited for (`reclaim` until every band kept is
+    /// back, their errors dropped), so none finishes during a later frame.
+    /// To repair the display, render the frame again: a
+    /// [`DirtyBands`](super::DirtyBands) sink sends the failed band again by
+    /// itself (see there). A sink's `submit` that fails keeps no band.
     ///
     /// ```
     /// use embedded_graphics::mock_display::MockDisplay;
@@ -297,24 +303,51 @@ where
             Some(rows) => rows,
             None => {
                 in_flight -= 1;
-                reclaim(sink)?
+                match reclaim(sink) {
+                    Ok(rows) => rows,
+                    Err(e) => return Err(drain(sink, in_flight, e)),
+                }
             }
         };
         let used = (height - y0).min(H as i32);
         pass.draw(&mut rows[..used as usize], y0, renderer);
         let area = Rectangle::new(frame.offset + Point::new(0, y0), Size::new(W as u32, used as u32));
         let band = Lent { rows, used: used as usize, area, index };
-        match sink.submit(band).map_err(RenderError::Target)? {
-            Some(back) => spare = Some(back.rows),
-            None => in_flight += 1,
+        match sink.submit(band) {
+            Ok(Some(back)) => spare = Some(back.rows),
+            Ok(None) => in_flight += 1,
+            Err(e) => return Err(drain(sink, in_flight, RenderError::Target(e))),
         }
         (y0, index) = (y0 + used, index + 1);
     }
     // Every transfer finishes before the frame returns.
-    for _ in 0..in_flight {
-        reclaim(sink)?;
+    while in_flight > 0 {
+        in_flight -= 1;
+        if let Err(e) = reclaim(sink) {
+            return Err(drain(sink, in_flight, e));
+        }
     }
     pass.finish()
+}
+
+/// After the frame's error `first`: waits for the `in_flight` transfers
+/// still running (their own errors dropped), so that none finishes during
+/// a later frame and overwrites its bands; stops early if the sink says it
+/// keeps none. Returns `first`.
+fn drain<'a, C: 'a, S, const W: usize>(
+    sink: &mut S,
+    in_flight: usize,
+    first: RenderError<S::Error>,
+) -> RenderError<S::Error>
+where
+    S: BandSink<'a, C, W>,
+{
+    for _ in 0..in_flight {
+        if let Ok(None) = sink.reclaim() {
+            break;
+        }
+    }
+    first
 }
 
 /// A pass that stops drawing at its first error: later bands are cleared
