@@ -115,11 +115,9 @@ impl FrameBands {
 /// it; `reclaim` waits until a band it keeps is done and returns it, in any
 /// order, and returns `None` only when it keeps none. The renderer calls
 /// `reclaim` when it needs a buffer and at the end of the frame, so when
-/// `render_*` returns every band is back and every transfer finished. An
-/// error drops one band: a `submit` that fails keeps none of the band it
-/// was given, a `reclaim` that fails drops the band whose transfer failed;
-/// the renderer then still reclaims the bands kept before it returns the
-/// error.
+/// `render_*` returns every band is back and every transfer finished. A
+/// failed `submit` keeps no band, a failed `reclaim` drops the band whose
+/// transfer failed; the renderer still reclaims the others.
 ///
 /// ```
 /// use embedded_graphics::pixelcolor::Gray8;
@@ -215,15 +213,12 @@ impl<C: Interpolate> Renderer<C> {
     /// refuses, or [`Error::InvalidParameter`] if the sink breaks its
     /// contract (keeps a band but `reclaim` returns `None`).
     ///
-    /// After [`RenderError::Target`] the frame stopped at the failed
-    /// transfer: the bands before it were sent, the failed band may be
-    /// partly on the display, and the later bands were not drawn or sent
-    /// (the display still shows the previous frame there). The transfers
-    /// still running were waited for (`reclaim` until every band kept is
-    /// back, their errors dropped), so none finishes during a later frame.
-    /// To repair the display, render the frame again: a
-    /// [`DirtyBands`](super::DirtyBands) sink sends the failed band again by
-    /// itself (see there). A sink's `submit` that fails keeps no band.
+    /// After [`RenderError::Target`] the bands before the failed transfer
+    /// were sent, the failed band may be partly shown, the later bands were
+    /// not sent (the previous frame shows there); the transfers still
+    /// running were waited for (their errors dropped), so none finishes in
+    /// a later frame. To repair the display, render the frame again (a
+    /// [`DirtyBands`](super::DirtyBands) sink resends the failed band).
     ///
     /// ```
     /// use embedded_graphics::mock_display::MockDisplay;
@@ -331,17 +326,13 @@ where
 }
 
 /// After the frame's error `first`: waits for the `in_flight` transfers
-/// still running (their own errors dropped), so that none finishes during
-/// a later frame and overwrites its bands; stops early if the sink says it
-/// keeps none. Returns `first`.
-fn drain<'a, C: 'a, S, const W: usize>(
+/// still running (none may finish over a later frame), errors dropped,
+/// until the sink says it keeps none.
+fn drain<'a, C: 'a, S: BandSink<'a, C, W>, const W: usize>(
     sink: &mut S,
     in_flight: usize,
     first: RenderError<S::Error>,
-) -> RenderError<S::Error>
-where
-    S: BandSink<'a, C, W>,
-{
+) -> RenderError<S::Error> {
     for _ in 0..in_flight {
         if let Ok(None) = sink.reclaim() {
             break;
