@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Fuzzing microraster with cargo-fuzz (libFuzzer) on the host. See docs/fuzzing.md.
 #
-#   bash scripts/fuzz.sh <target> <seconds>  fuzz one target (triangle, line, pipeline, meshlet, shape, sprite, view3d, closed, shape_aa) or `all`
+#   bash scripts/fuzz.sh <target> <seconds>  fuzz one target (triangle, line, pipeline, meshlet, shape, sprite, view3d, closed, shape_aa, sinks) or `all`
 #   bash scripts/fuzz.sh ci [seconds]        CI mode: build, replay the committed corpus, then fuzz
 #                                            each target for about `seconds` (default 60; 0 = replay
 #                                            only) with a fixed seed and run count (repeatable)
@@ -24,7 +24,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/../fuzz"
 
-TARGETS=(triangle line pipeline meshlet shape sprite view3d closed shape_aa)
+TARGETS=(triangle line pipeline meshlet shape sprite view3d closed shape_aa sinks)
 export RUSTC_BOOTSTRAP=1
 FLAGS=(-O -a)
 # Inputs longer than this add nothing: every target reads at most ~200 bytes.

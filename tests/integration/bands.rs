@@ -171,3 +171,62 @@ fn binned_primitives_draw_what_the_slice_draws() {
     }
     assert_eq!(scenes, 6 * 2 * 4);
 }
+
+/// Issue 60, finding 9: 40,000 primitives that each touch both bands of a
+/// 4-row frame need 80,002 index entries, more than a `u16` counts. Any
+/// index at least that long draws them as the slice does; one entry less is
+/// refused with the index's own length as the capacity.
+#[test]
+fn binned_index_past_65535_entries() {
+    use microraster::render::Binned2d;
+    use microraster::{Error, RenderError};
+    let bg = Gray8::new(0);
+    let p = |x: i32, y: i32| SubPoint::<4>::new(x, y).unwrap();
+    // Rows 0..4 each, of varied widths and colours: the order shows.
+    let scene: Vec<Primitive<Gray8, 4>> = (0..40_000)
+        .map(|i| {
+            let w = 16 * (2 + i % 7);
+            Triangle::flat([p(0, 0), p(w, 0), p(0, 64)], Gray8::new((i % 251) as u8)).into()
+        })
+        .collect();
+    let renderer = Renderer::new(4, bg);
+    let mut band = Band::<Gray8, 8, 2>::new(bg);
+    let mut fb = Framebuffer::new(8, 4, bg);
+    renderer.render(&scene[..], &mut band, &mut fb).unwrap();
+    let full = fb.pixels;
+    for len in [80_002, 160_004] {
+        let mut index = vec![0u16; len];
+        let mut fb = Framebuffer::new(8, 4, bg);
+        renderer.render(Binned2d::new(&scene, &mut index), &mut band, &mut fb).unwrap();
+        assert!(fb.pixels == full, "index of {len}");
+    }
+    let mut index = vec![0u16; 80_001];
+    let mut fb = Framebuffer::new(8, 4, bg);
+    let short = renderer.render(Binned2d::new(&scene, &mut index), &mut band, &mut fb);
+    assert_eq!(short, Err(RenderError::Input(Error::CapacityExceeded { needed: 80_002, capacity: 80_001 })));
+    assert!(fb.contiguous.is_empty(), "a refused frame sends nothing");
+}
+
+/// A primitive's number is a `u16` entry: 65,535 primitives are drawn,
+/// 65,536 are refused (whatever the index's length) before anything is sent.
+#[test]
+fn binned_primitive_count_limit() {
+    use microraster::render::Binned2d;
+    use microraster::{Error, RenderError};
+    let bg = Gray8::new(0);
+    let p = |x: i32, y: i32| SubPoint::<4>::new(x, y).unwrap();
+    let tri = |i: usize| Triangle::flat([p(0, 0), p(128, 0), p(0, 64)], Gray8::new((i % 251) as u8)).into();
+    let scene: Vec<Primitive<Gray8, 4>> = (0..65_536).map(tri).collect();
+    let renderer = Renderer::new(4, bg);
+    let mut band = Band::<Gray8, 8, 4>::new(bg);
+    let mut index = vec![0u16; 70_000];
+    let mut fb = Framebuffer::new(8, 4, bg);
+    renderer.render(Binned2d::new(&scene[..65_535], &mut index), &mut band, &mut fb).unwrap();
+    let mut slice = Framebuffer::new(8, 4, bg);
+    renderer.render(&scene[..65_535], &mut band, &mut slice).unwrap();
+    assert!(fb.pixels == slice.pixels);
+    let mut fb = Framebuffer::new(8, 4, bg);
+    let all = renderer.render(Binned2d::new(&scene, &mut index), &mut band, &mut fb);
+    assert_eq!(all, Err(RenderError::Input(Error::CapacityExceeded { needed: 65_536, capacity: 65_535 })));
+    assert!(fb.contiguous.is_empty(), "a refused frame sends nothing");
+}

@@ -56,6 +56,7 @@ mod line_aa;
 mod lines;
 mod link;
 mod link_async;
+mod link_failures;
 mod mesh_range;
 mod meshlets;
 mod mock_display;

@@ -16,6 +16,16 @@ use crate::{Error, Interpolate};
 /// contents); a frame whose size, offset or band height differs from the last
 /// one's is sent in full anyway.
 ///
+/// **Failed transfers.** A band counts as shown only once the inner sink
+/// hands it back without an error (from `submit`, or from `reclaim` after
+/// its transfer finished). A band whose transfer failed, or was still on
+/// the wire when the frame stopped at an error, is sent again by the next
+/// frame whatever its pixels; the bands the failed frame did not reach keep
+/// their record (the display still shows them). So after an error, drawing
+/// the frame again repairs the display, with no other call; if the failure
+/// may have disturbed more than the bands it was sending (the display reset
+/// or lost power), call [`DirtyBands::force_full_frame`] first.
+///
 /// **Wrong skips.** A band is skipped wrongly only if its pixels changed but
 /// its signature did not. A change of a single pixel always changes the
 /// signature (every step of [`signature`] is a bijection of its state; see
@@ -43,7 +53,7 @@ use crate::{Error, Interpolate};
 /// ```
 pub struct DirtyBands<S, const N: usize> {
     inner: S,
-    signatures: [Option<u64>; N],
+    signatures: [Shown; N],
     frame: Option<FrameBands>,
     sent_bands: u64,
     sent_pixels: u64,
@@ -55,12 +65,12 @@ impl<S, const N: usize> DirtyBands<S, N> {
     /// `inner`, with no band sent yet (the first frame is sent in full).
     pub const fn new(inner: S) -> Self {
         let () = Self::CHECK;
-        DirtyBands { inner, signatures: [None; N], frame: None, sent_bands: 0, sent_pixels: 0 }
+        DirtyBands { inner, signatures: [Shown::Unknown; N], frame: None, sent_bands: 0, sent_pixels: 0 }
     }
 
     /// The next frame sends every band.
     pub fn force_full_frame(&mut self) {
-        self.signatures = [None; N];
+        self.signatures = [Shown::Unknown; N];
     }
 
     /// Bands passed to the inner sink so far.
@@ -109,20 +119,52 @@ where
         let Some(slot) = self.signatures.get_mut(band.index()) else {
             return self.inner.submit(band);
         };
-        if *slot == Some(sig) {
+        if *slot == Shown::Sent(sig) {
             return Ok(Some(band));
         }
-        // Recorded before the transfer: if it fails, the frame fails and the
-        // caller must force a full frame anyway (the display state is unknown).
-        *slot = Some(sig);
+        // Not shown until the inner sink hands the band back without an
+        // error: a failed or unfinished transfer leaves it `Sending`, which
+        // matches no signature, so the next frame sends it again.
+        *slot = Shown::Sending(sig);
         self.sent_bands += 1;
         self.sent_pixels += band.pixels().len() as u64;
-        self.inner.submit(band)
+        let back = self.inner.submit(band)?;
+        Ok(self.delivered(back))
     }
 
     fn reclaim(&mut self) -> Result<Option<Lent<'a, C, W>>, S::Error> {
-        self.inner.reclaim()
+        let back = self.inner.reclaim()?;
+        Ok(self.delivered(back))
     }
+}
+
+impl<S, const N: usize> DirtyBands<S, N> {
+    /// The inner sink handed `back` back: its transfer finished, so the
+    /// display shows the signature it was sent with.
+    fn delivered<'a, C: Copy, const W: usize>(
+        &mut self,
+        back: Option<Lent<'a, C, W>>,
+    ) -> Option<Lent<'a, C, W>> {
+        if let Some(slot) = back.as_ref().and_then(|b| self.signatures.get_mut(b.index())) {
+            if let Shown::Sending(sig) = *slot {
+                *slot = Shown::Sent(sig);
+            }
+        }
+        back
+    }
+}
+
+/// What a band position of the display shows, as far as [`DirtyBands`]
+/// knows.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Shown {
+    /// Unknown: the next band there is sent.
+    Unknown,
+    /// A band of this signature was handed to the inner sink, which has not
+    /// yet handed it back (or failed): the display may show either frame.
+    Sending(u64),
+    /// A band of this signature was sent and its transfer finished.
+    Sent(u64),
 }
 
 /// The 64-bit signature of a band's pixels: each pixel's channels packed

@@ -115,7 +115,9 @@ impl FrameBands {
 /// it; `reclaim` waits until a band it keeps is done and returns it, in any
 /// order, and returns `None` only when it keeps none. The renderer calls
 /// `reclaim` when it needs a buffer and at the end of the frame, so when
-/// `render_*` returns every band is back and every transfer finished.
+/// `render_*` returns every band is back and every transfer finished. A
+/// failed `submit` keeps no band, a failed `reclaim` drops the band whose
+/// transfer failed; the renderer still reclaims the others.
 ///
 /// ```
 /// use embedded_graphics::pixelcolor::Gray8;
@@ -211,6 +213,13 @@ impl<C: Interpolate> Renderer<C> {
     /// refuses, or [`Error::InvalidParameter`] if the sink breaks its
     /// contract (keeps a band but `reclaim` returns `None`).
     ///
+    /// After [`RenderError::Target`] the bands before the failed transfer
+    /// were sent, the failed band may be partly shown, the later bands were
+    /// not sent (the previous frame shows there); the transfers still
+    /// running were waited for (their errors dropped), so none finishes in
+    /// a later frame. To repair the display, render the frame again (a
+    /// [`DirtyBands`](super::DirtyBands) sink resends the failed band).
+    ///
     /// ```
     /// use embedded_graphics::mock_display::MockDisplay;
     /// use embedded_graphics::pixelcolor::BinaryColor;
@@ -289,24 +298,47 @@ where
             Some(rows) => rows,
             None => {
                 in_flight -= 1;
-                reclaim(sink)?
+                match reclaim(sink) {
+                    Ok(rows) => rows,
+                    Err(e) => return Err(drain(sink, in_flight, e)),
+                }
             }
         };
         let used = (height - y0).min(H as i32);
         pass.draw(&mut rows[..used as usize], y0, renderer);
         let area = Rectangle::new(frame.offset + Point::new(0, y0), Size::new(W as u32, used as u32));
         let band = Lent { rows, used: used as usize, area, index };
-        match sink.submit(band).map_err(RenderError::Target)? {
-            Some(back) => spare = Some(back.rows),
-            None => in_flight += 1,
+        match sink.submit(band) {
+            Ok(Some(back)) => spare = Some(back.rows),
+            Ok(None) => in_flight += 1,
+            Err(e) => return Err(drain(sink, in_flight, RenderError::Target(e))),
         }
         (y0, index) = (y0 + used, index + 1);
     }
     // Every transfer finishes before the frame returns.
-    for _ in 0..in_flight {
-        reclaim(sink)?;
+    while in_flight > 0 {
+        in_flight -= 1;
+        if let Err(e) = reclaim(sink) {
+            return Err(drain(sink, in_flight, e));
+        }
     }
     pass.finish()
+}
+
+/// After the frame's error `first`: waits for the `in_flight` transfers
+/// still running (none may finish over a later frame), errors dropped,
+/// until the sink says it keeps none.
+fn drain<'a, C: 'a, S: BandSink<'a, C, W>, const W: usize>(
+    sink: &mut S,
+    in_flight: usize,
+    first: RenderError<S::Error>,
+) -> RenderError<S::Error> {
+    for _ in 0..in_flight {
+        if let Ok(None) = sink.reclaim() {
+            break;
+        }
+    }
+    first
 }
 
 /// A pass that stops drawing at its first error: later bands are cleared
