@@ -145,6 +145,14 @@ impl ArcGeom {
 
 /// A circular arc: stroke only (its fill is empty, as in `embedded-graphics`).
 ///
+/// A start within ±32 rad is used as given (an arc from `start + sweep`
+/// starts where this one ends); a larger one is first reduced by whole
+/// turns in `f64`, so the sweep is not lost (the `f32` ulp at 10^7 is 1 rad).
+/// The two end directions are then rounded to 1/4096 degree: every whole
+/// degree and quarter turn is exact, an end point moves by at most
+/// `r·2.1·10^-6` px, and angles a whole turn apart on that grid give the
+/// same points ([`Sector`] has an example).
+///
 /// ```
 /// use microraster::shape::Arc;
 /// assert!(Arc::new((8.0, 8.0), 6.0, 0.0, 3.0).is_ok());
@@ -199,9 +207,23 @@ impl Shape for Arc {
 
 /// A pie slice: the centre plus an arc.
 ///
+/// Angles as for [`Arc`]: any finite start keeps its sweep, and the end
+/// directions are rounded to 1/4096 degree, so starts a whole turn apart
+/// draw the same slice and `n` slices from `a0 + k·TAU/n` close at the wrap
+/// (angles on that grid, as every whole degree; `docs/limits.md`).
+///
 /// ```
-/// use microraster::shape::Sector;
-/// assert!(Sector::new((8.0, 8.0), 6.0, 0.0, 1.5).is_ok());
+/// use core::f32::consts::{FRAC_PI_2, TAU};
+/// use embedded_graphics::{mock_display::MockDisplay, pixelcolor::BinaryColor, Drawable};
+/// use microraster::shape::{Sector, Shape, ShapeStyle};
+/// let draw = |start: f32| {
+///     let mut d = MockDisplay::new();
+///     let s = Sector::new((8.03125, 8.03125), 6.0, start, 1.0).unwrap();
+///     s.styled(ShapeStyle::fill(BinaryColor::On)).unwrap().draw(&mut d).unwrap();
+///     d
+/// };
+/// // The corner straight above a centre on a 1/32 px tie: the same pixels.
+/// assert_eq!(draw(-FRAC_PI_2), draw(-FRAC_PI_2 + TAU));
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Sector(ArcGeom);
