@@ -47,7 +47,7 @@ impl Angle {
         // Turns: one rounding, relative 2^-53.
         let t = f64::from(a) / TAU;
         // From 2^52 on every f64 is whole: no fraction of a turn left.
-        if !(t.abs() < 4_503_599_627_370_496.0) {
+        if t.abs() >= 4_503_599_627_370_496.0 {
             return Angle(0);
         }
         // ⌊t⌋ without `f64::floor` (std only); `t − ⌊t⌋` is exact.
