@@ -12,7 +12,8 @@
 //! * through the band renderer (64 × 1..48 frame): every frame pixel sent
 //!   once, and bands of 1 and 16 rows give the same image;
 //! * `Drawable` into a plain `DrawTarget`: no pixel outside it, and
-//!   (aliased) the same image as the band renderer.
+//!   (aliased) the same image as the band renderer;
+//! * large and wrapped angles ([`wrapped_angles`], on every input): see there.
 #![no_main]
 
 use embedded_graphics_core::Drawable;
@@ -32,6 +33,7 @@ const W: i32 = 64;
 const BG: Gray8 = Gray8::new(7);
 
 fuzz_target!(|data: &[u8]| {
+    wrapped_angles(data);
     let mut inp = Input::new(data);
     let h = 1 + i32::from(inp.u8() % 48);
     let kind = inp.u8() % 8;
@@ -274,5 +276,92 @@ impl DrawTarget for Plain {
             self.px[(p.y * W + p.x) as usize] = c;
         }
         Ok(())
+    }
+}
+
+/// Sectors' angles, aliased fills wholly inside a 96 × 96 canvas, centre
+/// on the 1/32 px grid (ties included), radius 1..31 px:
+///
+/// * a start and sweep of whole degrees (±180°) give the same pixels as the
+///   start plus or minus a turn (`f32` arithmetic, within the angle grid's
+///   rounding: `src/pixel/shape/angle.rs`);
+/// * `n` slices from `a0 + k·TAU/n` (a0 whole degrees within ±90°, n
+///   dividing 360·4096, up to 12) cover each pixel at most once and each
+///   centre 0.2 px inside the disc exactly once (they close at the wrap);
+/// * any finite start, huge ones included, keeps the sweep: the pixel count
+///   is within 1.25 × the outline's length (+ 4) of the area `r²·sweep/2`.
+fn wrapped_angles(data: &[u8]) {
+    use core::f32::consts::TAU;
+    let mut inp = Input::new(data);
+    let c = (48.0 + f32::from(inp.u8() as i8) / 32.0, 48.0 + f32::from(inp.u8() as i8) / 32.0);
+    let r = 1.0 + f32::from(inp.u16() % 480) / 16.0;
+    let sector = |start: f32, sweep: f32| {
+        let mut g = Hits(vec![0; SIDE * SIDE]);
+        Sector::new(c, r, start, sweep)
+            .unwrap()
+            .styled(ShapeStyle::fill(Gray8::WHITE))
+            .unwrap()
+            .draw_on(&mut g);
+        g.0
+    };
+    let degrees =
+        |inp: &mut Input, max: u16| (f32::from(inp.u16() % (2 * max + 1)) - f32::from(max)).to_radians();
+
+    let (a0, sweep) = (degrees(&mut inp, 180), degrees(&mut inp, 180));
+    let k = if inp.bool() { TAU } else { -TAU };
+    assert!(
+        sector(a0, sweep) == sector(a0 + k, sweep),
+        "start {a0} and {a0} + {k}, sweep {sweep}, {c:?} r {r}"
+    );
+
+    let n = inp.pick(&[2u8, 3, 4, 5, 6, 8, 9, 10, 12]);
+    let (a0, step) = (degrees(&mut inp, 90), TAU / f32::from(n));
+    let mut hits = vec![0u8; SIDE * SIDE];
+    for k in 0..n {
+        for (h, s) in hits.iter_mut().zip(sector(a0 + f32::from(k) * step, step)) {
+            *h += s;
+        }
+    }
+    for (i, &h) in hits.iter().enumerate() {
+        let (x, y) = ((i % SIDE) as f32 + 0.5 - c.0, (i / SIDE) as f32 + 0.5 - c.1);
+        let inside = x * x + y * y < (r - 0.2) * (r - 0.2);
+        assert!(h <= 1 && (h == 1 || !inside), "{n} slices from {a0}, {c:?} r {r}: pixel {i} hit {h}");
+    }
+
+    let start = match inp.u8() % 4 {
+        0 => inp.f32(),
+        1 => f32::from(inp.u16()) * 10f32.powi(i32::from(inp.u8() % 39)),
+        _ => -(f32::from(inp.u16()) * 10f32.powi(i32::from(inp.u8() % 39))),
+    };
+    let sweep = f32::from(inp.u16() as i16) / 4096.0;
+    if !start.is_finite() {
+        return;
+    }
+    let count: f32 = sector(start, sweep).iter().map(|&h| f32::from(h)).sum();
+    let turn = sweep.abs().min(TAU);
+    let (area, outline) = (r * r * turn / 2.0, if turn == TAU { TAU * r } else { 2.0 * r + r * turn });
+    assert!(
+        (count - area).abs() <= 1.25 * outline + 4.0,
+        "start {start} sweep {sweep} r {r}: {count} px, area {area}"
+    );
+}
+
+/// The side of [`Hits`]' canvas.
+const SIDE: usize = 96;
+
+/// Per-pixel write counts of a `SIDE × SIDE` canvas.
+struct Hits(Vec<u8>);
+
+impl Canvas<Gray8> for Hits {
+    fn clip(&self) -> ClipRect {
+        ClipRect::new(0, 0, SIDE as i32, SIDE as i32)
+    }
+    fn fill(&mut self, span: Span, _: Gray8, _: u8) {
+        for x in span.x..span.x + span.len as i32 {
+            self.0[span.y as usize * SIDE + x as usize] += 1;
+        }
+    }
+    fn shade<I: Iterator<Item = Gray8>>(&mut self, span: Span, _: I, alpha: u8) {
+        self.fill(span, Gray8::BLACK, alpha);
     }
 }

@@ -3,6 +3,7 @@
 //! within the stated tolerance of the true curve, band invariance, and
 //! typed errors for bad input.
 
+mod angles;
 mod bad_input;
 mod bands_and_gradients;
 mod coverage;

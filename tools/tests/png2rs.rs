@@ -287,6 +287,55 @@ fn bad_input_is_an_error() {
     assert_eq!(Format::parse("rgb888"), None);
 }
 
+/// The PNG specification makes a palette index past the palette's last
+/// entry an error; the `png` crate's expansion turns it into black.
+#[test]
+fn a_palette_index_past_the_palette_is_an_error() {
+    use microraster_tools::png::{Options, convert_bytes};
+    // (depth, entries, packed rows of 4 × 2 indices with one out of range)
+    let cases: [(BitDepth, usize, Vec<u8>); 4] = [
+        (BitDepth::Eight, 2, vec![0, 1, 5, 0, 1, 0, 0, 1]),
+        (BitDepth::Four, 3, vec![0x01, 0x20, 0x12, 0x03]),
+        (BitDepth::Two, 3, vec![0b0001_1000, 0b0011_0010]),
+        (BitDepth::One, 1, vec![0b0000_0000, 0b0100_0000]),
+    ];
+    for (depth, entries, data) in cases {
+        let plte: Vec<u8> = (0..entries * 3).map(|i| 40 + i as u8).collect();
+        let png = encode(4, 2, ColorType::Indexed, depth, &data, Some(&plte), None);
+        let e = decode(&png).unwrap_err();
+        assert!(e.contains("palette index") && e.contains(&format!("{entries} entries")), "{depth:?}: {e}");
+        let opts = Options::new(Format::Rgb565);
+        assert!(convert_bytes(&png, "p", "p.png", &opts).is_err(), "{depth:?}");
+        // The same pixels with every index in range convert.
+        let mut full = plte.clone();
+        full.resize(3 << (depth as u8), 9);
+        let ok = encode(4, 2, ColorType::Indexed, depth, &data, Some(&full), None);
+        assert!(convert_bytes(&ok, "p", "p.png", &opts).is_ok(), "{depth:?}");
+    }
+    // Padding bits past the last pixel of a row are not indices.
+    let padded = encode(4, 2, ColorType::Indexed, BitDepth::One, &[0x0F, 0x0F], Some(&[1, 2, 3]), None);
+    assert_eq!(decode(&padded).unwrap().pixels, vec![[1, 2, 3, 255]; 8]);
+    // The command line: an error message and exit status 1, no output.
+    let dir = std::env::temp_dir().join(format!("png2rs-index-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("bad.png");
+    let plte = [0u8, 0, 0, 255, 255, 255];
+    std::fs::write(
+        &path,
+        encode(4, 2, ColorType::Indexed, BitDepth::Eight, &[0, 1, 5, 0, 1, 0, 0, 1], Some(&plte), None),
+    )
+    .unwrap();
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_png2rs"))
+        .arg(&path)
+        .args(["--name", "bad", "--format", "rgb565"])
+        .output()
+        .unwrap();
+    let _ = std::fs::remove_dir_all(&dir);
+    assert_eq!(out.status.code(), Some(1), "{out:?}");
+    assert!(out.stdout.is_empty());
+    assert!(String::from_utf8_lossy(&out.stderr).contains("palette index 5"), "{out:?}");
+}
+
 #[test]
 fn emitted_source_layout() {
     let t = Texels::Gray8((0..30).map(|i| i * 8).collect());

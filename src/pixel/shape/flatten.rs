@@ -71,26 +71,37 @@ pub fn segments(r: f32, sweep: f32) -> u32 {
 /// cut into `n = segments(max(rx, ry), sweep)` chords.
 pub(crate) fn arc_points<E>(
     c: (f32, f32),
-    (rx, ry): (f32, f32),
+    radii: (f32, f32),
     start: f32,
+    sweep: f32,
+    point: impl FnMut(f32, f32) -> Result<(), E>,
+) -> Result<(), E> {
+    let sweep = sweep.clamp(-TAU, TAU);
+    let ends = (Scalar::sin_cos(start), Scalar::sin_cos(start + sweep));
+    arc_points_between(c, radii, ends, sweep, point)
+}
+
+/// As [`arc_points`], with the `(sin, cos)` of both end angles given: the
+/// end points are exactly those, so arcs that meet at an angle meet at the
+/// same point.
+pub(crate) fn arc_points_between<E>(
+    c: (f32, f32),
+    (rx, ry): (f32, f32),
+    (from, to): ((f32, f32), (f32, f32)),
     sweep: f32,
     mut point: impl FnMut(f32, f32) -> Result<(), E>,
 ) -> Result<(), E> {
-    let sweep = sweep.clamp(-TAU, TAU);
     let n = segments(rx.max(ry), sweep);
     // Inner points by rotating the unit vector (one sin_cos per arc instead
-    // of per point; drift below 1e-5 px per 100 px of radius over 128
-    // steps); the end points come from sin_cos of the exact end angles, so
-    // arcs that meet at an angle meet at the same point.
+    // of per point; drift below 1e-5 px per 100 px of radius over 128 steps).
     let (sd, cd) = Scalar::sin_cos(sweep / n as f32);
-    let (mut s, mut co) = Scalar::sin_cos(start);
+    let (mut s, mut co) = from;
     point(c.0 + rx * co, c.1 + ry * s)?;
     for _ in 1..n {
         (co, s) = (co * cd - s * sd, s * cd + co * sd);
         point(c.0 + rx * co, c.1 + ry * s)?;
     }
-    let (s, co) = Scalar::sin_cos(start + sweep);
-    point(c.0 + rx * co, c.1 + ry * s)
+    point(c.0 + rx * to.1, c.1 + ry * to.0)
 }
 
 #[cfg(test)]

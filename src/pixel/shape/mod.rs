@@ -54,6 +54,7 @@
 //! each, anti-aliased). More edges than that is [`Error::BufferTooSmall`](crate::Error::BufferTooSmall)
 //! when the [`Styled`] is built.
 
+mod angle;
 mod area;
 mod canvas;
 pub mod edges;

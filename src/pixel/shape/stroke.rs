@@ -13,6 +13,7 @@
 //! with [`Cap::Round`], an axis-aligned square with [`Cap::Square`], and
 //! nothing with [`Cap::Butt`].
 
+use super::angle::Angle;
 use super::edges::EdgeList;
 use super::flatten::arc_points;
 use super::style::{Cap, Join};
@@ -255,18 +256,25 @@ pub(crate) fn polyline<const N: usize>(
     path(e, pts.iter().copied(), closed, p)
 }
 
-/// The outline of a sector (centre, then the arc) as a closed stroked path.
+/// The outline of a sector (centre, then the arc) as a closed stroked path:
+/// `start` as reduced by [`near`](super::angle::near), the end directions given (those
+/// of the fill).
 pub(crate) fn sector<const N: usize>(
     e: &mut EdgeList<N>,
     c: P,
     r: f32,
-    start: f32,
-    sweep: f32,
+    (start, sweep): (f32, f32),
+    (from, to): (Angle, Angle),
     p: &StrokeParams,
 ) -> Result<(), Error> {
     let n = super::flatten::segments(r, sweep);
     let arc = (0..=n).map(move |i| {
-        let (s, co) = Scalar::sin_cos(start + sweep * (i as f32 / n as f32));
+        let a = match i {
+            0 => from,
+            i if i == n => to,
+            i => Angle::from_radians(start + sweep * (i as f32 / n as f32)),
+        };
+        let (s, co) = a.sin_cos();
         (c.0 + r * co, c.1 + r * s)
     });
     path(e, core::iter::once(c).chain(arc), true, p)

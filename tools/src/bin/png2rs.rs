@@ -14,7 +14,7 @@
 //! it), `--pixelcolor` that of the module with `Rgb565` and `Gray8` (default
 //! `embedded_graphics::pixelcolor`). Any PNG the `png` crate reads is
 //! accepted: palette, grey, RGB, with or without alpha, 1 to 16 bits (see
-//! `png::decode`); rounding and alpha handling are described in
+//! `png::decode`; a palette index past the palette is an error); rounding and alpha handling are described in
 //! `png::convert`. Installed by `cargo install --path tools`;
 //! `microraster_tools::png` is the same conversion for build scripts.
 //! Errors exit with status 1 (2 for bad arguments).

@@ -26,7 +26,11 @@ pub struct Image {
 /// becomes 8-bit, and a `tRNS` chunk becomes an alpha channel (the `png`
 /// crate's `EXPAND`); 16-bit samples are kept, so the conversion rounds once
 /// from the full precision.
+///
+/// A palette index past the palette's last entry is an error (the PNG
+/// specification's rule; the `png` crate's expansion would make it black).
 pub fn decode(bytes: &[u8]) -> Result<Image, String> {
+    check_palette_indices(bytes)?;
     let mut decoder = ::png::Decoder::new(std::io::Cursor::new(bytes));
     decoder.set_transformations(Transformations::EXPAND);
     let mut reader = decoder.read_info().map_err(|e| format!("not a readable PNG: {e}"))?;
@@ -63,4 +67,38 @@ pub fn decode(bytes: &[u8]) -> Result<Image, String> {
         return Err("truncated image data".into());
     }
     Ok(Image { width, height, gray, max, pixels })
+}
+
+/// For a palette image, every pixel's index must name a palette entry. The
+/// expanded decode cannot tell, so the indices are read once unexpanded.
+fn check_palette_indices(bytes: &[u8]) -> Result<(), String> {
+    let mut decoder = ::png::Decoder::new(std::io::Cursor::new(bytes));
+    decoder.set_transformations(Transformations::IDENTITY);
+    let mut reader = decoder.read_info().map_err(|e| format!("not a readable PNG: {e}"))?;
+    let info = reader.info();
+    if info.color_type != ColorType::Indexed {
+        return Ok(());
+    }
+    let (width, height) = (info.width, info.height);
+    if !(1..=MAX_DIM).contains(&width) || !(1..=MAX_DIM).contains(&height) {
+        return Ok(()); // the expanded decode reports the size
+    }
+    let entries = info.palette.as_ref().map_or(0, |p| p.len() / 3);
+    let size = reader.output_buffer_size().ok_or("image too large to decode")?;
+    let mut buf = vec![0; size];
+    let out = reader.next_frame(&mut buf).map_err(|e| format!("corrupt PNG data: {e}"))?;
+    let bits = out.bit_depth as usize; // 1, 2, 4 or 8 for a palette
+    for (y, row) in buf[..out.buffer_size()].chunks_exact(out.line_size).enumerate() {
+        // Pixels are packed from the high bits; bits past the width are padding.
+        for x in 0..width as usize {
+            let (byte, shift) = (x * bits / 8, 8 - bits - x * bits % 8);
+            let index = usize::from(row[byte] >> shift) & ((1 << bits) - 1);
+            if index >= entries {
+                return Err(format!(
+                    "palette index {index} at ({x}, {y}) past the palette's {entries} entries"
+                ));
+            }
+        }
+    }
+    Ok(())
 }

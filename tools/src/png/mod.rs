@@ -59,8 +59,9 @@ pub struct Converted {
 ///
 /// # Errors
 ///
-/// The file cannot be read or decoded, `name` is not an identifier, or a
-/// pixel is not opaque in a format without alpha.
+/// The file cannot be read or decoded (a palette index past the palette's
+/// last entry included), `name` is not an identifier, or a pixel is not
+/// opaque in a format without alpha.
 ///
 /// ```
 /// use microraster_tools::png::{Format, convert};

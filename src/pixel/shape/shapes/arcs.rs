@@ -3,8 +3,9 @@
 
 use super::{Shape, finite, size};
 use crate::Error;
+use crate::shape::angle::{self, Angle};
 use crate::shape::edges::EdgeList;
-use crate::shape::flatten::arc_points;
+use crate::shape::flatten::{arc_points, arc_points_between};
 use crate::shape::stroke::{self, StrokeParams};
 use core::f32::consts::TAU;
 
@@ -107,31 +108,50 @@ impl Shape for Circle {
 }
 
 /// Centre, radius, start angle and sweep (radians: 0 along +x, positive
-/// clockwise on screen; sweeps beyond a full turn are clamped to one).
+/// clockwise on screen; sweeps beyond a full turn are clamped to one). A
+/// start beyond ±[`angle::NEAR`] is stored reduced; the end directions are
+/// on the [`angle`] grid.
 #[derive(Debug, Clone, Copy, PartialEq)]
 struct ArcGeom {
     c: (f32, f32),
     r: f32,
     start: f32,
     sweep: f32,
+    from: Angle,
+    to: Angle,
 }
 
 impl ArcGeom {
     fn new(c: (f32, f32), r: f32, start: f32, sweep: f32) -> Result<Self, Error> {
         finite(&[c.0, c.1, start, sweep])?;
         size(&[r])?;
-        Ok(ArcGeom { c, r, start, sweep: sweep.clamp(-TAU, TAU) })
+        let (start, sweep) = (angle::near(start), sweep.clamp(-TAU, TAU));
+        let (from, to) = angle::ends(start, sweep);
+        Ok(ArcGeom { c, r, start, sweep, from, to })
+    }
+
+    /// The same arc swept the other way (from its end back to its start).
+    fn reversed(&self) -> Self {
+        ArcGeom { start: self.to.radians(), sweep: -self.sweep, from: self.to, to: self.from, ..*self }
     }
 
     /// The arc at radius `r`, forwards or backwards, as points on the current contour.
     fn points<const N: usize>(&self, e: &mut EdgeList<N>, r: f32, reverse: bool) -> Result<(), Error> {
-        let (start, sweep) =
-            if reverse { (self.start + self.sweep, -self.sweep) } else { (self.start, self.sweep) };
-        arc_points(self.c, (r, r), start, sweep, |x, y| e.line_to(x, y))
+        let g = if reverse { self.reversed() } else { *self };
+        let ends = (g.from.sin_cos(), g.to.sin_cos());
+        arc_points_between(self.c, (r, r), ends, g.sweep, |x, y| e.line_to(x, y))
     }
 }
 
 /// A circular arc: stroke only (its fill is empty, as in `embedded-graphics`).
+///
+/// A start within ±32 rad is used as given (an arc from `start + sweep`
+/// starts where this one ends); a larger one is first reduced by whole
+/// turns in `f64`, so the sweep is not lost (the `f32` ulp at 10^7 is 1 rad).
+/// The two end directions are then rounded to 1/4096 degree: every whole
+/// degree and quarter turn is exact, an end point moves by at most
+/// `r·2.1·10^-6` px, and angles a whole turn apart on that grid give the
+/// same points ([`Sector`] has an example).
 ///
 /// ```
 /// use microraster::shape::Arc;
@@ -167,17 +187,13 @@ impl Shape for Arc {
     /// The annular sector between radii `r ± width/2`, with the caps.
     fn stroke_contours<const N: usize>(&self, e: &mut EdgeList<N>, p: &StrokeParams) -> Result<(), Error> {
         // Positive sweep only, so the caps' orientation is known.
-        let g = &if self.0.sweep < 0.0 {
-            ArcGeom { start: self.0.start + self.0.sweep, sweep: -self.0.sweep, ..self.0 }
-        } else {
-            self.0
-        };
+        let g = &if self.0.sweep < 0.0 { self.0.reversed() } else { self.0 };
         e.close()?;
         g.points(e, g.r + p.half, false)?;
         g.points(e, (g.r - p.half).max(0.0), true)?;
         e.close()?;
-        for (angle, dir) in [(g.start, -1.0), (g.start + g.sweep, 1.0)] {
-            let (s, c) = crate::math::Scalar::sin_cos(angle);
+        for (end, dir) in [(g.from, -1.0), (g.to, 1.0)] {
+            let (s, c) = end.sin_cos();
             // The tangent pointing away from the arc at this end; the
             // clockwise annulus runs from outer to inner at the end and from
             // inner to outer at the start: the opposite of an open stroke's
@@ -191,9 +207,23 @@ impl Shape for Arc {
 
 /// A pie slice: the centre plus an arc.
 ///
+/// Angles as for [`Arc`]: any finite start keeps its sweep, and the end
+/// directions are rounded to 1/4096 degree, so starts a whole turn apart
+/// draw the same slice and `n` slices from `a0 + k·TAU/n` close at the wrap
+/// (angles on that grid, as every whole degree; `docs/limits.md`).
+///
 /// ```
-/// use microraster::shape::Sector;
-/// assert!(Sector::new((8.0, 8.0), 6.0, 0.0, 1.5).is_ok());
+/// use core::f32::consts::{FRAC_PI_2, TAU};
+/// use embedded_graphics::{mock_display::MockDisplay, pixelcolor::BinaryColor, Drawable};
+/// use microraster::shape::{Sector, Shape, ShapeStyle};
+/// let draw = |start: f32| {
+///     let mut d = MockDisplay::new();
+///     let s = Sector::new((8.03125, 8.03125), 6.0, start, 1.0).unwrap();
+///     s.styled(ShapeStyle::fill(BinaryColor::On)).unwrap().draw(&mut d).unwrap();
+///     d
+/// };
+/// // The corner straight above a centre on a 1/32 px tie: the same pixels.
+/// assert_eq!(draw(-FRAC_PI_2), draw(-FRAC_PI_2 + TAU));
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Sector(ArcGeom);
@@ -229,6 +259,7 @@ impl Shape for Sector {
     /// chord vertex: several edges a chord, so large sectors can exceed
     /// [`MAX_EDGES`](crate::shape::MAX_EDGES) ([`Error::BufferTooSmall`] when styled).
     fn stroke_contours<const N: usize>(&self, e: &mut EdgeList<N>, p: &StrokeParams) -> Result<(), Error> {
-        stroke::sector(e, self.0.c, self.0.r, self.0.start, self.0.sweep, p)
+        let g = &self.0;
+        stroke::sector(e, g.c, g.r, (g.start, g.sweep), (g.from, g.to), p)
     }
 }
