@@ -9,12 +9,13 @@
 //!   `WindingMismatch` for a mesh wound inside out when culling is on.
 
 use crate::framebuffer::Framebuffer;
+use crate::view3d::clusters;
 use embedded_graphics_core::pixelcolor::Rgb565;
 use embedded_graphics_core::prelude::RgbColor;
 use microraster::depth::{Depth16, DepthBand, DepthState};
 use microraster::edge::Cull;
 use microraster::math::{Mat4, Vec3, transform};
-use microraster::mesh::{self, Mesh, Meshlet, ValidMesh, ValidMeshletMesh, bounding_sphere};
+use microraster::mesh::{Mesh, ValidMesh, bounding_sphere};
 use microraster::pipeline::{Pipeline, VertexCache};
 use microraster::raster3d::PerspectiveCorrect;
 use microraster::render::Triangles3d;
@@ -76,17 +77,6 @@ fn binned(m: &Mesh<'_>) -> Result<Vec<Rgb565>, Error> {
     let frame = Triangles3d::new(&bins, &mut depth, DepthState::LESS_WRITE, PerspectiveCorrect);
     Renderer::new(H, BG).render(frame, &mut band, &mut fb).unwrap();
     Ok(fb.pixels)
-}
-
-/// The same mesh in clusters (leaked buffers).
-fn clusters(m: Mesh<'static>) -> &'static ValidMeshletMesh<'static> {
-    let (nv, nt) = (m.vertex_count(), m.triangle_count());
-    let meshlets = Vec::leak(vec![Meshlet::default(); mesh::meshlet_bound(nt)]);
-    let vertices = Vec::leak(vec![0u16; mesh::meshlet_vertex_bound(nt)]);
-    let triangles = Vec::leak(vec![[0u8; 3]; nt]);
-    let scratch = Vec::leak(vec![0u32; mesh::meshlet_scratch_len(nv, nt)]);
-    let built = mesh::build_meshlets(m, meshlets, vertices, triangles, scratch).unwrap();
-    Box::leak(Box::new(ValidMeshletMesh::new(built).unwrap()))
 }
 
 fn lit(img: &[Rgb565]) -> usize {

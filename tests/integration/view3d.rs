@@ -32,7 +32,11 @@ pub(crate) fn sphere() -> Mesh<'static> {
 
 /// The same sphere in clusters.
 pub(crate) fn sphere_meshlets() -> &'static ValidMeshletMesh<'static> {
-    let m = sphere();
+    clusters(sphere())
+}
+
+/// `m` in clusters (leaked buffers).
+pub(crate) fn clusters(m: Mesh<'static>) -> &'static ValidMeshletMesh<'static> {
     let (nv, nt) = (m.vertex_count(), m.triangle_count());
     let meshlets = Vec::leak(vec![Meshlet::default(); mesh::meshlet_bound(nt)]);
     let vertices = Vec::leak(vec![0u16; mesh::meshlet_vertex_bound(nt)]);

@@ -9,7 +9,7 @@ use microraster::shape::{Polygon, ShapeStyle};
 
 /// Area of the simple polygon `pts` inside the unit square at `(x, y)`
 /// (Sutherland–Hodgman against the four sides, then the shoelace formula).
-fn pixel_area(pts: &[(f64, f64)], x: f64, y: f64) -> f64 {
+pub(super) fn pixel_area(pts: &[(f64, f64)], x: f64, y: f64) -> f64 {
     let mut poly = pts.to_vec();
     let sides: [(usize, f64, bool); 4] =
         [(0, x, true), (0, x + 1.0, false), (1, y, true), (1, y + 1.0, false)];

@@ -48,34 +48,10 @@ impl Canvas<Gray8> for Frame {
 }
 
 /// Area of the triangle `t` inside the unit pixel at `(x, y)`: the
-/// vertices moved to the pixel first (exact), Sutherland–Hodgman, shoelace.
+/// vertices moved to the pixel first (exact on the 1/16 px grid, so far
+/// vertices lose nothing), then the shared clip-and-shoelace reference.
 fn pixel_area(t: &[(f64, f64); 3], x: f64, y: f64) -> f64 {
-    let mut poly: Vec<(f64, f64)> = t.iter().map(|p| (p.0 - x, p.1 - y)).collect();
-    for (axis, v, keep_above) in [(0, 0.0, true), (0, 1.0, false), (1, 0.0, true), (1, 1.0, false)] {
-        let inside = |p: &(f64, f64)| {
-            let c = if axis == 0 { p.0 } else { p.1 };
-            if keep_above { c >= v } else { c <= v }
-        };
-        let mut out = Vec::with_capacity(poly.len() + 2);
-        for i in 0..poly.len() {
-            let (a, b) = (poly[i], poly[(i + 1) % poly.len()]);
-            if inside(&a) {
-                out.push(a);
-            }
-            if inside(&a) != inside(&b) {
-                let (ca, cb) = if axis == 0 { (a.0, b.0) } else { (a.1, b.1) };
-                let s = (v - ca) / (cb - ca);
-                out.push((a.0 + s * (b.0 - a.0), a.1 + s * (b.1 - a.1)));
-            }
-        }
-        poly = out;
-        if poly.is_empty() {
-            return 0.0;
-        }
-    }
-    let n = poly.len();
-    let s: f64 = (0..n).map(|i| poly[i].0 * poly[(i + 1) % n].1 - poly[(i + 1) % n].0 * poly[i].1).sum();
-    (s / 2.0).abs()
+    super::antialiased::pixel_area(&t.map(|p| (p.0 - x, p.1 - y)), 0.0, 0.0)
 }
 
 /// `v` on the 1/16 px grid and exactly an `f32` (every `f32` of magnitude
