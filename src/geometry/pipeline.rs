@@ -68,6 +68,7 @@ use crate::clip3d::ClipPlanes;
 use crate::edge::Cull;
 use crate::light::Lighting;
 use crate::math::{Mat4, Scalar, transform};
+use crate::raster3d::Precision;
 use crate::{Error, MAX_FRAME_DIM};
 
 /// Per-face or per-vertex lighting.
@@ -152,6 +153,8 @@ pub struct Pipeline<T: Scalar, const S: u32> {
     /// [`Affine`](crate::raster3d::Affine) band): one exact division per
     /// vertex saved.
     with_inv_w: bool,
+    /// The accuracy tier ([`Precision::Exact`] unless told).
+    pub precision: Precision,
 }
 
 impl<T: Scalar, const S: u32> Pipeline<T, S> {
@@ -186,6 +189,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
             shade: Shade::Gouraud,
             rows: None,
             with_inv_w: true,
+            precision: Precision::Exact,
         })
     }
 
@@ -244,6 +248,11 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     /// `2^-15` of full intensity in `f32`, see the README's "Lighting").
     pub fn with_lighting(self, lighting: Lighting<T>) -> Self {
         Pipeline { lighting: Some(lighting), ..self }
+    }
+
+    /// The same pipeline in accuracy tier `precision`.
+    pub fn with_precision(self, precision: Precision) -> Self {
+        Pipeline { precision, ..self }
     }
 
     /// The view matrix.

@@ -54,12 +54,14 @@ use crate::primitive::{center_rows, reference_pixel};
 use crate::{Interpolate, SubPoint};
 
 mod depth_span;
+mod precision;
 mod shade;
 mod spans;
 mod tiny;
 
 use depth_span::{DepthRule, LessWrite};
 pub(crate) use depth_span::{depth_steps, depth_value};
+pub use precision::Precision;
 
 use spans::shade_spans;
 

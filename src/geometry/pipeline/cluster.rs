@@ -190,7 +190,9 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     {
         let rows = band.rows();
         // An affine band never reads 1/w.
-        self.meshlets_into(mesh, model, color, material, cache, (rows, M::PERSPECTIVE), |tri| band.draw(tri))
+        self.meshlets_into(mesh, model, color, material, cache, (rows, M::PERSPECTIVE), |tri| {
+            band.draw_in(tri, self.precision)
+        })
     }
 
     /// The triangles [`Pipeline::draw_meshlets`] would draw into the band of

@@ -14,7 +14,7 @@ use embedded_graphics_core::primitives::Rectangle;
 use crate::Interpolate;
 use crate::band::BandView;
 use crate::depth::{DepthFormat, DepthRows, DepthState};
-use crate::raster3d::{Interpolation, ScreenTriangle, draw_triangle};
+use crate::raster3d::{Interpolation, Precision, ScreenTriangle, draw_triangle};
 
 /// The band being drawn, handed to the closure of
 /// [`Direct3d`](crate::render::Direct3d): frame
@@ -81,6 +81,16 @@ where
     #[inline]
     pub fn draw<const S: u32>(&mut self, tri: &ScreenTriangle<S>) {
         draw_triangle(tri, self.view, &mut self.depth, self.state, M::default());
+    }
+
+    /// [`Band3d::draw`] in accuracy tier `precision` (the vertex stage's:
+    /// [`Pipeline::precision`](crate::pipeline::Pipeline)).
+    #[inline]
+    pub(crate) fn draw_in<const S: u32>(&mut self, tri: &ScreenTriangle<S>, precision: Precision) {
+        match precision {
+            Precision::Exact => self.draw(tri),
+            Precision::Fast => self.draw(tri),
+        }
     }
 
     /// Draws the triangles that touch the band, in order.
