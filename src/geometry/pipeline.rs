@@ -46,6 +46,7 @@ mod model_light;
 mod presnap;
 mod snap;
 mod sphere_rows;
+mod tier;
 #[cfg(feature = "fragment")]
 mod varying;
 mod vertex_ctx;

@@ -16,10 +16,13 @@
 //! `x/w` and so the snapped positions) and rounds to an integer with the
 //! `2^23` trick instead of branches on the fraction: the same result.
 
+mod fast;
 mod fx_divisor;
 mod m0_arith;
 mod small;
 
+#[doc(hidden)]
+pub use fast::FastQuotient;
 pub use fx_divisor::FxDivisor;
 pub(crate) use m0_arith::{
     ARMV6M, divrem_small_quotient, leading_zeros_u32, mul_u16_u32, mul_wide_u32, mul_wide_u32_by,

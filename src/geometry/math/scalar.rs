@@ -86,8 +86,9 @@ pub trait Scalar:
     /// its full precision (one `i64` division) instead of rounding `self/den`
     /// to 16 fractional bits first. `f32` rounds to nearest, ties to even.
     fn div_scaled(self, den: Self, scale: i64) -> Option<i64>;
-    /// A denominator prepared for several [`Scalar::div_scaled_by`].
-    type Divisor: Copy + Debug;
+    /// A denominator prepared for several [`Scalar::div_scaled_by`] (and
+    /// the fast tier's quotients).
+    type Divisor: Copy + Debug + super::divisor::FastQuotient<Self>;
     /// `self` prepared as the denominator of [`Scalar::div_scaled_by`], or
     /// `None` where [`Scalar::div_scaled`] would fail for any numerator (not
     /// finite, or `≤ 0`).

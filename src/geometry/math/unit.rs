@@ -54,6 +54,22 @@ pub(crate) fn rsqrt_f32(s: f32) -> Option<f32> {
     Some(r)
 }
 
+/// [`rsqrt_f32`] with two Newton steps instead of three, for the fast
+/// tier's lighting: the method's error `1.5·(1.5·0.035²)²` ≈ `4.8·10^-6`
+/// relative, plus the rounding (`5·2^-24`): within `5.2·10^-6`.
+#[inline]
+pub(crate) fn rsqrt_f32_fast(s: f32) -> Option<f32> {
+    if !in_rsqrt_domain(s) {
+        return None;
+    }
+    let mut r = f32::from_bits(0x5F37_59DF - (s.to_bits() >> 1));
+    let half = 0.5 * s;
+    for _ in 0..2 {
+        r = r * (1.5 - half * r * r);
+    }
+    Some(r)
+}
+
 /// `Y₀(i) ≈ 2^29/√ν` at the midpoint `ν = (i + ½)/64` of table cell `i`
 /// (`16 ≤ i < 64`, so `ν ∈ [¼, 1)`): `2^32/√(i + ½) = √(2^65/(2i + 1))`.
 const RSQRT_TABLE: [u32; 48] = {

@@ -14,6 +14,7 @@
 //! of [`Pipeline::draw_valid_mesh`], bit for bit, in the same order.
 
 use super::presnap::{PreSnap, orientation};
+use super::tier::Tier;
 use super::{Material, MeshSetup, MeshStats, Pipeline, Shade, channels, finite_color};
 use crate::Error;
 use crate::clip3d::{Class, ClipVertex, VertexClass};
@@ -135,7 +136,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     /// (validated meshes have none; not looked for when every vertex lies
     /// on one side of the band), and whatever `sink` returns.
     #[allow(clippy::too_many_arguments)]
-    pub(super) fn draw_cached<Src: VertexSource, M: Material<T>>(
+    pub(super) fn draw_cached<R: Tier, Src: VertexSource, M: Material<T>>(
         &self,
         setup: &MeshSetup<T>,
         src: &Src,
@@ -206,7 +207,8 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
                         let e = &mut cache[j];
                         if e.state & Cached::<T, S>::QUO == 0 {
                             let usable = self.depth_deferrable(e.clip);
-                            e.q = presnap.quotients(e.clip).filter(|_| usable).unwrap_or([f32::NAN; 2]);
+                            e.q =
+                                presnap.quotients::<T, R>(e.clip).filter(|_| usable).unwrap_or([f32::NAN; 2]);
                             e.state |= Cached::<T, S>::QUO;
                         }
                         q[k] = e.q;
@@ -221,7 +223,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
                 for (k, &j) in idx.iter().enumerate() {
                     let e = &mut cache[j];
                     if e.state & Cached::<T, S>::SNAP == 0 {
-                        self.snap_entry(e, &presnap, cull_sign != 0);
+                        self.snap_entry::<R>(e, &presnap, cull_sign != 0);
                     }
                     if e.state & Cached::<T, S>::SNAPPED != 0 {
                         at[k] = e.screen;
@@ -236,7 +238,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
                 if !self.keep(at.map(|v| v.pos), stats) {
                     continue;
                 }
-                self.complete(ctx, src, material, max, cache, idx, &mut at)?;
+                self.complete::<R, _, _>(ctx, src, material, max, cache, idx, &mut at)?;
                 sink(ScreenTriangle { v: at, flat: flat_shade }, stats)?;
                 stats.emitted += 1;
                 continue;
@@ -244,12 +246,13 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
             let face_n = self.face_normal(src, idx)?;
             // Clamped to finite values as `VertexCtx::color` clamps: the clipper
             // interpolates these.
-            let light =
-                |k: usize| self.vertex_light_raw(ctx, src, material, idx[k], face_n).map(finite_color);
+            let light = |k: usize| {
+                self.vertex_light_raw::<R, _, _>(ctx, src, material, idx[k], face_n).map(finite_color)
+            };
             let cs = if flat_shade { [light(0)?; 3] } else { [light(0)?, light(1)?, light(2)?] };
             let clip = idx.map(|j| cache[j].clip);
             let vs = [0, 1, 2].map(|k| ClipVertex { pos: clip[k], attr: cs[k] });
-            self.clip_and_emit(vs, planes, stats, |mut at, attr, stats| {
+            self.clip_and_emit::<R, 3>(vs, planes, stats, |mut at, attr, stats| {
                 for (v, c) in at.iter_mut().zip(attr) {
                     v.color = channels(c, max);
                 }

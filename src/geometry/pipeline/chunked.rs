@@ -25,6 +25,7 @@
 
 use super::cache::{Cached, Slots};
 use super::cluster::ClusterSource;
+use super::tier::Tier;
 use super::{ChunkMemo, Material, MeshSetup, MeshStats, Pipeline};
 use crate::Error;
 use crate::math::Scalar;
@@ -135,8 +136,9 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     /// ([`super::chunk_record`]; `NoMemo` for none). `cache` has at least
     /// three entries.
     #[allow(clippy::too_many_arguments)]
-    pub(super) fn draw_chunked<M: Material<T>, const B: usize, const C: usize>(
+    pub(super) fn draw_chunked<R: Tier, M: Material<T>, const B: usize, const C: usize>(
         &self,
+        _tier: R,
         setup: &MeshSetup<T>,
         mesh: &Mesh<'_>,
         material: &M,
@@ -162,7 +164,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
             let src = ClusterSource { mesh, vertices: &table.vertex[..table.len] };
             let triangles = table.triangles[..table.count].iter().map(|t| t.map(usize::from));
             let slots = Slots { slots: &mut cache[..table.len], inside };
-            self.draw_cached(setup, &src, material, slots, triangles, stats, |tri, _| sink(tri))?;
+            self.draw_cached::<R, _, _>(setup, &src, material, slots, triangles, stats, |tri, _| sink(tri))?;
             memo.drawn(n, &cache[..table.len], &setup.band);
         }
         Ok(())

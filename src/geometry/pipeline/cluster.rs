@@ -24,12 +24,13 @@
 use super::cache::{Slots, VertexCache, VertexSource};
 use super::frame_clusters::{ClusterFrame, FrameClusters, FrameKey};
 use super::inside::InsideView;
+use super::tier::{ExactTier, FastTier, Tier};
 use super::{Material, MeshStats, Pipeline, Uniform, rows_f32};
 use crate::depth::DepthFormat;
 use crate::edge::Cull;
 use crate::math::{Mat4, Scalar};
 use crate::mesh::{MAX_MESHLET_VERTICES, Mesh, ValidMeshletMesh};
-use crate::raster3d::{Interpolation, ScreenTriangle};
+use crate::raster3d::{Interpolation, Precision, ScreenTriangle};
 use crate::render::Band3d;
 use crate::{Error, Interpolate};
 
@@ -243,6 +244,26 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         color: C,
         material: &Mat,
         cache: &mut ClusterCache<T, S, N, K>,
+        rows: ((i32, i32), bool),
+        sink: impl FnMut(&ScreenTriangle<S>),
+    ) -> Result<MeshStats, Error> {
+        // The tier chosen once per mesh: each runs its own instance.
+        match self.precision {
+            Precision::Exact => self.meshlets_in(ExactTier, mesh, model, color, material, cache, rows, sink),
+            Precision::Fast => self.meshlets_in(FastTier, mesh, model, color, material, cache, rows, sink),
+        }
+    }
+
+    /// [`Pipeline::meshlets_into`] in tier `R`.
+    #[allow(clippy::too_many_arguments)]
+    fn meshlets_in<R: Tier, P: Scalar, C: Interpolate, Mat: Material<T>, const N: usize, const K: usize>(
+        &self,
+        _tier: R,
+        mesh: &ValidMeshletMesh<'_, P>,
+        model: &Mat4<T>,
+        color: C,
+        material: &Mat,
+        cache: &mut ClusterCache<T, S, N, K>,
         (rows, with_inv_w): ((i32, i32), bool),
         mut sink: impl FnMut(&ScreenTriangle<S>),
     ) -> Result<MeshStats, Error> {
@@ -302,8 +323,16 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
                     sink(tri);
                     Ok(())
                 };
-                let last =
-                    pipe.draw_inside(&setup, &src, material, &mut cache.v, vc, triangles, &mut stats, emit);
+                let last = pipe.draw_inside::<R, _, _>(
+                    &setup,
+                    &src,
+                    material,
+                    &mut cache.v,
+                    vc,
+                    triangles,
+                    &mut stats,
+                    emit,
+                );
                 // What this band shows of the cluster's last row narrows the
                 // record for the bands below (`ClusterFrame::narrow`).
                 if let (Ok(Some(last)), Some(r)) = (&last, record.get_mut(i)) {
@@ -316,7 +345,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
                     Ok(())
                 };
                 let tris = triangles.iter().map(|t| t.map(usize::from));
-                pipe.draw_cached(
+                pipe.draw_cached::<R, _, _>(
                     &setup,
                     &src,
                     material,

@@ -31,6 +31,7 @@
 
 use super::cache::{Cached, VertexSource};
 use super::presnap::PreSnap;
+use super::tier::Tier;
 use super::{Band, Material, MeshSetup, MeshStats, Pipeline, Shade, VertexCtx};
 use crate::Error;
 use crate::math::{Scalar, Vec3};
@@ -56,7 +57,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     /// 64 may instead drop its triangle, see the `states` comment), and
     /// whatever `sink` returns.
     #[allow(clippy::too_many_arguments)]
-    pub(super) fn draw_inside<Src: VertexSource, M: Material<T>>(
+    pub(super) fn draw_inside<R: Tier, Src: VertexSource, M: Material<T>>(
         &self,
         setup: &MeshSetup<T>,
         src: &Src,
@@ -99,7 +100,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
             all_sides &= side;
             any_side |= side;
             if side == 0 {
-                self.snap_slot(ctx, &presnap, e, p, yw);
+                self.snap_slot::<R>(ctx, &presnap, e, p, yw);
             } else {
                 e.clip = [T::ZERO, yw.0, T::ZERO, yw.1];
             }
@@ -126,7 +127,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
                     let e = cache.get_mut(j).ok_or(Error::InvalidMesh)?;
                     if e.state & Cached::<T, S>::SNAP == 0 {
                         let p = src.position(j).map(Vec3::from_data).ok_or(Error::InvalidMesh)?;
-                        self.snap_slot(ctx, &presnap, e, p, (e.clip[1], e.clip[3]));
+                        self.snap_slot::<R>(ctx, &presnap, e, p, (e.clip[1], e.clip[3]));
                         states[j % MAX_MESHLET_VERTICES] = e.state;
                     }
                 }
@@ -149,7 +150,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
             }
             // Filled in place and lent to the sink: no copies of the triangle.
             let mut tri = ScreenTriangle { v: [ScreenVertex::default(); 3], flat };
-            self.complete(ctx, src, material, *max, cache.as_mut_slice(), idx, &mut tri.v)?;
+            self.complete::<R, _, _>(ctx, src, material, *max, cache.as_mut_slice(), idx, &mut tri.v)?;
             sink(&tri, stats)?;
             stats.emitted += 1;
         }
@@ -182,15 +183,22 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     /// it applies, else as [`Pipeline::snap_entry`] snaps (the same
     /// position; depth and `1/w` deferred where they cannot fail).
     #[inline]
-    fn snap_slot(&self, ctx: &VertexCtx<T>, presnap: &PreSnap, e: &mut Cached<T, S>, p: Vec3<T>, yw: (T, T)) {
+    fn snap_slot<R: Tier>(
+        &self,
+        ctx: &VertexCtx<T>,
+        presnap: &PreSnap,
+        e: &mut Cached<T, S>,
+        p: Vec3<T>,
+        yw: (T, T),
+    ) {
         e.clip = ctx.position(p, yw);
         e.code = 0;
-        if let Some(pos) = presnap.snap_inside::<T, S>(e.clip) {
+        if let Some(pos) = presnap.snap_inside::<T, S, R>(e.clip) {
             e.screen = ScreenVertex { pos, depth: 0, inv_w: 0, color: [0; 3] };
             e.state |= Cached::<T, S>::CLIP | Cached::<T, S>::SNAP | Cached::<T, S>::SNAPPED;
         } else {
             e.state |= Cached::<T, S>::CLIP;
-            self.snap_entry(e, presnap, false);
+            self.snap_entry::<R>(e, presnap, false);
         }
     }
 }

@@ -6,6 +6,7 @@
 
 use super::cache::Cached;
 use super::chunked::{SMALL_SLOTS, SlotTable, SmallTable, WideTable};
+use super::tier::{ExactTier, FastTier, Tier};
 use super::{
     Band, ChunkMemo, Material, MeshSetup, MeshStats, NoMemo, Pipeline, Shade, Uniform, VertexCache, VertexCtx,
 };
@@ -14,7 +15,7 @@ use crate::clip3d::{Class, ClipPlanes, ClipVertex, classify, clip_triangle};
 use crate::edge::Cull;
 use crate::math::{Mat4, Scalar, Vec3};
 use crate::mesh::{Mesh, ValidMesh};
-use crate::raster3d::{ScreenTriangle, ScreenVertex};
+use crate::raster3d::{Precision, ScreenTriangle, ScreenVertex};
 use crate::{Error, Interpolate};
 
 impl<T: Scalar, const S: u32> Pipeline<T, S> {
@@ -146,17 +147,28 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         memo: &mut impl ChunkMemo<T>,
         sink: impl FnMut(ScreenTriangle<S>) -> Result<(), Error>,
     ) -> Result<MeshStats, Error> {
-        if M::PER_FACE {
-            return self.valid_mesh_into(mesh, model, color, material, sink);
+        // The tier chosen once per mesh (`tier`): each runs its own code.
+        let (cache, table) = (&mut [Cached::EMPTY; SMALL_SLOTS], &mut SmallTable::new());
+        match (M::PER_FACE, self.precision) {
+            (true, Precision::Exact) => {
+                self.valid_mesh_into::<ExactTier, _, _>(mesh, model, color, material, sink)
+            }
+            (true, Precision::Fast) => {
+                self.valid_mesh_into::<FastTier, _, _>(mesh, model, color, material, sink)
+            }
+            (_, Precision::Exact) => {
+                self.cached_into(ExactTier, mesh, model, color, material, memo, cache, table, sink)
+            }
+            (_, Precision::Fast) => {
+                self.cached_into(FastTier, mesh, model, color, material, memo, cache, table, sink)
+            }
         }
-        let mut cache = [Cached::EMPTY; SMALL_SLOTS];
-        self.cached_into(mesh, model, color, material, memo, &mut cache, &mut SmallTable::new(), sink)
     }
 
     /// [`Pipeline::mesh_into`] with each vertex transformed once per
     /// corner (no cache): the empty cache's path, and that of a colour per
     /// face.
-    fn valid_mesh_into<C: Interpolate, M: Material<T>>(
+    fn valid_mesh_into<R: Tier, C: Interpolate, M: Material<T>>(
         &self,
         mesh: &ValidMesh<'_>,
         model: &Mat4<T>,
@@ -180,23 +192,23 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
                 let c = |k: usize| {
                     let n = if flat { face_n } else { mesh.normals.get(idx[k] as usize).copied() };
                     if M::UNIFORM {
-                        ctx.color(pos[k], n)
+                        ctx.color::<R>(pos[k], n)
                     } else {
-                        ctx.color_of(pos[k], n, material.base(ctx.base, i, usize::from(idx[k])))
+                        ctx.color_of::<R>(pos[k], n, material.base(ctx.base, i, usize::from(idx[k])))
                     }
                 };
                 // Flat: one lit colour per face, vertex 0 lit with the face normal.
                 if self.shade == Shade::Flat { [c(0); 3] } else { [c(0), c(1), c(2)] }
             };
             if class == Class::Inside {
-                if let Some(at) = self.snapped_and_kept(clip, &mut stats) {
+                if let Some(at) = self.snapped_and_kept::<R>(clip, &mut stats) {
                     self.emit(at, colors(), max, &mut sink, &mut stats)?;
                 }
                 continue;
             }
             let cs = colors();
             let v = [0, 1, 2].map(|k| ClipVertex { pos: clip[k], attr: cs[k] });
-            self.clip_and_emit(v, planes, &mut stats, |at, attr, stats| {
+            self.clip_and_emit::<R, 3>(v, planes, &mut stats, |at, attr, stats| {
                 self.emit(at, attr, max, &mut sink, stats)
             })?;
         }
@@ -234,23 +246,45 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         if V == 0 {
             // Per corner (a type's choice: the branch folds away).
             let mut bins = bins::BinWriter::new(bins);
-            let result = self.valid_mesh_into(mesh, model, color, &Uniform, bins.sink());
+            let result = match self.precision {
+                Precision::Exact => {
+                    self.valid_mesh_into::<ExactTier, _, _>(mesh, model, color, &Uniform, bins.sink())
+                }
+                Precision::Fast => {
+                    self.valid_mesh_into::<FastTier, _, _>(mesh, model, color, &Uniform, bins.sink())
+                }
+            };
             return bins.finish(result);
         }
         if mesh.mesh().vertex_count() > V && V < 3 {
             return Err(Error::CapacityExceeded { needed: 3, capacity: V });
         }
         let mut bins = bins::BinWriter::new(bins);
-        let result = self.cached_into(
-            mesh,
-            model,
-            color,
-            &Uniform,
-            &mut NoMemo,
-            &mut cache.v,
-            &mut WideTable::new(),
-            bins.sink(),
-        );
+        let (memo, table) = (&mut NoMemo, &mut WideTable::new());
+        let result = match self.precision {
+            Precision::Exact => self.cached_into(
+                ExactTier,
+                mesh,
+                model,
+                color,
+                &Uniform,
+                memo,
+                &mut cache.v,
+                table,
+                bins.sink(),
+            ),
+            Precision::Fast => self.cached_into(
+                FastTier,
+                mesh,
+                model,
+                color,
+                &Uniform,
+                memo,
+                &mut cache.v,
+                table,
+                bins.sink(),
+            ),
+        };
         bins.finish(result)
     }
 
@@ -258,8 +292,9 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     /// the whole mesh) and `table` for its chunks' slots, every triangle to
     /// `sink`; `material` is not per face.
     #[allow(clippy::too_many_arguments)]
-    fn cached_into<C: Interpolate, M: Material<T>, const B: usize, const K: usize>(
+    fn cached_into<R: Tier, C: Interpolate, M: Material<T>, const B: usize, const K: usize>(
         &self,
+        tier: R,
         mesh: &ValidMesh<'_>,
         model: &Mat4<T>,
         color: C,
@@ -276,20 +311,22 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         };
         let inside = inside::InsideView::new(&setup.ctx.mvp, setup.planes).contains(mesh.bounding_sphere);
         if mesh.vertex_count() > cache.len() {
-            self.draw_chunked(&setup, mesh, material, memo, cache, table, inside, &mut stats, sink)?;
+            self.draw_chunked(tier, &setup, mesh, material, memo, cache, table, inside, &mut stats, sink)?;
             return Ok(stats);
         }
         let cache = &mut cache[..mesh.vertex_count()];
         let triangles = mesh.indices.iter().map(|t| t.map(usize::from));
         let cached = cache::Slots { slots: cache, inside };
-        self.draw_cached(&setup, mesh, material, cached, triangles, &mut stats, |tri, _| sink(tri))?;
+        self.draw_cached::<R, _, _>(&setup, mesh, material, cached, triangles, &mut stats, |tri, _| {
+            sink(tri)
+        })?;
         Ok(stats)
     }
 
     /// Clips a triangle that crosses a plane and hands each piece that
     /// survives snapping and culling to `emit`, with its interpolated
     /// attributes (all counted in `stats`).
-    pub(super) fn clip_and_emit<const A: usize>(
+    pub(super) fn clip_and_emit<R: Tier, const A: usize>(
         &self,
         v: [ClipVertex<T, A>; 3],
         planes: ClipPlanes,
@@ -298,7 +335,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     ) -> Result<(), Error> {
         stats.clipped += 1;
         for tri in clip_triangle(v, planes).triangles() {
-            if let Some(at) = self.snapped_and_kept(tri.map(|v| v.pos), stats) {
+            if let Some(at) = self.snapped_and_kept::<R>(tri.map(|v| v.pos), stats) {
                 emit(at, tri.map(|v| v.attr), stats)?;
             }
         }

@@ -38,7 +38,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         let max = C::CHANNEL_MAX;
         let base = material::base_of(color);
         let model_light = match &self.lighting {
-            Some(l) => ModelLight::new(l, &model_view),
+            Some(l) => ModelLight::new(l, &model_view, self.precision == crate::raster3d::Precision::Fast),
             _ => None,
         };
         let ctx =

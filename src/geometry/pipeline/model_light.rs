@@ -41,8 +41,9 @@
 //! rounding). Otherwise (a non-uniform scale, a shear) lighting stays in
 //! eye space.
 
+use super::tier::Tier;
 use crate::light::{Lighting, Viewer, positive, powi};
-use crate::math::unit::{in_rsqrt_domain, rsqrt_f32, unit_f32};
+use crate::math::unit::{in_rsqrt_domain, rsqrt_f32, rsqrt_f32_fast, unit_f32};
 use crate::math::{Mat4, Scalar, Vec3};
 
 /// Per mesh: the lighting carried into model space (module docs), in the
@@ -61,12 +62,19 @@ pub(super) struct ModelLight<T> {
     ambient: T,
     diffuse: T,
     specular: Option<(T, u32)>,
+    /// The fast tier's `(n̂·h)²` below which the specular term is under
+    /// [`FAST_SPEC_FLOOR`] and is left out; 0 in the exact tier (never).
+    spec_floor: T,
 }
+
+/// The largest specular term the fast tier leaves out: `2^-13` of full
+/// intensity, an eighth of a 6-bit channel's step.
+pub(super) const FAST_SPEC_FLOOR: f32 = 1.0 / 8192.0;
 
 impl<T: Scalar> ModelLight<T> {
     /// The model-space lighting of `lighting` for model-view `mv`, or `None`
     /// when `mv` is not a similarity (or not finite).
-    pub(super) fn new(lighting: &Lighting<T>, mv: &Mat4<T>) -> Option<Self> {
+    pub(super) fn new(lighting: &Lighting<T>, mv: &Mat4<T>, fast: bool) -> Option<Self> {
         let col =
             |c: usize| Vec3::new(mv.cols[c][0].to_f32(), mv.cols[c][1].to_f32(), mv.cols[c][2].to_f32());
         let (c0, c1, c2, t) = (col(0), col(1), col(2), col(3));
@@ -114,6 +122,10 @@ impl<T: Scalar> ModelLight<T> {
             ambient: lighting.ambient,
             diffuse: lighting.diffuse,
             specular: lighting.specular,
+            spec_floor: match lighting.specular {
+                Some(s) if fast => spec_floor(s),
+                _ => T::ZERO,
+            },
         })
     }
 
@@ -121,7 +133,7 @@ impl<T: Scalar> ModelLight<T> {
     /// model normal `n` (module docs; the eye-space [`Lighting::shade`]).
     /// Inlined into the vertex stage (sixth pass: f32 knot −0.5 %).
     #[inline(always)]
-    pub(super) fn shade(&self, n: [f32; 3], p: Vec3<T>, base: [T; 3]) -> [T; 3] {
+    pub(super) fn shade<R: Tier>(&self, n: [f32; 3], p: Vec3<T>, base: [T; 3]) -> [T; 3] {
         let mut n = Vec3::<T>::from_f32(n);
         // |n·n − 1| ≤ 2^-12 (NaN fails it): for `Fx` in 16.16, exactly as
         // in `f32` (its values below 2^8 convert exactly), without the
@@ -141,8 +153,11 @@ impl<T: Scalar> ModelLight<T> {
         let spec = match self.specular {
             Some((strength, exp)) if lambert > T::ZERO => {
                 let power = match self.half {
-                    Some(h) => powi(positive(n.dot(h)), exp),
-                    None => self.half_power(n, nl, p, exp),
+                    Some(h) => {
+                        let nh = positive(n.dot(h));
+                        if R::FAST && nh * nh < self.spec_floor { T::ZERO } else { powi(nh, exp) }
+                    }
+                    None => self.half_power::<R>(n, nl, p, exp),
                 };
                 strength * power
             }
@@ -165,17 +180,30 @@ impl<T: Scalar> ModelLight<T> {
     ///
     /// Otherwise (`Fx`, or an odd `exp`): [`ModelLight::half_dot`] to the
     /// power `exp`.
+    ///
+    /// The fast tier: `v̂` by [`rsqrt_f32_fast`], an odd exponent by one
+    /// more fast root, and a term whose `(n̂·h)²` lies below `spec_floor`
+    /// left out before the division and the power.
     #[inline(always)]
-    fn half_power(&self, n: Vec3<T>, nl: T, p: Vec3<T>, exp: u32) -> T {
-        if crate::math::vec::is_float::<T>() && exp & 1 == 0 {
-            if let Some((x, h2)) = self.half_terms_f32(n, nl, p) {
+    fn half_power<R: Tier>(&self, n: Vec3<T>, nl: T, p: Vec3<T>, exp: u32) -> T {
+        if crate::math::vec::is_float::<T>() && (exp & 1 == 0 || R::FAST) {
+            if let Some((x, h2)) = self.half_terms_f32::<R>(n, nl, p) {
+                let floor = self.spec_floor.to_f32();
+                if R::FAST && !(x > 0.0 && x * x >= floor * h2 && in_rsqrt_domain(h2)) {
+                    // Below the floor (or no half vector): under FAST_SPEC_FLOOR.
+                    return if exp == 0 { T::ONE } else { T::ZERO };
+                }
+                if exp & 1 == 1 {
+                    return powi(T::from_f32(x * rsqrt_f32_fast(h2).unwrap_or(0.0)), exp);
+                }
                 // Outside rsqrt_f32's domain the root form gave 0 too (h = 0:
                 // the viewer exactly against the light).
                 let q = if x > 0.0 && in_rsqrt_domain(h2) { x * x / h2 } else { 0.0 };
                 return powi(T::from_f32(q), exp / 2);
             }
         }
-        powi(self.half_dot(n, nl, p), exp)
+        let nh = self.half_dot(n, nl, p);
+        if R::FAST && nh * nh < self.spec_floor { T::ZERO } else { powi(nh, exp) }
     }
 
     /// `max(0, n̂ · h)` for the Blinn–Phong half vector `h` at `p`: for
@@ -183,7 +211,7 @@ impl<T: Scalar> ModelLight<T> {
     /// come from a table, [`Vec3::normalize_fast`]) by two unit vectors.
     fn half_dot(&self, n: Vec3<T>, nl: T, p: Vec3<T>) -> T {
         let nh = if crate::math::vec::is_float::<T>() {
-            let nh = match self.half_terms_f32(n, nl, p) {
+            let nh = match self.half_terms_f32::<super::tier::ExactTier>(n, nl, p) {
                 Some((x, h2)) => match rsqrt_f32(h2) {
                     Some(rh) => x * rh,
                     None => 0.0, // h = 0: the viewer exactly against the light
@@ -204,13 +232,33 @@ impl<T: Scalar> ModelLight<T> {
     /// In `f32`, `n̂·h·|h| = n̂·L_m + n̂·v̂` and `|h|² = |L_m|² + 2·L_m·v̂ + 1`
     /// (module docs) at `p`, with `v̂` from one reciprocal square root; `None`
     /// where `|E_m − p|²` is outside [`rsqrt_f32`]'s domain.
+    /// The fast tier's root is [`rsqrt_f32_fast`].
     #[inline(always)]
-    fn half_terms_f32(&self, n: Vec3<T>, nl: T, p: Vec3<T>) -> Option<(f32, f32)> {
+    fn half_terms_f32<R: Tier>(&self, n: Vec3<T>, nl: T, p: Vec3<T>) -> Option<(f32, f32)> {
         let (n, d, l) = (in_f32(n), in_f32(self.eye - p), in_f32(self.l));
-        let r = rsqrt_f32(d.dot(d))?;
+        let r = if R::FAST { rsqrt_f32_fast(d.dot(d)) } else { rsqrt_f32(d.dot(d)) }?;
         let (nv, lv) = (n.dot(d) * r, l.dot(d) * r);
         Some((nl.to_f32() + nv, self.l2_plus_1.to_f32() + 2.0 * lv))
     }
+}
+
+/// The fast tier's `spec_floor` for specular `(strength, exp)`: a `q =
+/// (n̂·h)²` (by bisection to `2^-14`, once per mesh) with
+/// `|strength|·q^(exp/2)` below half of `FAST_SPEC_FLOOR`, so every term
+/// left out below it is under that floor. 1 when every term is.
+fn spec_floor<T: Scalar>((strength, exp): (T, u32)) -> T {
+    let (s, eps) = (strength.abs(), T::from_f32(FAST_SPEC_FLOOR * 0.5));
+    // s·(√q)^exp from q: its squares, and √q for an odd exponent.
+    let term = |q: T| s * powi(q, exp / 2) * if exp & 1 == 1 { q.sqrt() } else { T::ONE };
+    let (mut lo, mut hi) = (T::ZERO, T::ONE);
+    if term(hi) < eps {
+        return hi;
+    }
+    for _ in 0..14 {
+        let mid = (lo + hi) * T::from_f32(0.5);
+        if term(mid) < eps { lo = mid } else { hi = mid }
+    }
+    lo
 }
 
 /// `v`'s components as `f32`, each as [`Scalar::to_f32`] gives it (exact
@@ -267,16 +315,16 @@ mod tests {
                 * transform::rotation_y(b)
                 * transform::rotation_z(c)
                 * transform::scaling(Vec3::new(s, s, s));
-            let ml = ModelLight::new(&light, &m).expect("a similarity");
+            let ml = ModelLight::new(&light, &m, false).expect("a similarity");
             let m_fx = Mat4 { cols: m.cols.map(|c| c.map(Fx::from_f32)) };
-            let ml_fx = ModelLight::new(&light_fx, &m_fx).expect("a similarity in Fx");
+            let ml_fx = ModelLight::new(&light_fx, &m_fx, false).expect("a similarity in Fx");
             for _ in 0..20 {
                 let n = [rnd(), rnd(), rnd()];
                 let len = (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt();
                 let n = n.map(|v| (v / len) as f32);
                 let p = Vec3::new(rnd() as f32 * 0.5, rnd() as f32 * 0.5, rnd() as f32 * 0.5);
-                let got = ml.shade(n, p, [1.0, 0.5, 0.25]);
-                let got_fx = ml_fx.shade(
+                let got = ml.shade::<super::super::tier::ExactTier>(n, p, [1.0, 0.5, 0.25]);
+                let got_fx = ml_fx.shade::<super::super::tier::ExactTier>(
                     n,
                     Vec3::from_f32([p.x, p.y, p.z]),
                     [Fx::ONE, Fx::from_f32(0.5), Fx::from_f32(0.25)],
@@ -323,9 +371,9 @@ mod tests {
         let bound_fx = f64::from(exp * 4 + 8) / 65536.0;
         assert!(worst_fx < bound_fx && worst_fx > 2f64.powi(-16), "{worst_fx:e}");
         // A shear or a non-uniform scale keeps eye-space lighting.
-        assert!(ModelLight::new(&light, &transform::scaling(Vec3::new(1.0, 1.1, 1.0))).is_none());
+        assert!(ModelLight::new(&light, &transform::scaling(Vec3::new(1.0, 1.1, 1.0)), false).is_none());
         let mut shear = Mat4::<f32>::IDENTITY;
         shear.cols[1][0] = 0.01;
-        assert!(ModelLight::new(&light, &shear).is_none());
+        assert!(ModelLight::new(&light, &shear, false).is_none());
     }
 }

@@ -27,11 +27,31 @@
 //! offsets within `2^27` ([`PreSnap::new`]), snapping cannot fail for these
 //! vertices, so the triangle is counted as a back face exactly as before.
 
+use super::tier::Tier;
 use crate::math::Scalar;
 use crate::math::divisor::{TWO23, round_even_below_2p23, round_even_f32, round_even_signed_below_2p22};
 
 /// The largest `|q|` [`orientation`] accepts.
 const Q_MAX: f32 = 4_194_304.0; // 2^22
+
+/// The largest `|q|` the fast tier rounds from its own quotients
+/// (`snap::FAST_SNAP_MAX`); the general path decides beyond it.
+const FAST_Q_MAX: f32 = 2_097_152.0; // 2^21
+
+/// The quotients snapping rounds, x then −y (`ax`, `ay` half the viewport
+/// in subpixels): the exact tier's `c/w·a`, the fast tier's `c·(1/w)·a`
+/// (one `VDIV`, as `FastQuotient` computes it), within that tier's range.
+#[inline(always)]
+fn tier_quotients<R: Tier>(x: f32, y: f32, w: f32, [ax, ay]: [f32; 2]) -> Option<[f32; 2]> {
+    let (q, lim) = if R::FAST {
+        let r = 1.0 / w;
+        ([x * r * ax, -y * r * ay], FAST_Q_MAX)
+    } else {
+        ([x / w * ax, -y / w * ay], Q_MAX)
+    };
+    // False for NaN and infinity too.
+    (q[0].abs() <= lim && q[1].abs() <= lim).then_some(q)
+}
 
 /// Per mesh: the halves of the viewport that snapping scales by, or `None`
 /// when the pre-snap test does not apply (`Fx`, an odd subpixel extent, or
@@ -78,17 +98,17 @@ impl PreSnap {
     /// [`round_even_signed_below_2p22`]: the value of [`round_even_f32`],
     /// without its sign and range branches.
     #[inline]
-    pub(super) fn snap_inside<T: Scalar, const S: u32>(&self, c: [T; 4]) -> Option<crate::SubPoint<S>> {
-        let [ax, ay] = self.half?;
+    pub(super) fn snap_inside<T: Scalar, const S: u32, R: Tier>(
+        &self,
+        c: [T; 4],
+    ) -> Option<crate::SubPoint<S>> {
+        let half = self.half?;
         let (x, y, z, w) = (c[0].to_f32(), c[1].to_f32(), c[2].to_f32(), c[3].to_f32());
         // `w > 0` finite; `z` finite (NaN fails the comparison) within 128·w.
         if !(w > 0.0 && w <= f32::MAX && z.abs() <= w * 128.0) {
             return None;
         }
-        let q = [x / w * ax, -y / w * ay];
-        if !(q[0].abs() <= Q_MAX && q[1].abs() <= Q_MAX) {
-            return None;
-        }
+        let q = tier_quotients::<R>(x, y, w, half)?;
         let r = q.map(round_even_signed_below_2p22);
         crate::SubPoint::new(self.base[0] + r[0], self.base[1] + r[1]).ok()
     }
@@ -102,15 +122,13 @@ impl PreSnap {
     /// `None` if the test cannot use this vertex (not `f32`, `w` not a
     /// positive finite divisor, or beyond [`Q_MAX`]).
     #[inline]
-    pub(super) fn quotients<T: Scalar>(&self, c: [T; 4]) -> Option<[f32; 2]> {
-        let [ax, ay] = self.half?;
+    pub(super) fn quotients<T: Scalar, R: Tier>(&self, c: [T; 4]) -> Option<[f32; 2]> {
+        let half = self.half?;
         let (x, y, w) = (c[0].to_f32(), c[1].to_f32(), c[3].to_f32());
         if !(w > 0.0 && w <= f32::MAX) {
             return None;
         }
-        let q = [x / w * ax, -y / w * ay];
-        // False for NaN and infinity too.
-        (q[0].abs() <= Q_MAX && q[1].abs() <= Q_MAX).then_some(q)
+        tier_quotients::<R>(x, y, w, half)
     }
 }
 
@@ -122,8 +140,10 @@ impl PreSnap {
 /// added and taken away below `2^23`, an integer above, where `as u32`
 /// saturates as the clamp to `u32::MAX` does) and clamped as there, without
 /// the 64-bit values.
+/// In the fast tier from `1/w` (one `VDIV`), as `FastQuotient` computes
+/// them (`Pipeline::snap_depth` in that tier).
 #[inline]
-pub(super) fn depth_f32(z: f32, w: f32, w_ref: Option<f32>) -> Option<(u32, u32)> {
+pub(super) fn depth_f32<R: Tier>(z: f32, w: f32, w_ref: Option<f32>) -> Option<(u32, u32)> {
     if !(w > 0.0 && w <= f32::MAX && z.abs() <= w * 128.0) {
         return None;
     }
@@ -138,10 +158,12 @@ pub(super) fn depth_f32(z: f32, w: f32, w_ref: Option<f32>) -> Option<(u32, u32)
         }
     };
     // |z/w| ≤ 128: the depth quotient is within 2^39.
-    let depth = round(z / w * 4_294_967_296.0, 0);
+    let rw = 1.0 / w; // the fast tier's only division (unused in the exact)
+    let div = |n: f32| if R::FAST { n * rw } else { n / w };
+    let depth = round(div(z) * 4_294_967_296.0, 0);
     // No `1/w` wanted: 1, as `Pipeline::snap_depth` leaves it.
     let Some(w_ref) = w_ref else { return Some((depth, 1)) };
-    let r = w_ref / w * 1_073_741_824.0;
+    let r = div(w_ref) * 1_073_741_824.0;
     // NaN too.
     if r.is_nan() || r.abs() > 1_099_511_627_776.0 {
         return None;
@@ -171,6 +193,7 @@ pub(super) fn orientation(q: [[f32; 2]; 3]) -> i8 {
 
 #[cfg(test)]
 mod tests {
+    use super::super::tier::ExactTier;
     use super::*;
 
     /// The exact test's area from the rounded quotients.
@@ -275,17 +298,17 @@ mod tests {
                 z
             };
             let w_ref = [1.0f32, 1e-9, 3e9, 0.37][i as usize % 4];
-            if let Some(got) = depth_f32(z, w, Some(w_ref)) {
+            if let Some(got) = depth_f32::<ExactTier>(z, w, Some(w_ref)) {
                 assert_eq!(Some(got), want(z, w, w_ref), "{z} {w} {w_ref}");
                 // Without 1/w: the same depth, and 1.
-                assert_eq!(depth_f32(z, w, None), Some((got.0, 1)));
+                assert_eq!(depth_f32::<ExactTier>(z, w, None), Some((got.0, 1)));
                 n += 1;
             }
         }
         assert!(n > 100_000, "{n}");
-        assert_eq!(depth_f32(1.0, 1.0, Some(f32::INFINITY)), None);
-        assert_eq!(depth_f32(129.0, 1.0, Some(1.0)), None);
-        assert_eq!(depth_f32(129.0, 1.0, None), None);
+        assert_eq!(depth_f32::<ExactTier>(1.0, 1.0, Some(f32::INFINITY)), None);
+        assert_eq!(depth_f32::<ExactTier>(129.0, 1.0, Some(1.0)), None);
+        assert_eq!(depth_f32::<ExactTier>(129.0, 1.0, None), None);
     }
 
     /// The inside snap agrees with the quotients' rounding (ties included)
@@ -305,11 +328,11 @@ mod tests {
             }
             let z = [0.5 * w, -200.0 * w, f32::NAN, 128.0 * w][i as usize % 4];
             let clip = [c[0], c[1], z, w];
-            let got = p.snap_inside::<f32, 4>(clip);
+            let got = p.snap_inside::<f32, 4, ExactTier>(clip);
             let usable = z.is_finite() && z.abs() <= w * 128.0;
-            let want = p.quotients(clip).filter(|_| usable).and_then(|q| p.snap::<4>(q));
+            let want = p.quotients::<_, ExactTier>(clip).filter(|_| usable).and_then(|q| p.snap::<4>(q));
             assert_eq!(got, want, "{clip:?}");
-            if let Some(q) = p.quotients(clip) {
+            if let Some(q) = p.quotients::<_, ExactTier>(clip) {
                 ties += u32::from(q[0].fract().abs() == 0.5);
             }
             n += u32::from(got.is_some());
@@ -320,7 +343,7 @@ mod tests {
         }
         assert_eq!(
             PreSnap::new::<crate::math::Fx>((320, 240), (0, 0), 4)
-                .snap_inside::<crate::math::Fx, 4>([crate::math::Fx::ZERO; 4]),
+                .snap_inside::<crate::math::Fx, 4, ExactTier>([crate::math::Fx::ZERO; 4]),
             None
         );
     }
@@ -332,7 +355,7 @@ mod tests {
         for _ in 0..100_000 {
             let w = (rng.unit() * 10.0 + 0.01) as f32;
             let c = [(rng.unit() - 0.5) * 4.0, (rng.unit() - 0.5) * 4.0].map(|v| v as f32 * w);
-            let q = p.quotients([c[0], c[1], 0.0, w]).expect("in range");
+            let q = p.quotients::<_, ExactTier>([c[0], c[1], 0.0, w]).expect("in range");
             assert_eq!(round_even_f32(q[0]), c[0].div_scaled_by(w, 320 * 16 / 2).unwrap());
             assert_eq!(round_even_f32(q[1]), (-c[1]).div_scaled_by(w, 240 * 16 / 2).unwrap());
         }
@@ -352,8 +375,8 @@ mod tests {
             let w = (rng.unit() * 10.0 + 0.01) as f32;
             let c = [(rng.unit() - 0.5) * 4.0, (rng.unit() - 0.5) * 4.0].map(|v| v as f32 * w);
             let clip = [c[0], c[1], 0.0, w];
-            let q = p.quotients(clip).expect("in range");
-            assert_eq!(p.snap::<4>(q), pipe.snap_xy(clip, w));
+            let q = p.quotients::<_, ExactTier>(clip).expect("in range");
+            assert_eq!(p.snap::<4>(q), pipe.snap_xy::<ExactTier>(clip, w));
         }
         assert!(!PreSnap::new::<crate::math::Fx>((320, 240), (0, 0), 4).active());
         assert!(!PreSnap::new::<f32>((321, 240), (0, 0), 0).active());

@@ -2,10 +2,12 @@
 //! depth and `1/w`, and the snapped-area tests (zero area, back faces,
 //! rows) that decide which triangles go on.
 
+use super::tier::Tier;
 use super::{MeshStats, Pipeline};
 use crate::SubPoint;
 use crate::edge::Cull;
 use crate::math::Scalar;
+use crate::math::divisor::FastQuotient;
 use crate::primitive::center_rows;
 use crate::raster3d::ScreenVertex;
 
@@ -13,12 +15,12 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     /// Snapped positions of a triangle inside the clip volume, if it passes
     /// [`Pipeline::keep`]; a triangle that cannot be snapped counts as
     /// degenerate.
-    pub(super) fn snapped_and_kept(
+    pub(super) fn snapped_and_kept<R: Tier>(
         &self,
         clip: [[T; 4]; 3],
         stats: &mut MeshStats,
     ) -> Option<[ScreenVertex<S>; 3]> {
-        let Some(at) = self.snap_positions(clip) else {
+        let Some(at) = self.snap_positions::<R>(clip) else {
             stats.degenerate += 1;
             return None;
         };
@@ -28,29 +30,30 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     /// Clip space to snapped screen positions, depth and `1/w` (colour left
     /// 0); `None` if a coordinate is out of the rasterizer's range (the guard
     /// band prevents this) or not finite.
-    pub(super) fn snap_positions(&self, clip: [[T; 4]; 3]) -> Option<[ScreenVertex<S>; 3]> {
+    pub(super) fn snap_positions<R: Tier>(&self, clip: [[T; 4]; 3]) -> Option<[ScreenVertex<S>; 3]> {
         let mut out = [ScreenVertex::default(); 3];
         for (o, c) in out.iter_mut().zip(clip) {
-            *o = self.snap_vertex(c)?;
+            *o = self.snap_vertex::<R>(c)?;
         }
         Some(out)
     }
 
     /// One vertex of [`Pipeline::snap_positions`].
     /// `w` is prepared once for the four quotients ([`Scalar::divisor`]:
-    /// for [`Fx`](crate::math::Fx) one reciprocal, each quotient still exact).
-    pub(super) fn snap_vertex(&self, c: [T; 4]) -> Option<ScreenVertex<S>> {
+    /// for [`Fx`](crate::math::Fx) one reciprocal, each quotient still exact;
+    /// in the fast tier, `tier`'s quotients).
+    pub(super) fn snap_vertex<R: Tier>(&self, c: [T; 4]) -> Option<ScreenVertex<S>> {
         let w = c[3].divisor()?;
-        let (depth, inv_w) = self.snap_depth(c, w)?;
-        Some(ScreenVertex { pos: self.snap_xy(c, w)?, depth, inv_w, color: [0; 3] })
+        let (depth, inv_w) = self.snap_depth::<R>(c, w)?;
+        Some(ScreenVertex { pos: self.snap_xy::<R>(c, w)?, depth, inv_w, color: [0; 3] })
     }
 
     /// The snapped position of [`Pipeline::snap_vertex`] (all that culling
     /// needs).
     #[inline]
-    pub(super) fn snap_xy(&self, [x, y, _, _]: [T; 4], w: T::Divisor) -> Option<SubPoint<S>> {
-        let px = self.ndc_to_sub(x, w, self.size.0, self.origin.0, false)?;
-        let py = self.ndc_to_sub(y, w, self.size.1, self.origin.1, true)?;
+    pub(super) fn snap_xy<R: Tier>(&self, [x, y, _, _]: [T; 4], w: T::Divisor) -> Option<SubPoint<S>> {
+        let px = self.ndc_to_sub::<R>(x, w, self.size.0, self.origin.0, false)?;
+        let py = self.ndc_to_sub::<R>(y, w, self.size.1, self.origin.1, true)?;
         SubPoint::new(i32::try_from(px).ok()?, i32::try_from(py).ok()?).ok()
     }
 
@@ -65,8 +68,10 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     /// orthographic lens with the far plane off lost geometry `2^8` times
     /// its depth range away; found by the `closed` fuzz target).
     #[inline]
-    pub(super) fn snap_depth(&self, [_, _, z, _]: [T; 4], w: T::Divisor) -> Option<(u32, u32)> {
-        let depth = match z.div_scaled_by(w, u32::MAX as i64) {
+    pub(super) fn snap_depth<R: Tier>(&self, [_, _, z, _]: [T; 4], w: T::Divisor) -> Option<(u32, u32)> {
+        // The fast tier's quotients where they exist, else the exact ones.
+        let fast = |n: T, scale: i64| if R::FAST { w.quotient_fast(n, scale) } else { None };
+        let depth = match fast(z, u32::MAX as i64).or_else(|| z.div_scaled_by(w, u32::MAX as i64)) {
             Some(d) => d.clamp(0, u32::MAX as i64) as u32,
             None => saturated_depth(z)?,
         };
@@ -75,7 +80,10 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
             // Only ratios of 1/w matter; a vertex nearer than w_ref/4 (which
             // the w_ref contract excludes) saturates rather than vanishing.
             if self.with_inv_w {
-                self.w_ref.div_scaled_by(w, 1 << 30).unwrap_or(i64::MAX).clamp(1, u32::MAX as i64) as u32
+                fast(self.w_ref, 1 << 30)
+                    .or_else(|| self.w_ref.div_scaled_by(w, 1 << 30))
+                    .unwrap_or(i64::MAX)
+                    .clamp(1, u32::MAX as i64) as u32
             } else {
                 1
             },
@@ -111,15 +119,37 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     }
 
     /// `origin + (1 ± ndc)·size/2` in subpixels, `ndc = c/w` (y flipped).
-    pub(super) fn ndc_to_sub(&self, c: T, w: T::Divisor, size: u32, origin: i64, flip: bool) -> Option<i64> {
+    /// The fast tier takes its quotient ([`FastQuotient`]) where the extent
+    /// is even and the quotient within [`FAST_SNAP_MAX`]: within one
+    /// subpixel of the exact one, and the same value whichever route snaps
+    /// the vertex (`PreSnap` computes it bit for bit).
+    pub(super) fn ndc_to_sub<R: Tier>(
+        &self,
+        c: T,
+        w: T::Divisor,
+        size: u32,
+        origin: i64,
+        flip: bool,
+    ) -> Option<i64> {
         let full = (size as i64) << S; // viewport extent in subpixels
         let c = if flip { -c } else { c };
+        if R::FAST && full % 2 == 0 {
+            if let Some(t) = w.quotient_fast(c, full / 2).filter(|t| t.abs() <= FAST_SNAP_MAX) {
+                return Some((origin << S) + full / 2 + t);
+            }
+        }
         // Halve exactly when possible; only S = 0 with an odd size rounds twice.
         let t =
             if full % 2 == 0 { c.div_scaled_by(w, full / 2)? } else { (c.div_scaled_by(w, full)? + 1) >> 1 };
         Some((origin << S) + full / 2 + t)
     }
 }
+
+/// The largest snapped offset from the viewport's centre (subpixels) that
+/// the fast tier takes from its fast quotient; beyond it (a guard band
+/// wider than the default's), the exact quotient
+/// (`divisor::fast`: the within-one bound of `f32` holds below `2^21`).
+pub(super) const FAST_SNAP_MAX: i64 = 1 << 21;
 
 /// `e1x·e2y − e2x·e1y` exactly, for differences of snapped coordinates
 /// (`|e| ≤ 2^29`). On the Cortex-M0, where a 64-bit product is a library

@@ -11,6 +11,7 @@
 
 use super::bins::BinWriter;
 use super::mesh_bins::triangle_in_view;
+use super::tier::ExactTier;
 use super::{MeshSetup, Pipeline, channels};
 use crate::clip3d::{Class, ClipVertex};
 use crate::fragment::FragTriangle;
@@ -67,7 +68,8 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         bins.finish(result)
     }
 
-    /// The body of [`Pipeline::draw_mesh_varying`], into a [`BinWriter`].
+    /// The body of [`Pipeline::draw_mesh_varying`], into a [`BinWriter`];
+    /// always in the exact tier (the fragment stage's own varyings).
     fn varying_into<C: Interpolate, const A: usize, const N: usize>(
         &self,
         mesh: &crate::mesh::Mesh<'_>,
@@ -88,7 +90,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
             let face_n = if flat { mesh.face_normal(i) } else { None };
             let corner = |k: usize| {
                 let n = if flat { face_n } else { mesh.normals.get(idx[k] as usize).copied() };
-                let color = ctx.color(pos[k], n);
+                let color = ctx.color::<ExactTier>(pos[k], n);
                 let normal = n.map_or(Vec3::new(T::ZERO, T::ZERO, T::ONE), |n| {
                     (ctx.nm * Vec3::from_f32(n)).normalize()
                 });
@@ -109,7 +111,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
             }
             let values = corners.map(|c| c.1);
             if class == Class::Inside {
-                if let Some(at) = self.snapped_and_kept(clip, &mut stats) {
+                if let Some(at) = self.snapped_and_kept::<ExactTier>(clip, &mut stats) {
                     self.push_fragment(at, corners.map(|c| c.0), values, max, bins, &mut stats);
                 }
                 continue;
@@ -120,7 +122,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
                 w[k] = T::ONE;
                 ClipVertex::<T, 6> { pos: clip[k], attr: [c[0], c[1], c[2], w[0], w[1], w[2]] }
             });
-            self.clip_and_emit(v, planes, &mut stats, |at, attr, stats| {
+            self.clip_and_emit::<ExactTier, 6>(v, planes, &mut stats, |at, attr, stats| {
                 let colors = attr.map(|a| [a[0], a[1], a[2]]);
                 let vals = attr.map(|a| weighted(&a, &values));
                 self.push_fragment(at, colors, vals, max, bins, stats);

@@ -3,6 +3,7 @@
 
 use super::Band;
 use super::model_light::ModelLight;
+use super::tier::Tier;
 use crate::clip3d::ClipPlanes;
 use crate::light::Lighting;
 use crate::math::{Mat3, Mat4, Scalar, Vec3};
@@ -56,27 +57,27 @@ impl<T: Scalar> VertexCtx<T> {
     /// as `Fx` saturates; NaN (`0·∞`) and −infinity are channel 0. The
     /// clipper would otherwise take a non-finite value for a reason to
     /// discard the triangle.
-    pub(super) fn color(&self, p: Vec3<T>, normal: Option<[f32; 3]>) -> [T; 3] {
-        finite_color(self.lit(p, normal, |ctx: &Self| ctx.base))
+    pub(super) fn color<R: Tier>(&self, p: Vec3<T>, normal: Option<[f32; 3]>) -> [T; 3] {
+        finite_color(self.lit::<R>(p, normal, |ctx: &Self| ctx.base))
     }
 
     /// [`VertexCtx::color`] of material `base` instead of the mesh's
     /// colour (per-vertex and per-face colours, [`Material`](super::Material)).
-    pub(super) fn color_of(&self, p: Vec3<T>, normal: Option<[f32; 3]>, base: [T; 3]) -> [T; 3] {
-        finite_color(self.lit(p, normal, move |_: &Self| base))
+    pub(super) fn color_of<R: Tier>(&self, p: Vec3<T>, normal: Option<[f32; 3]>, base: [T; 3]) -> [T; 3] {
+        finite_color(self.lit::<R>(p, normal, move |_: &Self| base))
     }
 
     /// The lit colour of material `base`: a function, so the one-colour
     /// path (`|ctx| ctx.base`, zero-sized) passes no argument; a pointer
     /// argument cost 2 Cortex-M4F instructions per lit vertex.
-    pub(super) fn lit(
+    pub(super) fn lit<R: Tier>(
         &self,
         p: Vec3<T>,
         normal: Option<[f32; 3]>,
         base: impl FnOnce(&Self) -> [T; 3],
     ) -> [T; 3] {
         match (self.lighting, normal, &self.model_light) {
-            (Some(_), Some(n), Some(m)) => m.shade(n, p, base(self)),
+            (Some(_), Some(n), Some(m)) => m.shade::<R>(n, p, base(self)),
             (Some(l), Some(n), None) => {
                 let n_eye = (self.nm * Vec3::from_f32(n)).normalize_fast();
                 // mv·(p, 1) without its w (the same sums as transform_point).

@@ -23,6 +23,13 @@ impl FxDivisor {
         Some(FxDivisor { v: reciprocal(p.d << p.sh), ..p })
     }
 
+    /// The raw divisor, its normalising shift and its reciprocal word
+    /// (the fast tier's quotient, `divisor::fast`).
+    #[inline]
+    pub(crate) fn parts(&self) -> (u32, u32, u32) {
+        (self.d, self.sh, self.v)
+    }
+
     /// The reciprocal word, all that [`FxDivisor::from_reciprocal`] needs
     /// besides `d` (a vertex cache keeps it in one `u32`).
     #[inline]

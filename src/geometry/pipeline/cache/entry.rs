@@ -3,6 +3,7 @@
 //! `1/w`, and the lit colour (with the face normal where it lights).
 
 use super::super::presnap::{PreSnap, depth_f32};
+use super::super::tier::Tier;
 use super::super::{Material, Pipeline, Shade, VertexCtx, channels};
 use super::{Cached, VertexSource};
 use crate::Error;
@@ -18,7 +19,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     /// arguments to marshal, the f32 knot was 2 % dearer).
     #[allow(clippy::too_many_arguments)]
     #[inline(always)]
-    pub(in crate::geometry::pipeline) fn complete<Src: VertexSource, M: Material<T>>(
+    pub(in crate::geometry::pipeline) fn complete<R: Tier, Src: VertexSource, M: Material<T>>(
         &self,
         ctx: &VertexCtx<T>,
         src: &Src,
@@ -32,10 +33,11 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         for (k, &j) in idx.iter().enumerate() {
             let e = cache.get_mut(j).ok_or(Error::InvalidMesh)?;
             if e.state & Cached::<T, S>::DEPTH == 0 {
-                self.depth_entry(e);
+                self.depth_entry::<R>(e);
             }
             if !per_face && e.state & Cached::<T, S>::LIT == 0 {
-                e.screen.color = channels(self.vertex_light_raw(ctx, src, material, j, None)?, max);
+                e.screen.color =
+                    channels(self.vertex_light_raw::<R, _, _>(ctx, src, material, j, None)?, max);
                 e.state |= Cached::<T, S>::LIT;
             }
             // Field by field: a whole-struct copy here became a `memcpy` call.
@@ -46,12 +48,12 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         if per_face {
             // Lit with the face normal: per triangle, not per vertex.
             let face_n = self.face_normal(src, idx)?;
-            let c0 = channels(self.vertex_light_raw(ctx, src, material, idx[0], face_n)?, max);
+            let c0 = channels(self.vertex_light_raw::<R, _, _>(ctx, src, material, idx[0], face_n)?, max);
             for (k, v) in at.iter_mut().enumerate() {
                 v.color = if self.shade == Shade::Flat {
                     c0
                 } else {
-                    channels(self.vertex_light_raw(ctx, src, material, idx[k], face_n)?, max)
+                    channels(self.vertex_light_raw::<R, _, _>(ctx, src, material, idx[k], face_n)?, max)
                 };
             }
         }
@@ -85,7 +87,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     /// maps +infinity to full intensity and NaN and −infinity to 0, as the
     /// clamp does. Inlined (sixth pass: f32 knot −0.8 %, Fx +0.3 %).
     #[inline(always)]
-    pub(super) fn vertex_light_raw<Src: VertexSource, M: Material<T>>(
+    pub(super) fn vertex_light_raw<R: Tier, Src: VertexSource, M: Material<T>>(
         &self,
         ctx: &VertexCtx<T>,
         src: &Src,
@@ -102,10 +104,10 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         let n = if flat { face_n } else { src.normal(j).map(|n| n.map(Src::Coord::to_f32)) };
         let p = src.position(j).map(Vec3::from_data).ok_or(Error::InvalidMesh)?;
         Ok(if M::UNIFORM {
-            ctx.lit(p, n, |ctx: &VertexCtx<T>| ctx.base)
+            ctx.lit::<R>(p, n, |ctx: &VertexCtx<T>| ctx.base)
         } else {
             let base = material.base(ctx.base, 0, src.vertex(j));
-            ctx.lit(p, n, move |_: &VertexCtx<T>| base)
+            ctx.lit::<R>(p, n, move |_: &VertexCtx<T>| base)
         })
     }
 }
@@ -118,7 +120,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     /// fewer values live without it (measured: Fx knot −2 %, f32 unchanged;
     /// the quotients' step out of line as well cost f32 +1.4 %).
     #[inline(never)]
-    pub(in crate::geometry::pipeline) fn snap_entry(
+    pub(in crate::geometry::pipeline) fn snap_entry<R: Tier>(
         &self,
         e: &mut Cached<T, S>,
         presnap: &PreSnap,
@@ -128,7 +130,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
             let pos = presnap.snap(e.q);
             pos.map(|pos| ScreenVertex { pos, depth: 0, inv_w: 0, color: [0; 3] })
         } else {
-            self.snap_deferred(e.clip)
+            self.snap_deferred::<R>(e.clip)
         };
         e.state |= Cached::<T, S>::SNAP;
         if let Some(s) = screen {
@@ -140,12 +142,16 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     /// The deferred depth and `1/w` of snapped entry `e` (its `DEPTH` step).
     /// Inline since [`Pipeline::complete`] is (sixth pass: out of line, the
     /// Fx knot was 0.6 % dearer, f32 the same).
-    fn depth_entry(&self, e: &mut Cached<T, S>) {
+    fn depth_entry<R: Tier>(&self, e: &mut Cached<T, S>) {
         let d = if crate::math::vec::is_float::<T>() {
-            depth_f32(e.clip[2].to_f32(), e.clip[3].to_f32(), self.with_inv_w.then(|| self.w_ref.to_f32()))
-                .or_else(|| self.depth_general_cold(e))
+            depth_f32::<R>(
+                e.clip[2].to_f32(),
+                e.clip[3].to_f32(),
+                self.with_inv_w.then(|| self.w_ref.to_f32()),
+            )
+            .or_else(|| self.depth_general_cold::<R>(e))
         } else {
-            self.depth_general(e)
+            self.depth_general::<R>(e)
         };
         if let Some((depth, inv_w)) = d {
             (e.screen.depth, e.screen.inv_w) = (depth, inv_w);
@@ -157,8 +163,8 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     /// the divisor rebuilt from the word `snap_deferred` kept in the depth:
     /// `Fx`'s only path, inline.
     #[inline(always)]
-    fn depth_general(&self, e: &Cached<T, S>) -> Option<(u32, u32)> {
-        e.clip[3].divisor_from_word(e.screen.depth).and_then(|w| self.snap_depth(e.clip, w))
+    fn depth_general<R: Tier>(&self, e: &Cached<T, S>) -> Option<(u32, u32)> {
+        e.clip[3].divisor_from_word(e.screen.depth).and_then(|w| self.snap_depth::<R>(e.clip, w))
     }
 
     /// [`Pipeline::depth_general`] out of line, for `f32`, which takes it
@@ -166,8 +172,8 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     /// 2^10): inlined, its saturating depth cost the `f32` knot 0.1 %.
     #[cold]
     #[inline(never)]
-    fn depth_general_cold(&self, e: &Cached<T, S>) -> Option<(u32, u32)> {
-        self.depth_general(e)
+    fn depth_general_cold<R: Tier>(&self, e: &Cached<T, S>) -> Option<(u32, u32)> {
+        self.depth_general::<R>(e)
     }
 
     /// [`Pipeline::snap_vertex`] with the depth and `1/w` left for later
@@ -183,12 +189,12 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     /// [`Pipeline::snap_vertex`] fails.
     /// Until then the depth field holds [`Scalar::divisor_word`] of `w`
     /// (`Fx`: its reciprocal), so `Fx` does not prepare its divisor twice.
-    fn snap_deferred(&self, c: [T; 4]) -> Option<ScreenVertex<S>> {
+    fn snap_deferred<R: Tier>(&self, c: [T; 4]) -> Option<ScreenVertex<S>> {
         if !self.depth_deferrable(c) {
-            return self.snap_vertex(c);
+            return self.snap_vertex::<R>(c);
         }
         let w = c[3].divisor()?;
-        let pos = self.snap_xy(c, w)?;
+        let pos = self.snap_xy::<R>(c, w)?;
         Some(ScreenVertex { pos, depth: T::divisor_word(w), inv_w: 0, color: [0; 3] })
     }
 }
