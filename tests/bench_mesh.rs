@@ -4,10 +4,18 @@
 //! wound, about 10,000 vertices and 20,000 triangles, full compact clusters,
 //! 1–2 pixels per triangle with the standard camera. `closed` and `placed`
 //! check that its image (and the standard scene's) has no cracks: every
-//! pixel centre covered as often by front as by back faces.
+//! pixel centre covered as often by front as by back faces, in both accuracy
+//! tiers; `fast_frames` compares the knot's fast frames with the exact ones.
 
 #[path = "bench_mesh/closed.rs"]
 mod closed;
+#[path = "bench_mesh/fast_frames.rs"]
+mod fast_frames;
+#[path = "integration/fast_tier/frames.rs"]
+mod frames;
+#[path = "integration/framebuffer.rs"]
+#[allow(dead_code)]
+mod framebuffer;
 #[path = "../examples/gen_bench_mesh.rs"]
 #[allow(dead_code)]
 mod gen_bench_mesh;

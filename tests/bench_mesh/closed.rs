@@ -19,7 +19,9 @@
 //!
 //! The standard scene's closed meshes are checked the same way through the
 //! plain and the cached mesh calls; `placed.rs` places them and the knot at
-//! random.
+//! random. Every check runs in both accuracy tiers ([`Precision`]): the
+//! fast tier snaps differently, but each vertex to one point, so its image
+//! is as watertight.
 
 use super::knot_mesh::{VALID_KNOT, VALID_KNOT_FX};
 use embedded_graphics::pixelcolor::{Rgb565, RgbColor};
@@ -27,7 +29,7 @@ use microraster::edge::{Cull, TriangleSpans};
 use microraster::math::{Scalar, Vec3, transform};
 use microraster::mesh::ValidMeshletMesh;
 use microraster::pipeline::{ClusterCache, MeshStats, Pipeline, VertexCache};
-use microraster::raster3d::ScreenTriangle;
+use microraster::raster3d::{Precision, ScreenTriangle};
 use microraster::{ClipRect, SubPoint};
 
 pub(crate) const W: i32 = 320;
@@ -92,14 +94,18 @@ fn cover<T: Scalar, P: Scalar>(
     })
 }
 
-/// `pipeline` looking from `eye` at the origin, with culling `cull`.
-fn pipeline<T: Scalar>(eye: [f32; 3], cull: Cull) -> Pipeline<T, 4> {
+/// The accuracy tiers every check runs in.
+pub(crate) const TIERS: [Precision; 2] = [Precision::Exact, Precision::Fast];
+
+/// `pipeline` looking from `eye` at the origin, with culling `cull`, in
+/// tier `tier`.
+fn pipeline<T: Scalar>(eye: [f32; 3], cull: Cull, tier: Precision) -> Pipeline<T, 4> {
     let f = T::from_f32;
     let v = |p: [f32; 3]| Vec3::new(f(p[0]), f(p[1]), f(p[2]));
     let view = transform::look_at(v(eye), v([0.0; 3]), v([0.0, 1.0, 0.0])).unwrap();
     let mut p = Pipeline::perspective(view, f(0.9), f(1.0), f(20.0), W as u32, H as u32).unwrap();
     p.cull = cull;
-    p
+    p.with_precision(tier)
 }
 
 /// Pixels whose front and back counts differ, and pixels covered at all.
@@ -108,11 +114,11 @@ pub(crate) fn cracks(c: &Cover) -> (usize, usize) {
     (odd, c.front.iter().filter(|&&f| f > 0).count())
 }
 
-fn check<T: Scalar, P: Scalar>(mesh: &ValidMeshletMesh<'_, P>, name: &str) {
+fn check<T: Scalar, P: Scalar>(mesh: &ValidMeshletMesh<'_, P>, name: &str, tier: Precision) {
     // The standard camera (`Scene3d::pipeline`), and one at half its distance.
     for (eye, crosses_edges) in [([0.0, 1.9, 5.6], false), ([0.0, 0.95, 2.8], true)] {
         for angle in [0.6, 2.2] {
-            let whole = cover(&pipeline::<T>(eye, Cull::None), mesh, angle, 16);
+            let whole = cover(&pipeline::<T>(eye, Cull::None, tier), mesh, angle, 16);
             let (odd, covered) = cracks(&whole);
             println!("{name} eye {eye:?} angle {angle}: {covered} px covered, {} clipped", whole.clipped);
             assert!(covered > 10_000, "{name}: the knot covers {covered} px");
@@ -131,12 +137,12 @@ fn check<T: Scalar, P: Scalar>(mesh: &ValidMeshletMesh<'_, P>, name: &str) {
             );
             for rows in [1, 7] {
                 assert!(
-                    cover(&pipeline::<T>(eye, Cull::None), mesh, angle, rows) == whole,
+                    cover(&pipeline::<T>(eye, Cull::None, tier), mesh, angle, rows) == whole,
                     "{name} rows {rows}"
                 );
             }
             // Back faces culled: the front faces' coverage, and nothing else.
-            let culled = cover(&pipeline::<T>(eye, Cull::Clockwise), mesh, angle, 16);
+            let culled = cover(&pipeline::<T>(eye, Cull::Clockwise, tier), mesh, angle, 16);
             assert!(
                 culled.front == whole.front,
                 "{name} eye {eye:?} angle {angle}: front faces differ when culled"
@@ -148,13 +154,13 @@ fn check<T: Scalar, P: Scalar>(mesh: &ValidMeshletMesh<'_, P>, name: &str) {
 
 #[test]
 fn the_knot_covers_each_centre_as_often_by_front_as_by_back_faces_f32() {
-    check::<f32, f32>(&VALID_KNOT, "f32");
+    TIERS.map(|tier| check::<f32, f32>(&VALID_KNOT, &format!("f32 {tier:?}"), tier));
 }
 
 #[test]
 fn the_knot_covers_each_centre_as_often_by_front_as_by_back_faces_fx() {
     use microraster::math::Fx;
-    check::<Fx, Fx>(&VALID_KNOT_FX, "Fx");
+    TIERS.map(|tier| check::<Fx, Fx>(&VALID_KNOT_FX, &format!("Fx {tier:?}"), tier));
 }
 
 /// The standard scene's three closed meshes (`Scene3d`: a sphere, a torus
@@ -165,8 +171,8 @@ fn the_knot_covers_each_centre_as_often_by_front_as_by_back_faces_fx() {
 #[test]
 fn the_standard_scene_covers_each_centre_as_often_by_front_as_by_back_faces() {
     use microraster_scenes::scenes3d::{CACHE_VERTICES, Scene3d};
-    fn check_scene<T: Scalar, const V: usize>(name: &str) {
-        let mut pipeline = Scene3d::pipeline::<T, 4>(W as u32, H as u32).unwrap();
+    fn check_scene<T: Scalar, const V: usize>(name: &str, tier: Precision) {
+        let mut pipeline = Scene3d::pipeline::<T, 4>(W as u32, H as u32).unwrap().with_precision(tier);
         pipeline.cull = Cull::None;
         for angle in [0.0, 0.9, 2.5] {
             let mut cache = Box::new(VertexCache::<T, 4, V>::new());
@@ -194,8 +200,10 @@ fn the_standard_scene_covers_each_centre_as_often_by_front_as_by_back_faces() {
             }
         }
     }
-    check_scene::<f32, 3>("f32, 3 entries");
-    check_scene::<f32, 64>("f32, 64 entries");
-    check_scene::<f32, CACHE_VERTICES>("f32, whole mesh");
-    check_scene::<microraster::math::Fx, 64>("Fx, 64 entries");
+    for tier in TIERS {
+        check_scene::<f32, 3>("f32, 3 entries", tier);
+        check_scene::<f32, 64>("f32, 64 entries", tier);
+        check_scene::<f32, CACHE_VERTICES>("f32, whole mesh", tier);
+        check_scene::<microraster::math::Fx, 64>("Fx, 64 entries", tier);
+    }
 }

@@ -5,16 +5,17 @@
 //! scaled unevenly and moved across the screen's edges, in bands of random
 //! height, clipped at the guard band or (`Pipeline::confined`) at the
 //! screen's edges. Placements that reach the near or far plane are skipped:
-//! a cut there really opens the mesh.
+//! a cut there really opens the mesh. The cases alternate between the two
+//! accuracy tiers (`closed::TIERS`).
 
-use super::closed::{Cover, H, W, banded, cracks};
+use super::closed::{Cover, H, TIERS, W, banded, cracks};
 use super::knot_mesh::{VALID_KNOT, VALID_KNOT_FX};
 use embedded_graphics::pixelcolor::{Rgb565, RgbColor};
 use microraster::edge::Cull;
 use microraster::math::{Fx, Mat4, Scalar, Vec3, transform};
 use microraster::mesh::{ValidMesh, ValidMeshletMesh};
 use microraster::pipeline::{ClusterCache, Pipeline};
-use microraster::raster3d::ScreenTriangle;
+use microraster::raster3d::{Precision, ScreenTriangle};
 use microraster_scenes::scenes3d::Scene3d;
 
 /// A model placement and how the frame is cut into bands.
@@ -73,8 +74,9 @@ impl Placement {
 
 /// `mesh` through the plain mesh call as `at` places it: its coverage, or
 /// `None` if the placement is skipped or `Fx` cannot hold its coordinates.
-fn plain<T: Scalar, const S: u32>(mesh: &ValidMesh<'_>, at: Placement) -> Option<Cover> {
+fn plain<T: Scalar, const S: u32>(mesh: &ValidMesh<'_>, at: Placement, tier: Precision) -> Option<Cover> {
     let (pipeline, model) = at.pipeline::<T, S>(mesh.mesh().positions)?;
+    let pipeline = pipeline.with_precision(tier);
     let mut failed = false;
     let cover = banded::<S>(at.rows, |band, sink| {
         let mut bins = Box::new(heapless::Vec::<ScreenTriangle<S>, 1200>::new());
@@ -94,11 +96,13 @@ fn meshlets<T: Scalar, P: Scalar>(
     mesh: &ValidMeshletMesh<'_, P>,
     at: Placement,
     cull: Cull,
+    tier: Precision,
 ) -> Option<Cover> {
     // The premise from the `f32` knot's positions: the 16.16 knot holds the
     // same values (`fx_knot_holds_the_f32_knot_values`).
     let (mut pipeline, model) = at.pipeline::<T, 4>(VALID_KNOT.get().mesh.positions)?;
     pipeline.cull = cull;
+    let pipeline = pipeline.with_precision(tier);
     let mut cache = Box::new(ClusterCache::<T, 4>::new());
     let mut failed = false;
     let cover = banded::<4>(at.rows, |band, sink| {
@@ -137,11 +141,12 @@ fn the_standard_scene_placed_at_random_covers_each_centre_as_often_by_front_as_b
     for case in 0..240 {
         let at = Placement::random(&mut seed);
         let mesh = &meshes[case % 3];
+        let tier = TIERS[case / 4 % 2];
         let cover = match case % 4 {
-            0 => plain::<f32, 0>(mesh, at),
-            1 => plain::<f32, 8>(mesh, at),
-            2 => plain::<Fx, 4>(mesh, at),
-            _ => plain::<f32, 4>(mesh, at),
+            0 => plain::<f32, 0>(mesh, at, tier),
+            1 => plain::<f32, 8>(mesh, at, tier),
+            2 => plain::<Fx, 4>(mesh, at, tier),
+            _ => plain::<f32, 4>(mesh, at, tier),
         };
         tally.check(cover.as_ref(), at, &format!("case {case}, mesh {}", case % 3));
     }
@@ -158,11 +163,12 @@ fn the_knot_placed_at_random_covers_each_centre_as_often_by_front_as_by_back_fac
     let mut tally = Tally::default();
     for case in 0..40 {
         let at = Placement::random(&mut seed);
+        let tier = TIERS[case / 2 % 2];
         let [whole, culled] = [Cull::None, Cull::Clockwise].map(|cull| {
             if case % 2 == 0 {
-                meshlets::<f32, f32>(&VALID_KNOT, at, cull)
+                meshlets::<f32, f32>(&VALID_KNOT, at, cull, tier)
             } else {
-                meshlets::<Fx, Fx>(&VALID_KNOT_FX, at, cull)
+                meshlets::<Fx, Fx>(&VALID_KNOT_FX, at, cull, tier)
             }
         });
         tally.check(whole.as_ref(), at, &format!("knot case {case}"));

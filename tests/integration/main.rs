@@ -32,6 +32,8 @@
 //! - `view3d_colors`: the front's per-vertex and per-face colours.
 //! - `mesh_range`: issue 60's whole-mesh checks: clip coordinates beyond ±2^64, a singular
 //!   model before the first band, an inside-out `ValidMesh` on the explicit path.
+//! - `fast_tier`: the fast accuracy tier against the exact one: whole frames within the colour,
+//!   depth and coverage bounds; bad input the same error in both tiers.
 //! - `framebuffer`: a recording host `DrawTarget` used by the suites above.
 
 mod affine3d;
@@ -46,6 +48,7 @@ mod dashboard;
 mod depth3d;
 mod discard;
 mod drawables;
+mod fast_tier;
 mod fragment;
 mod framebuffer;
 mod gouraud;

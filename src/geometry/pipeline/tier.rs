@@ -48,3 +48,6 @@ impl Tier for ExactTier {
 impl Tier for FastTier {
     const FAST: bool = true;
 }
+
+#[cfg(test)]
+mod tests;
