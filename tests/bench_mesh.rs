@@ -11,11 +11,11 @@
 mod closed;
 #[path = "bench_mesh/fast_frames.rs"]
 mod fast_frames;
-#[path = "integration/fast_tier/frames.rs"]
-mod frames;
 #[path = "integration/framebuffer.rs"]
 #[allow(dead_code)]
 mod framebuffer;
+#[path = "integration/fast_tier/frames.rs"]
+mod frames;
 #[path = "../examples/gen_bench_mesh.rs"]
 #[allow(dead_code)]
 mod gen_bench_mesh;

@@ -55,7 +55,11 @@ fn knot<T: Scalar, P: Scalar, M: Interpolation, const B: usize>(
     (out.pixels, depth)
 }
 
-fn diff<T: Scalar, P: Scalar, M: Interpolation>(mesh: &ValidMeshletMesh<'_, P>, eye: [f32; 3], angle: f32) -> Diff {
+fn diff<T: Scalar, P: Scalar, M: Interpolation>(
+    mesh: &ValidMeshletMesh<'_, P>,
+    eye: [f32; 3],
+    angle: f32,
+) -> Diff {
     let frame = |tier| {
         let (c, d) = knot::<T, P, M, H>(mesh, eye, angle, tier);
         Frame::new(c, &d)
@@ -75,7 +79,7 @@ fn the_knot_fast_frames_within_bounds() {
         total += diff::<microraster::math::Fx, microraster::math::Fx, Affine>(&VALID_KNOT_FX, eye, angle);
     }
     println!("knot, fast against exact: {total:?}");
-    assert!(total.same > 100_000 && total.differ > 0, "{total:?}");
+    assert!(total.same > 100_000, "{total:?}");
 }
 
 #[test]

@@ -21,8 +21,12 @@ pub(crate) struct Frame {
 
 impl Frame {
     /// The frame of `colors` and the whole-frame `depth` band.
-    pub(crate) fn new<const W: usize, const H: usize>(colors: Vec<Rgb565>, depth: &DepthBand<Depth16, W, H>) -> Self {
-        let depth = (0..H).flat_map(|y| (0..W).map(move |x| (y, x))).map(|(y, x)| depth.get(y, x).unwrap()).collect();
+    pub(crate) fn new<const W: usize, const H: usize>(
+        colors: Vec<Rgb565>,
+        depth: &DepthBand<Depth16, W, H>,
+    ) -> Self {
+        let depth =
+            (0..H).flat_map(|y| (0..W).map(move |x| (y, x))).map(|(y, x)| depth.get(y, x).unwrap()).collect();
         Frame { colors, depth }
     }
 }

@@ -52,9 +52,13 @@ fn stack_cache_is_per_corner<T: Scalar>() {
                     a.clear();
                     b.clear();
                     let color = Rgb565::new(25, 40, 10);
-                    let sa = p.valid_mesh_into::<super::super::tier::ExactTier, _, _>(&mesh, &model, color, &Uniform, |tri| {
-                        a.push(tri).map_err(|_| Error::CapacityExceeded { needed: 0, capacity: 0 })
-                    });
+                    let sa = p.valid_mesh_into::<super::super::tier::ExactTier, _, _>(
+                        &mesh,
+                        &model,
+                        color,
+                        &Uniform,
+                        |tri| a.push(tri).map_err(|_| Error::CapacityExceeded { needed: 0, capacity: 0 }),
+                    );
                     let sb = p.draw_valid_mesh(&mesh, &model, color, &mut b);
                     assert_eq!(sa, sb, "{i} {shade:?} {rows:?}");
                     assert!(a == b, "{i} {shade:?} {rows:?}: {} vs {} triangles", a.len(), b.len());
@@ -68,9 +72,13 @@ fn stack_cache_is_per_corner<T: Scalar>() {
                     a.clear();
                     b.clear();
                     let pv = PerVertex(&vertex_colors);
-                    let sa = p.valid_mesh_into::<super::super::tier::ExactTier, _, _>(&mesh, &model, color, &pv, |tri| {
-                        a.push(tri).map_err(|_| Error::CapacityExceeded { needed: 0, capacity: 0 })
-                    });
+                    let sa = p.valid_mesh_into::<super::super::tier::ExactTier, _, _>(
+                        &mesh,
+                        &model,
+                        color,
+                        &pv,
+                        |tri| a.push(tri).map_err(|_| Error::CapacityExceeded { needed: 0, capacity: 0 }),
+                    );
                     let sb = p.mesh_into(&mesh, &model, color, &pv, &mut NoMemo, |tri| {
                         b.push(tri).map_err(|_| Error::CapacityExceeded { needed: 0, capacity: 0 })
                     });
@@ -124,9 +132,10 @@ fn chunks_end_when_their_triangle_list_is_full() {
     let model = transform::rotation_y(0.5);
     let color = Rgb565::new(25, 40, 10);
     let (mut a, mut b) = (Bins::new(), Bins::new());
-    let sa = p.valid_mesh_into::<super::super::tier::ExactTier, _, _>(&mesh, &model, color, &Uniform, |tri| {
-        a.push(tri).map_err(|_| Error::CapacityExceeded { needed: 0, capacity: 0 })
-    });
+    let sa =
+        p.valid_mesh_into::<super::super::tier::ExactTier, _, _>(&mesh, &model, color, &Uniform, |tri| {
+            a.push(tri).map_err(|_| Error::CapacityExceeded { needed: 0, capacity: 0 })
+        });
     assert!(a.len() >= 280, "{} triangles", a.len());
     let sb = p.draw_valid_mesh(&mesh, &model, color, &mut b);
     assert!(sa == sb && a == b, "stack cache: {} vs {} triangles", a.len(), b.len());

@@ -143,13 +143,20 @@ fn fast_lighting_within_bound() {
         .with_specular(Fx::from_f32(strength), exp)
         .with_viewer(viewer);
         let s = rng.range(0.5, 2.0);
-        let m = transform::translation(Vec3::new(rng.range(-1.0, 1.0), rng.range(-1.0, 1.0), rng.range(-8.0, -3.0)))
-            * transform::rotation_y(rng.range(0.0, 6.3))
+        let m = transform::translation(Vec3::new(
+            rng.range(-1.0, 1.0),
+            rng.range(-1.0, 1.0),
+            rng.range(-8.0, -3.0),
+        )) * transform::rotation_y(rng.range(0.0, 6.3))
             * transform::rotation_x(rng.range(0.0, 6.3))
             * transform::scaling(Vec3::new(s, s, s));
         let m_fx = Mat4 { cols: m.cols.map(|c| c.map(Fx::from_f32)) };
-        let (e, f) = (ModelLight::new(&light, &m, false).unwrap(), ModelLight::new(&light, &m, true).unwrap());
-        let (ex, fx) = (ModelLight::new(&light_fx, &m_fx, false).unwrap(), ModelLight::new(&light_fx, &m_fx, true).unwrap());
+        let (e, f) =
+            (ModelLight::new(&light, &m, false).unwrap(), ModelLight::new(&light, &m, true).unwrap());
+        let (ex, fx) = (
+            ModelLight::new(&light_fx, &m_fx, false).unwrap(),
+            ModelLight::new(&light_fx, &m_fx, true).unwrap(),
+        );
         for _ in 0..40 {
             let n = [rng.range(-1.0, 1.0), rng.range(-1.0, 1.0), rng.range(-1.0, 1.0)];
             let len = (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt();
