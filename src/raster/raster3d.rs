@@ -62,6 +62,7 @@ mod tiny;
 use depth_span::{DepthRule, LessWrite};
 pub(crate) use depth_span::{depth_steps, depth_value};
 pub use precision::Precision;
+use precision::{ExactTier, FastTier, Tier};
 
 use spans::shade_spans;
 
@@ -213,6 +214,66 @@ pub fn draw_triangle<C, F, M, const S: u32, const W: usize>(
     F: DepthFormat,
     M: Interpolation,
 {
+    draw_tier::<C, F, M, ExactTier, S, W>(tri, color, depth, state, interp);
+}
+
+/// [`draw_triangle`] in accuracy tier `precision`: [`Precision::Exact`]
+/// draws the same pixels; [`Precision::Fast`] the same coverage, with each
+/// depth within one code and each colour channel within one step of the
+/// exact tier's (`tests/integration/fast_raster.rs`).
+///
+/// ```
+/// use embedded_graphics::pixelcolor::{Rgb565, RgbColor};
+/// use microraster::depth::{Depth16, DepthBand, DepthState};
+/// use microraster::raster3d::{Affine, Precision, ScreenTriangle, ScreenVertex, draw_triangle_in};
+/// use microraster::{Band, SubPoint};
+/// let v = |x, y, g| ScreenVertex {
+///     pos: SubPoint::<4>::from_pixels(x, y).unwrap(),
+///     color: [0, g, 0],
+///     inv_w: 1 << 30,
+///     depth: 1 << 31,
+/// };
+/// let tri = ScreenTriangle { v: [v(0, 0, 0), v(8, 0, 63), v(0, 4, 0)], flat: false };
+/// let mut band = Band::<Rgb565, 8, 4>::new(Rgb565::BLACK);
+/// let mut depth = DepthBand::<Depth16, 8, 4>::new();
+/// let mut view = band.view(0, 4, Rgb565::BLACK);
+/// draw_triangle_in(&tri, &mut view, &mut depth.rows_mut(4), DepthState::LESS_WRITE, Affine, Precision::Fast);
+/// let g = view.pixels().nth(2).unwrap().g(); // 2.5/8 of the way to 63: 19.7
+/// assert!((19..=21).contains(&g));
+/// assert!(depth.get(0, 0).unwrap().abs_diff(0x8000) <= 1);
+/// ```
+pub fn draw_triangle_in<C, F, M, const S: u32, const W: usize>(
+    tri: &ScreenTriangle<S>,
+    color: &mut BandView<'_, C, W>,
+    depth: &mut DepthRows<'_, F, W>,
+    state: DepthState,
+    interp: M,
+    precision: Precision,
+) where
+    C: Interpolate,
+    F: DepthFormat,
+    M: Interpolation,
+{
+    match precision {
+        Precision::Exact => draw_tier::<C, F, M, ExactTier, S, W>(tri, color, depth, state, interp),
+        Precision::Fast => draw_tier::<C, F, M, FastTier, S, W>(tri, color, depth, state, interp),
+    }
+}
+
+/// [`draw_triangle`] in tier `P`.
+#[inline(always)]
+fn draw_tier<C, F, M, P, const S: u32, const W: usize>(
+    tri: &ScreenTriangle<S>,
+    color: &mut BandView<'_, C, W>,
+    depth: &mut DepthRows<'_, F, W>,
+    state: DepthState,
+    interp: M,
+) where
+    C: Interpolate,
+    F: DepthFormat,
+    M: Interpolation,
+    P: Tier,
+{
     let _ = interp; // a value, so the call needs no turbofish
     let depth: &mut [[F::Storage; W]] = depth;
     use crate::blit::Blitter;
@@ -224,18 +285,21 @@ pub fn draw_triangle<C, F, M, const S: u32, const W: usize>(
         Some(Some(mut small)) => {
             // Most of a dense mesh's: no plane set-up (`tiny`).
             if tiny::eligible::<F>(&small) {
+                if P::FAST {
+                    return tiny::fast::draw::<C, F, M, S, W>(tri, &small, color, depth, state);
+                }
                 return tiny::draw::<C, F, M, S, W>(tri, &small, color, depth, state);
             }
             let Some(first) = small.next_span() else { return };
             let second = small.next_span();
-            shade_spans::<C, F, M, S, W, _>(tri, (first, second, &small), color, depth, state);
+            shade_spans::<C, F, M, P, S, W, _>(tri, (first, second, &small), color, depth, state);
         }
         Some(None) => {}
         None => {
             let mut spans = TriangleSpans::solved(v, color.clip(), Cull::None);
             let Some(first) = spans.next() else { return };
             let second = spans.next();
-            shade_spans::<C, F, M, S, W, _>(tri, (first, second, &spans), color, depth, state);
+            shade_spans::<C, F, M, P, S, W, _>(tri, (first, second, &spans), color, depth, state);
         }
     }
 }

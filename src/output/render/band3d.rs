@@ -14,7 +14,7 @@ use embedded_graphics_core::primitives::Rectangle;
 use crate::Interpolate;
 use crate::band::BandView;
 use crate::depth::{DepthFormat, DepthRows, DepthState};
-use crate::raster3d::{Interpolation, Precision, ScreenTriangle, draw_triangle};
+use crate::raster3d::{Interpolation, Precision, ScreenTriangle, draw_triangle, draw_triangle_in};
 
 /// The band being drawn, handed to the closure of
 /// [`Direct3d`](crate::render::Direct3d): frame
@@ -87,10 +87,7 @@ where
     /// [`Pipeline::precision`](crate::pipeline::Pipeline)).
     #[inline]
     pub(crate) fn draw_in<const S: u32>(&mut self, tri: &ScreenTriangle<S>, precision: Precision) {
-        match precision {
-            Precision::Exact => self.draw(tri),
-            Precision::Fast => self.draw(tri),
-        }
+        draw_triangle_in(tri, self.view, &mut self.depth, self.state, M::default(), precision);
     }
 
     /// Draws the triangles that touch the band, in order.

@@ -48,6 +48,7 @@ use crate::depth::{DepthFormat, DepthState};
 use crate::edge::small::Small;
 use crate::math::divisor::{divrem_small_quotient, mul_u16_u32};
 
+pub(super) mod fast;
 mod perspective;
 use perspective::{PerspFactors, shade_perspective};
 
