@@ -285,10 +285,7 @@ fn draw_tier<C, F, M, P, const S: u32, const W: usize>(
         Some(Some(mut small)) => {
             // Most of a dense mesh's: no plane set-up (`tiny`).
             if tiny::eligible::<F>(&small) {
-                if P::FAST {
-                    return tiny::fast::draw::<C, F, M, S, W>(tri, &small, color, depth, state);
-                }
-                return tiny::draw::<C, F, M, S, W>(tri, &small, color, depth, state);
+                return tiny::draw::<C, F, M, P, S, W>(tri, &small, color, depth, state);
             }
             let Some(first) = small.next_span() else { return };
             let second = small.next_span();

@@ -41,6 +41,7 @@
 //!
 //! Depth formats wider than 16 bits take the plane path.
 
+use super::precision::Tier;
 use super::{DEPTH_FRAC, DepthRule, Interpolation, LessWrite, ScreenTriangle, depth_steps};
 use crate::Interpolate;
 use crate::band::BandView;
@@ -48,8 +49,9 @@ use crate::depth::{DepthFormat, DepthState};
 use crate::edge::small::Small;
 use crate::math::divisor::{divrem_small_quotient, mul_u16_u32};
 
-pub(super) mod fast;
+mod fast;
 mod perspective;
+use fast::FastShade;
 use perspective::{PerspFactors, shade_perspective};
 
 /// Triangles with a determinant below this are drawn here (module docs).
@@ -67,9 +69,10 @@ pub(super) fn eligible<F: DepthFormat>(small: &Small) -> bool {
 
 /// Draws `tri`, whose coverage walk is `small` ([`eligible`]), into the
 /// band: each covered centre's depth tested against `depth` with `state`,
-/// then its colour (flat, or Gouraud as `M` says) written where it passes.
+/// then its colour (flat, or Gouraud as `M` says; in tier `P`) written
+/// where it passes.
 #[inline(always)]
-pub(super) fn draw<C, F, M, const S: u32, const W: usize>(
+pub(super) fn draw<C, F, M, P, const S: u32, const W: usize>(
     tri: &ScreenTriangle<S>,
     small: &Small,
     color: &mut BandView<'_, C, W>,
@@ -79,16 +82,17 @@ pub(super) fn draw<C, F, M, const S: u32, const W: usize>(
     C: Interpolate,
     F: DepthFormat,
     M: Interpolation,
+    P: Tier,
 {
     if F::ENABLED && state == DepthState::LESS_WRITE {
-        draw_with::<C, F, M, _, S, W>(tri, small, color, depth, LessWrite);
+        draw_with::<C, F, M, P, _, S, W>(tri, small, color, depth, LessWrite);
     } else {
-        draw_with::<C, F, M, _, S, W>(tri, small, color, depth, state);
+        draw_with::<C, F, M, P, _, S, W>(tri, small, color, depth, state);
     }
 }
 
 #[inline(always)]
-fn draw_with<C, F, M, D, const S: u32, const W: usize>(
+fn draw_with<C, F, M, P, D, const S: u32, const W: usize>(
     tri: &ScreenTriangle<S>,
     small: &Small,
     color: &mut BandView<'_, C, W>,
@@ -98,6 +102,7 @@ fn draw_with<C, F, M, D, const S: u32, const W: usize>(
     C: Interpolate,
     F: DepthFormat,
     M: Interpolation,
+    P: Tier,
     D: DepthRule,
 {
     let det = small.det() as u32;
@@ -106,9 +111,11 @@ fn draw_with<C, F, M, D, const S: u32, const W: usize>(
         .v
         .map(|v| if F::ENABLED { (depth_steps(v.depth, F::MAX) >> (DEPTH_FRAC - FRAC)) as u32 } else { 0 });
     let y0 = color.y0();
-    // Perspective-correct colour factors, made at the first pixel that
-    // passes its depth test (none for a hidden triangle).
+    // Perspective-correct colour factors (the fast tier: its colour), made
+    // at the first pixel that passes its depth test (none for a hidden
+    // triangle).
     let mut persp = None;
+    let mut fast = None;
     small.for_each_centre(|x, y, e| {
         // Edge i lies opposite vertex i: w_i / det is its barycentric coordinate.
         let w = [0, 1, 2].map(|i| e[i] as u32 + bias[i]);
@@ -128,7 +135,9 @@ fn draw_with<C, F, M, D, const S: u32, const W: usize>(
                 *slot = F::from_u32(code);
             }
         }
-        *p = if M::PERSPECTIVE && !tri.flat {
+        *p = if P::FAST {
+            fast.get_or_insert_with(|| FastShade::new::<M, S>(tri, det)).at(tri, w, det)
+        } else if M::PERSPECTIVE && !tri.flat {
             shade_perspective::<C, S>(
                 tri,
                 persp.get_or_insert_with(|| PerspFactors::new::<C, S>(tri, det)),
