@@ -30,6 +30,16 @@
 //! the interpolation's type), so the loop a scene does not use is not
 //! compiled.
 //!
+//! # Accuracy tiers
+//! [`draw_triangle_in`] takes a [`Precision`]. [`Precision::Exact`] is what
+//! this page describes. [`Precision::Fast`] has the same coverage and depth
+//! and chooses colour once per triangle: a triangle whose vertex channels
+//! lie within 2 of each other is one colour (the middle of each range); a
+//! tiny one's channels are two multiply-adds per pixel
+//! (`tiny::fast`); a perspective-correct one whose `1/w` barely differ is
+//! drawn screen-linear. Each channel stays within one step of the exact
+//! tier's (`tests/integration/fast_raster.rs`).
+//!
 //! # Set-up cost
 //! Per triangle and band: the edge functions (for a small triangle in `i32`
 //! only, see [`crate::edge`]), one determinant with its reciprocal, and per

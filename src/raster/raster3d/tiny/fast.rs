@@ -115,3 +115,43 @@ impl<C: Interpolate> FastShade<C> {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::super::tests::next;
+    use super::Weighted;
+
+    /// A channel from the weights is the exact value `Σ w_i·c_i / det`
+    /// within `2^-8`, rounded half up (module docs): for determinants up to
+    /// the tiny path's limit, every split of the weights and channels up to
+    /// 255, it lies between the roundings of `V − 2^-8` and `V + 2^-8`,
+    /// and equals the exact rounding away from those near a tie.
+    #[test]
+    fn weighted_channel_is_the_value_within_its_bound() {
+        let mut seed = 0x00FA_5700_C010_u64;
+        let (mut off_tie, mut near_tie) = (0u32, 0u32);
+        for i in 0..1_000_000u32 {
+            let det = [(next(&mut seed) >> 48) as u32 % 0xFFFF + 1, 1 + i % 40, 0xFFFF][(i % 3) as usize];
+            let a = (next(&mut seed) >> 40) as u32 % (det + 1);
+            let b = (next(&mut seed) >> 40) as u32 % (det - a + 1);
+            let w = [[det - a - b, a, b], [det, 0, 0], [0, det - a, a]][(i / 3 % 3) as usize];
+            let r = next(&mut seed);
+            let c = [0u32, 1, 2]
+                .map(|k| [(r >> (8 * k)) as u8, 255, 0, (r >> (8 * k + 24)) as u8][((r >> (50 + 2 * k)) % 4) as usize]);
+            let got = u64::from(Weighted::new(c, det).channel(w));
+            // X = 2^8·2·det·V, so V ∓ 2^-8 is X ∓ 2·det, each rounded half up.
+            let v = 2 * (0..3).map(|k| u64::from(w[k]) * u64::from(c[k])).sum::<u64>();
+            let (d2, x) = (2 * u64::from(det), v << 8);
+            let round = |x: u64| (x + (d2 << 7)) / (d2 << 8);
+            let (lo, hi) = (round(x.saturating_sub(d2)), round(x + d2));
+            assert!(lo <= got && got <= hi, "{c:?} {w:?} det {det}: {got} not in {lo}..={hi}");
+            if lo == hi {
+                assert_eq!(got, (v + u64::from(det)) / d2, "{c:?} {w:?} det {det}");
+                off_tie += 1;
+            } else {
+                near_tie += 1;
+            }
+        }
+        assert!(off_tie > 900_000 && near_tie > 0, "{off_tie} {near_tie}");
+    }
+}
