@@ -61,7 +61,7 @@ use crate::band::BandView;
 use crate::depth::{DepthFormat, DepthRows, DepthState};
 use crate::edge::{Cull, TriangleSpans};
 use crate::primitive::{center_rows, reference_pixel};
-use crate::{Interpolate, SubPoint};
+use crate::{ClipRect, Interpolate, SubPoint};
 
 mod depth_span;
 mod precision;
@@ -224,7 +224,8 @@ pub fn draw_triangle<C, F, M, const S: u32, const W: usize>(
     F: DepthFormat,
     M: Interpolation,
 {
-    draw_tier::<C, F, M, ExactTier, S, W>(tri, color, depth, state, interp);
+    let clip = crate::blit::Blitter::clip(color);
+    draw_tier::<C, F, M, ExactTier, S, W>(tri, color, clip, depth, state, interp);
 }
 
 /// [`draw_triangle`] in accuracy tier `precision`: [`Precision::Exact`]
@@ -264,17 +265,41 @@ pub fn draw_triangle_in<C, F, M, const S: u32, const W: usize>(
     F: DepthFormat,
     M: Interpolation,
 {
+    let clip = crate::blit::Blitter::clip(color);
+    draw_clipped(tri, color, clip, depth, state, interp, precision);
+}
+
+/// [`draw_triangle_in`] with the view's clip rectangle made by the caller
+/// ([`Blitter::clip`](crate::blit::Blitter::clip) of `color`), once per band
+/// rather than once per triangle (its clamps cost a few percent of a dense
+/// mesh's frame). Out of line, as the vertex stage that calls it per
+/// triangle was tuned with one call here.
+#[inline(never)]
+pub(crate) fn draw_clipped<C, F, M, const S: u32, const W: usize>(
+    tri: &ScreenTriangle<S>,
+    color: &mut BandView<'_, C, W>,
+    clip: ClipRect,
+    depth: &mut DepthRows<'_, F, W>,
+    state: DepthState,
+    interp: M,
+    precision: Precision,
+) where
+    C: Interpolate,
+    F: DepthFormat,
+    M: Interpolation,
+{
     match precision {
-        Precision::Exact => draw_tier::<C, F, M, ExactTier, S, W>(tri, color, depth, state, interp),
-        Precision::Fast => draw_tier::<C, F, M, FastTier, S, W>(tri, color, depth, state, interp),
+        Precision::Exact => draw_tier::<C, F, M, ExactTier, S, W>(tri, color, clip, depth, state, interp),
+        Precision::Fast => draw_tier::<C, F, M, FastTier, S, W>(tri, color, clip, depth, state, interp),
     }
 }
 
-/// [`draw_triangle`] in tier `P`.
+/// [`draw_triangle`] in tier `P`, clipped to `clip` (the view's).
 #[inline(always)]
 fn draw_tier<C, F, M, P, const S: u32, const W: usize>(
     tri: &ScreenTriangle<S>,
     color: &mut BandView<'_, C, W>,
+    clip: ClipRect,
     depth: &mut DepthRows<'_, F, W>,
     state: DepthState,
     interp: M,
@@ -286,12 +311,11 @@ fn draw_tier<C, F, M, P, const S: u32, const W: usize>(
 {
     let _ = interp; // a value, so the call needs no turbofish
     let depth: &mut [[F::Storage; W]] = depth;
-    use crate::blit::Blitter;
     let v = tri.v.map(|v| v.pos);
     // A small triangle (most of a dense mesh's) keeps its coverage state in
     // this frame: stored into a `TriangleSpans` and read back, it cost a
     // few dozen loads and stores per triangle.
-    match crate::edge::small::setup_state(v, color.clip(), Cull::None) {
+    match crate::edge::small::setup_state(v, clip, Cull::None) {
         Some(Some(mut small)) => {
             // Most of a dense mesh's: no plane set-up (`tiny`).
             if tiny::eligible::<F>(&small) {
@@ -303,7 +327,7 @@ fn draw_tier<C, F, M, P, const S: u32, const W: usize>(
         }
         Some(None) => {}
         None => {
-            let mut spans = TriangleSpans::solved(v, color.clip(), Cull::None);
+            let mut spans = TriangleSpans::solved(v, clip, Cull::None);
             let Some(first) = spans.next() else { return };
             let second = spans.next();
             shade_spans::<C, F, M, P, S, W, _>(tri, (first, second, &spans), color, depth, state);

@@ -47,7 +47,8 @@ fn draw<C: Interpolate, F: DepthFormat, M: Interpolation>(
     let always = DepthState::new(DepthTest::Always, true);
     draw_triangle_in(tri, &mut view, &mut depth.rows_mut(H), always, M::default(), precision);
     let colors = view.pixels().collect();
-    let depths = (0..H).flat_map(|r| (0..W).map(move |x| (r, x))).map(|(r, x)| depth.get(r, x).unwrap()).collect();
+    let depths =
+        (0..H).flat_map(|r| (0..W).map(move |x| (r, x))).map(|(r, x)| depth.get(r, x).unwrap()).collect();
     (colors, depths)
 }
 
@@ -118,7 +119,10 @@ fn triangle<C: Interpolate>(rng: &mut Rng, y0: i32, size: f64, spread: u8, ratio
 
 /// Many triangles of each kind in both tiers; the bounds hold for each
 /// pixel (`compare`) and over all of them.
-fn check<C: Interpolate + core::fmt::Debug, F: DepthFormat, M: Interpolation>(seed: u64, cases: u32) -> Tally {
+fn check<C: Interpolate + core::fmt::Debug, F: DepthFormat, M: Interpolation>(
+    seed: u64,
+    cases: u32,
+) -> Tally {
     let mut rng = Rng::new(seed);
     let mut t = Tally::default();
     for i in 0..cases {

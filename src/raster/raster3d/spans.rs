@@ -3,8 +3,8 @@
 //! one-span triangle, and the fragment loops per depth state and shading.
 
 use super::depth_span::{DepthRule, DepthSpan, LessWrite};
-use super::shade::{Gouraud, ShadeSpan, Shader, channels_in_range};
 use super::precision::Tier;
+use super::shade::{Gouraud, ShadeSpan, Shader, channels_in_range};
 use super::{Affine, Interpolation, ScreenTriangle};
 use crate::Interpolate;
 use crate::attr::{Plane, PlaneSetup};

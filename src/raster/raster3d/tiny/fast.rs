@@ -56,7 +56,8 @@ impl Weighted {
 
     #[inline(always)]
     fn channel(&self, w: [u32; 3]) -> u8 {
-        (w[1].wrapping_mul(self.a).wrapping_add(w[2].wrapping_mul(self.b)).wrapping_add(self.c) >> SHIFT) as u8
+        (w[1].wrapping_mul(self.a).wrapping_add(w[2].wrapping_mul(self.b)).wrapping_add(self.c) >> SHIFT)
+            as u8
     }
 }
 
@@ -110,7 +111,9 @@ impl<C: Interpolate> FastShade<C> {
     pub(super) fn at<const S: u32>(&self, tri: &ScreenTriangle<S>, w: [u32; 3], det: u32) -> C {
         match self {
             FastShade::Const(c) => *c,
-            FastShade::Linear(k) => C::from_channels([0, 1, 2].map(|i| k[i].as_ref().map_or(0, |k| k.channel(w)))),
+            FastShade::Linear(k) => {
+                C::from_channels([0, 1, 2].map(|i| k[i].as_ref().map_or(0, |k| k.channel(w))))
+            }
             FastShade::Perspective(f) => shade_perspective::<C, S>(tri, f, w, det),
         }
     }
@@ -136,8 +139,9 @@ mod tests {
             let b = (next(&mut seed) >> 40) as u32 % (det - a + 1);
             let w = [[det - a - b, a, b], [det, 0, 0], [0, det - a, a]][(i / 3 % 3) as usize];
             let r = next(&mut seed);
-            let c = [0u32, 1, 2]
-                .map(|k| [(r >> (8 * k)) as u8, 255, 0, (r >> (8 * k + 24)) as u8][((r >> (50 + 2 * k)) % 4) as usize]);
+            let c = [0u32, 1, 2].map(|k| {
+                [(r >> (8 * k)) as u8, 255, 0, (r >> (8 * k + 24)) as u8][((r >> (50 + 2 * k)) % 4) as usize]
+            });
             let got = u64::from(Weighted::new(c, det).channel(w));
             // X = 2^8·2·det·V, so V ∓ 2^-8 is X ∓ 2·det, each rounded half up.
             let v = 2 * (0..3).map(|k| u64::from(w[k]) * u64::from(c[k])).sum::<u64>();
