@@ -70,7 +70,7 @@ mod spans;
 mod tiny;
 
 use depth_span::{DepthRule, LessWrite};
-pub(crate) use depth_span::{depth_steps, depth_value};
+pub(crate) use depth_span::{depth_steps, depth_steps_approx, depth_value};
 pub use precision::Precision;
 use precision::{ExactTier, FastTier, Tier};
 

@@ -42,7 +42,9 @@
 //! Depth formats wider than 16 bits take the plane path.
 
 use super::precision::Tier;
-use super::{DEPTH_FRAC, DepthRule, Interpolation, LessWrite, ScreenTriangle, depth_steps};
+use super::{
+    DEPTH_FRAC, DepthRule, Interpolation, LessWrite, ScreenTriangle, depth_steps, depth_steps_approx,
+};
 use crate::Interpolate;
 use crate::band::BandView;
 use crate::depth::{DepthFormat, DepthState};
@@ -107,9 +109,13 @@ fn draw_with<C, F, M, P, D, const S: u32, const W: usize>(
 {
     let det = small.det() as u32;
     let bias = small.biases().map(|b| b as u32);
-    let dv = tri
-        .v
-        .map(|v| if F::ENABLED { (depth_steps(v.depth, F::MAX) >> (DEPTH_FRAC - FRAC)) as u32 } else { 0 });
+    let dv = tri.v.map(|v| match (F::ENABLED, P::FAST) {
+        (false, _) => 0,
+        (true, false) => (depth_steps(v.depth, F::MAX) >> (DEPTH_FRAC - FRAC)) as u32,
+        // Within 3 units of 2^-16 steps, so each dv within one of the
+        // exact tier's: the value moves by at most 2^-8 steps.
+        (true, true) => depth_steps_approx(v.depth, F::BITS) >> (DEPTH_FRAC - FRAC),
+    });
     let y0 = color.y0();
     // Perspective-correct colour factors (the fast tier: its colour), made
     // at the first pixel that passes its depth test (none for a hidden

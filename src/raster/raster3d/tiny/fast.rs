@@ -1,7 +1,11 @@
 //! The colour of a tiny triangle in the fast tier
 //! ([`Precision::Fast`](crate::raster3d::Precision)): the same coverage and
-//! depth as the exact tier's (the parent module), with the colour chosen
-//! once per triangle instead of divided out at each pixel.
+//! depth formula as the exact tier's (the parent module), with the colour
+//! chosen once per triangle instead of divided out at each pixel.
+//!
+//! The depth's vertex values come from `depth_steps_approx` (two shifts):
+//! within one unit of `2^-8` steps of the exact tier's, so each stored code
+//! is within one of the exact tier's.
 //!
 //! # What is computed, and its error
 //! At a covered centre the weights `w_i` (unbiased edge functions, summing
