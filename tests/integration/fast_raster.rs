@@ -137,6 +137,7 @@ fn check<C: Interpolate + core::fmt::Debug, F: DepthFormat, M: Interpolation>(
     assert!(t.pixels > u64::from(cases) * 5, "{t:?}");
     assert!(t.differ > 0, "the tiers never differ: {t:?}");
     assert!(t.beyond_one * 1000 <= t.pixels, "more than 0.1 % of pixels beyond ±1: {t:?}");
+    assert!(t.worst_channel <= 2 && t.worst_depth <= 1, "{t:?}");
     t
 }
 
