@@ -273,9 +273,8 @@ pub fn draw_triangle_in<C, F, M, const S: u32, const W: usize>(
 /// [`draw_triangle_in`] with the view's clip rectangle made by the caller
 /// ([`Blitter::clip`](crate::blit::Blitter::clip) of `color`), once per band
 /// rather than once per triangle (its clamps cost a few percent of a dense
-/// mesh's frame). Out of line, as the vertex stage that calls it per
-/// triangle was tuned with one call here.
-#[inline(never)]
+/// mesh's frame).
+#[inline(always)]
 pub(crate) fn draw_clipped<C, F, M, const S: u32, const W: usize>(
     tri: &ScreenTriangle<S>,
     color: &mut BandView<'_, C, W>,
@@ -295,8 +294,11 @@ pub(crate) fn draw_clipped<C, F, M, const S: u32, const W: usize>(
     }
 }
 
-/// [`draw_triangle`] in tier `P`, clipped to `clip` (the view's).
-#[inline(always)]
+/// [`draw_triangle`] in tier `P`, clipped to `clip` (the view's). Out of
+/// line, one function per tier: the vertex stage that calls it per
+/// triangle was tuned with one call here, and the exact tier's loop keeps
+/// its own registers and stack frame.
+#[inline(never)]
 fn draw_tier<C, F, M, P, const S: u32, const W: usize>(
     tri: &ScreenTriangle<S>,
     color: &mut BandView<'_, C, W>,
