@@ -34,12 +34,11 @@
 //! [`draw_triangle_in`] takes a [`Precision`]. [`Precision::Exact`] is what
 //! this page describes. [`Precision::Fast`] has the same coverage, maps a
 //! tiny triangle's vertex depths with two shifts (each code within one of
-//! the exact tier's), and chooses colour once per triangle: a triangle whose vertex channels
-//! lie within 2 of each other is one colour (the middle of each range); a
-//! tiny one's channels are two multiply-adds per pixel
-//! (`tiny::fast`); a perspective-correct one whose `1/w` barely differ is
-//! drawn screen-linear. Each channel stays within one step of the exact
-//! tier's (`tests/integration/fast_raster.rs`).
+//! the exact tier's), and chooses colour once per triangle: one whose
+//! vertex channels lie within 2 of each other is one colour (the middle of
+//! each range, `tiny::fast`); a perspective-correct one whose `1/w` barely
+//! differ is drawn screen-linear. Each channel stays within one step of
+//! the exact tier's (`tests/integration/fast_raster.rs`).
 //!
 //! # Set-up cost
 //! Per triangle and band: the edge functions (for a small triangle in `i32`

@@ -141,17 +141,22 @@ fn draw_with<C, F, M, P, D, const S: u32, const W: usize>(
                 *slot = F::from_u32(code);
             }
         }
-        *p = if P::FAST {
-            fast.get_or_insert_with(|| FastShade::new::<M, S>(tri, det)).at(tri, w, det)
+        let how = if P::FAST {
+            *fast.get_or_insert_with(|| FastShade::new::<M, S>(tri))
         } else if M::PERSPECTIVE && !tri.flat {
-            shade_perspective::<C, S>(
+            FastShade::Perspective
+        } else {
+            FastShade::Affine
+        };
+        *p = match how {
+            FastShade::Const(c) => c,
+            FastShade::Perspective => shade_perspective::<C, S>(
                 tri,
                 persp.get_or_insert_with(|| PerspFactors::new::<C, S>(tri, det)),
                 w,
                 det,
-            )
-        } else {
-            shade::<C, S>(tri, w, det)
+            ),
+            FastShade::Affine => shade::<C, S>(tri, w, det),
         };
     });
 }
