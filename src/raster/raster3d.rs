@@ -30,6 +30,16 @@
 //! the interpolation's type), so the loop a scene does not use is not
 //! compiled.
 //!
+//! # Accuracy tiers
+//! [`draw_triangle_in`] takes a [`Precision`]. [`Precision::Exact`] is what
+//! this page describes. [`Precision::Fast`] has the same coverage, maps a
+//! tiny triangle's vertex depths with two shifts (each code within one of
+//! the exact tier's), and chooses colour once per triangle: one whose
+//! vertex channels lie within 2 of each other is one colour (the middle of
+//! each range, `tiny::fast`); a perspective-correct one whose `1/w` barely
+//! differ is drawn screen-linear. Each channel stays within one step of
+//! the exact tier's (`tests/integration/fast_raster.rs`).
+//!
 //! # Set-up cost
 //! Per triangle and band: the edge functions (for a small triangle in `i32`
 //! only, see [`crate::edge`]), one determinant with its reciprocal, and per
@@ -51,7 +61,7 @@ use crate::band::BandView;
 use crate::depth::{DepthFormat, DepthRows, DepthState};
 use crate::edge::{Cull, TriangleSpans};
 use crate::primitive::{center_rows, reference_pixel};
-use crate::{Interpolate, SubPoint};
+use crate::{ClipRect, Interpolate, SubPoint};
 
 mod depth_span;
 mod precision;
@@ -60,8 +70,9 @@ mod spans;
 mod tiny;
 
 use depth_span::{DepthRule, LessWrite};
-pub(crate) use depth_span::{depth_steps, depth_value};
+pub(crate) use depth_span::{depth_steps, depth_steps_approx, depth_value};
 pub use precision::Precision;
+pub(crate) use precision::{ExactTier, FastTier, Tier};
 
 use spans::shade_spans;
 
@@ -213,29 +224,115 @@ pub fn draw_triangle<C, F, M, const S: u32, const W: usize>(
     F: DepthFormat,
     M: Interpolation,
 {
+    let clip = crate::blit::Blitter::clip(color);
+    draw_tier::<C, F, M, ExactTier, S, W>(tri, color, clip, depth, state, interp);
+}
+
+/// [`draw_triangle`] in accuracy tier `precision`: [`Precision::Exact`]
+/// draws the same pixels; [`Precision::Fast`] the same coverage, with each
+/// depth within one code and each colour channel within one step of the
+/// exact tier's (`tests/integration/fast_raster.rs`).
+///
+/// ```
+/// use embedded_graphics::pixelcolor::{Rgb565, RgbColor};
+/// use microraster::depth::{Depth16, DepthBand, DepthState};
+/// use microraster::raster3d::{Affine, Precision, ScreenTriangle, ScreenVertex, draw_triangle_in};
+/// use microraster::{Band, SubPoint};
+/// let v = |x, y, g| ScreenVertex {
+///     pos: SubPoint::<4>::from_pixels(x, y).unwrap(),
+///     color: [0, g, 0],
+///     inv_w: 1 << 30,
+///     depth: 1 << 31,
+/// };
+/// let tri = ScreenTriangle { v: [v(0, 0, 0), v(8, 0, 63), v(0, 4, 0)], flat: false };
+/// let mut band = Band::<Rgb565, 8, 4>::new(Rgb565::BLACK);
+/// let mut depth = DepthBand::<Depth16, 8, 4>::new();
+/// let mut view = band.view(0, 4, Rgb565::BLACK);
+/// draw_triangle_in(&tri, &mut view, &mut depth.rows_mut(4), DepthState::LESS_WRITE, Affine, Precision::Fast);
+/// let g = view.pixels().nth(2).unwrap().g(); // 2.5/8 of the way to 63: 19.7
+/// assert!((19..=21).contains(&g));
+/// assert!(depth.get(0, 0).unwrap().abs_diff(0x8000) <= 1);
+/// ```
+pub fn draw_triangle_in<C, F, M, const S: u32, const W: usize>(
+    tri: &ScreenTriangle<S>,
+    color: &mut BandView<'_, C, W>,
+    depth: &mut DepthRows<'_, F, W>,
+    state: DepthState,
+    interp: M,
+    precision: Precision,
+) where
+    C: Interpolate,
+    F: DepthFormat,
+    M: Interpolation,
+{
+    let clip = crate::blit::Blitter::clip(color);
+    draw_clipped(tri, color, clip, depth, state, interp, precision);
+}
+
+/// [`draw_triangle_in`] with the view's clip rectangle made by the caller
+/// ([`Blitter::clip`](crate::blit::Blitter::clip) of `color`), once per band
+/// rather than once per triangle (its clamps cost a few percent of a dense
+/// mesh's frame).
+#[inline(always)]
+pub(crate) fn draw_clipped<C, F, M, const S: u32, const W: usize>(
+    tri: &ScreenTriangle<S>,
+    color: &mut BandView<'_, C, W>,
+    clip: ClipRect,
+    depth: &mut DepthRows<'_, F, W>,
+    state: DepthState,
+    interp: M,
+    precision: Precision,
+) where
+    C: Interpolate,
+    F: DepthFormat,
+    M: Interpolation,
+{
+    match precision {
+        Precision::Exact => draw_tier::<C, F, M, ExactTier, S, W>(tri, color, clip, depth, state, interp),
+        Precision::Fast => draw_tier::<C, F, M, FastTier, S, W>(tri, color, clip, depth, state, interp),
+    }
+}
+
+/// [`draw_triangle`] in tier `P`, clipped to `clip` (the view's). Out of
+/// line, one function per tier: the vertex stage that calls it per
+/// triangle was tuned with one call here, and the exact tier's loop keeps
+/// its own registers and stack frame.
+#[inline(never)]
+fn draw_tier<C, F, M, P, const S: u32, const W: usize>(
+    tri: &ScreenTriangle<S>,
+    color: &mut BandView<'_, C, W>,
+    clip: ClipRect,
+    depth: &mut DepthRows<'_, F, W>,
+    state: DepthState,
+    interp: M,
+) where
+    C: Interpolate,
+    F: DepthFormat,
+    M: Interpolation,
+    P: Tier,
+{
     let _ = interp; // a value, so the call needs no turbofish
     let depth: &mut [[F::Storage; W]] = depth;
-    use crate::blit::Blitter;
     let v = tri.v.map(|v| v.pos);
     // A small triangle (most of a dense mesh's) keeps its coverage state in
     // this frame: stored into a `TriangleSpans` and read back, it cost a
     // few dozen loads and stores per triangle.
-    match crate::edge::small::setup_state(v, color.clip(), Cull::None) {
+    match crate::edge::small::setup_state(v, clip, Cull::None) {
         Some(Some(mut small)) => {
             // Most of a dense mesh's: no plane set-up (`tiny`).
             if tiny::eligible::<F>(&small) {
-                return tiny::draw::<C, F, M, S, W>(tri, &small, color, depth, state);
+                return tiny::draw::<C, F, M, P, S, W>(tri, &small, color, depth, state);
             }
             let Some(first) = small.next_span() else { return };
             let second = small.next_span();
-            shade_spans::<C, F, M, S, W, _>(tri, (first, second, &small), color, depth, state);
+            shade_spans::<C, F, M, P, S, W, _>(tri, (first, second, &small), color, depth, state);
         }
         Some(None) => {}
         None => {
-            let mut spans = TriangleSpans::solved(v, color.clip(), Cull::None);
+            let mut spans = TriangleSpans::solved(v, clip, Cull::None);
             let Some(first) = spans.next() else { return };
             let second = spans.next();
-            shade_spans::<C, F, M, S, W, _>(tri, (first, second, &spans), color, depth, state);
+            shade_spans::<C, F, M, P, S, W, _>(tri, (first, second, &spans), color, depth, state);
         }
     }
 }

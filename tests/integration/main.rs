@@ -29,6 +29,8 @@
 //!   shared edges, uniform meshes, band invariance, modes, ranges.
 //! - `view3d`: the one-call 3D front draws what the explicit API draws, for every band
 //!   height; its defaults (culling, lighting, winding check) and errors.
+//! - `fast_raster`: the fast tier's raster against the exact tier's on the same screen
+//!   triangles: coverage, depth within one code, colour within one step (two at most).
 //! - `view3d_colors`: the front's per-vertex and per-face colours.
 //! - `mesh_range`: issue 60's whole-mesh checks: clip coordinates beyond ±2^64, a singular
 //!   model before the first band, an inside-out `ValidMesh` on the explicit path.
@@ -48,6 +50,7 @@ mod dashboard;
 mod depth3d;
 mod discard;
 mod drawables;
+mod fast_raster;
 mod fast_tier;
 mod fragment;
 mod framebuffer;

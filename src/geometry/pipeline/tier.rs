@@ -21,33 +21,9 @@
 #[allow(unused_imports)] // the docs' links
 use crate::raster3d::Precision;
 
-mod sealed {
-    pub trait Sealed {}
-    impl Sealed for super::ExactTier {}
-    impl Sealed for super::FastTier {}
-}
-
-/// A vertex-stage tier (sealed): [`ExactTier`] or [`FastTier`].
-pub(crate) trait Tier: sealed::Sealed + Copy {
-    /// Whether this is [`Precision::Fast`].
-    const FAST: bool;
-}
-
-/// [`Precision::Exact`] as a type.
-#[derive(Clone, Copy, Debug)]
-pub(crate) struct ExactTier;
-
-/// [`Precision::Fast`] as a type.
-#[derive(Clone, Copy, Debug)]
-pub(crate) struct FastTier;
-
-impl Tier for ExactTier {
-    const FAST: bool = false;
-}
-
-impl Tier for FastTier {
-    const FAST: bool = true;
-}
+/// The tier types are the raster's ([`crate::raster3d`]): one choice runs
+/// both stages.
+pub(crate) use crate::raster3d::{ExactTier, FastTier, Tier};
 
 #[cfg(test)]
 mod tests;

@@ -11,10 +11,12 @@ use embedded_graphics_core::draw_target::DrawTarget;
 use embedded_graphics_core::geometry::Dimensions;
 use embedded_graphics_core::primitives::Rectangle;
 
+use crate::ClipRect;
 use crate::Interpolate;
 use crate::band::BandView;
+use crate::blit::Blitter;
 use crate::depth::{DepthFormat, DepthRows, DepthState};
-use crate::raster3d::{Interpolation, Precision, ScreenTriangle, draw_triangle};
+use crate::raster3d::{Interpolation, Precision, ScreenTriangle, draw_clipped};
 
 /// The band being drawn, handed to the closure of
 /// [`Direct3d`](crate::render::Direct3d): frame
@@ -24,6 +26,8 @@ pub struct Band3d<'a, 'v, C, F: DepthFormat, M, const W: usize> {
     view: &'a mut BandView<'v, C, W>,
     depth: DepthRows<'a, F, W>,
     state: DepthState,
+    /// The view's clip rectangle, made once for the band's triangles.
+    clip: ClipRect,
     y0: i32,
     y1: i32,
     _m: PhantomData<M>,
@@ -43,7 +47,8 @@ where
         state: DepthState,
     ) -> Self {
         let (y0, y1) = (view.y0(), view.y1());
-        Band3d { view, depth, state, y0, y1, _m: PhantomData }
+        let clip = Blitter::clip(&*view);
+        Band3d { view, depth, state, clip, y0, y1, _m: PhantomData }
     }
 
     /// The frame rows of the band, first and last (inclusive).
@@ -80,17 +85,14 @@ where
     /// coverage set-up).
     #[inline]
     pub fn draw<const S: u32>(&mut self, tri: &ScreenTriangle<S>) {
-        draw_triangle(tri, self.view, &mut self.depth, self.state, M::default());
+        self.draw_in(tri, Precision::Exact);
     }
 
     /// [`Band3d::draw`] in accuracy tier `precision` (the vertex stage's:
     /// [`Pipeline::precision`](crate::pipeline::Pipeline)).
     #[inline]
     pub(crate) fn draw_in<const S: u32>(&mut self, tri: &ScreenTriangle<S>, precision: Precision) {
-        match precision {
-            Precision::Exact => self.draw(tri),
-            Precision::Fast => self.draw(tri),
-        }
+        draw_clipped(tri, self.view, self.clip, &mut self.depth, self.state, M::default(), precision);
     }
 
     /// Draws the triangles that touch the band, in order.

@@ -22,3 +22,31 @@ pub enum Precision {
     /// vertices, so closed meshes stay watertight.
     Fast,
 }
+
+/// [`Precision`] as a type: each tier's pixel loop is compiled on its own
+/// (a runtime tier is matched once per triangle, in `Band3d::draw_in`).
+pub(crate) trait Tier: sealed::Sealed + Copy + Default {
+    /// True for [`Precision::Fast`].
+    const FAST: bool;
+}
+
+/// [`Precision::Exact`] as a type.
+#[derive(Debug, Clone, Copy, Default)]
+pub(crate) struct ExactTier;
+
+/// [`Precision::Fast`] as a type.
+#[derive(Debug, Clone, Copy, Default)]
+pub(crate) struct FastTier;
+
+mod sealed {
+    pub trait Sealed {}
+    impl Sealed for super::ExactTier {}
+    impl Sealed for super::FastTier {}
+}
+
+impl Tier for ExactTier {
+    const FAST: bool = false;
+}
+impl Tier for FastTier {
+    const FAST: bool = true;
+}

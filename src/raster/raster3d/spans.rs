@@ -3,8 +3,9 @@
 //! one-span triangle, and the fragment loops per depth state and shading.
 
 use super::depth_span::{DepthRule, DepthSpan, LessWrite};
+use super::precision::Tier;
 use super::shade::{Gouraud, ShadeSpan, Shader, channels_in_range};
-use super::{Interpolation, ScreenTriangle};
+use super::{Affine, Interpolation, ScreenTriangle};
 use crate::Interpolate;
 use crate::attr::{Plane, PlaneSetup};
 use crate::band::BandView;
@@ -15,7 +16,7 @@ use crate::math::divisor::ARMV6M;
 /// The rest of [`draw_triangle`](super::draw_triangle) once the first span is known: plane set-up
 /// and the fragment loop.
 #[inline(always)]
-pub(super) fn shade_spans<C, F, M, const S: u32, const W: usize, R>(
+pub(super) fn shade_spans<C, F, M, P, const S: u32, const W: usize, R>(
     tri: &ScreenTriangle<S>,
     spans: (Span, Option<Span>, &R),
     color: &mut BandView<'_, C, W>,
@@ -25,6 +26,7 @@ pub(super) fn shade_spans<C, F, M, const S: u32, const W: usize, R>(
     C: Interpolate,
     F: DepthFormat,
     M: Interpolation,
+    P: Tier,
     R: SpanRest,
 {
     let (first, second, _) = spans;
@@ -47,7 +49,10 @@ pub(super) fn shade_spans<C, F, M, const S: u32, const W: usize, R>(
     {
         return;
     }
-    if tri.flat {
+    let fast = if P::FAST { fast_shade::<C, M, S>(tri) } else { FastShade::Planes(M::PERSPECTIVE) };
+    if let FastShade::Const(c) = fast {
+        draw_with_test::<C, F, _, _, W>(spans, color, depth, state, &zplane, &c);
+    } else if tri.flat {
         draw_with_test::<C, F, _, _, W>(
             spans,
             color,
@@ -59,9 +64,61 @@ pub(super) fn shade_spans<C, F, M, const S: u32, const W: usize, R>(
     } else if !M::PERSPECTIVE && channels_in_range::<C, S>(tri) {
         // No per-pixel clamp (`channel_in_range`).
         gouraud_spans::<C, F, M, false, S, W, _>(tri, &setup, spans, color, depth, state, &zplane);
+    } else if P::FAST && M::PERSPECTIVE && matches!(fast, FastShade::Planes(false)) {
+        // Near enough to screen-linear (`fast_shade`).
+        if channels_in_range::<C, S>(tri) {
+            gouraud_spans::<C, F, Affine, false, S, W, _>(tri, &setup, spans, color, depth, state, &zplane);
+        } else {
+            gouraud_spans::<C, F, Affine, true, S, W, _>(tri, &setup, spans, color, depth, state, &zplane);
+        }
     } else {
         gouraud_spans::<C, F, M, true, S, W, _>(tri, &setup, spans, color, depth, state, &zplane);
     }
+}
+
+/// The fast tier's colour of a triangle on the plane path.
+#[derive(Clone, Copy, PartialEq)]
+enum FastShade<C> {
+    /// Every pixel this colour: each channel's vertex values lie within 2
+    /// of each other, and this is the middle of their range (the exact
+    /// tier's channel, a rounding of a value inside that range, is within
+    /// one of it).
+    Const(C),
+    /// Gouraud planes, perspective-correct (`true`) or screen-linear.
+    Planes(bool),
+}
+
+/// [`FastShade`] of a Gouraud or flat triangle (flat: planes, which the
+/// caller draws flat). Perspective-correct colour takes screen-linear
+/// planes where the vertices' `1/w` are so close that the two differ by
+/// `Δ ≤ 1/4` (`tiny::perspective`'s bound): with the affine planes' own
+/// error (`2^-7`) and the perspective-correct planes', below one step, so
+/// each channel is within one of the exact tier's.
+#[inline(always)]
+fn fast_shade<C: Interpolate, M: Interpolation, const S: u32>(tri: &ScreenTriangle<S>) -> FastShade<C> {
+    if tri.flat {
+        return FastShade::Planes(M::PERSPECTIVE);
+    }
+    let max = C::CHANNEL_MAX;
+    let (mut lo, mut spread) = ([0u8; 3], 0u8);
+    for k in 0..3 {
+        let c = tri.v.map(|v| v.color[k]);
+        lo[k] = c[0].min(c[1]).min(c[2]);
+        let hi = c[0].max(c[1]).max(c[2]);
+        lo[k] += (hi - lo[k]) / 2;
+        if max[k] > 0 {
+            spread = spread.max(hi - c[0].min(c[1]).min(c[2]));
+        }
+    }
+    if spread <= 2 {
+        return FastShade::Const(C::from_channels(lo));
+    }
+    if M::PERSPECTIVE {
+        let a = tri.v.map(|v| u64::from(v.inv_w));
+        let (a_min, a_max) = (a[0].min(a[1]).min(a[2]), a[0].max(a[1]).max(a[2]));
+        return FastShade::Planes(2 * u64::from(spread) * (a_max - a_min) > a_min);
+    }
+    FastShade::Planes(false)
 }
 
 /// [`shade_spans`]' Gouraud fragment loop, its pixels clamped or not

@@ -41,14 +41,19 @@
 //!
 //! Depth formats wider than 16 bits take the plane path.
 
-use super::{DEPTH_FRAC, DepthRule, Interpolation, LessWrite, ScreenTriangle, depth_steps};
+use super::precision::Tier;
+use super::{
+    DEPTH_FRAC, DepthRule, Interpolation, LessWrite, ScreenTriangle, depth_steps, depth_steps_approx,
+};
 use crate::Interpolate;
 use crate::band::BandView;
 use crate::depth::{DepthFormat, DepthState};
 use crate::edge::small::Small;
 use crate::math::divisor::{divrem_small_quotient, mul_u16_u32};
 
+mod fast;
 mod perspective;
+use fast::FastShade;
 use perspective::{PerspFactors, shade_perspective};
 
 /// Triangles with a determinant below this are drawn here (module docs).
@@ -66,9 +71,10 @@ pub(super) fn eligible<F: DepthFormat>(small: &Small) -> bool {
 
 /// Draws `tri`, whose coverage walk is `small` ([`eligible`]), into the
 /// band: each covered centre's depth tested against `depth` with `state`,
-/// then its colour (flat, or Gouraud as `M` says) written where it passes.
+/// then its colour (flat, or Gouraud as `M` says; in tier `P`) written
+/// where it passes.
 #[inline(always)]
-pub(super) fn draw<C, F, M, const S: u32, const W: usize>(
+pub(super) fn draw<C, F, M, P, const S: u32, const W: usize>(
     tri: &ScreenTriangle<S>,
     small: &Small,
     color: &mut BandView<'_, C, W>,
@@ -78,16 +84,17 @@ pub(super) fn draw<C, F, M, const S: u32, const W: usize>(
     C: Interpolate,
     F: DepthFormat,
     M: Interpolation,
+    P: Tier,
 {
     if F::ENABLED && state == DepthState::LESS_WRITE {
-        draw_with::<C, F, M, _, S, W>(tri, small, color, depth, LessWrite);
+        draw_with::<C, F, M, P, _, S, W>(tri, small, color, depth, LessWrite);
     } else {
-        draw_with::<C, F, M, _, S, W>(tri, small, color, depth, state);
+        draw_with::<C, F, M, P, _, S, W>(tri, small, color, depth, state);
     }
 }
 
 #[inline(always)]
-fn draw_with<C, F, M, D, const S: u32, const W: usize>(
+fn draw_with<C, F, M, P, D, const S: u32, const W: usize>(
     tri: &ScreenTriangle<S>,
     small: &Small,
     color: &mut BandView<'_, C, W>,
@@ -97,17 +104,24 @@ fn draw_with<C, F, M, D, const S: u32, const W: usize>(
     C: Interpolate,
     F: DepthFormat,
     M: Interpolation,
+    P: Tier,
     D: DepthRule,
 {
     let det = small.det() as u32;
     let bias = small.biases().map(|b| b as u32);
-    let dv = tri
-        .v
-        .map(|v| if F::ENABLED { (depth_steps(v.depth, F::MAX) >> (DEPTH_FRAC - FRAC)) as u32 } else { 0 });
+    let dv = tri.v.map(|v| match (F::ENABLED, P::FAST) {
+        (false, _) => 0,
+        (true, false) => (depth_steps(v.depth, F::MAX) >> (DEPTH_FRAC - FRAC)) as u32,
+        // Within 3 units of 2^-16 steps, so each dv within one of the
+        // exact tier's: the value moves by at most 2^-8 steps.
+        (true, true) => depth_steps_approx(v.depth, F::BITS) >> (DEPTH_FRAC - FRAC),
+    });
     let y0 = color.y0();
-    // Perspective-correct colour factors, made at the first pixel that
-    // passes its depth test (none for a hidden triangle).
+    // Perspective-correct colour factors (the fast tier: its colour), made
+    // at the first pixel that passes its depth test (none for a hidden
+    // triangle).
     let mut persp = None;
+    let mut fast = None;
     small.for_each_centre(|x, y, e| {
         // Edge i lies opposite vertex i: w_i / det is its barycentric coordinate.
         let w = [0, 1, 2].map(|i| e[i] as u32 + bias[i]);
@@ -127,15 +141,22 @@ fn draw_with<C, F, M, D, const S: u32, const W: usize>(
                 *slot = F::from_u32(code);
             }
         }
-        *p = if M::PERSPECTIVE && !tri.flat {
-            shade_perspective::<C, S>(
+        let how = if P::FAST {
+            *fast.get_or_insert_with(|| FastShade::new::<M, S>(tri))
+        } else if M::PERSPECTIVE && !tri.flat {
+            FastShade::Perspective
+        } else {
+            FastShade::Affine
+        };
+        *p = match how {
+            FastShade::Const(c) => c,
+            FastShade::Perspective => shade_perspective::<C, S>(
                 tri,
                 persp.get_or_insert_with(|| PerspFactors::new::<C, S>(tri, det)),
                 w,
                 det,
-            )
-        } else {
-            shade::<C, S>(tri, w, det)
+            ),
+            FastShade::Affine => shade::<C, S>(tri, w, det),
         };
     });
 }
