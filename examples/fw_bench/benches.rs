@@ -28,7 +28,13 @@ pub mod dashboard;
 #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
 #[path = "../common/knot_mesh.rs"]
 pub mod knot_mesh;
+use microraster::raster3d::Precision;
 use microraster_scenes::scenes;
+
+/// The knot's cameras ([`Work::KnotTier`]).
+#[path = "../common/knot_eye.rs"]
+pub mod knot_eye;
+pub use knot_eye::Eye;
 
 pub use crate::sink::{Mode, Sink};
 use crate::workload::S;
@@ -127,6 +133,18 @@ pub enum Work {
     /// `tests/integration/view3d.rs`). Cortex-M4F only.
     #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
     Front3d,
+    /// Issue 61: the knot as [`Work::Meshlets`] (local viewer) in an
+    /// accuracy tier ([`Precision`]) and seen from an [`Eye`] (Cortex-M4F only).
+    #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+    KnotTier(Precision, Eye, Vertex, Interp),
+    /// Issue 61's Pareto table: the `f32` affine knot of
+    /// [`Work::KnotTier`] (standard eye) in bands of [`TALL_20`],
+    /// [`TALL_32`] or [`TALL_48`] rows, in an accuracy tier (Cortex-M4F only).
+    #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+    KnotTallTier(Precision, u16),
+    /// [`Work::Frame3d`] with the vertex stage's pipeline in an accuracy
+    /// tier ([`Precision`]).
+    Frame3dTier(Precision, Vertex, Interp),
     /// The 2D kit's dashboard ([`dashboard::dashboard`]: shapes with
     /// gradients, anti-aliasing and translucency, an alpha sprite, text),
     /// built and drawn in every band by `render::from_fn`.
@@ -182,6 +200,7 @@ pub fn selected(select: Option<&str>, index: usize, bench: &Bench) -> bool {
 }
 
 use Interp::{Affine as Aff, Perspective as Persp};
+use Precision::{Exact, Fast};
 use Vertex::{F32, Fx as Fix};
 
 /// Cortex-M4F (320 × 240, 16-row bands, frame bins): one line per configuration.
@@ -231,6 +250,32 @@ pub const M4F: &[Bench] = &[
     bench("knot20k-rows", Work::KnotTall(TALL_20 as u16)),
     #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
     bench("scene3d", Work::Front3d),
+    // Issue 61, appended so the rows above keep their indices: the fast
+    // tier beside the exact rows above, the camera twice as close in both
+    // tiers, and the Pareto table's bands (16 rows: the knot20k rows).
+    #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+    bench("knot20k", Work::KnotTier(Fast, Eye::Standard, F32, Aff)),
+    #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+    bench("knot20k", Work::KnotTier(Fast, Eye::Standard, F32, Persp)),
+    #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+    bench("knot20k", Work::KnotTier(Fast, Eye::Standard, Fix, Aff)),
+    #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+    bench("knot20k-close", Work::KnotTier(Exact, Eye::Close, F32, Aff)),
+    #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+    bench("knot20k-close", Work::KnotTier(Exact, Eye::Close, F32, Persp)),
+    #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+    bench("knot20k-close", Work::KnotTier(Fast, Eye::Close, F32, Aff)),
+    #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+    bench("knot20k-close", Work::KnotTier(Fast, Eye::Close, F32, Persp)),
+    bench("scene3d", Work::Frame3dTier(Fast, F32, Persp)),
+    #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+    bench("knot20k-rows", Work::KnotTallTier(Exact, TALL_32 as u16)),
+    #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+    bench("knot20k-rows", Work::KnotTallTier(Fast, TALL_20 as u16)),
+    #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+    bench("knot20k-rows", Work::KnotTallTier(Fast, TALL_32 as u16)),
+    #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+    bench("knot20k-rows", Work::KnotTallTier(Fast, TALL_48 as u16)),
 ];
 
 /// Rows of a band of [`Work::KnotTall`] whose colour and `Depth16` rows
@@ -238,6 +283,8 @@ pub const M4F: &[Bench] = &[
 /// the knot's frame (the table's RAM column; 21 rows would fit too, in
 /// the same 12 bands). Cortex-M4F only.
 pub const TALL_20: usize = 20;
+/// Rows of the bands of [`Work::KnotTallTier`]'s middle step (Cortex-M4F only).
+pub const TALL_32: usize = 32;
 /// Rows of the taller bands of [`Work::KnotTall`] (Cortex-M4F only).
 pub const TALL_48: usize = 48;
 /// A band as tall as the frame ([`Work::KnotTall`]).
@@ -292,6 +339,23 @@ impl Work {
             Work::KnotStage(Fix, Stage::NoWrites) => "Fx affine: all but pixel writes",
             Work::Dashboard => "2D kit, drawn per band",
             #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+            Work::KnotTier(p, eye, t, i) => describe_tier(p, eye, t, i),
+            #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+            Work::KnotTallTier(p, rows) => match (p, rows) {
+                (Exact, 20) => "meshlets, f32, affine, 20-row bands, exact tier",
+                (Exact, 32) => "meshlets, f32, affine, 32-row bands",
+                (Exact, 48) => "meshlets, f32, affine, 48-row bands, exact tier",
+                (Fast, 20) => "meshlets, f32, affine, 20-row bands, fast tier",
+                (Fast, 32) => "meshlets, f32, affine, 32-row bands, fast tier",
+                (Fast, 48) => "meshlets, f32, affine, 48-row bands, fast tier",
+                _ => "meshlets, f32, affine, other bands, by tier",
+            },
+            Work::Frame3dTier(Exact, ..) => "exact tier, binned per frame",
+            Work::Frame3dTier(Fast, F32, Persp) => "f32, persp.-correct, fast tier",
+            Work::Frame3dTier(Fast, F32, Aff) => "f32, affine, fast tier",
+            Work::Frame3dTier(Fast, Fix, Persp) => "Fx, persp.-correct, fast tier",
+            Work::Frame3dTier(Fast, Fix, Aff) => "Fx, affine, fast tier",
+            #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
             Work::Front3d => "View3d front, f32, persp.-correct, per band",
             #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
             Work::KnotVertexRows(rows) => match rows {
@@ -321,7 +385,17 @@ impl Work {
             Work::Vertex3dCached => "BINS,CACHE",
             Work::Vertex3dChunked => "BINS,CHUNK",
             Work::Frame3dChunked => "BAND,DEPTH,BINS,CHUNK",
-            Work::Frame3d(..) | Work::PerBand3d(..) => "BAND,DEPTH,BINS",
+            Work::Frame3d(..) | Work::PerBand3d(..) | Work::Frame3dTier(..) => "BAND,DEPTH,BINS",
+            #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+            Work::KnotTier(_, _, F32, _) => "BAND,DEPTH,CLUSTER",
+            #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+            Work::KnotTier(_, _, Fix, _) => "BAND,DEPTH,CLUSTER_FX",
+            #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+            Work::KnotTallTier(_, rows) => match rows {
+                20 => "BAND20,DEPTH20,CLUSTER",
+                32 => "BAND32,DEPTH32,CLUSTER",
+                _ => "BAND48,DEPTH48,CLUSTER",
+            },
             #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
             Work::Front3d => "VIEW",
             Work::Meshlets(F32, _) | Work::MeshletsFar(_) | Work::KnotStage(F32, _) => "BAND,DEPTH,CLUSTER",
@@ -359,11 +433,30 @@ impl Work {
     }
 }
 
+/// [`Work::KnotTier`]'s description.
+#[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+const fn describe_tier(p: Precision, eye: Eye, t: Vertex, i: Interp) -> &'static str {
+    match (p, eye, t, i) {
+        (Fast, Eye::Standard, F32, Aff) => "meshlets per band, f32, affine, fast tier",
+        (Fast, Eye::Standard, F32, Persp) => "meshlets per band, f32, persp.-correct, fast tier",
+        (Fast, Eye::Standard, Fix, Aff) => "meshlets per band, Fx, affine, fast tier",
+        (Fast, Eye::Standard, Fix, Persp) => "meshlets per band, Fx, persp.-correct, fast tier",
+        (Exact, Eye::Close, F32, Aff) => "meshlets per band, f32, affine, eye twice as close",
+        (Exact, Eye::Close, F32, Persp) => "meshlets per band, f32, persp.-correct, eye twice as close",
+        (Fast, Eye::Close, F32, Aff) => "meshlets per band, f32, affine, fast tier, eye twice as close",
+        (Fast, Eye::Close, F32, Persp) => "meshlets per band, f32, persp.-correct, fast tier, eye twice as close",
+        (_, Eye::Close, Fix, _) => "meshlets per band, Fx, eye twice as close, by tier",
+        (Exact, Eye::Standard, ..) => "meshlets per band, exact tier, by tier",
+    }
+}
+
 mod frame;
 // Its functions are Cortex-M4F (and host) only: on the Cortex-M0 its imports go unused.
 #[cfg_attr(all(target_os = "none", not(target_abi = "eabihf")), allow(unused_imports))]
 mod knot;
 mod scene3d;
+#[cfg_attr(all(target_os = "none", not(target_abi = "eabihf")), allow(unused_imports, dead_code))]
+pub mod tiers;
 
 #[allow(unused_imports)] // the firmware uses some, the host's table all
 pub use frame::{Buffers, Cache, Tall, View, frame, prepare};

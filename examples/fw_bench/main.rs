@@ -88,6 +88,10 @@ mod firmware {
             Band::new(BACKGROUND);
         static mut DEPTH20: DepthBand<Depth16, { benches::M4F_SIZE.0 }, { benches::TALL_20 }> =
             DepthBand::zeroed();
+        static mut BAND32: Band<Rgb565, { benches::M4F_SIZE.0 }, { benches::TALL_32 }> =
+            Band::new(BACKGROUND);
+        static mut DEPTH32: DepthBand<Depth16, { benches::M4F_SIZE.0 }, { benches::TALL_32 }> =
+            DepthBand::zeroed();
         static mut BAND48: Band<Rgb565, { benches::M4F_SIZE.0 }, { benches::TALL_48 }> =
             Band::new(BACKGROUND);
         static mut DEPTH48: DepthBand<Depth16, { benches::M4F_SIZE.0 }, { benches::TALL_48 }> =
@@ -103,6 +107,8 @@ mod firmware {
         let tall = Some(benches::Tall {
             band20: BAND20,
             depth20: DEPTH20,
+            band32: BAND32,
+            depth32: DEPTH32,
             band48: BAND48,
             depth48: DEPTH48,
             band240: BAND240,

@@ -15,6 +15,7 @@ use microraster_scenes::scenes3d::Scene3d;
 
 use super::Vertex::{F32, Fx as Fix};
 use super::frame::{Buffers, input};
+use super::tiers::scene_triangles;
 #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
 use super::knot_mesh;
 use super::{Scene2d, Sink, Vertex, Work};
@@ -155,7 +156,11 @@ pub fn primitives<const W: usize, const H: usize, const N: usize, const P: usize
         | Work::MeshletsFar(_)
         | Work::KnotStage(..)
         | Work::KnotVertexRows(_)
-        | Work::KnotTall(_) => Ok((knot_mesh::KNOT.triangles.len() as u32, 0)),
+        | Work::KnotTall(_)
+        | Work::KnotTier(..)
+        | Work::KnotTallTier(..) => Ok((knot_mesh::KNOT.triangles.len() as u32, 0)),
+        Work::Frame3dTier(p, F32, _) => Ok((scene_triangles::<f32, W, H, N>(p, height, b.bins)?, 0)),
+        Work::Frame3dTier(p, Fix, _) => Ok((scene_triangles::<Fx, W, H, N>(p, height, b.bins)?, 0)),
         #[cfg(not(any(not(target_os = "none"), target_abi = "eabihf")))]
         Work::Meshlets(..) | Work::MeshletsFar(_) | Work::KnotStage(..) => Err(Error::InvalidParameter),
         Work::Frame2d(scene) | Work::Streamed2d(scene) => count_2d(scene),
