@@ -18,7 +18,10 @@
 #                                           the same for one target (m4f or m0) and,
 #                                           with ROWS, only those configurations
 #                                           (comma-separated indices or scene names,
-#                                           e.g. `table m4f knot20k`: about two minutes);
+#                                           e.g. `table m4f knot20k`: about two minutes;
+#                                           issue 61's rows: `knot20k` has both accuracy
+#                                           tiers, `knot20k-close` the camera twice as
+#                                           close, `knot20k-rows` the bands per tier);
 #                                           printed only, README and data untouched
 #   bash scripts/firmware.sh profile ROWS [N]
 #                                           where those fw_bench rows (as for `table`)

@@ -339,7 +339,7 @@ impl Work {
             Work::KnotStage(Fix, Stage::NoWrites) => "Fx affine: all but pixel writes",
             Work::Dashboard => "2D kit, drawn per band",
             #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
-            Work::KnotTier(p, eye, t, i) => describe_tier(p, eye, t, i),
+            Work::KnotTier(p, eye, t, i) => describe_tier(*p, *eye, *t, *i),
             #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
             Work::KnotTallTier(p, rows) => match (p, rows) {
                 (Exact, 20) => "meshlets, f32, affine, 20-row bands, exact tier",
