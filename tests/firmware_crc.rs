@@ -57,8 +57,10 @@ fn crc32_is_the_standard_crc() {
 fn records_tile_the_frame() {
     // The 2D scene and the 3D frames of each tier.
     let (n4, n0) = (1 + 2 * workload::M4F_3D.len(), 1 + workload::M0_3D.len());
-    let configs =
-        [(m4f(), workload::M4F_SIZE, workload::M4F_BAND, n4), (m0(), workload::M0_SIZE, workload::M0_BAND, n0)];
+    let configs = [
+        (m4f(), workload::M4F_SIZE, workload::M4F_BAND, n4),
+        (m0(), workload::M0_SIZE, workload::M0_BAND, n0),
+    ];
     for (recs, (w, h), band, scenes) in configs {
         let frames: Vec<_> = recs.iter().filter(|r| r.band.is_none()).collect();
         assert_eq!(frames.len(), scenes);

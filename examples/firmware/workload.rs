@@ -87,7 +87,9 @@ pub fn m4f(b: M4fBuffers<'_>, out: Out<'_>) -> Result<(), Error> {
         scene3d::<f32, PerspectiveCorrect, M4W, M4F_BAND, BINS>(
             f32_name, precision, h, bins, band, depth, &mut *out,
         )?;
-        scene3d::<Fx, PerspectiveCorrect, M4W, M4F_BAND, BINS>(fx_name, precision, h, bins, band, depth, &mut *out)?;
+        scene3d::<Fx, PerspectiveCorrect, M4W, M4F_BAND, BINS>(
+            fx_name, precision, h, bins, band, depth, &mut *out,
+        )?;
     }
     Ok(())
 }
@@ -149,7 +151,9 @@ pub fn m0(b: M0Buffers<'_>, out: Out<'_>) -> Result<(), Error> {
     mixed_streamed("mixed/160x128", h, band, &mut *out)?;
     for (precision, fx, name) in M0_3D {
         if fx {
-            scene3d_per_band::<Fx, Affine, M0W, M0_BAND, BAND_BINS>(name, precision, h, bins, band, depth, &mut *out)?;
+            scene3d_per_band::<Fx, Affine, M0W, M0_BAND, BAND_BINS>(
+                name, precision, h, bins, band, depth, &mut *out,
+            )?;
         } else {
             scene3d_per_band::<f32, Affine, M0W, M0_BAND, BAND_BINS>(
                 name, precision, h, bins, band, depth, &mut *out,

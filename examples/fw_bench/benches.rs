@@ -444,7 +444,9 @@ const fn describe_tier(p: Precision, eye: Eye, t: Vertex, i: Interp) -> &'static
         (Exact, Eye::Close, F32, Aff) => "meshlets per band, f32, affine, eye twice as close",
         (Exact, Eye::Close, F32, Persp) => "meshlets per band, f32, persp.-correct, eye twice as close",
         (Fast, Eye::Close, F32, Aff) => "meshlets per band, f32, affine, fast tier, eye twice as close",
-        (Fast, Eye::Close, F32, Persp) => "meshlets per band, f32, persp.-correct, fast tier, eye twice as close",
+        (Fast, Eye::Close, F32, Persp) => {
+            "meshlets per band, f32, persp.-correct, fast tier, eye twice as close"
+        }
         (_, Eye::Close, Fix, _) => "meshlets per band, Fx, eye twice as close, by tier",
         (Exact, Eye::Standard, ..) => "meshlets per band, exact tier, by tier",
     }

@@ -90,7 +90,8 @@ fn main() -> Res<()> {
     let charts_dir = out.join("charts");
     std::fs::create_dir_all(&charts_dir)?;
     let counts = cortex::Counts::load(&out.join("data/cortex-m.tsv"))?;
-    let fw = cortex::FwBench::load(&out.join("data/fw-bench.tsv"))?.with_tgx(&out.join("data/peers-tgx.tsv"))?;
+    let fw =
+        cortex::FwBench::load(&out.join("data/fw-bench.tsv"))?.with_tgx(&out.join("data/peers-tgx.tsv"))?;
     let cpu = cpu_name();
     eprintln!("report: {cpu}; writing {}", out.display());
 
@@ -220,7 +221,18 @@ fn main() -> Res<()> {
 
     eprintln!("report: charts and tables");
     let (mut doc, targets) = document(
-        &cpu, memset_ns, ceiling, &peers, &breakdown, &knot_split, &s2, &s3, &setups, &counts, &fw, &tiers_md,
+        &cpu,
+        memset_ns,
+        ceiling,
+        &peers,
+        &breakdown,
+        &knot_split,
+        &s2,
+        &s3,
+        &setups,
+        &counts,
+        &fw,
+        &tiers_md,
     );
     doc.push_str(&fragment_section(&frag, aliased_coverage, &peers, &counts));
     doc.push_str(&shapes_section());

@@ -73,7 +73,8 @@ fn knot<M: Interpolation + Default>(eye: Eye, p: Precision) -> Frame {
 
 /// Draws the standard scene in tier `p`, perspective-correct.
 fn scene(p: Precision) -> Frame {
-    let pipeline = knot_eye::pipeline::<f32, 4>(Eye::Standard, p, W as u32, H as u32).expect("the scene's pipeline");
+    let pipeline =
+        knot_eye::pipeline::<f32, 4>(Eye::Standard, p, W as u32, H as u32).expect("the scene's pipeline");
     let mut bins = Box::new(Bins::<4>::new());
     let mut band = Box::new(Band::<Rgb565, W, H>::new(BG3));
     let mut depth = Box::new(DepthBand::<Depth16, W, H>::new());
@@ -88,7 +89,8 @@ fn depths(d: &DepthBand<Depth16, W, H>) -> Vec<u32> {
 
 /// Compares the fast frame with the exact one.
 fn compare(label: &'static str, keys: [&'static str; 2], exact: Frame, fast: Frame) -> TierError {
-    let mut e = TierError { label, keys, both: 0, within_one: 0, max_channel: 0, max_depth: 0, coverage_differs: 0 };
+    let mut e =
+        TierError { label, keys, both: 0, within_one: 0, max_channel: 0, max_depth: 0, coverage_differs: 0 };
     for i in 0..exact.0.len() {
         let (a, b) = (exact.0[i], fast.0[i]);
         match (a != BG3, b != BG3) {
@@ -207,12 +209,31 @@ pub fn pareto(fw: &FwBench) -> String {
     let mut w = String::new();
     let rows: [(u32, [&str; 2]); 4] = [
         (16, ["knot20k/meshlets-per-band-f32-affine", "knot20k/meshlets-per-band-f32-affine-fast-tier"]),
-        (20, ["knot20k-rows/meshlets-f32-affine-20-row-bands", "knot20k-rows/meshlets-f32-affine-20-row-bands-fast-tier"]),
-        (32, ["knot20k-rows/meshlets-f32-affine-32-row-bands", "knot20k-rows/meshlets-f32-affine-32-row-bands-fast-tier"]),
-        (48, ["knot20k-rows/meshlets-f32-affine-48-row-bands", "knot20k-rows/meshlets-f32-affine-48-row-bands-fast-tier"]),
+        (
+            20,
+            [
+                "knot20k-rows/meshlets-f32-affine-20-row-bands",
+                "knot20k-rows/meshlets-f32-affine-20-row-bands-fast-tier",
+            ],
+        ),
+        (
+            32,
+            [
+                "knot20k-rows/meshlets-f32-affine-32-row-bands",
+                "knot20k-rows/meshlets-f32-affine-32-row-bands-fast-tier",
+            ],
+        ),
+        (
+            48,
+            [
+                "knot20k-rows/meshlets-f32-affine-48-row-bands",
+                "knot20k-rows/meshlets-f32-affine-48-row-bands-fast-tier",
+            ],
+        ),
     ];
     let tgx = fw.tgx("standard");
-    let x = |n: u64| tgx.map_or(String::new(), |t| format!(" ({:.2}× TGX)", n as f64 / t.instructions as f64));
+    let x =
+        |n: u64| tgx.map_or(String::new(), |t| format!(" ({:.2}× TGX)", n as f64 / t.instructions as f64));
     let _ = writeln!(
         w,
         "Instructions against RAM (the knot, f32, affine, Cortex-M4F; RAM: the colour and `Depth16` bands and the \
@@ -222,7 +243,9 @@ pub fn pareto(fw: &FwBench) -> String {
     for (h, [e, f]) in rows {
         let (re, rf) = (fw.get("m4f", e), fw.get("m4f", f));
         let ram = re.or(rf).map_or("pending".into(), |r| group(r.static_ram));
-        let cell = |r: Option<crate::cortex::FwRow>| r.map_or("pending".into(), |r| format!("{}{}", group(r.instructions), x(r.instructions)));
+        let cell = |r: Option<crate::cortex::FwRow>| {
+            r.map_or("pending".into(), |r| format!("{}{}", group(r.instructions), x(r.instructions)))
+        };
         let _ = writeln!(w, "| {h} rows | {ram} | {} | {} |", cell(re), cell(rf));
     }
     if let Some(t) = tgx {
@@ -249,7 +272,9 @@ pub fn readme(errors: &[TierError], fw: &FwBench) -> String {
         let cell = |k: &str| {
             let n = instr(fw, k);
             match (fw.get("m4f", k), tgx.filter(|_| k.starts_with("knot"))) {
-                (Some(r), Some(t)) => format!("{n} ({:.2}× TGX)", r.instructions as f64 / t.instructions as f64),
+                (Some(r), Some(t)) => {
+                    format!("{n} ({:.2}× TGX)", r.instructions as f64 / t.instructions as f64)
+                }
                 _ => n,
             }
         };

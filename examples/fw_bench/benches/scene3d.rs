@@ -15,9 +15,9 @@ use microraster_scenes::scenes3d::Scene3d;
 
 use super::Vertex::{F32, Fx as Fix};
 use super::frame::{Buffers, input};
-use super::tiers::scene_triangles;
 #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
 use super::knot_mesh;
+use super::tiers::scene_triangles;
 use super::{Scene2d, Sink, Vertex, Work};
 use crate::workload::{ANGLE, DEPTH_STATE, S};
 

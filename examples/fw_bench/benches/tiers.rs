@@ -15,9 +15,9 @@ use microraster::math::{Fx, Scalar};
 use microraster::pipeline::ClusterCache;
 use microraster::pipeline::Pipeline;
 use microraster::raster3d::{Affine, Interpolation, PerspectiveCorrect, Precision, ScreenTriangle};
+use microraster::render::Triangles3d;
 #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
 use microraster::{Band, render::Direct3d};
-use microraster::render::Triangles3d;
 use microraster::{Error, Renderer};
 use microraster_scenes::scenes3d::Scene3d;
 
@@ -34,7 +34,12 @@ use super::{TALL_20, TALL_32, TALL_48, knot_mesh};
 use crate::workload::{ANGLE, DEPTH_STATE, S};
 
 /// The knot's camera and tier ([`knot_eye::pipeline`]), `S` subpixel bits.
-fn pipeline<T: Scalar>(eye: Eye, precision: Precision, width: u32, height: u32) -> Result<Pipeline<T, S>, Error> {
+fn pipeline<T: Scalar>(
+    eye: Eye,
+    precision: Precision,
+    width: u32,
+    height: u32,
+) -> Result<Pipeline<T, S>, Error> {
     knot_eye::pipeline::<T, S>(eye, precision, width, height)
 }
 

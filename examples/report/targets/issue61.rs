@@ -25,24 +25,14 @@ struct TgxBound {
 
 /// The knot rows judged against TGX (`examples/fw_bench`, `docs/data/fw-bench.tsv` keys).
 const TGX_BOUNDS: [TgxBound; 5] = [
-    TgxBound {
-        key: FAST_AFFINE,
-        eye: "standard",
-        ratio: (8, 10),
-        label: "fast tier, f32, affine",
-    },
+    TgxBound { key: FAST_AFFINE, eye: "standard", ratio: (8, 10), label: "fast tier, f32, affine" },
     TgxBound {
         key: "knot20k/meshlets-per-band-f32-persp-correct-fast-tier",
         eye: "standard",
         ratio: (9, 10),
         label: "fast tier, f32, perspective-correct",
     },
-    TgxBound {
-        key: EXACT_AFFINE,
-        eye: "standard",
-        ratio: (13, 10),
-        label: "exact tier, f32, affine",
-    },
+    TgxBound { key: EXACT_AFFINE, eye: "standard", ratio: (13, 10), label: "exact tier, f32, affine" },
     TgxBound {
         key: CLOSE_FAST,
         eye: "close",
@@ -108,7 +98,11 @@ pub(super) fn issue61(peers: &[Peer], counts: &Counts, fw: &FwBench) -> (String,
             }
             (None, Some(tgx)) => {
                 let limit = tgx.instructions * num / den;
-                (format!("{x:.1}× TGX's {} = {}", group(tgx.instructions), group(limit)), PENDING_FW.into(), "pending".into())
+                (
+                    format!("{x:.1}× TGX's {} = {}", group(tgx.instructions), group(limit)),
+                    PENDING_FW.into(),
+                    "pending".into(),
+                )
             }
             (_, None) => (format!("{x:.1}× TGX"), PENDING_TGX.into(), "pending".into()),
         };
@@ -146,7 +140,10 @@ pub(super) fn issue61(peers: &[Peer], counts: &Counts, fw: &FwBench) -> (String,
         }
         _ => ("pending (`bash scripts/firmware.sh sweep`)".into(), "pending".into()),
     };
-    let _ = writeln!(t, "| issue 61: Cortex-M0, knot: Fx stays ≥ 3× fewer instructions than soft-float f32 | {measured} | {v} |");
+    let _ = writeln!(
+        t,
+        "| issue 61: Cortex-M0, knot: Fx stays ≥ 3× fewer instructions than soft-float f32 | {measured} | {v} |"
+    );
     let euc = ratio(peers, knot::EUC, knot::BASE).unwrap_or(f64::NAN);
     let _ = writeln!(
         t,
@@ -195,7 +192,9 @@ fn pixel_why(w: &mut String, fw: &FwBench) {
     };
     let tgx_px = per_px(ts, tc);
     let mut parts = Vec::new();
-    for (tier, std_key, close_key) in [("exact", EXACT_AFFINE, CLOSE_EXACT), ("fast", FAST_AFFINE, CLOSE_FAST)] {
+    for (tier, std_key, close_key) in
+        [("exact", EXACT_AFFINE, CLOSE_EXACT), ("fast", FAST_AFFINE, CLOSE_FAST)]
+    {
         let (Some(s), Some(c)) = (fw.get("m4f", std_key), fw.get("m4f", close_key)) else { continue };
         let px = per_px(s, c);
         // What the frame costs beside its pixels, against TGX's the same way.
