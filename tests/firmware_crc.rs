@@ -87,7 +87,8 @@ fn records_tile_the_frame() {
         for name in fast.into_iter().filter(|n| recs.iter().any(|r| r.scene == *n)) {
             let own: Vec<_> = recs.iter().filter(|r| r.scene == name).collect();
             let crcs: std::collections::BTreeSet<_> = own.iter().map(|r| r.crc).collect();
-            assert!(crcs.len() > own.len() * 3 / 4, "{name}: {} distinct CRCs in {}", crcs.len(), own.len());
+            // (A frame alone repeats its blank bands' CRC: half, not ¾.)
+            assert!(crcs.len() > own.len() / 2, "{name}: {} distinct CRCs in {}", crcs.len(), own.len());
         }
     }
 }
