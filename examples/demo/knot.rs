@@ -9,7 +9,7 @@ use embedded_graphics_core::pixelcolor::Rgb888;
 use microraster::depth::{Depth16, DepthBand, DepthState};
 use microraster::math::{Mat4, transform};
 use microraster::mesh::ValidMesh;
-use microraster::pipeline::{ClusterCache, MeshStats};
+use microraster::pipeline::{ClusterCache, MeshStats, Pipeline};
 use microraster::raster3d::{Affine, ScreenTriangle};
 use microraster::render::{Direct3d, Triangles3d};
 use microraster::{Band, Renderer};
@@ -27,9 +27,9 @@ fn model() -> Mat4<f32> {
     transform::rotation_y(ANGLE)
 }
 
-/// Writes knot.png to `out` and prints what the meshlet stage skipped.
-pub fn run(out: &Path) -> Result<()> {
-    let pipeline = Scene3d::pipeline::<f32, S>(W as u32, HEIGHT)?;
+/// The knot through the meshlet stage in 16-row bands with `pipeline`
+/// (its accuracy tier is the pipeline's), and what the stage skipped.
+pub fn meshlet_frame(pipeline: &Pipeline<f32, S>) -> Result<(Canvas, MeshStats)> {
     let mut canvas = Canvas::new(W as u32, HEIGHT);
     let mut band = Band::<Rgb888, W, BAND_ROWS>::new(BACKGROUND);
     let mut depth = DepthBand::<Depth16, W, BAND_ROWS>::new();
@@ -48,6 +48,15 @@ pub fn run(out: &Path) -> Result<()> {
             &mut canvas,
         )
         .map_err(|e| e.to_string())?;
+    Ok((canvas, total))
+}
+
+/// Writes knot.png to `out` and prints what the meshlet stage skipped.
+pub fn run(out: &Path) -> Result<()> {
+    let pipeline = Scene3d::pipeline::<f32, S>(W as u32, HEIGHT)?;
+    let (canvas, total) = meshlet_frame(&pipeline)?;
+    let mut band = Band::<Rgb888, W, BAND_ROWS>::new(BACKGROUND);
+    let mut depth = DepthBand::<Depth16, W, BAND_ROWS>::new();
 
     // The binned path, same triangles in cluster order: the same frame.
     let mut bins = Box::new(heapless::Vec::<ScreenTriangle<S>, 16384>::new());

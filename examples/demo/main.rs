@@ -20,6 +20,7 @@ use std::path::{Path, PathBuf};
 mod dashboard;
 mod fragment;
 mod knot;
+mod knot_tiers;
 mod scene3d;
 
 /// Subpixel bits: 1/16 px.
@@ -86,6 +87,7 @@ fn main() -> Result<()> {
 
     scene3d::run(&out)?;
     knot::run(&out)?;
+    knot_tiers::run(&out)?;
     dashboard::run(&out)?;
     fragment::run(&out)
 }

@@ -13,19 +13,23 @@
 //!   meshes in flash) with the vertex stage run once per frame (every visible
 //!   triangle binned, then `Triangles3d`), once on the `f32` vertex
 //!   path and once on the fixed-point [`Fx`] path; 320 × 240 `Rgb565`, 16-row
-//!   bands, 16-bit depth, perspective-correct colour.
+//!   bands, 16-bit depth, perspective-correct colour; each 3D frame in
+//!   both accuracy tiers ([`M4F_3D`]: `Precision::Exact`, the library's
+//!   reference pixels, and `Precision::Fast`, whose own frames must match
+//!   between host and target just the same).
 //! * [`m0`] (Cortex-M0, nRF51822, 16 KB RAM): 160 × 128 `Rgb565` in 4-row
 //!   bands, nothing per frame kept in RAM: for each band the 2D scene is
 //!   generated again and drawn straight into the band, and the 3D scene's
 //!   vertex stage runs again on the [`Fx`] path keeping only the triangles
 //!   that touch the band (`PerBand3d`); meshes in flash,
 //!   16-bit depth, affine colour (no per-pixel division on a core without a
-//!   divider).
+//!   divider); the fast tier's frames on both vertex paths beside it
+//!   ([`M0_3D`]).
 
 use embedded_graphics_core::pixelcolor::{Rgb565, RgbColor};
 use microraster::depth::{Depth16, DepthBand, DepthState};
 use microraster::math::Fx;
-use microraster::raster3d::{Affine, PerspectiveCorrect, ScreenTriangle};
+use microraster::raster3d::{Affine, PerspectiveCorrect, Precision, ScreenTriangle};
 use microraster::{Band, Error, Primitive};
 use microraster_scenes::scenes;
 use microraster_scenes::scenes3d::BINS;
@@ -79,16 +83,31 @@ pub fn m4f(b: M4fBuffers<'_>, out: Out<'_>) -> Result<(), Error> {
     let h = M4F_SIZE.1;
     let M4fBuffers { prims, band, depth, bins } = b;
     mixed("mixed/320x240", h, prims, band, &mut *out)?;
-    scene3d::<f32, PerspectiveCorrect, M4W, M4F_BAND, BINS>(
-        "scene3d-f32/320x240",
-        h,
-        bins,
-        band,
-        depth,
-        &mut *out,
-    )?;
-    scene3d::<Fx, PerspectiveCorrect, M4W, M4F_BAND, BINS>("scene3d-fx/320x240", h, bins, band, depth, out)
+    for (precision, [f32_name, fx_name]) in M4F_3D {
+        scene3d::<f32, PerspectiveCorrect, M4W, M4F_BAND, BINS>(
+            f32_name, precision, h, bins, band, depth, &mut *out,
+        )?;
+        scene3d::<Fx, PerspectiveCorrect, M4W, M4F_BAND, BINS>(
+            fx_name, precision, h, bins, band, depth, &mut *out,
+        )?;
+    }
+    Ok(())
 }
+
+/// The Cortex-M4F's 3D frames: per accuracy tier, the `f32` and the `Fx`
+/// frame's name (the exact ones first, as before the fast tier).
+pub const M4F_3D: [(Precision, [&str; 2]); 2] = [
+    (Precision::Exact, ["scene3d-f32/320x240", "scene3d-fx/320x240"]),
+    (Precision::Fast, ["scene3d-f32-fast/320x240", "scene3d-fx-fast/320x240"]),
+];
+
+/// The Cortex-M0's 3D frames: the exact tier's `Fx` frame, then the fast
+/// tier's `Fx` and (soft float) `f32` frames.
+pub const M0_3D: [(Precision, bool, &str); 3] = [
+    (Precision::Exact, true, "scene3d-fx/160x128"),
+    (Precision::Fast, true, "scene3d-fx-fast/160x128"),
+    (Precision::Fast, false, "scene3d-f32-fast/160x128"),
+];
 
 /// [`m4f`] with buffers on the heap (host).
 #[cfg(not(target_os = "none"))]
@@ -130,7 +149,18 @@ pub fn m0(b: M0Buffers<'_>, out: Out<'_>) -> Result<(), Error> {
     let h = M0_SIZE.1;
     let M0Buffers { band, depth, bins } = b;
     mixed_streamed("mixed/160x128", h, band, &mut *out)?;
-    scene3d_per_band::<Fx, Affine, M0W, M0_BAND, BAND_BINS>("scene3d-fx/160x128", h, bins, band, depth, out)
+    for (precision, fx, name) in M0_3D {
+        if fx {
+            scene3d_per_band::<Fx, Affine, M0W, M0_BAND, BAND_BINS>(
+                name, precision, h, bins, band, depth, &mut *out,
+            )?;
+        } else {
+            scene3d_per_band::<f32, Affine, M0W, M0_BAND, BAND_BINS>(
+                name, precision, h, bins, band, depth, &mut *out,
+            )?;
+        }
+    }
+    Ok(())
 }
 
 /// [`m0`] with buffers on the heap (host).

@@ -28,7 +28,13 @@ pub mod dashboard;
 #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
 #[path = "../common/knot_mesh.rs"]
 pub mod knot_mesh;
+use microraster::raster3d::Precision;
 use microraster_scenes::scenes;
+
+/// The knot's cameras ([`Work::KnotTier`]).
+#[path = "../common/knot_eye.rs"]
+pub mod knot_eye;
+pub use knot_eye::Eye;
 
 pub use crate::sink::{Mode, Sink};
 use crate::workload::S;
@@ -127,6 +133,18 @@ pub enum Work {
     /// `tests/integration/view3d.rs`). Cortex-M4F only.
     #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
     Front3d,
+    /// Issue 61: the knot as [`Work::Meshlets`] (local viewer) in an
+    /// accuracy tier ([`Precision`]) and seen from an [`Eye`] (Cortex-M4F only).
+    #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+    KnotTier(Precision, Eye, Vertex, Interp),
+    /// Issue 61's Pareto table: the `f32` affine knot of
+    /// [`Work::KnotTier`] (standard eye) in bands of [`TALL_20`],
+    /// [`TALL_32`] or [`TALL_48`] rows, in an accuracy tier (Cortex-M4F only).
+    #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+    KnotTallTier(Precision, u16),
+    /// [`Work::Frame3d`] with the vertex stage's pipeline in an accuracy
+    /// tier ([`Precision`]).
+    Frame3dTier(Precision, Vertex, Interp),
     /// The 2D kit's dashboard ([`dashboard::dashboard`]: shapes with
     /// gradients, anti-aliasing and translucency, an alpha sprite, text),
     /// built and drawn in every band by `render::from_fn`.
@@ -182,6 +200,7 @@ pub fn selected(select: Option<&str>, index: usize, bench: &Bench) -> bool {
 }
 
 use Interp::{Affine as Aff, Perspective as Persp};
+use Precision::{Exact, Fast};
 use Vertex::{F32, Fx as Fix};
 
 /// Cortex-M4F (320 × 240, 16-row bands, frame bins): one line per configuration.
@@ -231,6 +250,32 @@ pub const M4F: &[Bench] = &[
     bench("knot20k-rows", Work::KnotTall(TALL_20 as u16)),
     #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
     bench("scene3d", Work::Front3d),
+    // Issue 61, appended so the rows above keep their indices: the fast
+    // tier beside the exact rows above, the camera twice as close in both
+    // tiers, and the Pareto table's bands (16 rows: the knot20k rows).
+    #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+    bench("knot20k", Work::KnotTier(Fast, Eye::Standard, F32, Aff)),
+    #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+    bench("knot20k", Work::KnotTier(Fast, Eye::Standard, F32, Persp)),
+    #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+    bench("knot20k", Work::KnotTier(Fast, Eye::Standard, Fix, Aff)),
+    #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+    bench("knot20k-close", Work::KnotTier(Exact, Eye::Close, F32, Aff)),
+    #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+    bench("knot20k-close", Work::KnotTier(Exact, Eye::Close, F32, Persp)),
+    #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+    bench("knot20k-close", Work::KnotTier(Fast, Eye::Close, F32, Aff)),
+    #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+    bench("knot20k-close", Work::KnotTier(Fast, Eye::Close, F32, Persp)),
+    bench("scene3d", Work::Frame3dTier(Fast, F32, Persp)),
+    #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+    bench("knot20k-rows", Work::KnotTallTier(Exact, TALL_32 as u16)),
+    #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+    bench("knot20k-rows", Work::KnotTallTier(Fast, TALL_20 as u16)),
+    #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+    bench("knot20k-rows", Work::KnotTallTier(Fast, TALL_32 as u16)),
+    #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+    bench("knot20k-rows", Work::KnotTallTier(Fast, TALL_48 as u16)),
 ];
 
 /// Rows of a band of [`Work::KnotTall`] whose colour and `Depth16` rows
@@ -238,6 +283,8 @@ pub const M4F: &[Bench] = &[
 /// the knot's frame (the table's RAM column; 21 rows would fit too, in
 /// the same 12 bands). Cortex-M4F only.
 pub const TALL_20: usize = 20;
+/// Rows of the bands of [`Work::KnotTallTier`]'s middle step (Cortex-M4F only).
+pub const TALL_32: usize = 32;
 /// Rows of the taller bands of [`Work::KnotTall`] (Cortex-M4F only).
 pub const TALL_48: usize = 48;
 /// A band as tall as the frame ([`Work::KnotTall`]).
@@ -256,114 +303,15 @@ pub const M0: &[Bench] = &[
 /// Primitives the Cortex-M4F configuration can hold ([`Work::Frame2d`]).
 pub const PRIMS: usize = scenes::MIXED_LEN;
 
-impl Work {
-    /// How the frame is produced, for the table.
-    pub fn describe(&self) -> &'static str {
-        match self {
-            Work::Clear => "clear + send each band",
-            Work::Frame2d(_) => "primitives in RAM",
-            Work::Streamed2d(_) => "regenerated per band",
-            Work::Vertex3d(F32) => "f32 vertex stage only",
-            Work::Vertex3d(Fix) => "Fx vertex stage only",
-            Work::Vertex3dCached => "f32 vertex stage only, vertex cache",
-            Work::Vertex3dChunked => "f32 vertex stage only, 64-vertex cache (chunks)",
-            Work::Frame3dChunked => "f32, affine, 64-vertex cache (chunks)",
-            Work::VertexPerBand3d(F32) => "f32 vertex stage only, per band",
-            Work::VertexPerBand3d(Fix) => "Fx vertex stage only, per band",
-            Work::Frame3d(F32, Persp) => "f32, persp.-correct",
-            Work::Frame3d(F32, Aff) => "f32, affine",
-            Work::Frame3d(Fix, Persp) => "Fx, persp.-correct",
-            Work::Frame3d(Fix, Aff) => "Fx, affine",
-            Work::PerBand3d(F32, Persp) => "f32 per band, persp.-correct",
-            Work::PerBand3d(F32, Aff) => "f32 per band, affine",
-            Work::PerBand3d(Fix, Persp) => "Fx per band, persp.-correct",
-            Work::PerBand3d(Fix, Aff) => "Fx per band, affine",
-            Work::Meshlets(F32, Aff) => "meshlets per band, f32, affine",
-            Work::Meshlets(F32, Persp) => "meshlets per band, f32, persp.-correct",
-            Work::Meshlets(Fix, Aff) => "meshlets per band, Fx, affine",
-            Work::Meshlets(Fix, Persp) => "meshlets per band, Fx, persp.-correct",
-            Work::MeshletsFar(Aff) => "meshlets per band, f32, affine, viewer at infinity",
-            Work::MeshletsFar(Persp) => "meshlets per band, f32, persp.-correct, viewer at infinity",
-            Work::KnotStage(F32, Stage::Vertex) => "f32 affine: band loop + vertex stage only",
-            Work::KnotStage(F32, Stage::Coverage) => "f32 affine: + coverage, no planes",
-            Work::KnotStage(F32, Stage::NoWrites) => "f32 affine: all but pixel writes",
-            Work::KnotStage(Fix, Stage::Vertex) => "Fx affine: band loop + vertex stage only",
-            Work::KnotStage(Fix, Stage::Coverage) => "Fx affine: + coverage, no planes",
-            Work::KnotStage(Fix, Stage::NoWrites) => "Fx affine: all but pixel writes",
-            Work::Dashboard => "2D kit, drawn per band",
-            #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
-            Work::Front3d => "View3d front, f32, persp.-correct, per band",
-            #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
-            Work::KnotVertexRows(rows) => match rows {
-                16 => "f32 vertex stage only, 16-row bands",
-                32 => "f32 vertex stage only, 32-row bands",
-                48 => "f32 vertex stage only, 48-row bands",
-                80 => "f32 vertex stage only, 80-row bands",
-                240 => "f32 vertex stage only, one 240-row band",
-                _ => "f32 vertex stage only, other bands",
-            },
-            #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
-            Work::KnotTall(rows) => match rows {
-                20 => "meshlets, f32, affine, 20-row bands",
-                48 => "meshlets, f32, affine, 48-row bands",
-                240 => "meshlets, f32, affine, one 240-row band",
-                _ => "meshlets, f32, affine, other bands",
-            },
-        }
-    }
-
-    /// The buffers it uses (names of the firmware's statics).
-    pub fn buffers(&self) -> &'static str {
-        match self {
-            Work::Clear | Work::Streamed2d(_) | Work::Dashboard => "BAND",
-            Work::Frame2d(_) => "BAND,PRIMS",
-            Work::Vertex3d(_) | Work::VertexPerBand3d(_) => "BINS",
-            Work::Vertex3dCached => "BINS,CACHE",
-            Work::Vertex3dChunked => "BINS,CHUNK",
-            Work::Frame3dChunked => "BAND,DEPTH,BINS,CHUNK",
-            Work::Frame3d(..) | Work::PerBand3d(..) => "BAND,DEPTH,BINS",
-            #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
-            Work::Front3d => "VIEW",
-            Work::Meshlets(F32, _) | Work::MeshletsFar(_) | Work::KnotStage(F32, _) => "BAND,DEPTH,CLUSTER",
-            Work::Meshlets(Fix, _) | Work::KnotStage(Fix, _) => "BAND,DEPTH,CLUSTER_FX",
-            #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
-            Work::KnotVertexRows(_) => "CLUSTER",
-            #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
-            Work::KnotTall(rows) => match rows {
-                20 => "BAND20,DEPTH20,CLUSTER",
-                48 => "BAND48,DEPTH48,CLUSTER",
-                _ => "BAND240,DEPTH240,CLUSTER",
-            },
-        }
-    }
-
-    /// Whether it only counts the vertex stage's triangles ([`Work::KnotVertexRows`]).
-    fn counts_only(&self) -> bool {
-        #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
-        if let Work::KnotVertexRows(_) = self {
-            return true;
-        }
-        false
-    }
-
-    /// Whether it sends pixels (a frame CRC and covered pixels mean something).
-    pub fn draws(&self) -> bool {
-        !matches!(
-            self,
-            Work::Vertex3d(_)
-                | Work::Vertex3dCached
-                | Work::Vertex3dChunked
-                | Work::VertexPerBand3d(_)
-                | Work::KnotStage(..)
-        ) && !self.counts_only()
-    }
-}
-
 mod frame;
+// What each configuration is called and which buffers it uses.
+mod work;
 // Its functions are Cortex-M4F (and host) only: on the Cortex-M0 its imports go unused.
 #[cfg_attr(all(target_os = "none", not(target_abi = "eabihf")), allow(unused_imports))]
 mod knot;
 mod scene3d;
+#[cfg_attr(all(target_os = "none", not(target_abi = "eabihf")), allow(unused_imports, dead_code))]
+pub mod tiers;
 
 #[allow(unused_imports)] // the firmware uses some, the host's table all
 pub use frame::{Buffers, Cache, Tall, View, frame, prepare};

@@ -65,6 +65,7 @@ fn records<const W: usize, const H: usize, const N: usize, const P: usize>(
     let (mut cluster, mut cluster_fx) = (Box::new(ClusterCache::new()), Box::new(ClusterCache::new()));
     let mut chunk = Box::new(VertexCache::new());
     let (mut band20, mut depth20) = (Box::new(Band::new(BACKGROUND)), Box::new(DepthBand::new()));
+    let (mut band32, mut depth32) = (Box::new(Band::new(BACKGROUND)), Box::new(DepthBand::new()));
     let (mut band48, mut depth48) = (Box::new(Band::new(BACKGROUND)), Box::new(DepthBand::new()));
     let (mut band240, mut depth240) = (Box::new(Band::new(BACKGROUND)), Box::new(DepthBand::new()));
     let mut view = Box::new(benches::View::new(BACKGROUND));
@@ -79,6 +80,8 @@ fn records<const W: usize, const H: usize, const N: usize, const P: usize>(
         tall: Some(benches::Tall {
             band20: &mut band20,
             depth20: &mut depth20,
+            band32: &mut band32,
+            depth32: &mut depth32,
             band48: &mut band48,
             depth48: &mut depth48,
             band240: &mut band240,
@@ -318,10 +321,10 @@ pub fn table(input: &str) -> Result<(String, String), String> {
     for &(t, label) in &targets {
         let run = &runs[t];
         // The symbols are fw_bench's; the CRC firmware has the same buffers
-        // but the taller bands (`BAND20`, `BAND48`, `BAND240` and their
+        // but the taller bands (`BAND20`, `BAND32`, `BAND48`, `BAND240` and their
         // depth rows) and the front's (`VIEW`).
         let list = |all: bool| {
-            let own = |k: &str| k.ends_with("20") || k.ends_with("48") || k.ends_with("240") || k == "VIEW";
+            let own = |k: &str| ["20", "32", "48", "240"].iter().any(|n| k.ends_with(n)) || k == "VIEW";
             let b = run.symbols.iter().filter(|(k, _)| all || !own(k));
             b.map(|(k, v)| format!("{k} {}", group(*v))).collect::<Vec<_>>().join(", ")
         };

@@ -76,9 +76,10 @@ pub struct FwRow {
     pub static_ram: u64,
 }
 
-/// The firmware benchmark's rows by `(core, key)`.
+/// The firmware benchmark's rows by `(core, key)`, and the peer counts
+/// they are judged against ([`FwBench::with_tgx`]).
 #[derive(Default)]
-pub struct FwBench(HashMap<(String, String), FwRow>);
+pub struct FwBench(HashMap<(String, String), FwRow>, HashMap<String, FwRow>);
 
 impl FwBench {
     /// Reads the file if it exists (an absent file means: all pending).
@@ -99,7 +100,46 @@ impl FwBench {
                 FwRow { instructions, triangles, covered, static_ram },
             );
         }
-        Ok(FwBench(map))
+        Ok(FwBench(map, HashMap::new()))
+    }
+
+    /// With TGX's fixed counts on the same knot (`docs/data/peers-tgx.tsv`:
+    /// `eye instructions triangles covered buffers_ram`, tab-separated; its
+    /// header says how and where they were measured). An absent file
+    /// leaves them pending.
+    pub fn with_tgx(mut self, path: &Path) -> Result<Self, String> {
+        let Ok(text) = std::fs::read_to_string(path) else { return Ok(self) };
+        for (i, line) in text.lines().enumerate().filter(|(_, l)| !l.trim().is_empty() && !l.starts_with('#'))
+        {
+            let bad = |e: &dyn std::fmt::Display| format!("{}:{}: {e}", path.display(), i + 1);
+            let f: Vec<&str> = line.split('\t').collect();
+            let [eye, n @ ..] = &f[..] else { return Err(bad(&"expected 5 fields")) };
+            let n: Vec<u64> = n.iter().map(|x| x.parse().map_err(|e| bad(&e))).collect::<Result<_, _>>()?;
+            let [instructions, triangles, covered, static_ram] = n[..] else {
+                return Err(bad(&"expected 5 fields"));
+            };
+            self.1.insert(eye.to_string(), FwRow { instructions, triangles, covered, static_ram });
+        }
+        Ok(self)
+    }
+
+    /// TGX's frame from `eye` (`standard` or `close`), if loaded.
+    pub fn tgx(&self, eye: &str) -> Option<FwRow> {
+        self.1.get(eye).copied()
+    }
+
+    /// The first row of `core` whose key starts with `prefix` and contains
+    /// every one of `words` (rows another change may name a little
+    /// differently).
+    pub fn find(&self, core: &str, prefix: &str, words: &[&str]) -> Option<(String, FwRow)> {
+        let mut hits: Vec<_> = self
+            .0
+            .iter()
+            .filter(|((c, k), _)| c == core && k.starts_with(prefix) && words.iter().all(|w| k.contains(w)))
+            .map(|((_, k), r)| (k.clone(), *r))
+            .collect();
+        hits.sort_by(|a, b| a.0.cmp(&b.0));
+        hits.into_iter().next()
     }
 
     /// One configuration, if measured.

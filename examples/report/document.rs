@@ -22,6 +22,7 @@ pub(crate) fn document(
     setups: &[(usize, usize)],
     counts: &cortex::Counts,
     fw: &cortex::FwBench,
+    tiers: &str,
 ) -> (String, String) {
     let mut d = String::new();
     let w = &mut d;
@@ -322,6 +323,9 @@ pub(crate) fn document(
         s3.iter().find(|r| r.key == "mesh3d/f32/D16/persp/band16/S4").map_or("?".into(), |r| us(r.vertex_ns)),
         s3.iter().find(|r| r.key == "mesh3d/Fx/D16/persp/band16/S4").map_or("?".into(), |r| us(r.vertex_ns)),
     );
+
+    // The accuracy tier (issue 61), the last knob (`crate::tiers`).
+    w.push_str(tiers);
 
     // --- Cost per pixel
     let _ = writeln!(w, "## Cost per pixel by configuration\n");

@@ -40,6 +40,10 @@ mod sections;
 mod shapes_ratios;
 mod sweep;
 mod targets;
+mod tiers;
+// The knot's two cameras and the tiers' pipelines (issue 61), as fw_bench's.
+#[path = "../common/knot_eye.rs"]
+mod knot_eye;
 // The Cortex-M counts' configurations (examples/fw_sweep), timed on the host.
 #[allow(dead_code)]
 #[path = "../fw_sweep/configs.rs"]
@@ -86,7 +90,8 @@ fn main() -> Res<()> {
     let charts_dir = out.join("charts");
     std::fs::create_dir_all(&charts_dir)?;
     let counts = cortex::Counts::load(&out.join("data/cortex-m.tsv"))?;
-    let fw = cortex::FwBench::load(&out.join("data/fw-bench.tsv"))?;
+    let fw =
+        cortex::FwBench::load(&out.join("data/fw-bench.tsv"))?.with_tgx(&out.join("data/peers-tgx.tsv"))?;
     let cpu = cpu_name();
     eprintln!("report: {cpu}; writing {}", out.display());
 
@@ -210,16 +215,39 @@ fn main() -> Res<()> {
         .collect();
     let aliased_coverage = frag_report::aliased_coverage();
 
+    eprintln!("report: accuracy tiers");
+    let tier_errors = tiers::measure();
+    let tiers_md = tiers::section(&tier_errors, &fw);
+
     eprintln!("report: charts and tables");
-    let (mut doc, targets) =
-        document(&cpu, memset_ns, ceiling, &peers, &breakdown, &knot_split, &s2, &s3, &setups, &counts, &fw);
+    let (mut doc, targets) = document(
+        &cpu,
+        memset_ns,
+        ceiling,
+        &peers,
+        &breakdown,
+        &knot_split,
+        &s2,
+        &s3,
+        &setups,
+        &counts,
+        &fw,
+        &tiers_md,
+    );
     doc.push_str(&fragment_section(&frag, aliased_coverage, &peers, &counts));
     doc.push_str(&shapes_section());
     std::fs::write(out.join("tradeoffs.md"), doc)?;
     // The README quotes the targets table; keep it in step when writing docs/.
     let readme = out.join("../README.md");
     if out.ends_with("docs") && readme.exists() {
-        update_readme(&readme, &[("targets", targets), ("knot", knot::readme_table(&peers, &counts, &fw))])?;
+        update_readme(
+            &readme,
+            &[
+                ("targets", targets),
+                ("knot", knot::readme_table(&peers, &counts, &fw)),
+                ("tiers", tiers::readme(&tier_errors, &fw)),
+            ],
+        )?;
     }
     draw_charts(&charts_dir, ceiling, &peers, &s2, &s3, &counts)?;
     eprintln!("report: wrote {} and {}", out.join("tradeoffs.md").display(), charts_dir.display());

@@ -6,9 +6,13 @@
 //! `examples/fw_sweep` (`docs/data/cortex-m.tsv`, [`Counts`]) and the
 //! firmware benchmark's rows (`examples/fw_bench`, `docs/data/fw-bench.tsv`,
 //! [`FwBench`]). Issue 12's rows (the 20k-triangle knot, scene 3 against the
-//! f64 reference) are [`issue12`].
+//! f64 reference) are [`issue12`]; issue 61's (both accuracy tiers against
+//! TGX's fixed counts on the same knot) are [`issue61`].
 
 mod issue12;
+mod issue61;
+
+pub(crate) use issue61::group;
 
 use super::{Breakdown, Peer, find, knot, ratio, us};
 use crate::common::{H, W};
@@ -99,6 +103,8 @@ pub fn section(
     );
     let (rows12, why12) = issue12::issue12(peers, breakdown, knot_split, counts, fw);
     targets.push_str(&rows12);
+    let (rows61, why61) = issue61::issue61(peers, counts, fw);
+    targets.push_str(&rows61);
     w.push_str(&targets);
     w.push('\n');
     // Why the missed ones are missed, from this run's numbers.
@@ -128,6 +134,7 @@ pub fn section(
         cm("m0", "mesh3d/vertex/f32"),
     );
     w.push_str(&why12);
+    w.push_str(&why61);
     let _ = writeln!(
         w,
         "Slice-fill ceiling: `fill` of the whole {W} × {H} `Rgb565` buffer takes {} µs, {:.2} pixels per ns. \

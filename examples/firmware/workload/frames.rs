@@ -8,7 +8,7 @@ use microraster::band::BandView;
 use microraster::depth::{Depth16, DepthBand};
 use microraster::edge::Cull;
 use microraster::math::Scalar;
-use microraster::raster3d::{Interpolation, ScreenTriangle};
+use microraster::raster3d::{Interpolation, Precision, ScreenTriangle};
 use microraster::render::{FromFn, PerBand3d, Triangles3d, from_fn};
 use microraster::{Band, Error, Primitive, RenderError, Renderer};
 use microraster_scenes::scenes;
@@ -77,17 +77,19 @@ pub fn streamed<const W: usize>(
 }
 
 /// The standard 3D scene ([`Scene3d`], meshes in flash) with the vertex
-/// stage run once per frame: every visible triangle binned, then
-/// `Triangles3d` with `M` colour interpolation.
+/// stage run once per frame in accuracy tier `precision`: every visible
+/// triangle binned, then `Triangles3d` with `M` colour interpolation.
+#[allow(clippy::too_many_arguments)]
 pub fn scene3d<T: Scalar, M: Interpolation, const W: usize, const H: usize, const N: usize>(
     name: &'static str,
+    precision: Precision,
     height: u32,
     bins: &mut heapless::Vec<ScreenTriangle<S>, N>,
     band: &mut Band<Rgb565, W, H>,
     depth: &mut DepthBand<Depth16, W, H>,
     out: Out<'_>,
 ) -> Result<(), Error> {
-    let pipeline = Scene3d::pipeline::<T, S>(W as u32, height)?;
+    let pipeline = Scene3d::pipeline::<T, S>(W as u32, height)?.with_precision(precision);
     bins.clear();
     Scene3d.draw::<T, Rgb565, S, N>(&pipeline, ANGLE, bins)?;
     let mut target = CrcTarget::new(name, W as u32, height, out);
@@ -99,17 +101,19 @@ pub fn scene3d<T: Scalar, M: Interpolation, const W: usize, const H: usize, cons
 }
 
 /// The standard 3D scene with the vertex stage run once per band
-/// (`PerBand3d`): `bins` holds one band's triangles.
+/// (`PerBand3d`) in accuracy tier `precision`: `bins` holds one band's
+/// triangles.
 #[allow(clippy::too_many_arguments)]
 pub fn scene3d_per_band<T: Scalar, M: Interpolation, const W: usize, const H: usize, const N: usize>(
     name: &'static str,
+    precision: Precision,
     height: u32,
     bins: &mut heapless::Vec<ScreenTriangle<S>, N>,
     band: &mut Band<Rgb565, W, H>,
     depth: &mut DepthBand<Depth16, W, H>,
     out: Out<'_>,
 ) -> Result<(), Error> {
-    let mut pipeline = Scene3d::pipeline::<T, S>(W as u32, height)?;
+    let mut pipeline = Scene3d::pipeline::<T, S>(W as u32, height)?.with_precision(precision);
     let mut target = CrcTarget::new(name, W as u32, height, out);
     let geometry = |y0: i32, y1: i32, bins: &mut heapless::Vec<ScreenTriangle<S>, N>| {
         pipeline.rows = Some((y0, y1 - 1));

@@ -26,7 +26,9 @@ use super::knot::{knot_stage, knot_tall, knot_vertex_rows, meshlets};
 #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
 use super::scene3d::front3d;
 use super::scene3d::{cached_vertex_stage, frame3d, per_band3d, vertex3d, vertex3d_per_band};
-use super::{Sink, TALL_20, TALL_48, TALL_240, Work};
+#[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+use super::tiers::{frame3d_tier, knot_tall_tier, knot_tier};
+use super::{Sink, TALL_20, TALL_32, TALL_48, TALL_240, Work};
 use crate::workload::{self, DEPTH_STATE, S};
 
 /// Everything a configuration may use; on the target each buffer is its own
@@ -69,6 +71,10 @@ pub struct Tall<'a, const W: usize> {
     pub band20: &'a mut Band<Rgb565, W, TALL_20>,
     /// Depth rows of `band20`.
     pub depth20: &'a mut DepthBand<Depth16, W, TALL_20>,
+    /// [`TALL_32`] rows ([`Work::KnotTallTier`]).
+    pub band32: &'a mut Band<Rgb565, W, TALL_32>,
+    /// Depth rows of `band32`.
+    pub depth32: &'a mut DepthBand<Depth16, W, TALL_32>,
     /// [`TALL_48`] rows.
     pub band48: &'a mut Band<Rgb565, W, TALL_48>,
     /// Depth rows of `band48`.
@@ -130,6 +136,13 @@ pub fn frame<const W: usize, const H: usize, const N: usize, const P: usize>(
         Work::Front3d => {
             return front3d(b.view.as_deref_mut().ok_or(Error::BufferTooSmall)?, height, bg, sink);
         }
+        Work::KnotTier(p, eye, t, i) => return knot_tier(Renderer::new(height, bg), (p, eye, t, i), b, sink),
+        Work::KnotTallTier(p, rows) => {
+            let c = b.cluster.as_mut().ok_or(Error::BufferTooSmall)?;
+            let t = b.tall.as_mut().ok_or(Error::BufferTooSmall)?;
+            return knot_tall_tier::<W>(Renderer::new(height, bg), (p, rows), t, c.0, sink);
+        }
+        Work::Frame3dTier(p, t, i) => return frame3d_tier(Renderer::new(height, bg), (p, t, i), b, sink),
         _ => {}
     }
     frame_other(work, height, bg, b, sink)
@@ -206,8 +219,15 @@ fn frame_other<const W: usize, const H: usize, const N: usize, const P: usize>(
             (F32, c) => knot_stage::<f32, W, H>(r, b.band, b.depth, c.0, stage, sink),
             (Fix, c) => knot_stage::<Fx, W, H>(r, b.band, b.depth, c.1, stage, sink),
         },
+        // In `frame`.
         #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
-        Work::KnotVertexRows(_) | Work::KnotTall(_) | Work::Front3d => Err(Error::InvalidParameter), // in `frame`
+        Work::KnotVertexRows(_)
+        | Work::KnotTall(_)
+        | Work::Front3d
+        | Work::KnotTier(..)
+        | Work::KnotTallTier(..) => Err(Error::InvalidParameter),
+        // Cortex-M4F rows only (in `frame` there).
+        Work::Frame3dTier(..) => Err(Error::InvalidParameter),
         #[cfg(not(any(not(target_os = "none"), target_abi = "eabihf")))]
         Work::Meshlets(..) | Work::MeshletsFar(_) | Work::KnotStage(..) => Err(Error::InvalidParameter),
     }

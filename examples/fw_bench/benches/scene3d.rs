@@ -17,6 +17,7 @@ use super::Vertex::{F32, Fx as Fix};
 use super::frame::{Buffers, input};
 #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
 use super::knot_mesh;
+use super::tiers::scene_triangles;
 use super::{Scene2d, Sink, Vertex, Work};
 use crate::workload::{ANGLE, DEPTH_STATE, S};
 
@@ -155,7 +156,11 @@ pub fn primitives<const W: usize, const H: usize, const N: usize, const P: usize
         | Work::MeshletsFar(_)
         | Work::KnotStage(..)
         | Work::KnotVertexRows(_)
-        | Work::KnotTall(_) => Ok((knot_mesh::KNOT.triangles.len() as u32, 0)),
+        | Work::KnotTall(_)
+        | Work::KnotTier(..)
+        | Work::KnotTallTier(..) => Ok((knot_mesh::KNOT.triangles.len() as u32, 0)),
+        Work::Frame3dTier(p, F32, _) => Ok((scene_triangles::<f32, W, H, N>(p, height, b.bins)?, 0)),
+        Work::Frame3dTier(p, Fix, _) => Ok((scene_triangles::<Fx, W, H, N>(p, height, b.bins)?, 0)),
         #[cfg(not(any(not(target_os = "none"), target_abi = "eabihf")))]
         Work::Meshlets(..) | Work::MeshletsFar(_) | Work::KnotStage(..) => Err(Error::InvalidParameter),
         Work::Frame2d(scene) | Work::Streamed2d(scene) => count_2d(scene),
