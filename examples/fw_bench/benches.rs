@@ -28,6 +28,16 @@ pub mod dashboard;
 #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
 #[path = "../common/knot_mesh.rs"]
 pub mod knot_mesh;
+// The knot as `obj2rs`'s default command converts it, at 20k and 5k
+// triangles ([`Work::Ways`]); not every static is read.
+#[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+#[allow(dead_code)]
+#[path = "../common/knot20k_obj2rs.rs"]
+pub mod knot20k;
+#[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+#[allow(dead_code)]
+#[path = "../common/knot5k_obj2rs.rs"]
+pub mod knot5k;
 use microraster_scenes::scenes;
 
 pub use crate::sink::{Mode, Sink};
@@ -88,7 +98,8 @@ pub enum Work {
     VertexPerBand3d(Vertex),
     /// The vertex stage once per frame, then `Triangles3d`.
     Frame3d(Vertex, Interp),
-    /// `PerBand3d`: the vertex stage once per band.
+    /// The vertex stage once per band into one band's bins, drawn by a
+    /// `Direct3d` pass.
     PerBand3d(Vertex, Interp),
     /// The 20k-triangle knot ([`knot_mesh::KNOT`]) through the meshlet stage:
     /// `Direct3d` with [`Pipeline::draw_meshlets`](microraster::pipeline::Pipeline::draw_meshlets) per
@@ -127,6 +138,11 @@ pub enum Work {
     /// `tests/integration/view3d.rs`). Cortex-M4F only.
     #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
     Front3d,
+    /// One of the three documented ways to draw a mesh on a knot converted
+    /// by `obj2rs`'s default command ([`ways`]: `f32`, perspective-correct,
+    /// exact tier; select them by their scene, `ways`). Cortex-M4F only.
+    #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+    Ways(ways::Knot, ways::Way),
     /// The 2D kit's dashboard ([`dashboard::dashboard`]: shapes with
     /// gradients, anti-aliasing and translucency, an alpha sprite, text),
     /// built and drawn in every band by `render::from_fn`.
@@ -231,6 +247,20 @@ pub const M4F: &[Bench] = &[
     bench("knot20k-rows", Work::KnotTall(TALL_20 as u16)),
     #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
     bench("scene3d", Work::Front3d),
+    // Issue 61's three ways to draw a mesh (the README's table), on request:
+    // `table m4f ways`.
+    #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+    probe("ways", Work::Ways(ways::Knot::K20, ways::Way::Front)),
+    #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+    probe("ways", Work::Ways(ways::Knot::K20, ways::Way::Meshlets)),
+    #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+    probe("ways", Work::Ways(ways::Knot::K20, ways::Way::Bins)),
+    #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+    probe("ways", Work::Ways(ways::Knot::K5, ways::Way::Front)),
+    #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+    probe("ways", Work::Ways(ways::Knot::K5, ways::Way::Meshlets)),
+    #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+    probe("ways", Work::Ways(ways::Knot::K5, ways::Way::Bins)),
 ];
 
 /// Rows of a band of [`Work::KnotTall`] whose colour and `Depth16` rows
@@ -294,6 +324,18 @@ impl Work {
             #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
             Work::Front3d => "View3d front, f32, persp.-correct, per band",
             #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+            Work::Ways(knot, way) => {
+                use ways::{Knot::*, Way::*};
+                match (knot, way) {
+                    (K20, Front) => "obj2rs knot 20k: View3d front, f32, persp.-correct",
+                    (K20, Meshlets) => "obj2rs knot 20k: meshlets per band, f32, persp.-correct",
+                    (K20, Bins) => "obj2rs knot 20k: full-frame bins, f32, persp.-correct",
+                    (K5, Front) => "obj2rs knot 5k: View3d front, f32, persp.-correct",
+                    (K5, Meshlets) => "obj2rs knot 5k: meshlets per band, f32, persp.-correct",
+                    (K5, Bins) => "obj2rs knot 5k: full-frame bins, f32, persp.-correct",
+                }
+            }
+            #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
             Work::KnotVertexRows(rows) => match rows {
                 16 => "f32 vertex stage only, 16-row bands",
                 32 => "f32 vertex stage only, 32-row bands",
@@ -323,7 +365,11 @@ impl Work {
             Work::Frame3dChunked => "BAND,DEPTH,BINS,CHUNK",
             Work::Frame3d(..) | Work::PerBand3d(..) => "BAND,DEPTH,BINS",
             #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
-            Work::Front3d => "VIEW",
+            Work::Front3d | Work::Ways(_, ways::Way::Front) => "VIEW",
+            #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+            Work::Ways(_, ways::Way::Meshlets) => "BAND,DEPTH,CLUSTER",
+            #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+            Work::Ways(_, ways::Way::Bins) => "BAND,DEPTH,KNOT_BINS",
             Work::Meshlets(F32, _) | Work::MeshletsFar(_) | Work::KnotStage(F32, _) => "BAND,DEPTH,CLUSTER",
             Work::Meshlets(Fix, _) | Work::KnotStage(Fix, _) => "BAND,DEPTH,CLUSTER_FX",
             #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
@@ -364,7 +410,12 @@ mod frame;
 #[cfg_attr(all(target_os = "none", not(target_abi = "eabihf")), allow(unused_imports))]
 mod knot;
 mod scene3d;
+#[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+pub mod ways;
 
+#[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+#[allow(unused_imports)]
+pub use frame::KnotBins;
 #[allow(unused_imports)] // the firmware uses some, the host's table all
 pub use frame::{Buffers, Cache, Tall, View, frame, prepare};
 #[allow(unused_imports)]

@@ -99,6 +99,8 @@ mod firmware {
         // The one-call front, with its own bands and cluster cache.
         static mut VIEW: benches::View<{ benches::M4F_SIZE.0 }, { benches::M4F_BAND }> =
             benches::View::new(BACKGROUND);
+        // The 20k knot's frame bins (the full-frame way of `benches::ways`).
+        static mut KNOT_BINS: benches::KnotBins = heapless::Vec::new();
         let cluster = Some((CLUSTER, CLUSTER_FX));
         let tall = Some(benches::Tall {
             band20: BAND20,
@@ -108,9 +110,19 @@ mod firmware {
             band240: BAND240,
             depth240: DEPTH240,
         });
-        let (cache, chunk, view) = (Some(CACHE), Some(CHUNK), Some(VIEW));
-        let b =
-            Buffers { prims: PRIMS, band: BAND, depth: DEPTH, bins: BINS, cache, cluster, chunk, tall, view };
+        let (cache, chunk, view, knot_bins) = (Some(CACHE), Some(CHUNK), Some(VIEW), Some(KNOT_BINS));
+        let b = Buffers {
+            prims: PRIMS,
+            band: BAND,
+            depth: DEPTH,
+            bins: BINS,
+            cache,
+            cluster,
+            chunk,
+            tall,
+            view,
+            knot_bins,
+        };
         finish(run(benches::M4F, benches::M4F_SIZE.1, b))
     }
 

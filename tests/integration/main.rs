@@ -30,6 +30,8 @@
 //! - `view3d`: the one-call 3D front draws what the explicit API draws, for every band
 //!   height; its defaults (culling, lighting, winding check) and errors.
 //! - `view3d_colors`: the front's per-vertex and per-face colours.
+//! - `ways`: the three documented ways to draw a mesh draw the same frame of a mesh
+//!   converted by `obj2rs`'s default command; the front's accuracy tier.
 //! - `mesh_range`: issue 60's whole-mesh checks: clip coordinates beyond ±2^64, a singular
 //!   model before the first band, an inside-out `ValidMesh` on the explicit path.
 //! - `framebuffer`: a recording host `DrawTarget` used by the suites above.
@@ -81,4 +83,5 @@ mod view3d;
 mod view3d_colors;
 mod watertight;
 mod watertight_clip;
+mod ways;
 mod zfight;

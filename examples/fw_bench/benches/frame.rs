@@ -26,6 +26,8 @@ use super::knot::{knot_stage, knot_tall, knot_vertex_rows, meshlets};
 #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
 use super::scene3d::front3d;
 use super::scene3d::{cached_vertex_stage, frame3d, per_band3d, vertex3d, vertex3d_per_band};
+#[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+use super::ways;
 use super::{Sink, TALL_20, TALL_48, TALL_240, Work};
 use crate::workload::{self, DEPTH_STATE, S};
 
@@ -58,7 +60,15 @@ pub struct Buffers<'a, const W: usize, const H: usize, const N: usize, const P: 
     /// ([`Work::Front3d`]); not on the Cortex-M0.
     #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
     pub view: Option<&'a mut View<W, H>>,
+    /// The 20k knot's frame bins ([`Work::Ways`] with
+    /// [`Way::Bins`](super::ways::Way::Bins)); not on the Cortex-M0.
+    #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+    pub knot_bins: Option<&'a mut KnotBins>,
 }
+
+/// The bins of [`Work::Ways`]' full-frame rows (Cortex-M4F only).
+#[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+pub type KnotBins = heapless::Vec<ScreenTriangle<S>, { super::ways::KNOT_BINS }>;
 
 /// The front of [`Work::Front3d`] (Cortex-M4F only).
 pub type View<const W: usize, const H: usize> = View3d<Rgb565, W, H>;
@@ -130,9 +140,37 @@ pub fn frame<const W: usize, const H: usize, const N: usize, const P: usize>(
         Work::Front3d => {
             return front3d(b.view.as_deref_mut().ok_or(Error::BufferTooSmall)?, height, bg, sink);
         }
+        Work::Ways(knot, way) => return ways_frame(knot, way, height, bg, b, sink),
         _ => {}
     }
     frame_other(work, height, bg, b, sink)
+}
+
+/// [`Work::Ways`] (not inlined, as the taller-band rows).
+#[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+#[inline(never)]
+fn ways_frame<const W: usize, const H: usize, const N: usize, const P: usize>(
+    knot: ways::Knot,
+    way: ways::Way,
+    height: u32,
+    bg: Rgb565,
+    b: &mut Buffers<'_, W, H, N, P>,
+    sink: &mut Sink,
+) -> Result<(), Error> {
+    let r = Renderer::new(height, bg);
+    match way {
+        ways::Way::Front => {
+            ways::front(b.view.as_deref_mut().ok_or(Error::BufferTooSmall)?, knot, height, bg, sink)
+        }
+        ways::Way::Meshlets => {
+            let c = b.cluster.as_mut().ok_or(Error::BufferTooSmall)?;
+            ways::meshlets::<W, H>(r, b.band, b.depth, c.0, knot, sink)
+        }
+        ways::Way::Bins => {
+            let bins = b.knot_bins.as_deref_mut().ok_or(Error::BufferTooSmall)?;
+            ways::bins::<W, H, { ways::KNOT_BINS }>(r, b.band, b.depth, bins, knot, sink)
+        }
+    }
 }
 
 /// [`frame`] for every row but the taller-band ones.
@@ -207,7 +245,9 @@ fn frame_other<const W: usize, const H: usize, const N: usize, const P: usize>(
             (Fix, c) => knot_stage::<Fx, W, H>(r, b.band, b.depth, c.1, stage, sink),
         },
         #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
-        Work::KnotVertexRows(_) | Work::KnotTall(_) | Work::Front3d => Err(Error::InvalidParameter), // in `frame`
+        Work::KnotVertexRows(_) | Work::KnotTall(_) | Work::Front3d | Work::Ways(..) => {
+            Err(Error::InvalidParameter) // in `frame`
+        }
         #[cfg(not(any(not(target_os = "none"), target_abi = "eabihf")))]
         Work::Meshlets(..) | Work::MeshletsFar(_) | Work::KnotStage(..) => Err(Error::InvalidParameter),
     }
