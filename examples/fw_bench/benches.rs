@@ -369,7 +369,9 @@ impl Work {
             #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
             Work::Ways(_, ways::Way::Meshlets) => "BAND,DEPTH,CLUSTER",
             #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
-            Work::Ways(_, ways::Way::Bins) => "BAND,DEPTH,KNOT_BINS",
+            Work::Ways(ways::Knot::K20, ways::Way::Bins) => "BAND,DEPTH,KNOT_BINS",
+            #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+            Work::Ways(ways::Knot::K5, ways::Way::Bins) => "BAND,DEPTH,KNOT5K_BINS",
             Work::Meshlets(F32, _) | Work::MeshletsFar(_) | Work::KnotStage(F32, _) => "BAND,DEPTH,CLUSTER",
             Work::Meshlets(Fix, _) | Work::KnotStage(Fix, _) => "BAND,DEPTH,CLUSTER_FX",
             #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
@@ -413,10 +415,10 @@ mod scene3d;
 #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
 pub mod ways;
 
-#[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
-#[allow(unused_imports)]
-pub use frame::KnotBins;
 #[allow(unused_imports)] // the firmware uses some, the host's table all
 pub use frame::{Buffers, Cache, Tall, View, frame, prepare};
+#[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+#[allow(unused_imports)]
+pub use frame::{Knot5kBins, KnotBins};
 #[allow(unused_imports)]
 pub use scene3d::primitives;

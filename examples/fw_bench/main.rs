@@ -99,8 +99,9 @@ mod firmware {
         // The one-call front, with its own bands and cluster cache.
         static mut VIEW: benches::View<{ benches::M4F_SIZE.0 }, { benches::M4F_BAND }> =
             benches::View::new(BACKGROUND);
-        // The 20k knot's frame bins (the full-frame way of `benches::ways`).
+        // The knots' frame bins (the full-frame way of `benches::ways`).
         static mut KNOT_BINS: benches::KnotBins = heapless::Vec::new();
+        static mut KNOT5K_BINS: benches::Knot5kBins = heapless::Vec::new();
         let cluster = Some((CLUSTER, CLUSTER_FX));
         let tall = Some(benches::Tall {
             band20: BAND20,
@@ -110,7 +111,8 @@ mod firmware {
             band240: BAND240,
             depth240: DEPTH240,
         });
-        let (cache, chunk, view, knot_bins) = (Some(CACHE), Some(CHUNK), Some(VIEW), Some(KNOT_BINS));
+        let (cache, chunk, view, knot_bins) =
+            (Some(CACHE), Some(CHUNK), Some(VIEW), Some((KNOT_BINS, KNOT5K_BINS)));
         let b = Buffers {
             prims: PRIMS,
             band: BAND,

@@ -60,15 +60,18 @@ pub struct Buffers<'a, const W: usize, const H: usize, const N: usize, const P: 
     /// ([`Work::Front3d`]); not on the Cortex-M0.
     #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
     pub view: Option<&'a mut View<W, H>>,
-    /// The 20k knot's frame bins ([`Work::Ways`] with
+    /// The 20k and 5k knots' frame bins ([`Work::Ways`] with
     /// [`Way::Bins`](super::ways::Way::Bins)); not on the Cortex-M0.
     #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
-    pub knot_bins: Option<&'a mut KnotBins>,
+    pub knot_bins: Option<(&'a mut KnotBins, &'a mut Knot5kBins)>,
 }
 
-/// The bins of [`Work::Ways`]' full-frame rows (Cortex-M4F only).
+/// The bins of [`Work::Ways`]' full-frame 20k row (Cortex-M4F only).
 #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
 pub type KnotBins = heapless::Vec<ScreenTriangle<S>, { super::ways::KNOT_BINS }>;
+/// The bins of [`Work::Ways`]' full-frame 5k row (Cortex-M4F only).
+#[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+pub type Knot5kBins = heapless::Vec<ScreenTriangle<S>, { super::ways::KNOT5K_BINS }>;
 
 /// The front of [`Work::Front3d`] (Cortex-M4F only).
 pub type View<const W: usize, const H: usize> = View3d<Rgb565, W, H>;
@@ -166,10 +169,10 @@ fn ways_frame<const W: usize, const H: usize, const N: usize, const P: usize>(
             let c = b.cluster.as_mut().ok_or(Error::BufferTooSmall)?;
             ways::meshlets::<W, H>(r, b.band, b.depth, c.0, knot, sink)
         }
-        ways::Way::Bins => {
-            let bins = b.knot_bins.as_deref_mut().ok_or(Error::BufferTooSmall)?;
-            ways::bins::<W, H, { ways::KNOT_BINS }>(r, b.band, b.depth, bins, knot, sink)
-        }
+        ways::Way::Bins => match (knot, b.knot_bins.as_mut().ok_or(Error::BufferTooSmall)?) {
+            (ways::Knot::K20, (bins, _)) => ways::bins(r, b.band, b.depth, bins, knot, sink),
+            (ways::Knot::K5, (_, bins)) => ways::bins(r, b.band, b.depth, bins, knot, sink),
+        },
     }
 }
 

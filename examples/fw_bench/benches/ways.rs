@@ -47,9 +47,12 @@ pub enum Way {
     Bins,
 }
 
-/// Bins for the 20k knot's frame: the triangles its vertex stage emits
-/// (11,205 with this camera; 2,911 for the 5k knot), rounded up.
-pub const KNOT_BINS: usize = 11_264;
+/// Bins for the 20k knot's frame: exactly the triangles its vertex stage
+/// emits with this camera (a smaller buffer fails the row with
+/// `CapacityExceeded`, which names the need).
+pub const KNOT_BINS: usize = 9_841;
+/// Bins for the 5k knot's frame, likewise.
+pub const KNOT5K_BINS: usize = 2_478;
 
 /// `NAME_MESH` of the 20k knot, checked once (at compile time).
 static VALID20: ValidMesh<'static> = valid(knot20k::KNOT20K_MESH);
