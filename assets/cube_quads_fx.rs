@@ -108,6 +108,7 @@ pub static CUBE_FX_MESHLET_TRIANGLES: [[u8; 3]; 12] = [
 /// [`CUBE_FX_MESH`] in clusters, validated at compile time: draw it with `View3d`
 /// (`Object::new(&CUBE_FX, colour)`) or `Pipeline::draw_meshlets`.
 #[allow(long_running_const_eval)]
+#[rustfmt::skip]
 pub static CUBE_FX: microraster::mesh::ValidMeshletMesh<'static, microraster::math::Fx> = match microraster::mesh::ValidMeshletMesh::new_fx(microraster::mesh::MeshletMesh {
     mesh: CUBE_FX_MESH,
     meshlets: &CUBE_FX_MESHLETS,

@@ -108,6 +108,7 @@ pub static CUBE_M_MESHLET_TRIANGLES: [[u8; 3]; 12] = [
 /// [`CUBE_M_MESH`] in clusters, validated at compile time: draw it with `View3d`
 /// (`Object::new(&CUBE_M, colour)`) or `Pipeline::draw_meshlets`.
 #[allow(long_running_const_eval)]
+#[rustfmt::skip]
 pub static CUBE_M: microraster::mesh::ValidMeshletMesh<'static> = match microraster::mesh::ValidMeshletMesh::new(microraster::mesh::MeshletMesh {
     mesh: CUBE_M_MESH,
     meshlets: &CUBE_M_MESHLETS,

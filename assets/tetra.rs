@@ -58,6 +58,7 @@ pub static TETRA_MESHLET_TRIANGLES: [[u8; 3]; 4] = [
 /// [`TETRA_MESH`] in clusters, validated at compile time: draw it with `View3d`
 /// (`Object::new(&TETRA, colour)`) or `Pipeline::draw_meshlets`.
 #[allow(long_running_const_eval)]
+#[rustfmt::skip]
 pub static TETRA: microraster::mesh::ValidMeshletMesh<'static> = match microraster::mesh::ValidMeshletMesh::new(microraster::mesh::MeshletMesh {
     mesh: TETRA_MESH,
     meshlets: &TETRA_MESHLETS,

@@ -44630,15 +44630,13 @@ pub static KNOT20K_MESHLET_TRIANGLES: [[u8; 3]; 20480] = [
 /// [`KNOT20K_MESH`] in clusters, validated at compile time: draw it with `View3d`
 /// (`Object::new(&KNOT20K, colour)`) or `Pipeline::draw_meshlets`.
 #[allow(long_running_const_eval)]
-pub static KNOT20K: microraster::mesh::ValidMeshletMesh<'static> =
-    match microraster::mesh::ValidMeshletMesh::new(microraster::mesh::MeshletMesh {
-        mesh: KNOT20K_MESH,
-        meshlets: &KNOT20K_MESHLETS,
-        vertices: &KNOT20K_MESHLET_VERTICES,
-        triangles: &KNOT20K_MESHLET_TRIANGLES,
-    }) {
-        Ok(m) => m,
-        Err(_) => panic!(
-            "KNOT20K: the mesh fails validation (triangles wound against their normals? see obj2rs's warning)"
-        ),
-    };
+#[rustfmt::skip]
+pub static KNOT20K: microraster::mesh::ValidMeshletMesh<'static> = match microraster::mesh::ValidMeshletMesh::new(microraster::mesh::MeshletMesh {
+    mesh: KNOT20K_MESH,
+    meshlets: &KNOT20K_MESHLETS,
+    vertices: &KNOT20K_MESHLET_VERTICES,
+    triangles: &KNOT20K_MESHLET_TRIANGLES,
+}) {
+    Ok(m) => m,
+    Err(_) => panic!("KNOT20K: the mesh fails validation (triangles wound against their normals? see obj2rs's warning)"),
+};

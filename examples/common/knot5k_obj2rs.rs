@@ -11194,15 +11194,13 @@ pub static KNOT5K_MESHLET_TRIANGLES: [[u8; 3]; 5120] = [
 /// [`KNOT5K_MESH`] in clusters, validated at compile time: draw it with `View3d`
 /// (`Object::new(&KNOT5K, colour)`) or `Pipeline::draw_meshlets`.
 #[allow(long_running_const_eval)]
-pub static KNOT5K: microraster::mesh::ValidMeshletMesh<'static> =
-    match microraster::mesh::ValidMeshletMesh::new(microraster::mesh::MeshletMesh {
-        mesh: KNOT5K_MESH,
-        meshlets: &KNOT5K_MESHLETS,
-        vertices: &KNOT5K_MESHLET_VERTICES,
-        triangles: &KNOT5K_MESHLET_TRIANGLES,
-    }) {
-        Ok(m) => m,
-        Err(_) => panic!(
-            "KNOT5K: the mesh fails validation (triangles wound against their normals? see obj2rs's warning)"
-        ),
-    };
+#[rustfmt::skip]
+pub static KNOT5K: microraster::mesh::ValidMeshletMesh<'static> = match microraster::mesh::ValidMeshletMesh::new(microraster::mesh::MeshletMesh {
+    mesh: KNOT5K_MESH,
+    meshlets: &KNOT5K_MESHLETS,
+    vertices: &KNOT5K_MESHLET_VERTICES,
+    triangles: &KNOT5K_MESHLET_TRIANGLES,
+}) {
+    Ok(m) => m,
+    Err(_) => panic!("KNOT5K: the mesh fails validation (triangles wound against their normals? see obj2rs's warning)"),
+};

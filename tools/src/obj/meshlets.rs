@@ -141,7 +141,7 @@ pub fn rust_source_with(c: &Clusters, name: &str, mesh_type: &str, fx: bool) -> 
     let _ = writeln!(w, "/// [`{name}_MESH`] in clusters, validated at compile time: draw it with `View3d`");
     let _ = writeln!(w, "/// (`Object::new(&{name}, colour)`) or `Pipeline::draw_meshlets`.");
     // A big mesh's checks run for seconds of constant evaluation.
-    let _ = writeln!(w, "#[allow(long_running_const_eval)]");
+    let _ = writeln!(w, "#[allow(long_running_const_eval)]\n#[rustfmt::skip]");
     let _ = writeln!(
         w,
         "pub static {name}: {module}ValidMeshletMesh<'static{storage}> = match {module}ValidMeshletMesh::{new}({module}MeshletMesh {{"
