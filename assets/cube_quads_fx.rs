@@ -77,8 +77,8 @@ pub static CUBE_FX_INDICES: [[u16; 3]; 12] = [
     [20, 22, 23],
 ];
 
-/// The mesh converted from "cube_quads.obj".
-pub static CUBE_FX: microraster::mesh::Mesh<'static, microraster::math::Fx> = microraster::mesh::Mesh::new_fx(
+/// The mesh converted from "cube_quads.obj", as a plain mesh (for the binned path; [`CUBE_FX`] is it in clusters).
+pub static CUBE_FX_MESH: microraster::mesh::Mesh<'static, microraster::math::Fx> = microraster::mesh::Mesh::new_fx(
     &CUBE_FX_POSITIONS,
     &CUBE_FX_NORMALS,
     &CUBE_FX_INDICES,
@@ -105,10 +105,16 @@ pub static CUBE_FX_MESHLET_TRIANGLES: [[u8; 3]; 12] = [
     [16, 17, 18], [16, 19, 17], [20, 21, 22], [20, 22, 23],
 ];
 
-/// [`CUBE_FX`] with its clusters.
-pub static CUBE_FX_MESHLET_MESH: microraster::mesh::MeshletMesh<'static, microraster::math::Fx> = microraster::mesh::MeshletMesh {
-    mesh: CUBE_FX,
+/// [`CUBE_FX_MESH`] in clusters, validated at compile time: draw it with `View3d`
+/// (`Object::new(&CUBE_FX, colour)`) or `Pipeline::draw_meshlets`.
+#[allow(long_running_const_eval)]
+#[rustfmt::skip]
+pub static CUBE_FX: microraster::mesh::ValidMeshletMesh<'static, microraster::math::Fx> = match microraster::mesh::ValidMeshletMesh::new_fx(microraster::mesh::MeshletMesh {
+    mesh: CUBE_FX_MESH,
     meshlets: &CUBE_FX_MESHLETS,
     vertices: &CUBE_FX_MESHLET_VERTICES,
     triangles: &CUBE_FX_MESHLET_TRIANGLES,
+}) {
+    Ok(m) => m,
+    Err(_) => panic!("CUBE_FX: the mesh fails validation (triangles wound against their normals? see obj2rs's warning)"),
 };

@@ -77,8 +77,8 @@ pub static CUBE_M_INDICES: [[u16; 3]; 12] = [
     [20, 22, 23],
 ];
 
-/// The mesh converted from "cube_quads.obj".
-pub static CUBE_M: microraster::mesh::Mesh<'static> = microraster::mesh::Mesh::new(
+/// The mesh converted from "cube_quads.obj", as a plain mesh (for the binned path; [`CUBE_M`] is it in clusters).
+pub static CUBE_M_MESH: microraster::mesh::Mesh<'static> = microraster::mesh::Mesh::new(
     &CUBE_M_POSITIONS,
     &CUBE_M_NORMALS,
     &CUBE_M_INDICES,
@@ -105,10 +105,16 @@ pub static CUBE_M_MESHLET_TRIANGLES: [[u8; 3]; 12] = [
     [16, 17, 18], [16, 19, 17], [20, 21, 22], [20, 22, 23],
 ];
 
-/// [`CUBE_M`] with its clusters.
-pub static CUBE_M_MESHLET_MESH: microraster::mesh::MeshletMesh<'static> = microraster::mesh::MeshletMesh {
-    mesh: CUBE_M,
+/// [`CUBE_M_MESH`] in clusters, validated at compile time: draw it with `View3d`
+/// (`Object::new(&CUBE_M, colour)`) or `Pipeline::draw_meshlets`.
+#[allow(long_running_const_eval)]
+#[rustfmt::skip]
+pub static CUBE_M: microraster::mesh::ValidMeshletMesh<'static> = match microraster::mesh::ValidMeshletMesh::new(microraster::mesh::MeshletMesh {
+    mesh: CUBE_M_MESH,
     meshlets: &CUBE_M_MESHLETS,
     vertices: &CUBE_M_MESHLET_VERTICES,
     triangles: &CUBE_M_MESHLET_TRIANGLES,
+}) {
+    Ok(m) => m,
+    Err(_) => panic!("CUBE_M: the mesh fails validation (triangles wound against their normals? see obj2rs's warning)"),
 };

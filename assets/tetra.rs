@@ -29,10 +29,42 @@ pub static TETRA_INDICES: [[u16; 3]; 4] = [
     [1, 3, 2],
 ];
 
-/// The mesh converted from "tetra.obj".
-pub static TETRA: microraster::mesh::Mesh<'static> = microraster::mesh::Mesh::new(
+/// The mesh converted from "tetra.obj", as a plain mesh (for the binned path; [`TETRA`] is it in clusters).
+pub static TETRA_MESH: microraster::mesh::Mesh<'static> = microraster::mesh::Mesh::new(
     &TETRA_POSITIONS,
     &TETRA_NORMALS,
     &TETRA_INDICES,
     ([0.0, 0.0, 0.0], 1.7320508),
 );
+
+/// The clusters of [`TETRA`]: offsets, counts, sphere and normal cone.
+#[rustfmt::skip]
+pub static TETRA_MESHLETS: [microraster::mesh::Meshlet; 1] = [
+    microraster::mesh::Meshlet { vertex_offset: 0, triangle_offset: 0, vertex_count: 4, triangle_count: 4, sphere: ([0.0, 0.0, 0.0], 1.7320508), cone: ([0.0, 0.0, 1.0], 1.0) },
+];
+
+/// Mesh vertex of each cluster-local vertex of [`TETRA_MESHLETS`].
+#[rustfmt::skip]
+pub static TETRA_MESHLET_VERTICES: [u16; 4] = [
+    0, 1, 2, 3,
+];
+
+/// Cluster-local triangles of [`TETRA_MESHLETS`].
+#[rustfmt::skip]
+pub static TETRA_MESHLET_TRIANGLES: [[u8; 3]; 4] = [
+    [0, 1, 2], [0, 3, 1], [0, 2, 3], [1, 3, 2],
+];
+
+/// [`TETRA_MESH`] in clusters, validated at compile time: draw it with `View3d`
+/// (`Object::new(&TETRA, colour)`) or `Pipeline::draw_meshlets`.
+#[allow(long_running_const_eval)]
+#[rustfmt::skip]
+pub static TETRA: microraster::mesh::ValidMeshletMesh<'static> = match microraster::mesh::ValidMeshletMesh::new(microraster::mesh::MeshletMesh {
+    mesh: TETRA_MESH,
+    meshlets: &TETRA_MESHLETS,
+    vertices: &TETRA_MESHLET_VERTICES,
+    triangles: &TETRA_MESHLET_TRIANGLES,
+}) {
+    Ok(m) => m,
+    Err(_) => panic!("TETRA: the mesh fails validation (triangles wound against their normals? see obj2rs's warning)"),
+};

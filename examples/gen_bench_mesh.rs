@@ -105,28 +105,34 @@ pub type Arrays = (Vec<[f32; 3]>, Vec<[f32; 3]>, Vec<[u16; 3]>);
 /// The knot's tube: positions, area-weighted vertex normals and the grid's
 /// triangles (counter-clockwise from outside).
 pub fn tube() -> Arrays {
+    tube_of(ALONG, AROUND)
+}
+
+/// [`tube`] with `along` samples along the knot and `around` around the
+/// tube (`2 · along · around` triangles).
+pub fn tube_of(along: usize, around: usize) -> Arrays {
     let tau = core::f32::consts::TAU;
-    let phi = |i: usize| tau * (i % ALONG) as f32 / ALONG as f32;
-    let mut positions = Vec::with_capacity(ALONG * AROUND);
-    for i in 0..ALONG {
+    let phi = |i: usize| tau * (i % along) as f32 / along as f32;
+    let mut positions = Vec::with_capacity(along * around);
+    for i in 0..along {
         let (c, out) = centre_line(phi(i));
         // Frame: tangent by central difference, normal = the torus normal
         // made perpendicular to it (periodic, so the tube closes).
-        let t = normalize(sub(centre_line(phi(i + 1)).0, centre_line(phi(i + ALONG - 1)).0));
+        let t = normalize(sub(centre_line(phi(i + 1)).0, centre_line(phi(i + along - 1)).0));
         let n = normalize(sub(out, t.map(|x| x * dot(out, t))));
         let b = cross(t, n);
-        for j in 0..AROUND {
-            let theta = tau * j as f32 / AROUND as f32;
+        for j in 0..around {
+            let theta = tau * j as f32 / around as f32;
             let (st, ct) = Scalar::sin_cos(theta);
             let ridge = Scalar::sin_cos(5.0 * theta + 30.0 * phi(i)).1;
             let a = TUBE.0 * (1.0 + TUBE.1 * ridge);
             positions.push([0, 1, 2].map(|k| round4(SCALE * (c[k] + a * (ct * n[k] + st * b[k])))));
         }
     }
-    let v = |i: usize, j: usize| ((i % ALONG) * AROUND + j % AROUND) as u16;
-    let mut indices = Vec::with_capacity(2 * ALONG * AROUND);
-    for i in 0..ALONG {
-        for j in 0..AROUND {
+    let v = |i: usize, j: usize| ((i % along) * around + j % around) as u16;
+    let mut indices = Vec::with_capacity(2 * along * around);
+    for i in 0..along {
+        for j in 0..around {
             // Along the knot × around the tube points inward: wind the other way.
             indices.push([v(i, j), v(i + 1, j + 1), v(i + 1, j)]);
             indices.push([v(i, j), v(i, j + 1), v(i + 1, j + 1)]);
@@ -144,6 +150,26 @@ pub fn tube() -> Arrays {
     }
     let normals = sums.into_iter().map(|s| normalize(s).map(round4)).collect();
     (positions, normals, indices)
+}
+
+/// [`tube_of`] as a Wavefront OBJ file, the way a modeller exports it
+/// (`v` and `vn` in vertex order, `f` with one normal per position, in grid
+/// order): what `obj2rs` converts for the front's rows of the firmware
+/// benchmark (`cargo run --example gen_bench_mesh -- --obj 320 32`).
+pub fn obj_text(along: usize, around: usize) -> String {
+    let (positions, normals, indices) = tube_of(along, around);
+    let mut s = format!("# The ridged (2, 3) torus knot, {along} x {around}: gen_bench_mesh --obj\n");
+    for [x, y, z] in &positions {
+        let _ = writeln!(s, "v {x:?} {y:?} {z:?}");
+    }
+    for [x, y, z] in &normals {
+        let _ = writeln!(s, "vn {x:?} {y:?} {z:?}");
+    }
+    for t in &indices {
+        let [a, b, c] = t.map(|k| u32::from(k) + 1);
+        let _ = writeln!(s, "f {a}//{a} {b}//{b} {c}//{c}");
+    }
+    s
 }
 
 /// The knot with its clusters.
@@ -376,6 +402,14 @@ pub fn pixels_per_triangle(mesh: &Mesh<'_>) -> (f64, usize) {
 
 #[allow(dead_code)]
 fn main() -> Result<(), String> {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    if let [flag, along, around] = &args[..] {
+        if flag == "--obj" {
+            let n = |a: &str| a.parse::<usize>().map_err(|e| format!("{a}: {e}"));
+            print!("{}", obj_text(n(along)?, n(around)?));
+            return Ok(());
+        }
+    }
     let k = knot()?;
     let (ppt, front) = pixels_per_triangle(&k.mesh());
     let n = k.f32.meshlets.len() as f64;

@@ -389,7 +389,7 @@ bench_collect() {
       sed "s/^/$t /" "$log"
       # The static buffers, from the ELF's symbols (cortex-m-rt names them
       # <example>::firmware::__cortex_m_rt_main_trampoline::NAME); size in hex.
-      nm -C -S "$elf" | awk -v t="$t" '$4 ~ /::(BAND|DEPTH|BINS|PRIMS|CACHE|CHUNK|CLUSTER|CLUSTER_FX|BAND20|DEPTH20|BAND32|DEPTH32|BAND48|DEPTH48|BAND240|DEPTH240|VIEW)$/ {
+      nm -C -S "$elf" | awk -v t="$t" '$4 ~ /::(BAND|DEPTH|BINS|PRIMS|CACHE|CHUNK|CLUSTER|CLUSTER_FX|BAND20|DEPTH20|BAND32|DEPTH32|BAND48|DEPTH48|BAND240|DEPTH240|VIEW|KNOT_BINS|KNOT5K_BINS)$/ {
         n = split($4, p, "::"); print t, "sym", p[n], $2 }'
       echo "$t size firmware (CRC demo, $(board_name "$t")) $(size_words "$fw")"
       echo "$t size fw_bench (benchmark, $(MICRORASTER_BOARD=$board board_name "$t")) $(size_words "$elf")"

@@ -21,7 +21,7 @@
 //!   bands, nothing per frame kept in RAM: for each band the 2D scene is
 //!   generated again and drawn straight into the band, and the 3D scene's
 //!   vertex stage runs again on the [`Fx`] path keeping only the triangles
-//!   that touch the band (`PerBand3d`); meshes in flash,
+//!   that touch the band (a `Direct3d` pass); meshes in flash,
 //!   16-bit depth, affine colour (no per-pixel division on a core without a
 //!   divider); the fast tier's frames on both vertex paths beside it
 //!   ([`M0_3D`]).

@@ -29,6 +29,16 @@ pub mod dashboard;
 #[path = "../common/knot_mesh.rs"]
 pub mod knot_mesh;
 use microraster::raster3d::Precision;
+// The knot as `obj2rs`'s default command converts it, at 20k and 5k
+// triangles ([`Work::Ways`]); not every static is read.
+#[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+#[allow(dead_code)]
+#[path = "../common/knot20k_obj2rs.rs"]
+pub mod knot20k;
+#[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+#[allow(dead_code)]
+#[path = "../common/knot5k_obj2rs.rs"]
+pub mod knot5k;
 use microraster_scenes::scenes;
 
 /// The knot's cameras ([`Work::KnotTier`]).
@@ -94,7 +104,8 @@ pub enum Work {
     VertexPerBand3d(Vertex),
     /// The vertex stage once per frame, then `Triangles3d`.
     Frame3d(Vertex, Interp),
-    /// `PerBand3d`: the vertex stage once per band.
+    /// The vertex stage once per band into one band's bins, drawn by a
+    /// `Direct3d` pass.
     PerBand3d(Vertex, Interp),
     /// The 20k-triangle knot ([`knot_mesh::KNOT`]) through the meshlet stage:
     /// `Direct3d` with [`Pipeline::draw_meshlets`](microraster::pipeline::Pipeline::draw_meshlets) per
@@ -145,6 +156,11 @@ pub enum Work {
     /// [`Work::Frame3d`] with the vertex stage's pipeline in an accuracy
     /// tier ([`Precision`]).
     Frame3dTier(Precision, Vertex, Interp),
+    /// One of the three documented ways to draw a mesh on a knot converted
+    /// by `obj2rs`'s default command ([`ways`]: `f32`, perspective-correct,
+    /// exact tier; select them by their scene, `ways`). Cortex-M4F only.
+    #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+    Ways(ways::Knot, ways::Way),
     /// The 2D kit's dashboard ([`dashboard::dashboard`]: shapes with
     /// gradients, anti-aliasing and translucency, an alpha sprite, text),
     /// built and drawn in every band by `render::from_fn`.
@@ -276,6 +292,20 @@ pub const M4F: &[Bench] = &[
     bench("knot20k-rows", Work::KnotTallTier(Fast, TALL_32 as u16)),
     #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
     bench("knot20k-rows", Work::KnotTallTier(Fast, TALL_48 as u16)),
+    // Issue 61's three ways to draw a mesh (the README's table), on request:
+    // `table m4f ways`.
+    #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+    probe("ways", Work::Ways(ways::Knot::K20, ways::Way::Front)),
+    #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+    probe("ways", Work::Ways(ways::Knot::K20, ways::Way::Meshlets)),
+    #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+    probe("ways", Work::Ways(ways::Knot::K20, ways::Way::Bins)),
+    #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+    probe("ways", Work::Ways(ways::Knot::K5, ways::Way::Front)),
+    #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+    probe("ways", Work::Ways(ways::Knot::K5, ways::Way::Meshlets)),
+    #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+    probe("ways", Work::Ways(ways::Knot::K5, ways::Way::Bins)),
 ];
 
 /// Rows of a band of [`Work::KnotTall`] whose colour and `Depth16` rows
@@ -312,8 +342,13 @@ mod knot;
 mod scene3d;
 #[cfg_attr(all(target_os = "none", not(target_abi = "eabihf")), allow(unused_imports, dead_code))]
 pub mod tiers;
+#[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+pub mod ways;
 
 #[allow(unused_imports)] // the firmware uses some, the host's table all
 pub use frame::{Buffers, Cache, Tall, View, frame, prepare};
+#[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+#[allow(unused_imports)]
+pub use frame::{Knot5kBins, KnotBins};
 #[allow(unused_imports)]
 pub use scene3d::primitives;

@@ -104,6 +104,9 @@ mod firmware {
         // The one-call front, with its own bands and cluster cache.
         static mut VIEW: benches::View<{ benches::M4F_SIZE.0 }, { benches::M4F_BAND }> =
             benches::View::new(BACKGROUND);
+        // The knots' frame bins (the full-frame way of `benches::ways`).
+        static mut KNOT_BINS: benches::KnotBins = heapless::Vec::new();
+        static mut KNOT5K_BINS: benches::Knot5kBins = heapless::Vec::new();
         let cluster = Some((CLUSTER, CLUSTER_FX));
         let tall = Some(benches::Tall {
             band20: BAND20,
@@ -115,9 +118,20 @@ mod firmware {
             band240: BAND240,
             depth240: DEPTH240,
         });
-        let (cache, chunk, view) = (Some(CACHE), Some(CHUNK), Some(VIEW));
-        let b =
-            Buffers { prims: PRIMS, band: BAND, depth: DEPTH, bins: BINS, cache, cluster, chunk, tall, view };
+        let (cache, chunk, view, knot_bins) =
+            (Some(CACHE), Some(CHUNK), Some(VIEW), Some((KNOT_BINS, KNOT5K_BINS)));
+        let b = Buffers {
+            prims: PRIMS,
+            band: BAND,
+            depth: DEPTH,
+            bins: BINS,
+            cache,
+            cluster,
+            chunk,
+            tall,
+            view,
+            knot_bins,
+        };
         finish(run(benches::M4F, benches::M4F_SIZE.1, b))
     }
 

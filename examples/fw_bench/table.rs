@@ -69,6 +69,7 @@ fn records<const W: usize, const H: usize, const N: usize, const P: usize>(
     let (mut band48, mut depth48) = (Box::new(Band::new(BACKGROUND)), Box::new(DepthBand::new()));
     let (mut band240, mut depth240) = (Box::new(Band::new(BACKGROUND)), Box::new(DepthBand::new()));
     let mut view = Box::new(benches::View::new(BACKGROUND));
+    let (mut knot_bins, mut knot5k_bins) = (Box::new(heapless::Vec::new()), Box::new(heapless::Vec::new()));
     let mut b: Buffers<'_, W, H, N, P> = Buffers {
         prims: &mut prims,
         band: &mut band,
@@ -88,6 +89,7 @@ fn records<const W: usize, const H: usize, const N: usize, const P: usize>(
             depth240: &mut depth240,
         }),
         view: Some(&mut view),
+        knot_bins: Some((&mut knot_bins, &mut knot5k_bins)),
     };
     let mut out = Vec::new();
     let select = std::env::var(benches::SELECT_VAR).ok();

@@ -145,7 +145,8 @@ pub struct Pipeline<T: Scalar, const S: u32> {
     pub shade: Shade,
     /// Keep only triangles that touch these frame rows (inclusive); `None`
     /// keeps all. Set per band when the vertex stage runs once per band
-    /// ([`PerBand3d`](crate::render::PerBand3d))
+    /// (in a [`Direct3d`](crate::render::Direct3d) pass, to
+    /// [`Band3d::rows`](crate::render::Band3d::rows))
     /// so the bins only need to hold one band's triangles.
     pub rows: Option<(i32, i32)>,
     /// Whether snapped vertices get their `1/w` (only perspective-correct

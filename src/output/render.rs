@@ -23,7 +23,7 @@ use embedded_graphics_core::primitives::Rectangle;
 pub use link::{BandSink, Blocking, FrameBands, Lent};
 #[cfg(feature = "async")]
 pub use link_async::{AsyncBandSink, poll_ready};
-pub use pass::{Direct3d, FromFn, Pass, PerBand3d, Then, Triangles3d, from_fn};
+pub use pass::{Direct3d, FromFn, Pass, Then, Triangles3d, from_fn};
 #[cfg(feature = "async")]
 pub use spi_panel::{SpiPanel, SpiPanelError};
 

@@ -7,7 +7,8 @@
 //! culled (with every mesh's winding checked against its normals, so a mesh
 //! wound the wrong way is an error, not a dark inside), Gouraud shading,
 //! 16-bit depth, perspective-correct colour, 4 subpixel bits, the `f32`
-//! vertex path. Everything here is built on the explicit API
+//! vertex path, the exact accuracy tier ([`Precision::Exact`];
+//! [`View3d::set_precision`] for [`Precision::Fast`]). Everything here is built on the explicit API
 //! ([`Pipeline`], [`Direct3d`]) and draws the same pixels
 //! (`tests/integration/view3d.rs`); use that API for other depth formats,
 //! the `Fx` path, fragment shaders or anti-aliasing.
@@ -34,6 +35,7 @@
 mod camera;
 mod cube;
 mod object;
+mod settings;
 
 pub use camera::{Camera, DEFAULT_PROJECTION, Projection};
 pub use cube::CUBE;
@@ -49,7 +51,7 @@ use crate::edge::Cull;
 use crate::light::{Lighting, Viewer};
 use crate::math::Vec3;
 use crate::pipeline::{ClusterCache, FrameChunks, PerFace, PerVertex, Pipeline, Shade, Uniform};
-use crate::raster3d::PerspectiveCorrect;
+use crate::raster3d::{PerspectiveCorrect, Precision};
 use crate::render::Direct3d;
 use crate::{Error, Interpolate, MAX_FRAME_DIM, RenderError, Renderer};
 
@@ -133,6 +135,7 @@ pub struct View3d<C, const W: usize, const H: usize> {
     lighting: Option<Lighting<f32>>,
     cull: Cull,
     shade: Shade,
+    precision: Precision,
 }
 
 impl<C: Interpolate, const W: usize, const H: usize> View3d<C, W, H> {
@@ -161,97 +164,25 @@ impl<C: Interpolate, const W: usize, const H: usize> View3d<C, W, H> {
             lighting: Some(DEFAULT_LIGHTING),
             cull: Cull::Clockwise,
             shade: Shade::Gouraud,
+            precision: Precision::Exact,
         }
     }
 
-    /// Frames of `rows` rows from the display's top (`None`, the default:
-    /// as tall as the display).
-    ///
-    /// ```
-    /// use embedded_graphics::{mock_display::MockDisplay, prelude::Point};
-    /// use embedded_graphics::pixelcolor::{Rgb565, RgbColor};
-    /// use microraster::view3d::{CUBE, Camera, Object, View3d};
-    /// let mut view = View3d::<Rgb565, 64, 8>::new(Rgb565::BLACK);
-    /// view.set_height(Some(20));
-    /// let (camera, cube) = (Camera::look_at([3.0, 3.0, 3.0], [0.0; 3]), Object::new(&CUBE, Rgb565::RED));
-    /// let mut display = MockDisplay::new();
-    /// view.draw(&camera, &[cube], &mut display)?;
-    /// // Rows 0–19 are sent; the rest of the 64-row display is not touched.
-    /// assert!(display.get_pixel(Point::new(0, 19)).is_some());
-    /// assert!(display.get_pixel(Point::new(0, 20)).is_none());
-    /// # Ok::<(), microraster::RenderError<core::convert::Infallible>>(())
-    /// ```
-    pub fn set_height(&mut self, rows: Option<u32>) {
-        self.height = rows;
-    }
-
-    /// The lighting (`None`: material colours unlit). A bad light (a
-    /// non-finite factor, a direction that is not a unit vector) fails the
-    /// frame before any band is sent, as [`Lighting::validate`] fails. For
-    /// a highlight: `view.set_lighting(Some(DEFAULT_LIGHTING.with_specular(0.5, 16)))`.
-    ///
-    /// ```
-    /// use embedded_graphics::{mock_display::MockDisplay, prelude::Point};
-    /// use embedded_graphics::pixelcolor::{Rgb565, RgbColor};
-    /// use microraster::view3d::{CUBE, Camera, Object, View3d};
-    /// let mut view = View3d::<Rgb565, 64, 8>::new(Rgb565::BLACK);
-    /// view.set_lighting(None);
-    /// let (camera, cube) = (Camera::look_at([3.0, 3.0, 3.0], [0.0; 3]), Object::new(&CUBE, Rgb565::RED));
-    /// let mut display = MockDisplay::new();
-    /// view.draw(&camera, &[cube], &mut display)?;
-    /// // Unlit: every face is the material colour itself.
-    /// assert_eq!(display.get_pixel(Point::new(32, 32)), Some(Rgb565::RED));
-    /// # Ok::<(), microraster::RenderError<core::convert::Infallible>>(())
-    /// ```
-    pub fn set_lighting(&mut self, lighting: Option<Lighting<f32>>) {
-        self.lighting = lighting;
-    }
-
-    /// Which screen winding is dropped ([`Cull::Clockwise`], back faces, by
-    /// default; [`Cull::None`] for open meshes seen from both sides).
+    /// The same view drawing in accuracy tier `precision` (a `const fn`,
+    /// for a `static` view; [`View3d::set_precision`] changes a view in
+    /// place). [`Precision::Exact`] by default.
     ///
     /// ```
     /// use embedded_graphics::pixelcolor::{Rgb565, RgbColor};
-    /// use microraster::{Cull, view3d::View3d};
-    /// let mut view = View3d::<Rgb565, 64, 8>::new(Rgb565::BLACK);
-    /// view.set_cull(Cull::None);
-    /// assert_eq!(view.cull(), Cull::None);
-    /// ```
-    pub fn set_cull(&mut self, cull: Cull) {
-        self.cull = cull;
-    }
-
-    /// Gouraud (the default) or flat shading.
-    pub fn set_shade(&mut self, shade: Shade) {
-        self.shade = shade;
-    }
-
-    /// The colour the next frames are cleared to.
-    ///
-    /// ```
-    /// use embedded_graphics::pixelcolor::{Rgb565, RgbColor};
+    /// use microraster::raster3d::Precision;
     /// use microraster::view3d::View3d;
-    /// let mut view = View3d::<Rgb565, 64, 8>::new(Rgb565::BLACK);
-    /// view.set_background(Rgb565::BLUE); // night mode
-    /// assert_eq!(view.background(), Rgb565::BLUE);
+    /// static VIEW: View3d<Rgb565, 320, 16> = View3d::new(Rgb565::BLACK).with_precision(Precision::Fast);
+    /// assert_eq!(VIEW.precision(), Precision::Fast);
     /// ```
-    pub fn set_background(&mut self, background: C) {
-        self.background = background;
-    }
-
-    /// The colour frames are cleared to.
-    pub fn background(&self) -> C {
-        self.background
-    }
-
-    /// The lighting.
-    pub fn lighting(&self) -> Option<Lighting<f32>> {
-        self.lighting
-    }
-
-    /// The cull mode.
-    pub fn cull(&self) -> Cull {
-        self.cull
+    pub const fn with_precision(self, precision: Precision) -> Self {
+        let mut view = self;
+        view.precision = precision;
+        view
     }
 
     /// The vertex stage and renderer this view draws a `W × rows` frame
@@ -286,7 +217,7 @@ impl<C: Interpolate, const W: usize, const H: usize> View3d<C, W, H> {
             light.validate()?;
         }
         let mut p = camera.pipeline(W as u32, rows, self.lighting)?;
-        (p.cull, p.shade) = (self.cull, self.shade);
+        (p.cull, p.shade, p.precision) = (self.cull, self.shade, self.precision);
         Ok((p, Renderer::new(rows, self.background)))
     }
 
@@ -381,18 +312,5 @@ impl<C: Interpolate, const W: usize, const H: usize> View3d<C, W, H> {
             Ok(())
         });
         renderer.render(frame, &mut self.band, display)
-    }
-}
-
-impl<C: core::fmt::Debug, const W: usize, const H: usize> core::fmt::Debug for View3d<C, W, H> {
-    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
-        f.debug_struct("View3d")
-            .field("size", &(W, H))
-            .field("background", &self.background)
-            .field("height", &self.height)
-            .field("lighting", &self.lighting)
-            .field("cull", &self.cull)
-            .field("shade", &self.shade)
-            .finish_non_exhaustive()
     }
 }

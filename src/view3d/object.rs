@@ -252,7 +252,7 @@ pub(super) fn draw_object<C: Interpolate, Mat: Material<f32>, const W: usize>(
 ) -> Result<(), Error> {
     let (model, color) = (o.model(), o.color());
     let mut into_band = |t| {
-        band.draw(&t);
+        band.draw_in(&t, banded.precision);
         Ok(())
     };
     match o.geometry() {

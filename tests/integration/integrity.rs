@@ -12,7 +12,7 @@ use microraster::math::{Mat4, Scalar};
 use microraster::mesh::Mesh;
 use microraster::pipeline::Pipeline;
 use microraster::raster3d::{Affine, ScreenTriangle};
-use microraster::render::{PerBand3d, Triangles3d};
+use microraster::render::{Direct3d, Triangles3d};
 use microraster::{Band, Error, Renderer};
 
 const W: usize = 64;
@@ -20,7 +20,7 @@ const H: usize = 48;
 
 /// The image of `mesh` drawn by `p`: the whole frame's bins at once
 /// (`Triangles3d`), and the vertex stage once per 8-row band
-/// (`PerBand3d`); `Err` is the first error of either.
+/// (`Direct3d`, one band's bins); `Err` is the first error of either.
 fn both_ways<T: Scalar>(
     p: &Pipeline<T, 4>,
     mesh: &Mesh<'_>,
@@ -40,9 +40,12 @@ fn both_ways<T: Scalar>(
     let mut pb = *p;
     let mut failed = None;
     let r = Renderer::new(H as u32, bg).render(
-        PerBand3d::new(&mut bins, &mut depth, DepthState::LESS_WRITE, Affine, |y0, y1, bins| {
-            pb.rows = Some((y0, y1 - 1));
-            pb.draw_mesh(mesh, model, Gray8::new(255), bins).map(|_| ()).inspect_err(|e| failed = Some(*e))
+        Direct3d::new(&mut depth, DepthState::LESS_WRITE, Affine, |b3| {
+            bins.clear();
+            pb.rows = Some(b3.rows());
+            pb.draw_mesh(mesh, model, Gray8::new(255), &mut bins).inspect_err(|e| failed = Some(*e))?;
+            b3.draw_all(&bins);
+            Ok(())
         }),
         &mut band,
         &mut fb,

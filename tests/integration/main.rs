@@ -32,6 +32,8 @@
 //! - `fast_raster`: the fast tier's raster against the exact tier's on the same screen
 //!   triangles: coverage, depth within one code, colour within one step (two at most).
 //! - `view3d_colors`: the front's per-vertex and per-face colours.
+//! - `ways`: the three documented ways to draw a mesh draw the same frame of a mesh
+//!   converted by `obj2rs`'s default command; the front's accuracy tier.
 //! - `mesh_range`: issue 60's whole-mesh checks: clip coordinates beyond ±2^64, a singular
 //!   model before the first band, an inside-out `ValidMesh` on the explicit path.
 //! - `fast_tier`: the fast accuracy tier against the exact one: whole frames within the colour,
@@ -87,4 +89,5 @@ mod view3d;
 mod view3d_colors;
 mod watertight;
 mod watertight_clip;
+mod ways;
 mod zfight;

@@ -1,5 +1,6 @@
-//! The per-band vertex stage (for parts that cannot hold a frame's bins)
-//! draws exactly what the per-frame one draws.
+//! The per-band vertex stage (for parts that cannot hold a frame's bins:
+//! a `Direct3d` pass whose closure bins one band's triangles and draws
+//! them) draws exactly what the per-frame one draws.
 
 use crate::framebuffer::Framebuffer;
 use embedded_graphics_core::pixelcolor::Rgb565;
@@ -7,7 +8,7 @@ use embedded_graphics_core::prelude::RgbColor;
 use microraster::depth::{Depth16, DepthBand, DepthState};
 use microraster::math::{Fx, Scalar};
 use microraster::raster3d::{Affine, PerspectiveCorrect};
-use microraster::render::{PerBand3d, Triangles3d};
+use microraster::render::{Direct3d, Triangles3d};
 use microraster::{Band, Renderer};
 use microraster_scenes::scenes3d::{BINS, Scene3d};
 
@@ -36,24 +37,15 @@ fn per_band<T: Scalar, const N: usize>(angle: f32) -> (Vec<Rgb565>, usize) {
     let mut fb = Framebuffer::new(W as u32, H, Rgb565::BLACK);
     let (mut band, mut depth) = (Band::<Rgb565, W, 8>::new(Rgb565::BLACK), DepthBand::<Depth16, W, 8>::new());
     let mut most = 0;
-    Renderer::new(H, Rgb565::BLACK)
-        .render(
-            PerBand3d::new(
-                &mut bins,
-                &mut depth,
-                DepthState::LESS_WRITE,
-                PerspectiveCorrect,
-                |y0, y1, bins| {
-                    pipeline.rows = Some((y0, y1 - 1));
-                    Scene3d.draw::<T, Rgb565, 4, N>(&pipeline, angle, bins)?;
-                    most = most.max(bins.len());
-                    Ok(())
-                },
-            ),
-            &mut band,
-            &mut fb,
-        )
-        .unwrap();
+    let frame = Direct3d::new(&mut depth, DepthState::LESS_WRITE, PerspectiveCorrect, |b3| {
+        bins.clear();
+        pipeline.rows = Some(b3.rows());
+        Scene3d.draw::<T, Rgb565, 4, N>(&pipeline, angle, &mut bins)?;
+        most = most.max(bins.len());
+        b3.draw_all(&bins);
+        Ok(())
+    });
+    Renderer::new(H, Rgb565::BLACK).render(frame, &mut band, &mut fb).unwrap();
     (fb.pixels, most)
 }
 
@@ -78,8 +70,11 @@ fn per_band_reports_full_bins_as_an_error() {
     let mut bins = heapless::Vec::<_, 4>::new();
     let mut fb = Framebuffer::new(W as u32, H, Rgb565::BLACK);
     let (mut band, mut depth) = (Band::<Rgb565, W, 8>::new(Rgb565::BLACK), DepthBand::<Depth16, W, 8>::new());
-    let frame = PerBand3d::new(&mut bins, &mut depth, DepthState::LESS_WRITE, Affine, |_, _, bins| {
-        Scene3d.draw::<f32, Rgb565, 4, 4>(&pipeline, 0.3, bins).map(|_| ())
+    let frame = Direct3d::new(&mut depth, DepthState::LESS_WRITE, Affine, |b3| {
+        bins.clear();
+        Scene3d.draw::<f32, Rgb565, 4, 4>(&pipeline, 0.3, &mut bins)?;
+        b3.draw_all(&bins);
+        Ok(())
     });
     let r = Renderer::new(H, Rgb565::BLACK).render(frame, &mut band, &mut fb);
     let Err(microraster::RenderError::Input(microraster::Error::CapacityExceeded { needed, capacity: 4 })) =

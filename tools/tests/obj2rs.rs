@@ -2,12 +2,13 @@
 //! and emitter (`microraster_tools::obj`), and the committed outputs for the
 //! test assets, compiled in and compared with a fresh conversion (round trip).
 
-use microraster_tools::obj::{emit, meshlets, parse};
+use microraster_tools::obj::{Options, convert_bytes, emit, meshlets, parse};
 
-/// The converter's output for the assets, compiled as part of this test.
+/// The converter's output for the assets, compiled as part of this test
+/// (the tetrahedron as converted by default, in clusters; the cube plain).
 /// Regenerate after changing the emitter:
 /// `cargo run -p microraster-tools --bin obj2rs -- assets/tetra.obj TETRA > assets/tetra.rs`
-/// `cargo run -p microraster-tools --bin obj2rs -- assets/cube_quads.obj CUBE_QUADS > assets/cube_quads.rs`
+/// `cargo run -p microraster-tools --bin obj2rs -- assets/cube_quads.obj CUBE_QUADS --plain > assets/cube_quads.rs`
 /// (the clusters' outputs: `tests/obj2rs_meshlets.rs`)
 mod generated {
     include!("../../assets/tetra.rs");
@@ -83,23 +84,21 @@ fn cube_quads_keeps_file_normals_and_splits_vertices_by_normal() {
 
 #[test]
 fn generated_sources_are_current_and_compile() {
-    for (obj, name, file, golden, mesh) in [
-        (TETRA_OBJ, "tetra", "tetra.obj", include_str!("../../assets/tetra.rs"), &generated::TETRA),
-        (
-            CUBE_OBJ,
-            "Cube_Quads",
-            "cube_quads.obj",
-            include_str!("../../assets/cube_quads.rs"),
-            &generated::CUBE_QUADS,
-        ),
+    let tetra = convert_bytes(TETRA_OBJ.as_bytes(), "tetra", "tetra.obj", &Options::default()).unwrap();
+    let cube = parse_obj(CUBE_OBJ).unwrap();
+    let plain = emit::rust_source(&cube, "Cube_Quads", "cube_quads.obj", emit::DEFAULT_MESH_TYPE).unwrap();
+    for (src, golden, file, mesh, converted) in [
+        (&tetra.source, include_str!("../../assets/tetra.rs"), "tetra", &generated::TETRA_MESH, &tetra.mesh),
+        (&plain, include_str!("../../assets/cube_quads.rs"), "cube_quads", &generated::CUBE_QUADS, &cube),
     ] {
-        let m = parse_obj(obj).unwrap();
-        let src = emit::rust_source(&m, name, file, emit::DEFAULT_MESH_TYPE).unwrap();
-        assert_eq!(src, golden, "assets/{file}: regenerate its .rs (see `mod generated`)");
+        assert_eq!(*src, golden, "assets/{file}.rs: regenerate it (see `mod generated`)");
         // The compiled statics hold exactly the converted data.
-        assert_eq!(*mesh, m.mesh());
+        assert_eq!(*mesh, converted.mesh());
         assert_eq!(mesh.validate(), Ok(()));
     }
+    // By default `NAME` is the mesh in its clusters, checked at compile time.
+    assert_eq!(generated::TETRA.get().mesh, generated::TETRA_MESH);
+    assert_eq!(generated::TETRA.get().meshlets.len(), 1);
     assert_eq!(generated::TETRA_POSITIONS.len(), 4);
     assert_eq!(generated::CUBE_QUADS_INDICES.len(), 12);
     assert_eq!(generated::CUBE_QUADS_NORMALS[0], [0.0, 0.0, 1.0]);
@@ -119,7 +118,8 @@ fn winding_against_file_normals_is_a_warning() {
     assert_eq!(meshlets::winding_mismatches(&m), 1);
     let warning = meshlets::winding_warning(&m, false).unwrap();
     assert!(warning.starts_with("warning: 1 of 2 triangles are wound clockwise"), "{warning}");
-    assert!(meshlets::winding_warning(&m, true).unwrap().ends_with("fails validation (WindingMismatch)"));
+    let clustered = meshlets::winding_warning(&m, true).unwrap();
+    assert!(clustered.ends_with("(WindingMismatch)") && clustered.contains("`--plain`"), "{clustered}");
     assert_eq!(m.mesh().check_winding(), Err(Error::WindingMismatch));
     // Normals computed from the winding always agree, even inside out.
     let reversed = TETRA_OBJ.replace("f 1 2 3", "f 1 3 2").replace("f 1 3 4", "f 1 4 3");
@@ -359,7 +359,8 @@ fn convert_for_build_scripts_rejects_a_winding_mismatch() {
     std::fs::write(&good, format!("{TRI}vn 0 0 1\nf 1//1 2//1 3//1\n")).unwrap();
     std::fs::write(&bad, format!("{TRI}vn 0 0 -1\nf 1//1 2//1 3//1\n")).unwrap();
     let src = microraster_tools::obj::convert(&good, "good").unwrap();
-    assert!(src.contains("pub static GOOD: microraster::mesh::Mesh<'static>"), "{src}");
+    assert!(src.contains("pub static GOOD: microraster::mesh::ValidMeshletMesh<'static>"), "{src}");
+    assert!(src.contains("pub static GOOD_MESH: microraster::mesh::Mesh<'static>"), "{src}");
     let e = microraster_tools::obj::convert(&bad, "bad").unwrap_err().to_string();
     assert!(
         e.starts_with(&bad.display().to_string()) && e.contains("1 of 1 triangles are wound clockwise"),

@@ -9,7 +9,7 @@ use microraster::depth::{Depth16, DepthBand};
 use microraster::edge::Cull;
 use microraster::math::Scalar;
 use microraster::raster3d::{Interpolation, Precision, ScreenTriangle};
-use microraster::render::{FromFn, PerBand3d, Triangles3d, from_fn};
+use microraster::render::{Direct3d, FromFn, Triangles3d, from_fn};
 use microraster::{Band, Error, Primitive, RenderError, Renderer};
 use microraster_scenes::scenes;
 use microraster_scenes::scenes3d::Scene3d;
@@ -101,8 +101,8 @@ pub fn scene3d<T: Scalar, M: Interpolation, const W: usize, const H: usize, cons
 }
 
 /// The standard 3D scene with the vertex stage run once per band
-/// (`PerBand3d`) in accuracy tier `precision`: `bins` holds one band's
-/// triangles.
+/// (a `Direct3d` pass) in accuracy tier `precision`: `bins` holds one
+/// band's triangles.
 #[allow(clippy::too_many_arguments)]
 pub fn scene3d_per_band<T: Scalar, M: Interpolation, const W: usize, const H: usize, const N: usize>(
     name: &'static str,
@@ -115,13 +115,14 @@ pub fn scene3d_per_band<T: Scalar, M: Interpolation, const W: usize, const H: us
 ) -> Result<(), Error> {
     let mut pipeline = Scene3d::pipeline::<T, S>(W as u32, height)?.with_precision(precision);
     let mut target = CrcTarget::new(name, W as u32, height, out);
-    let geometry = |y0: i32, y1: i32, bins: &mut heapless::Vec<ScreenTriangle<S>, N>| {
-        pipeline.rows = Some((y0, y1 - 1));
-        Scene3d.draw::<T, Rgb565, S, N>(&pipeline, ANGLE, bins).map(|_| ())
-    };
-    Renderer::new(height, BACKGROUND)
-        .render(PerBand3d::new(bins, depth, DEPTH_STATE, M::default(), geometry), band, &mut target)
-        .map_err(render_error)?;
+    let frame = Direct3d::new(depth, DEPTH_STATE, M::default(), |b3| {
+        bins.clear();
+        pipeline.rows = Some(b3.rows());
+        Scene3d.draw::<T, Rgb565, S, N>(&pipeline, ANGLE, bins)?;
+        b3.draw_all(bins);
+        Ok(())
+    });
+    Renderer::new(height, BACKGROUND).render(frame, band, &mut target).map_err(render_error)?;
     target.finish();
     Ok(())
 }

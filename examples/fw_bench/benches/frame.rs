@@ -28,6 +28,7 @@ use super::scene3d::front3d;
 use super::scene3d::{cached_vertex_stage, frame3d, per_band3d, vertex3d, vertex3d_per_band};
 #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
 use super::tiers::{frame3d_tier, knot_tall_tier, knot_tier};
+use super::ways;
 use super::{Sink, TALL_20, TALL_32, TALL_48, TALL_240, Work};
 use crate::workload::{self, DEPTH_STATE, S};
 
@@ -60,7 +61,18 @@ pub struct Buffers<'a, const W: usize, const H: usize, const N: usize, const P: 
     /// ([`Work::Front3d`]); not on the Cortex-M0.
     #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
     pub view: Option<&'a mut View<W, H>>,
+    /// The 20k and 5k knots' frame bins ([`Work::Ways`] with
+    /// [`Way::Bins`](super::ways::Way::Bins)); not on the Cortex-M0.
+    #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+    pub knot_bins: Option<(&'a mut KnotBins, &'a mut Knot5kBins)>,
 }
+
+/// The bins of [`Work::Ways`]' full-frame 20k row (Cortex-M4F only).
+#[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+pub type KnotBins = heapless::Vec<ScreenTriangle<S>, { super::ways::KNOT_BINS }>;
+/// The bins of [`Work::Ways`]' full-frame 5k row (Cortex-M4F only).
+#[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+pub type Knot5kBins = heapless::Vec<ScreenTriangle<S>, { super::ways::KNOT5K_BINS }>;
 
 /// The front of [`Work::Front3d`] (Cortex-M4F only).
 pub type View<const W: usize, const H: usize> = View3d<Rgb565, W, H>;
@@ -143,9 +155,37 @@ pub fn frame<const W: usize, const H: usize, const N: usize, const P: usize>(
             return knot_tall_tier::<W>(Renderer::new(height, bg), (p, rows), t, c.0, sink);
         }
         Work::Frame3dTier(p, t, i) => return frame3d_tier(Renderer::new(height, bg), (p, t, i), b, sink),
+        Work::Ways(knot, way) => return ways_frame(knot, way, height, bg, b, sink),
         _ => {}
     }
     frame_other(work, height, bg, b, sink)
+}
+
+/// [`Work::Ways`] (not inlined, as the taller-band rows).
+#[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+#[inline(never)]
+fn ways_frame<const W: usize, const H: usize, const N: usize, const P: usize>(
+    knot: ways::Knot,
+    way: ways::Way,
+    height: u32,
+    bg: Rgb565,
+    b: &mut Buffers<'_, W, H, N, P>,
+    sink: &mut Sink,
+) -> Result<(), Error> {
+    let r = Renderer::new(height, bg);
+    match way {
+        ways::Way::Front => {
+            ways::front(b.view.as_deref_mut().ok_or(Error::BufferTooSmall)?, knot, height, bg, sink)
+        }
+        ways::Way::Meshlets => {
+            let c = b.cluster.as_mut().ok_or(Error::BufferTooSmall)?;
+            ways::meshlets::<W, H>(r, b.band, b.depth, c.0, knot, sink)
+        }
+        ways::Way::Bins => match (knot, b.knot_bins.as_mut().ok_or(Error::BufferTooSmall)?) {
+            (ways::Knot::K20, (bins, _)) => ways::bins(r, b.band, b.depth, bins, knot, sink),
+            (ways::Knot::K5, (_, bins)) => ways::bins(r, b.band, b.depth, bins, knot, sink),
+        },
+    }
 }
 
 /// [`frame`] for every row but the taller-band ones.
@@ -225,7 +265,8 @@ fn frame_other<const W: usize, const H: usize, const N: usize, const P: usize>(
         | Work::KnotTall(_)
         | Work::Front3d
         | Work::KnotTier(..)
-        | Work::KnotTallTier(..) => Err(Error::InvalidParameter),
+        | Work::KnotTallTier(..)
+        | Work::Ways(..) => Err(Error::InvalidParameter),
         // Cortex-M4F rows only (in `frame` there).
         Work::Frame3dTier(..) => Err(Error::InvalidParameter),
         #[cfg(not(any(not(target_os = "none"), target_abi = "eabihf")))]

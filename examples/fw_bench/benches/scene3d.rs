@@ -7,7 +7,7 @@ use embedded_graphics_core::pixelcolor::Rgb565;
 use microraster::math::{Fx, Scalar};
 use microraster::pipeline::{MeshStats, VertexCache};
 use microraster::raster3d::{Interpolation, ScreenTriangle};
-use microraster::render::{PerBand3d, Triangles3d};
+use microraster::render::{Direct3d, Triangles3d};
 #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
 use microraster::view3d::View3d;
 use microraster::{Error, Primitive, Renderer};
@@ -95,12 +95,17 @@ pub(super) fn per_band3d<
     sink: &mut Sink,
 ) -> Result<(), Error> {
     let mut pipeline = Scene3d::pipeline::<T, S>(W as u32, r.height())?;
-    let geometry = |y0: i32, y1: i32, bins: &mut heapless::Vec<ScreenTriangle<S>, N>| {
-        pipeline.rows = Some((y0, y1 - 1));
-        Scene3d.draw::<T, Rgb565, S, N>(&pipeline, ANGLE, bins).map(|_| ())
-    };
-    r.render(PerBand3d::new(b.bins, b.depth, DEPTH_STATE, M::default(), geometry), b.band, sink)
-        .map_err(input)
+    let bins = &mut *b.bins;
+    // The vertex stage per band into one band's bins (the way the removed
+    // `PerBand3d` pass did it).
+    let frame = Direct3d::new(b.depth, DEPTH_STATE, M::default(), |b3| {
+        bins.clear();
+        pipeline.rows = Some(b3.rows());
+        Scene3d.draw::<T, Rgb565, S, N>(&pipeline, ANGLE, bins)?;
+        b3.draw_all(bins);
+        Ok(())
+    });
+    r.render(frame, b.band, sink).map_err(input)
 }
 
 /// The standard scene through the one-call front ([`Work::Front3d`]): the
@@ -167,6 +172,8 @@ pub fn primitives<const W: usize, const H: usize, const N: usize, const P: usize
         Work::Vertex3dCached | Work::Vertex3dChunked | Work::Frame3dChunked => count_3d(F32),
         #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
         Work::Front3d => count_3d(F32),
+        #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+        Work::Ways(knot, _) => Ok((knot.triangles(), 0)),
         Work::Vertex3d(t) | Work::VertexPerBand3d(t) | Work::Frame3d(t, _) | Work::PerBand3d(t, _) => {
             count_3d(t)
         }

@@ -66,6 +66,18 @@ impl Work {
             #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
             Work::Front3d => "View3d front, f32, persp.-correct, per band",
             #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+            Work::Ways(knot, way) => {
+                use super::ways::{Knot::*, Way::*};
+                match (knot, way) {
+                    (K20, Front) => "obj2rs knot 20k: View3d front, f32, persp.-correct",
+                    (K20, Meshlets) => "obj2rs knot 20k: meshlets per band, f32, persp.-correct",
+                    (K20, Bins) => "obj2rs knot 20k: full-frame bins, f32, persp.-correct",
+                    (K5, Front) => "obj2rs knot 5k: View3d front, f32, persp.-correct",
+                    (K5, Meshlets) => "obj2rs knot 5k: meshlets per band, f32, persp.-correct",
+                    (K5, Bins) => "obj2rs knot 5k: full-frame bins, f32, persp.-correct",
+                }
+            }
+            #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
             Work::KnotVertexRows(rows) => match rows {
                 16 => "f32 vertex stage only, 16-row bands",
                 32 => "f32 vertex stage only, 32-row bands",
@@ -105,7 +117,13 @@ impl Work {
                 _ => "BAND48,DEPTH48,CLUSTER",
             },
             #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
-            Work::Front3d => "VIEW",
+            Work::Front3d | Work::Ways(_, super::ways::Way::Front) => "VIEW",
+            #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+            Work::Ways(_, super::ways::Way::Meshlets) => "BAND,DEPTH,CLUSTER",
+            #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+            Work::Ways(super::ways::Knot::K20, super::ways::Way::Bins) => "BAND,DEPTH,KNOT_BINS",
+            #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+            Work::Ways(super::ways::Knot::K5, super::ways::Way::Bins) => "BAND,DEPTH,KNOT5K_BINS",
             Work::Meshlets(F32, _) | Work::MeshletsFar(_) | Work::KnotStage(F32, _) => "BAND,DEPTH,CLUSTER",
             Work::Meshlets(Fix, _) | Work::KnotStage(Fix, _) => "BAND,DEPTH,CLUSTER_FX",
             #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]

@@ -13,7 +13,7 @@
 //! A [`MeshletMesh`] adds clusters of at most 64 vertices, each with a
 //! bounding sphere and a normal cone, so whole clusters are rejected before
 //! any vertex work; [`build_meshlets`] makes them without allocating (the
-//! `obj2rs` converter's `--meshlets` option emits them as statics), and
+//! `obj2rs` converter emits them as statics by default), and
 //! [`MeshletMesh::validate`] / [`ValidMeshletMesh`] check them, at compile
 //! time for statics. [`Mesh::check_winding`] is the opt-in check that
 //! windings agree with the normals.

@@ -10,14 +10,13 @@
 //! | [`Binned2d`](super::Binned2d) | the same, each band reading only its primitives (an index you own) |
 //! | `()` | nothing: the background |
 //! | [`Triangles3d`] | screen triangles from the vertex stage, depth-tested |
-//! | [`PerBand3d`] | the vertex stage run per band into small bins (low RAM) |
-//! | [`Direct3d`] | a closure that draws each band as a [`Band3d`](super::Band3d) (meshlets) |
+//! | [`Direct3d`] | a closure that draws each band as a [`Band3d`](super::Band3d) (meshlets, or the vertex stage per band) |
 //! | [`from_fn`] | a closure that draws each band as a [`BandView`] (e-g drawables) |
 //! | [`Pass::then`] | one pass, then another closure over it (a HUD) |
 //! | [`Antialiased`](crate::aa::Antialiased), [`Supersampled`](crate::aa::Supersampled) | anti-aliased frames |
 
 mod pass3d;
-pub use pass3d::{Direct3d, PerBand3d, Triangles3d};
+pub use pass3d::{Direct3d, Triangles3d};
 
 use core::marker::PhantomData;
 

@@ -11,7 +11,7 @@ use microraster::math::{Fx, Mat4, Scalar, Vec3, transform};
 use microraster::mesh::{Mesh, ValidMesh, bounding_sphere};
 use microraster::pipeline::{Pipeline, VertexCache};
 use microraster::raster3d::{Affine, ScreenTriangle};
-use microraster::render::{PerBand3d, Triangles3d};
+use microraster::render::{Direct3d, Triangles3d};
 use microraster::{Band, Error, RenderError, Renderer};
 use proptest::prelude::*;
 
@@ -111,13 +111,16 @@ fn per_band<T: Scalar, const BH: usize>(
         let mut cache = Box::new(VertexCache::<T, 4, 8>::new());
         let mut pb = *p;
         let r = Renderer::new(PH as u32, Gray8::new(0)).render(
-            PerBand3d::new(&mut bins, &mut depth, DepthState::LESS_WRITE, Affine, |y0, y1, bins| {
-                pb.rows = Some((y0, y1 - 1));
+            Direct3d::new(&mut *depth, DepthState::LESS_WRITE, Affine, |b3| {
+                bins.clear();
+                pb.rows = Some(b3.rows());
                 if cached {
-                    pb.draw_valid_mesh_cached(mesh, model, Gray8::new(200), &mut cache, bins).map(|_| ())
+                    pb.draw_valid_mesh_cached(mesh, model, Gray8::new(200), &mut cache, &mut bins)?;
                 } else {
-                    pb.draw_valid_mesh(mesh, model, Gray8::new(200), bins).map(|_| ())
+                    pb.draw_valid_mesh(mesh, model, Gray8::new(200), &mut bins)?;
                 }
+                b3.draw_all(&bins);
+                Ok(())
             }),
             &mut band,
             fb,

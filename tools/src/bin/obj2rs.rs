@@ -1,28 +1,33 @@
 //! obj2rs: converts a Wavefront OBJ file into Rust source for a `static`
-//! [`microraster::mesh::Mesh`] (arrays in flash, no RAM).
+//! mesh in clusters, [`microraster::mesh::ValidMeshletMesh`], checked at
+//! compile time (arrays in flash, no RAM).
 //!
 //! ```text
-//! obj2rs INPUT.obj NAME [--mesh-type PATH] [--meshlets [--fx]] [--flip-winding] > out.rs
+//! obj2rs INPUT.obj NAME [--plain | --fx] [--mesh-type PATH] [--flip-winding] > out.rs
 //! ```
 //!
-//! Writes `NAME_POSITIONS`, `NAME_NORMALS`, `NAME_INDICES` and
-//! `NAME: Mesh<'static>` (NAME upper-cased) to standard output; `INPUT` `-`
-//! reads standard input. `--mesh-type` sets the path of `Mesh` in the output
-//! (default `microraster::mesh::Mesh`; `crate::mesh::Mesh` inside microraster).
-//! `--meshlets` also writes the mesh's clusters (`NAME_MESHLETS`,
-//! `NAME_MESHLET_VERTICES`, `NAME_MESHLET_TRIANGLES`) and
-//! `NAME_MESHLET_MESH: MeshletMesh<'static>` (see `obj::meshlets`).
-//! `--fx` (with `--meshlets`) stores positions and normals in 16.16
-//! (`Mesh<'static, Fx>`, converted at compile time from the same `f32`
-//! literals), for the fixed-point vertex stage of a part without an FPU,
-//! which then reads them without a conversion.
+//! Writes `NAME_POSITIONS`, `NAME_NORMALS`, `NAME_INDICES`, the plain
+//! `NAME_MESH: Mesh<'static>`, the clusters (`NAME_MESHLETS`,
+//! `NAME_MESHLET_VERTICES`, `NAME_MESHLET_TRIANGLES`, see `obj::meshlets`)
+//! and `NAME: ValidMeshletMesh<'static>` (NAME upper-cased) to standard
+//! output: `Object::new(&NAME, colour)` draws it in a `View3d` at the
+//! meshlet path's speed. `INPUT` `-` reads standard input. `--plain` writes
+//! the plain mesh alone, as `NAME: Mesh<'static>` (`--meshlets`, the
+//! default, is still accepted). `--mesh-type` sets the path of `Mesh` in
+//! the output (default `microraster::mesh::Mesh`; `crate::mesh::Mesh`
+//! inside microraster); the cluster types come from its module. `--fx`
+//! stores positions and normals in 16.16 (`ValidMeshletMesh<'static, Fx>`,
+//! converted at compile time from the same `f32` literals), for the
+//! fixed-point vertex stage of a part without an FPU, which then reads them
+//! without a conversion.
 //! See `obj::parse` for the OBJ subset understood. Installed by
 //! `cargo install --path tools`; `microraster_tools::obj` is the same
 //! conversion for build scripts. Errors name the line and
 //! exit with status 1 (2 for bad arguments). Triangles wound against the
 //! file's normals are reported with a warning on stderr (not an error: the
-//! output is still written), with their count; `--flip-winding` reverses
-//! them (reported on stderr too).
+//! output is still written, but its clusters fail their compile-time
+//! check), with their count; `--flip-winding` reverses them (reported on
+//! stderr too).
 
 use std::io::{Read, Write};
 use std::path::Path;
@@ -30,7 +35,7 @@ use std::process::ExitCode;
 
 use microraster_tools::obj::{Options, convert_bytes, emit};
 
-const USAGE: &str = "usage: obj2rs INPUT.obj NAME [--mesh-type PATH] [--meshlets [--fx]] [--flip-winding] > out.rs   (INPUT `-` = stdin)";
+const USAGE: &str = "usage: obj2rs INPUT.obj NAME [--plain | --fx] [--mesh-type PATH] [--flip-winding] > out.rs   (INPUT `-` = stdin)";
 
 fn main() -> ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();
@@ -60,7 +65,7 @@ fn report(msg: &str) {
 fn run(args: &[String]) -> Result<(), Failure> {
     let mut positional = Vec::new();
     let mut mesh_type = emit::DEFAULT_MESH_TYPE.to_string();
-    let mut with_meshlets = false;
+    let mut with_meshlets = true;
     let mut flip_winding = false;
     let mut fx = false;
     let mut it = args.iter();
@@ -74,7 +79,9 @@ fn run(args: &[String]) -> Result<(), Failure> {
                 mesh_type =
                     it.next().ok_or_else(|| Failure::Usage("--mesh-type needs a value".into()))?.clone();
             }
-            "--meshlets" => with_meshlets = true,
+            // The default since clusters are what a `View3d` draws fastest.
+            "--meshlets" => {}
+            "--plain" => with_meshlets = false,
             "--flip-winding" => flip_winding = true,
             "--fx" => fx = true,
             s if s.starts_with("--") => return Err(Failure::Usage(format!("unknown option `{s}`"))),

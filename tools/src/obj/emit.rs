@@ -45,12 +45,27 @@ pub fn rust_source_with(
     mesh_type: &str,
     fx: bool,
 ) -> Result<String, String> {
+    mesh_source(mesh, name, source, mesh_type, fx, false)
+}
+
+/// [`rust_source_with`]; with `clustered` the mesh static is `NAME_MESH`,
+/// leaving `NAME` to the validated clusters that
+/// [`meshlets::rust_source_with`](super::meshlets::rust_source_with) writes
+/// after it (`obj2rs`'s default output).
+pub fn mesh_source(
+    mesh: &ObjMesh,
+    name: &str,
+    source: &str,
+    mesh_type: &str,
+    fx: bool,
+    clustered: bool,
+) -> Result<String, String> {
     let name = static_name(name)?;
     if !is_type_path(mesh_type) {
         return Err(format!("`{mesh_type}` is not a valid type path"));
     }
     let mut s = String::new();
-    write_source(&mut s, mesh, &name, source, mesh_type, fx).map_err(|e| e.to_string())?;
+    write_source(&mut s, mesh, &name, source, mesh_type, fx, clustered).map_err(|e| e.to_string())?;
     Ok(s)
 }
 
@@ -78,6 +93,7 @@ fn write_source(
     source: &str,
     mesh_type: &str,
     fx: bool,
+    clustered: bool,
 ) -> fmt::Result {
     let (nv, nt) = (mesh.positions.len(), mesh.indices.len());
     let ([cx, cy, cz], r) = if fx { fx_positions(mesh).1 } else { mesh.bounding_sphere };
@@ -120,11 +136,20 @@ fn write_source(
     }
     writeln!(s, "];")?;
     writeln!(s)?;
-    writeln!(s, "/// The mesh converted from {source:?}.")?;
-    if fx {
-        writeln!(s, "pub static {name}: {mesh_type}<'static, {ty}> = {mesh_type}::new_fx(")?;
+    // Clustered, `NAME` is the validated clusters (written after this).
+    let mesh_name = if clustered { format!("{name}_MESH") } else { name.to_string() };
+    if clustered {
+        writeln!(
+            s,
+            "/// The mesh converted from {source:?}, as a plain mesh (for the binned path; [`{name}`] is it in clusters)."
+        )?;
     } else {
-        writeln!(s, "pub static {name}: {mesh_type}<'static> = {mesh_type}::new(")?;
+        writeln!(s, "/// The mesh converted from {source:?}.")?;
+    }
+    if fx {
+        writeln!(s, "pub static {mesh_name}: {mesh_type}<'static, {ty}> = {mesh_type}::new_fx(")?;
+    } else {
+        writeln!(s, "pub static {mesh_name}: {mesh_type}<'static> = {mesh_type}::new(")?;
     }
     writeln!(s, "    &{name}_POSITIONS,")?;
     writeln!(s, "    &{name}_NORMALS,")?;

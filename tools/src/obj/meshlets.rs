@@ -1,5 +1,6 @@
-//! `obj2rs --meshlets`: the mesh's clusters ([`build_meshlets`]) as Rust
-//! statics, and the winding check behind the converter's warning.
+//! `obj2rs`'s default output: the mesh's clusters ([`build_meshlets`]) as
+//! Rust statics, validated at compile time, and the winding check behind
+//! the converter's warning.
 
 use std::fmt::Write;
 
@@ -81,25 +82,35 @@ pub fn winding_warning(mesh: &ObjMesh, meshlets: bool) -> Option<String> {
             "warning: {n} of {} triangles are wound clockwise seen from the side their normals point to \
              (back-face culling hides them from the front; `obj2rs --flip-winding` reverses them){}",
             mesh.indices.len(),
-            if meshlets { "; the MeshletMesh fails validation (WindingMismatch)" } else { "" }
+            if meshlets {
+                "; the clusters fail validation at compile time, a build error (`--plain` writes the plain mesh \
+                 alone) (WindingMismatch)"
+            } else {
+                ""
+            }
         )
     })
 }
 
 /// Rust source defining `NAME_MESHLETS`, `NAME_MESHLET_VERTICES`,
-/// `NAME_MESHLET_TRIANGLES` and `NAME_MESHLET_MESH: MeshletMesh<'static>`
-/// around the `NAME` mesh static; `Meshlet` and `MeshletMesh` are taken
-/// from the module of `mesh_type`.
+/// `NAME_MESHLET_TRIANGLES` and `NAME: ValidMeshletMesh<'static>`, the
+/// clusters around the `NAME_MESH` static ([`emit::mesh_source`] with
+/// `clustered`), validated at compile time: an invalid mesh (one wound
+/// against its normals: [`winding_warning`]) is a build error naming it.
+/// `Meshlet`, `MeshletMesh` and `ValidMeshletMesh` are taken from the module
+/// of `mesh_type`.
+///
+/// [`emit::mesh_source`]: super::emit::mesh_source
 pub fn rust_source(c: &Clusters, name: &str, mesh_type: &str) -> Result<String, String> {
     rust_source_with(c, name, mesh_type, false)
 }
 
-/// [`rust_source`]; with `fx` around a mesh in 16.16 (`MeshletMesh<'static,
+/// [`rust_source`]; with `fx` around a mesh in 16.16 (`ValidMeshletMesh<'static,
 /// Fx>`, `obj2rs --fx`).
 pub fn rust_source_with(c: &Clusters, name: &str, mesh_type: &str, fx: bool) -> Result<String, String> {
     let name = static_name(name)?;
     let (module, root) = type_paths(mesh_type);
-    let storage = if fx { format!(", {root}math::Fx") } else { String::new() };
+    let (storage, new) = if fx { (format!(", {root}math::Fx"), "new_fx") } else { (String::new(), "new") };
     let (nc, nl, nt) = (c.meshlets.len(), c.vertices.len(), c.triangles.len());
     let mut s = String::new();
     let w = &mut s;
@@ -126,15 +137,24 @@ pub fn rust_source_with(c: &Clusters, name: &str, mesh_type: &str, fx: bool) -> 
         let row: Vec<String> = chunk.iter().map(|[a, b, d]| format!("[{a}, {b}, {d}]")).collect();
         let _ = writeln!(w, "    {},", row.join(", "));
     }
-    let _ = writeln!(w, "];\n\n/// [`{name}`] with its clusters.");
+    let _ = writeln!(w, "];\n");
+    let _ = writeln!(w, "/// [`{name}_MESH`] in clusters, validated at compile time: draw it with `View3d`");
+    let _ = writeln!(w, "/// (`Object::new(&{name}, colour)`) or `Pipeline::draw_meshlets`.");
+    // A big mesh's checks run for seconds of constant evaluation.
+    let _ = writeln!(w, "#[allow(long_running_const_eval)]\n#[rustfmt::skip]");
     let _ = writeln!(
         w,
-        "pub static {name}_MESHLET_MESH: {module}MeshletMesh<'static{storage}> = {module}MeshletMesh {{"
+        "pub static {name}: {module}ValidMeshletMesh<'static{storage}> = match {module}ValidMeshletMesh::{new}({module}MeshletMesh {{"
     );
     let _ = writeln!(
         w,
-        "    mesh: {name},\n    meshlets: &{name}_MESHLETS,\n    vertices: &{name}_MESHLET_VERTICES,"
+        "    mesh: {name}_MESH,\n    meshlets: &{name}_MESHLETS,\n    vertices: &{name}_MESHLET_VERTICES,"
     );
-    let _ = writeln!(w, "    triangles: &{name}_MESHLET_TRIANGLES,\n}};");
+    let _ = writeln!(w, "    triangles: &{name}_MESHLET_TRIANGLES,\n}}) {{\n    Ok(m) => m,");
+    let _ = writeln!(
+        w,
+        "    Err(_) => panic!(\"{name}: the mesh fails validation (triangles wound against their normals? see obj2rs's warning)\"),"
+    );
+    let _ = writeln!(w, "}};");
     Ok(s)
 }

@@ -1,10 +1,17 @@
-//! Wavefront OBJ → Rust source for a `static` [`Mesh`](microraster::mesh::Mesh)
-//! (the `obj2rs` binary, and [`convert`] for build scripts).
+//! Wavefront OBJ → Rust source for a `static` mesh in clusters
+//! ([`ValidMeshletMesh`](microraster::mesh::ValidMeshletMesh)) or a plain
+//! [`Mesh`](microraster::mesh::Mesh) (the `obj2rs` binary, and [`convert`]
+//! for build scripts).
 //!
-//! The output defines `NAME_POSITIONS`, `NAME_NORMALS`, `NAME_INDICES` and
-//! `NAME: Mesh<'static>`; with [`Options::meshlets`] also the mesh's
-//! clusters and `NAME_MESHLET_MESH: MeshletMesh<'static>`. See [`parse`]
-//! for the OBJ subset understood.
+//! By default ([`Options::meshlets`]) the output defines `NAME_POSITIONS`,
+//! `NAME_NORMALS`, `NAME_INDICES`, the plain `NAME_MESH: Mesh<'static>`,
+//! the clusters (`NAME_MESHLETS`, `NAME_MESHLET_VERTICES`,
+//! `NAME_MESHLET_TRIANGLES`) and `NAME: ValidMeshletMesh<'static>`, checked
+//! at compile time: `Object::new(&NAME, colour)` in a `View3d` scene, or
+//! `Pipeline::draw_meshlets`, draws it cluster by cluster, skipping the
+//! clusters outside each band or facing away before any vertex work.
+//! Without clusters (`obj2rs --plain`) `NAME` is the plain `Mesh<'static>`.
+//! See [`parse`] for the OBJ subset understood.
 
 pub mod emit;
 pub mod meshlets;
@@ -20,15 +27,17 @@ pub struct Options {
     /// Path of `Mesh` in the output (default `microraster::mesh::Mesh`;
     /// `crate::mesh::Mesh` inside microraster).
     pub mesh_type: String,
-    /// Also write the clusters (`--meshlets`).
+    /// Write the clusters and make `NAME` the validated
+    /// `ValidMeshletMesh` (the default; `false` is `obj2rs --plain`: `NAME`
+    /// is the plain `Mesh`).
     pub meshlets: bool,
     /// Reverse the triangles wound against their normals before writing
     /// (`--flip-winding`, [`meshlets::flip_mismatches`]).
     pub flip_winding: bool,
     /// Positions and normals in 16.16 (`--fx`, for the fixed-point vertex
     /// stage, which then reads them without a conversion;
-    /// [`emit::rust_source_with`]). Needs [`Options::meshlets`]: 16.16 data
-    /// is drawn through the meshlet path.
+    /// [`emit::rust_source_with`]). Needs [`Options::meshlets`] (not
+    /// `--plain`): 16.16 data is drawn through the meshlet path.
     pub fx: bool,
 }
 
@@ -36,7 +45,7 @@ impl Default for Options {
     fn default() -> Self {
         Options {
             mesh_type: emit::DEFAULT_MESH_TYPE.to_string(),
-            meshlets: false,
+            meshlets: true,
             flip_winding: false,
             fx: false,
         }
@@ -60,8 +69,9 @@ pub struct Converted {
     pub flipped: usize,
 }
 
-/// Converts the OBJ file at `path` into Rust source for `static NAME: Mesh`
-/// (NAME is `name` upper-cased), with the default [`Options`].
+/// Converts the OBJ file at `path` into Rust source for `static NAME:
+/// ValidMeshletMesh` (NAME is `name` upper-cased) and the plain `NAME_MESH`,
+/// with the default [`Options`].
 ///
 /// Meant for `build.rs`, where nobody reads warnings: a winding that
 /// disagrees with the file's normals is an error here (the `obj2rs` binary
@@ -74,7 +84,8 @@ pub struct Converted {
 ///
 /// ```
 /// let src = microraster_tools::obj::convert(concat!(env!("CARGO_MANIFEST_DIR"), "/../assets/tetra.obj"), "tetra")?;
-/// assert!(src.contains("pub static TETRA: microraster::mesh::Mesh<'static>"));
+/// assert!(src.contains("pub static TETRA: microraster::mesh::ValidMeshletMesh<'static>"));
+/// assert!(src.contains("pub static TETRA_MESH: microraster::mesh::Mesh<'static>"));
 /// # Ok::<(), microraster_tools::Error>(())
 /// ```
 pub fn convert(path: impl AsRef<Path>, name: &str) -> Result<String, Error> {
@@ -100,6 +111,11 @@ pub fn convert(path: impl AsRef<Path>, name: &str) -> Result<String, Error> {
 /// let obj = b"v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 -1\nf 1//1 2//1 3//1\n";
 /// let c = convert_bytes(obj, "tri", "tri.obj", &Options::default())?;
 /// assert!(c.source.contains("pub static TRI_INDICES"));
+/// // `NAME` is the mesh in clusters unless told otherwise.
+/// assert!(c.source.contains("pub static TRI: microraster::mesh::ValidMeshletMesh<'static>"));
+/// let plain = Options { meshlets: false, ..Options::default() };
+/// let c = convert_bytes(obj, "tri", "tri.obj", &plain)?;
+/// assert!(c.source.contains("pub static TRI: microraster::mesh::Mesh<'static>"));
 /// assert!(c.winding_warning.is_some());
 /// // Reversed on request: the mesh then passes `Mesh::check_winding`.
 /// let flip = Options { flip_winding: true, ..Options::default() };
@@ -110,14 +126,15 @@ pub fn convert(path: impl AsRef<Path>, name: &str) -> Result<String, Error> {
 pub fn convert_bytes(bytes: &[u8], name: &str, source: &str, options: &Options) -> Result<Converted, Error> {
     if options.fx && !options.meshlets {
         return Err(Error(
-            "16.16 output (`--fx`) needs `--meshlets`: it is drawn through the meshlet path".into(),
+            "16.16 output (`--fx`) needs the clusters (not `--plain`): it is drawn through the meshlet path"
+                .into(),
         ));
     }
     let text = String::from_utf8_lossy(bytes);
     let mut mesh = parse::parse_obj(&text).map_err(|e| Error(e.to_string()))?;
     let flipped = if options.flip_winding { meshlets::flip_mismatches(&mut mesh) } else { 0 };
-    let mut out =
-        emit::rust_source_with(&mesh, name, source, &options.mesh_type, options.fx).map_err(Error)?;
+    let (ty, fx) = (&options.mesh_type, options.fx);
+    let mut out = emit::mesh_source(&mesh, name, source, ty, fx, options.meshlets).map_err(Error)?;
     if options.meshlets {
         let clusters =
             if options.fx { meshlets::build_fx(&mesh) } else { meshlets::build(&mesh) }.map_err(Error)?;

@@ -1,6 +1,6 @@
 //! The 3D passes: screen triangles depth-tested into each band, binned once
-//! per frame ([`Triangles3d`]), once per band ([`PerBand3d`]) or drawn
-//! straight into the band ([`Direct3d`]).
+//! per frame ([`Triangles3d`]) or drawn straight into the band
+//! ([`Direct3d`]: meshlets, or the vertex stage run per band).
 
 use core::marker::PhantomData;
 
@@ -71,8 +71,10 @@ where
 /// `draw` gets the band as a [`Band3d`] (its depth cleared to far) and
 /// draws into it, typically with
 /// [`Pipeline::draw_meshlets`](crate::pipeline::Pipeline::draw_meshlets)
-/// for each mesh, or collects the band's triangles (rows
-/// [`Band3d::rows`]) and draws them with [`Band3d::draw_all`]. The RAM a
+/// for each mesh, or collects the band's triangles (set
+/// [`Pipeline::rows`](crate::pipeline::Pipeline::rows) to
+/// [`Band3d::rows`] and call `draw_valid_mesh` into small bins of your own)
+/// and draws them with [`Band3d::draw_all`] (the second example). The RAM a
 /// frame needs is the band, its depth rows and what `draw` keeps, whatever
 /// the scene's size. Colour is interpolated as `interp` says.
 ///
@@ -92,6 +94,38 @@ where
 /// });
 /// Renderer::new(10, Gray8::new(0)).render(frame, &mut band, &mut MockDisplay::new())?;
 /// assert_eq!(bands, 3);
+/// # Ok::<(), microraster::RenderError<core::convert::Infallible>>(())
+/// ```
+///
+/// A plain mesh with the vertex stage run once per band, its triangles in
+/// bins that hold one band's (the image is that of [`Triangles3d`] over the
+/// frame's bins; vertex work grows with the number of bands):
+///
+/// ```
+/// use embedded_graphics::mock_display::MockDisplay;
+/// use embedded_graphics::pixelcolor::{Rgb565, RgbColor};
+/// use microraster::depth::{Depth16, DepthBand, DepthState};
+/// use microraster::math::{Mat4, Vec3, transform};
+/// use microraster::pipeline::Pipeline;
+/// use microraster::raster3d::{Affine, ScreenTriangle};
+/// use microraster::render::Direct3d;
+/// use microraster::view3d::CUBE;
+/// use microraster::{Band, Renderer};
+/// let eye = transform::look_at(Vec3::new(2.0, 2.0, 3.0), Vec3::new(0.0, 0.0, 0.0), Vec3::new(0.0, 1.0, 0.0))?;
+/// let mut pipeline = Pipeline::<f32, 4>::perspective(eye, 1.0, 1.0, 10.0, 16, 16)?;
+/// let mut bins = microraster::heapless::Vec::<ScreenTriangle<4>, 12>::new();
+/// let mut band = Band::<Rgb565, 16, 4>::new(Rgb565::BLACK);
+/// let mut depth = DepthBand::<Depth16, 16, 4>::new();
+/// let frame = Direct3d::new(&mut depth, DepthState::LESS_WRITE, Affine, |band| {
+///     bins.clear();
+///     pipeline.rows = Some(band.rows());
+///     pipeline.draw_valid_mesh(&CUBE, &Mat4::IDENTITY, Rgb565::RED, &mut bins)?;
+///     band.draw_all(&bins);
+///     Ok(())
+/// });
+/// let mut display = MockDisplay::new();
+/// Renderer::new(16, Rgb565::BLACK).render(frame, &mut band, &mut display)?;
+/// assert_ne!(display.get_pixel(embedded_graphics::prelude::Point::new(8, 8)), Some(Rgb565::BLACK));
 /// # Ok::<(), microraster::RenderError<core::convert::Infallible>>(())
 /// ```
 pub struct Direct3d<'a, F: DepthFormat, M, G, const W: usize, const H: usize> {
@@ -127,81 +161,6 @@ where
 {
     fn draw(&mut self, band: &mut BandView<'_, C, W>, _: &Renderer<C>) -> Result<(), Error> {
         (self.draw)(&mut band3d::<C, F, M, W, H>(band, self.depth, self.state))
-    }
-}
-
-/// The vertex stage run once per band instead of once per frame, for parts
-/// whose RAM cannot hold a whole frame's bins: for each band
-/// `geometry(y0, y1, bins)` appends the triangles touching rows `y0..y1`
-/// (set [`Pipeline::rows`](crate::pipeline::Pipeline::rows) to
-/// `Some((y0, y1 − 1))` and call `draw_mesh`) to `bins`, cleared before each
-/// band; they are drawn as [`Triangles3d`] draws them. Vertex work grows
-/// with the number of bands; the image is the same as with [`Triangles3d`].
-/// The first error `geometry` returns is the frame's
-/// ([`RenderError::Input`](crate::RenderError::Input)).
-///
-/// ```
-/// use embedded_graphics::mock_display::MockDisplay;
-/// use embedded_graphics::pixelcolor::Gray8;
-/// use microraster::depth::{Depth16, DepthBand, DepthState};
-/// use microraster::raster3d::{Affine, ScreenTriangle};
-/// use microraster::render::PerBand3d;
-/// use microraster::{Band, Renderer};
-/// let mut bins = heapless::Vec::<ScreenTriangle<4>, 64>::new();
-/// let mut band = Band::<Gray8, 8, 4>::new(Gray8::new(0));
-/// let mut depth = DepthBand::<Depth16, 8, 4>::new();
-/// let mut rows = Vec::new();
-/// let frame = PerBand3d::new(&mut bins, &mut depth, DepthState::LESS_WRITE, Affine, |y0, y1, _bins| {
-///     rows.push((y0, y1)); // pipeline.rows = Some((y0, y1 - 1)); pipeline.draw_mesh(.., bins)
-///     Ok(())
-/// });
-/// Renderer::new(10, Gray8::new(0)).render(frame, &mut band, &mut MockDisplay::new())?;
-/// assert_eq!(rows, [(0, 4), (4, 8), (8, 10)]);
-/// # Ok::<(), microraster::RenderError<core::convert::Infallible>>(())
-/// ```
-pub struct PerBand3d<'a, F: DepthFormat, M, G, const S: u32, const N: usize, const W: usize, const H: usize> {
-    bins: &'a mut heapless::Vec<ScreenTriangle<S>, N>,
-    depth: &'a mut DepthBand<F, W, H>,
-    state: DepthState,
-    geometry: G,
-    _m: PhantomData<M>,
-}
-
-impl<'a, F, M, G, const S: u32, const N: usize, const W: usize, const H: usize>
-    PerBand3d<'a, F, M, G, S, N, W, H>
-where
-    F: DepthFormat,
-    M: Interpolation,
-    G: FnMut(i32, i32, &mut heapless::Vec<ScreenTriangle<S>, N>) -> Result<(), Error>,
-{
-    /// `geometry` run for each band into `bins`, drawn with `depth` as
-    /// `state` says, colour interpolated as `interp` says.
-    pub fn new(
-        bins: &'a mut heapless::Vec<ScreenTriangle<S>, N>,
-        depth: &'a mut DepthBand<F, W, H>,
-        state: DepthState,
-        interp: M,
-        geometry: G,
-    ) -> Self {
-        let _ = interp; // a value, so the call needs no turbofish
-        PerBand3d { bins, depth, state, geometry, _m: PhantomData }
-    }
-}
-
-impl<C, F, M, G, const S: u32, const N: usize, const W: usize, const H: usize> Pass<C, W, H>
-    for PerBand3d<'_, F, M, G, S, N, W, H>
-where
-    C: Interpolate,
-    F: DepthFormat,
-    M: Interpolation,
-    G: FnMut(i32, i32, &mut heapless::Vec<ScreenTriangle<S>, N>) -> Result<(), Error>,
-{
-    fn draw(&mut self, band: &mut BandView<'_, C, W>, _: &Renderer<C>) -> Result<(), Error> {
-        let (y0, y1) = (band.y0(), band.y1());
-        self.bins.clear();
-        (self.geometry)(y0, y1, self.bins)?;
-        band3d::<C, F, M, W, H>(band, self.depth, self.state).draw_all(self.bins);
-        Ok(())
     }
 }
 
