@@ -87,6 +87,7 @@ pub static CUBE_M_MESH: microraster::mesh::Mesh<'static> = microraster::mesh::Me
 
 /// The clusters of [`CUBE_M`]: offsets, counts, sphere and normal cone.
 #[rustfmt::skip]
+#[allow(clippy::approx_constant)]
 pub static CUBE_M_MESHLETS: [microraster::mesh::Meshlet; 1] = [
     microraster::mesh::Meshlet { vertex_offset: 0, triangle_offset: 0, vertex_count: 24, triangle_count: 12, sphere: ([0.0, 0.0, 0.0], 1.7320508), cone: ([0.0, 0.0, 1.0], 1.0) },
 ];

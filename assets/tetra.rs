@@ -39,6 +39,7 @@ pub static TETRA_MESH: microraster::mesh::Mesh<'static> = microraster::mesh::Mes
 
 /// The clusters of [`TETRA`]: offsets, counts, sphere and normal cone.
 #[rustfmt::skip]
+#[allow(clippy::approx_constant)]
 pub static TETRA_MESHLETS: [microraster::mesh::Meshlet; 1] = [
     microraster::mesh::Meshlet { vertex_offset: 0, triangle_offset: 0, vertex_count: 4, triangle_count: 4, sphere: ([0.0, 0.0, 0.0], 1.7320508), cone: ([0.0, 0.0, 1.0], 1.0) },
 ];

@@ -40987,6 +40987,7 @@ pub static KNOT20K_MESH: microraster::mesh::Mesh<'static> = microraster::mesh::M
 
 /// The clusters of [`KNOT20K`]: offsets, counts, sphere and normal cone.
 #[rustfmt::skip]
+#[allow(clippy::approx_constant)]
 pub static KNOT20K_MESHLETS: [microraster::mesh::Meshlet; 216] = [
     microraster::mesh::Meshlet { vertex_offset: 0, triangle_offset: 0, vertex_count: 64, triangle_count: 100, sphere: ([0.44669998, 0.0203, -0.022300005], 0.21421911), cone: ([-0.99802345, -0.058094226, -0.023962721], 0.8945189) },
     microraster::mesh::Meshlet { vertex_offset: 64, triangle_offset: 100, vertex_count: 64, triangle_count: 99, sphere: ([0.46045, -0.21470001, 0.18650001], 0.2142423), cone: ([-0.99449563, -0.09957753, -0.032600302], 0.91128826) },

@@ -10267,6 +10267,7 @@ pub static KNOT5K_MESH: microraster::mesh::Mesh<'static> = microraster::mesh::Me
 
 /// The clusters of [`KNOT5K`]: offsets, counts, sphere and normal cone.
 #[rustfmt::skip]
+#[allow(clippy::approx_constant)]
 pub static KNOT5K_MESHLETS: [microraster::mesh::Meshlet; 55] = [
     microraster::mesh::Meshlet { vertex_offset: 0, triangle_offset: 0, vertex_count: 64, triangle_count: 100, sphere: ([0.66835, 0.1573, 0.08709999], 0.40596244), cone: ([-0.37927383, 0.6735789, 0.63438386], 1.0) },
     microraster::mesh::Meshlet { vertex_offset: 64, triangle_offset: 100, vertex_count: 64, triangle_count: 98, sphere: ([0.6907396, 0.5342452, -0.21764897], 0.42722705), cone: ([0.14355652, 0.40065002, 0.904915], 1.0) },

@@ -115,7 +115,9 @@ pub fn rust_source_with(c: &Clusters, name: &str, mesh_type: &str, fx: bool) -> 
     let mut s = String::new();
     let w = &mut s;
     let _ = writeln!(w, "\n/// The clusters of [`{name}`]: offsets, counts, sphere and normal cone.");
-    let _ = writeln!(w, "#[rustfmt::skip]\npub static {name}_MESHLETS: [{module}Meshlet; {nc}] = [");
+    // Spheres and cones are data: one may happen to read like `LN_2`.
+    let _ = writeln!(w, "#[rustfmt::skip]\n#[allow(clippy::approx_constant)]");
+    let _ = writeln!(w, "pub static {name}_MESHLETS: [{module}Meshlet; {nc}] = [");
     for m in &c.meshlets {
         let (([x, y, z], r), ([a, b, d], k)) = (m.sphere, m.cone);
         let _ = writeln!(
