@@ -7,9 +7,9 @@ use super::Vertex::{F32, Fx as Fix};
 #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
 use super::{Eye, Interp, Vertex};
 use super::{Stage, Work};
-use microraster::raster3d::Precision::{Exact, Fast};
 #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
 use microraster::raster3d::Precision;
+use microraster::raster3d::Precision::{Exact, Fast};
 
 impl Work {
     /// How the frame is produced, for the table.
@@ -177,4 +177,3 @@ const fn describe_tier(p: Precision, eye: Eye, t: Vertex, i: Interp) -> &'static
         (Exact, Eye::Standard, ..) => "meshlets per band, exact tier, by tier",
     }
 }
-
