@@ -37,8 +37,8 @@ impl FastQuotient<f32> for f32 {
         // Snapping's and depth's scales are u32; others are the exact path's.
         let s = u32::try_from(scale).ok()? as f32;
         let v = n * (1.0 / self) * s;
-        // False for NaN and infinity.
-        if !(v.abs() <= (1u64 << 40) as f32) {
+        // As the exact quotient: NaN and beyond 2^40 (infinity too) fail.
+        if v.is_nan() || v.abs() > (1u64 << 40) as f32 {
             return None;
         }
         Some(super::round_even_f32(v))

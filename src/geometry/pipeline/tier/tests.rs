@@ -45,7 +45,7 @@ fn snaps_within_one<T: Scalar>(seed: u64) {
     let (mut n, mut moved) = (0u32, 0u32);
     for i in 0..300_000u32 {
         let w = [rng.range(1.0, 20.0), rng.range(1.0, 1.2), rng.range(15.0, 20.0)][i as usize % 3];
-        let span = [1.2, g, 1.0][i as usize % 3] as f64;
+        let span = [1.2, g, 1.0][i as usize % 3];
         let mut x = rng.range(-span, span) * w;
         let y = rng.range(-span, span) * w;
         match i % 4 {
@@ -83,7 +83,7 @@ fn fast_snaps_within_one_subpixel_fx() {
 fn fast_routes_snap_alike() {
     let p = pipeline::<f32>().with_origin(3, -7);
     let pre = PreSnap::new::<f32>(p.size, p.origin, 4);
-    let mut rng = Rng(0x0007_0E5);
+    let mut rng = Rng(0x0000_70E5);
     let mut inside = 0;
     for i in 0..300_000u32 {
         let w = rng.range(0.5, 30.0);
@@ -125,7 +125,7 @@ fn beyond_the_fast_range_snaps_exactly() {
 /// both viewers; the specular floor is what it says.
 #[test]
 fn fast_lighting_within_bound() {
-    let mut rng = Rng(0x0C01_0A5);
+    let mut rng = Rng(0x00C0_10A5);
     let (mut worst, mut worst_fx, mut spec) = (0.0f32, 0.0f32, 0);
     for i in 0..3_000u32 {
         let exp = [1, 2, 5, 8, 16, 24, 33, 64, 128][i as usize % 9];
@@ -180,5 +180,5 @@ fn fast_lighting_within_bound() {
     assert!(worst <= 1.0 / 4096.0 && worst_fx <= 1.0 / 4096.0, "f32 {worst:e}, Fx {worst_fx:e}");
     // Not vacuous: the tiers differ, and highlights were lit.
     assert!(worst > 0.0 && worst_fx > 0.0 && spec > 1000, "{worst:e} {worst_fx:e} {spec}");
-    assert!(FAST_SPEC_FLOOR <= 1.0 / 4096.0);
+    const { assert!(FAST_SPEC_FLOOR <= 1.0 / 4096.0) };
 }
