@@ -28,6 +28,7 @@ use super::scene3d::front3d;
 use super::scene3d::{cached_vertex_stage, frame3d, per_band3d, vertex3d, vertex3d_per_band};
 #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
 use super::tiers::{frame3d_tier, knot_tall_tier, knot_tier};
+#[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
 use super::ways;
 use super::{Sink, TALL_20, TALL_32, TALL_48, TALL_240, Work};
 use crate::workload::{self, DEPTH_STATE, S};
