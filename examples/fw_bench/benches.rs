@@ -326,9 +326,7 @@ pub const M0: &[Bench] = &[
     bench("band loop", Work::Clear),
     bench("mixed", Work::Streamed2d(scenes::mixed)),
     bench("scene3d", Work::PerBand3d(Fix, Aff)),
-    bench("scene3d", Work::PerBand3d(F32, Aff)),
     bench("scene3d", Work::VertexPerBand3d(Fix)),
-    bench("scene3d", Work::VertexPerBand3d(F32)),
 ];
 
 /// Primitives the Cortex-M4F configuration can hold ([`Work::Frame2d`]).

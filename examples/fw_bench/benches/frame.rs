@@ -213,21 +213,25 @@ fn frame_other<const W: usize, const H: usize, const N: usize, const P: usize>(
         Work::Vertex3d(F32) => vertex3d::<f32, W, N>(height, b.bins),
         #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
         Work::Vertex3d(Fix) => vertex3d::<Fx, W, N>(height, b.bins),
+        #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
         Work::Vertex3dCached => {
             let cache = b.cache.as_deref_mut().ok_or(Error::BufferTooSmall)?;
             black_box(cached_vertex_stage::<CACHE_VERTICES, W, N>(height, cache, b.bins)?);
             Ok(())
         }
+        #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
         Work::Vertex3dChunked => {
             let cache = b.chunk.as_deref_mut().ok_or(Error::BufferTooSmall)?;
             black_box(cached_vertex_stage::<MAX_MESHLET_VERTICES, W, N>(height, cache, b.bins)?);
             Ok(())
         }
+        #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
         Work::Frame3dChunked => {
             let cache = b.chunk.as_deref_mut().ok_or(Error::BufferTooSmall)?;
             cached_vertex_stage::<MAX_MESHLET_VERTICES, W, N>(height, cache, b.bins)?;
             r.render(Triangles3d::new(b.bins, b.depth, DEPTH_STATE, Affine), b.band, sink).map_err(input)
         }
+        #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
         Work::VertexPerBand3d(F32) => vertex3d_per_band::<f32, W, H, N>(height, b.bins, |_, _| ()),
         Work::VertexPerBand3d(Fix) => vertex3d_per_band::<Fx, W, H, N>(height, b.bins, |_, _| ()),
         #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
@@ -240,15 +244,23 @@ fn frame_other<const W: usize, const H: usize, const N: usize, const P: usize>(
         Work::Frame3d(Fix, Aff) => frame3d::<Fx, Affine, W, H, N, P>(r, b, sink),
         #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
         Work::PerBand3d(F32, Persp) => per_band3d::<f32, PerspectiveCorrect, W, H, N, P>(r, b, sink),
+        #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
         Work::PerBand3d(F32, Aff) => per_band3d::<f32, Affine, W, H, N, P>(r, b, sink),
         #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
         Work::PerBand3d(Fix, Persp) => per_band3d::<Fx, PerspectiveCorrect, W, H, N, P>(r, b, sink),
         Work::PerBand3d(Fix, Aff) => per_band3d::<Fx, Affine, W, H, N, P>(r, b, sink),
         // Rows not on the Cortex-M0's list, left out of its build: with both
         // accuracy tiers' code the benchmark would not fit the micro:bit's
-        // 256 KB of flash.
+        // 256 KB of flash (soft float's f32 against Fx: `firmware.sh sweep`).
         #[cfg(not(any(not(target_os = "none"), target_abi = "eabihf")))]
-        Work::Vertex3d(_) | Work::Frame3d(..) | Work::PerBand3d(_, Persp) => Err(Error::InvalidParameter),
+        Work::Vertex3d(_)
+        | Work::Frame3d(..)
+        | Work::PerBand3d(_, Persp)
+        | Work::PerBand3d(F32, _)
+        | Work::VertexPerBand3d(F32)
+        | Work::Vertex3dCached
+        | Work::Vertex3dChunked
+        | Work::Frame3dChunked => Err(Error::InvalidParameter),
         // The knot's 460 KB of flash data do not fit the micro:bit: Cortex-M4F only.
         #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
         Work::Meshlets(t, i) => match (t, i, b.cluster.as_mut().ok_or(Error::BufferTooSmall)?) {
