@@ -76,7 +76,7 @@ impl<C: Interpolate, const W: usize, const H: usize> View3d<C, W, H> {
     /// [`Precision::Fast`] (cheaper arithmetic within the error bounds
     /// [`Precision`] states; coverage exact for its own snapped vertices).
     /// The frame is the explicit API's with
-    /// [`Pipeline::with_precision`] ([`View3d::pipeline`] hands it out).
+    /// [`Pipeline::with_precision`](crate::pipeline::Pipeline::with_precision) ([`View3d::pipeline`] hands it out).
     ///
     /// ```
     /// use embedded_graphics::pixelcolor::{Rgb565, RgbColor};
