@@ -7,10 +7,12 @@
 //! firmware benchmark's rows (`examples/fw_bench`, `docs/data/fw-bench.tsv`,
 //! [`FwBench`]). Issue 12's rows (the 20k-triangle knot, scene 3 against the
 //! f64 reference) are [`issue12`]; issue 61's (both accuracy tiers against
-//! TGX's fixed counts on the same knot) are [`issue61`].
+//! TGX's fixed counts on the same knot) are [`issue61`]; issue 62's (the 2D
+//! frames against the wire, damage regions) are [`issue62`].
 
 mod issue12;
 mod issue61;
+mod issue62;
 
 pub(crate) use issue61::group;
 
@@ -105,6 +107,8 @@ pub fn section(
     targets.push_str(&rows12);
     let (rows61, why61) = issue61::issue61(peers, counts, fw);
     targets.push_str(&rows61);
+    let (rows62, why62) = issue62::issue62(fw);
+    targets.push_str(&rows62);
     w.push_str(&targets);
     w.push('\n');
     // Why the missed ones are missed, from this run's numbers.
@@ -135,6 +139,7 @@ pub fn section(
     );
     w.push_str(&why12);
     w.push_str(&why61);
+    w.push_str(&why62);
     let _ = writeln!(
         w,
         "Slice-fill ceiling: `fill` of the whole {W} × {H} `Rgb565` buffer takes {} µs, {:.2} pixels per ns. \
