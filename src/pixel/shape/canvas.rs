@@ -115,9 +115,80 @@ impl<C: Interpolate, const W: usize> Canvas<C> for BandView<'_, C, W> {
 /// assert!(edge.luma() > 0 && edge.luma() < 255);
 /// # Ok::<(), microraster::Error>(())
 /// ```
+///
+/// Opaque spans of one colour that continue each other row below row (same
+/// columns) reach the target as one rectangle: a solid pixel-aligned
+/// rectangle is one `fill_solid` call, as `embedded-graphics` draws it. The
+/// last rectangle is sent by [`TargetCanvas::finish`] (or when the canvas is
+/// dropped), before any other write.
+///
+/// ```
+/// use embedded_graphics::{pixelcolor::BinaryColor, prelude::*, primitives::Rectangle};
+/// use microraster::shape::{Rect, Shape, ShapeStyle, TargetCanvas};
+/// # struct Frame([[bool; 8]; 8], usize);
+/// # impl OriginDimensions for Frame {
+/// #     fn size(&self) -> Size { Size::new(8, 8) }
+/// # }
+/// # impl DrawTarget for Frame {
+/// #     type Color = BinaryColor;
+/// #     type Error = core::convert::Infallible;
+/// #     fn draw_iter<I: IntoIterator<Item = Pixel<BinaryColor>>>(&mut self, px: I) -> Result<(), Self::Error> {
+/// #         for Pixel(p, c) in px { self.0[p.y as usize][p.x as usize] = c.is_on(); }
+/// #         Ok(())
+/// #     }
+/// #     fn fill_solid(&mut self, r: &Rectangle, c: BinaryColor) -> Result<(), Self::Error> {
+/// #         self.1 += 1;
+/// #         self.fill_contiguous(r, core::iter::repeat(c))
+/// #     }
+/// # }
+/// // `Frame` counts its `fill_solid` calls in `.1`.
+/// let mut frame = Frame([[false; 8]; 8], 0);
+/// let card = Rect::new(1.0, 2.0, 5.0, 4.0)?.styled(ShapeStyle::fill(BinaryColor::On))?;
+/// let mut canvas = TargetCanvas::new(&mut frame);
+/// card.draw_on(&mut canvas);
+/// canvas.finish().unwrap();
+/// assert_eq!(frame.1, 1); // 4 rows of 5 pixels, one call
+/// assert!(frame.0[5][5] && !frame.0[6][5]);
+/// # Ok::<(), microraster::Error>(())
+/// ```
 pub struct TargetCanvas<'a, D: DrawTarget> {
     blitter: TargetBlitter<'a, D>,
     background: Option<D::Color>,
+    /// Opaque rows not sent yet: the first row's span, the rows, the colour.
+    pending: Option<(Span, u32, D::Color)>,
+}
+
+impl<D: DrawTarget> TargetCanvas<'_, D> {
+    /// Sends the pending rectangle, if any.
+    fn flush(&mut self) {
+        if let Some((s, rows, c)) = self.pending.take() {
+            self.blitter.fill_rect(s.x, s.y, s.len, rows, c);
+        }
+    }
+
+    /// `color` over `span`, opaque: joined to the pending rectangle when it
+    /// continues it.
+    fn solid(&mut self, span: Span, color: D::Color) {
+        if let Some((s, rows, c)) = &mut self.pending {
+            if *c == color
+                && s.x == span.x
+                && s.len == span.len
+                && i64::from(s.y) + i64::from(*rows) == i64::from(span.y)
+            {
+                *rows += 1;
+                return;
+            }
+        }
+        self.flush();
+        self.pending = Some((span, 1, color));
+    }
+}
+
+/// The last rectangle reaches the target even without [`TargetCanvas::finish`].
+impl<D: DrawTarget> Drop for TargetCanvas<'_, D> {
+    fn drop(&mut self) {
+        self.flush();
+    }
 }
 
 impl<'a, D: DrawTarget> TargetCanvas<'a, D>
@@ -138,7 +209,7 @@ where
     /// # Ok::<(), microraster::Error>(())
     /// ```
     pub fn new(target: &'a mut D) -> Self {
-        TargetCanvas { blitter: TargetBlitter::new(target), background: None }
+        TargetCanvas { blitter: TargetBlitter::new(target), background: None, pending: None }
     }
 
     /// Mixes partial pixels over `background`.
@@ -157,8 +228,9 @@ where
     /// assert!(grey > 0 && grey < 128);
     /// # Ok::<(), microraster::Error>(())
     /// ```
-    pub fn over(self, background: D::Color) -> Self {
-        TargetCanvas { background: Some(background), ..self }
+    pub fn over(mut self, background: D::Color) -> Self {
+        self.background = Some(background);
+        self
     }
 
     /// The first error the target reported, if any.
@@ -184,8 +256,9 @@ where
     /// assert_eq!(canvas.finish(), Err("bus"));
     /// # Ok::<(), microraster::Error>(())
     /// ```
-    pub fn finish(self) -> Result<(), D::Error> {
-        self.blitter.error.map_or(Ok(()), Err)
+    pub fn finish(mut self) -> Result<(), D::Error> {
+        self.flush();
+        self.blitter.error.take().map_or(Ok(()), Err)
     }
 
     /// The colour a pixel of coverage `alpha` gets, `None` if skipped.
@@ -207,13 +280,15 @@ where
 
     fn fill(&mut self, span: Span, color: D::Color, alpha: u8) {
         if alpha == OPAQUE {
-            self.blitter.fill_span(span, color);
+            self.solid(span, color);
         } else if let Some(c) = self.partial(color, alpha) {
-            self.blitter.fill_span(span, c);
+            self.solid(span, c);
         }
     }
 
     fn shade<I: Iterator<Item = D::Color>>(&mut self, span: Span, colors: I, alpha: u8) {
+        // Writes stay in order: the pending rectangle first.
+        self.flush();
         if alpha == OPAQUE {
             self.blitter.shade_span(span, colors);
         } else if alpha >= 128 || self.background.is_some() {
@@ -223,5 +298,93 @@ where
                 }
             }
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::Band;
+    use crate::shape::{Circle, Polygon, Rect, RoundedRect, Shape, ShapeStyle};
+    use embedded_graphics_core::pixelcolor::{Gray8, GrayColor};
+    use embedded_graphics_core::prelude::*;
+    use embedded_graphics_core::primitives::Rectangle;
+
+    /// A 24 × 24 frame that counts its `fill_solid` calls.
+    struct Counting([[Gray8; 24]; 24], usize);
+    impl OriginDimensions for Counting {
+        fn size(&self) -> Size {
+            Size::new(24, 24)
+        }
+    }
+    impl DrawTarget for Counting {
+        type Color = Gray8;
+        type Error = core::convert::Infallible;
+        fn draw_iter<I: IntoIterator<Item = Pixel<Gray8>>>(&mut self, px: I) -> Result<(), Self::Error> {
+            for Pixel(p, c) in px {
+                if let Some(q) = self.0.get_mut(p.y as usize).and_then(|r| r.get_mut(p.x as usize)) {
+                    *q = c;
+                }
+            }
+            Ok(())
+        }
+        fn fill_solid(&mut self, r: &Rectangle, c: Gray8) -> Result<(), Self::Error> {
+            self.1 += 1;
+            self.fill_contiguous(r, core::iter::repeat(c))
+        }
+    }
+
+    /// Partial pixels mixed over the background first (exact there, as
+    /// nothing is under them yet), then aliased shapes of several colours
+    /// overlapping: the pending rectangles keep the writes in order, so the
+    /// frame equals the band pixel for pixel.
+    #[test]
+    fn joined_rows_give_the_pixels_of_the_band() {
+        let bg = Gray8::new(7);
+        let rounded = RoundedRect::new(Rect::new(1.0, 1.0, 20.0, 14.0).unwrap(), 5.0).unwrap();
+        let rect = Rect::new(2.0, 3.0, 9.0, 5.0).unwrap();
+        let disc = Circle::new((12.0, 12.0), 9.5).unwrap();
+        let tri = [(0.0, 0.0), (23.0, 4.0), (6.0, 22.0)];
+        let mut frame = Counting([[bg; 24]; 24], 0);
+        let mut band = Band::<Gray8, 24, 24>::new(bg);
+        let mut view = band.view(0, 24, bg);
+        let soft = rounded.styled(ShapeStyle::fill(Gray8::new(200)).antialiased()).unwrap();
+        let card = rect.styled(ShapeStyle::fill(Gray8::WHITE)).unwrap();
+        let ring = disc.styled(ShapeStyle::stroke(Gray8::new(90), 2.0)).unwrap();
+        let wedge = Polygon::new(&tri).unwrap().styled(ShapeStyle::fill(Gray8::new(150))).unwrap();
+        let mut canvas = TargetCanvas::new(&mut frame).over(bg);
+        soft.draw_on(&mut canvas);
+        card.draw_on(&mut canvas);
+        ring.draw_on(&mut canvas);
+        wedge.draw_on(&mut canvas);
+        card.draw_on(&mut canvas);
+        canvas.finish().unwrap();
+        soft.draw_on(&mut view);
+        card.draw_on(&mut view);
+        ring.draw_on(&mut view);
+        wedge.draw_on(&mut view);
+        card.draw_on(&mut view);
+        assert_eq!(frame.0, *band.rows());
+        assert!(frame.0.iter().flatten().any(|&c| c != bg && c.luma() < 150 && c.luma() > 7));
+    }
+
+    #[test]
+    fn a_solid_rectangle_is_one_fill_solid_and_a_disc_one_per_run() {
+        let bg = Gray8::BLACK;
+        let mut frame = Counting([[bg; 24]; 24], 0);
+        let card = Rect::new(2.0, 3.0, 9.0, 5.0).unwrap().styled(ShapeStyle::fill(Gray8::WHITE)).unwrap();
+        card.draw_on(&mut TargetCanvas::new(&mut frame)); // dropped: flushed
+        assert_eq!(frame.1, 1);
+        let lit = frame.0.iter().flatten().filter(|&&c| c == Gray8::WHITE).count();
+        assert_eq!(lit, 9 * 5);
+        assert!(frame.0[3][2] == Gray8::WHITE && frame.0[7][10] == Gray8::WHITE && frame.0[8][10] == bg);
+        // A disc: rows of equal spans merge, so fewer calls than rows.
+        let mut frame = Counting([[bg; 24]; 24], 0);
+        let disc = Circle::new((12.0, 12.0), 9.5).unwrap().styled(ShapeStyle::fill(Gray8::WHITE)).unwrap();
+        let mut canvas = TargetCanvas::new(&mut frame);
+        disc.draw_on(&mut canvas);
+        canvas.finish().unwrap();
+        let rows = frame.0.iter().filter(|r| r.contains(&Gray8::WHITE)).count();
+        assert!(frame.1 < rows, "{} calls for {rows} rows", frame.1);
     }
 }
