@@ -32,7 +32,8 @@
 //! `q' = q + step + 1`, `r' = r − rstep + D` restores it. So `q` is exactly
 //! `⌈A / D⌉` in every row: the pixels are those of the division per row
 //! ([`scan_divided`], kept as the reference and as the fallback for more
-//! than [`WALKERS`] edges active at once).
+//! edges active at once than there are walkers: [`WALKERS`], or
+//! [`SMALL_WALKERS`] for lists of at most 32 edges).
 //!
 //! The crossings stay in a sorted array from row to row (edges rarely swap),
 //! so re-sorting is an insertion sort over an almost sorted array: one
@@ -59,6 +60,11 @@ const HALF: i64 = ONE / 2;
 /// [`scan_divided`] (same pixels). A shape of at most this many edges never
 /// does.
 pub(crate) const WALKERS: usize = 64;
+
+/// Walkers for the small edge lists (up to 32 edges, most shapes): the
+/// walker array is zeroed once per scan, and a disc or a rounded rectangle
+/// has 2 edges across a row, a star 4, so 16 (640 bytes) rather than 32.
+pub(crate) const SMALL_WALKERS: usize = 16;
 
 /// `⌈a / b⌉` for `b > 0`.
 pub(crate) const fn div_ceil(a: i64, b: i64) -> i64 {
@@ -149,10 +155,11 @@ pub(crate) fn scan<F: FnMut(crate::edge::Span, u8), const N: usize>(
     clip: ClipRect,
     runs: &mut Runs<F>,
 ) {
-    // Small lists get walker arrays of their own size (never full); the
-    // branch is on constants and folds away.
-    if N <= WALKERS {
+    // The branches are on constants and fold away.
+    if N <= SMALL_WALKERS {
         walk::<F, N, N>(edges, rule, clip, runs)
+    } else if N <= 2 * SMALL_WALKERS {
+        walk::<F, N, SMALL_WALKERS>(edges, rule, clip, runs)
     } else {
         walk::<F, N, WALKERS>(edges, rule, clip, runs)
     }

@@ -74,7 +74,7 @@ fn walked_crossings_equal_divided_ones() {
         // edges still crossing the clip through a centre near the screen.
         let reach = [40.0, 400.0, 100_000.0, 16_000_000.0][case % 4];
         let k = 3 + (rng.next() % 9) as usize;
-        let mut e = EdgeList::<16>::new();
+        let mut e = EdgeList::<32>::new();
         let pts: Vec<(f32, f32)> = (0..k)
             .map(|i| {
                 let far = i % 2 == 0 && case % 4 >= 2;
@@ -108,9 +108,21 @@ fn more_active_edges_than_walkers_fall_back_exactly() {
     }
     e.sort_by_top();
     assert!(e.len() > WALKERS);
+    // A small list (32 edges, 16 walkers): 10 teeth of 2 edges, all 20
+    // across rows 1..19.
+    let mut small = EdgeList::<{ 2 * SMALL_WALKERS }>::new();
+    for t in 0..10 {
+        let x = t as f32 * 2.5;
+        small.polygon(&[(x, 0.0), (x + 1.1, 20.0), (x + 2.0, 0.0)]).unwrap();
+    }
+    small.sort_by_top();
+    assert!(small.len() > SMALL_WALKERS);
     for clip in [ClipRect::new(0, 0, 130, 24), ClipRect::new(5, 3, 90, 9), ClipRect::new(0, 19, 130, 21)] {
         let (walked, divided) = both(&e, FillRule::NonZero, clip);
         assert!(!walked.is_empty());
         assert_eq!(walked, divided, "{clip:?}");
+        let (walked, divided) = both(&small, FillRule::EvenOdd, clip);
+        assert!(clip.y0() > 0 || !walked.is_empty());
+        assert_eq!(walked, divided, "small {clip:?}");
     }
 }
