@@ -51,12 +51,11 @@ fn remainder_division_is_exact_in_both_widths() {
     }
 }
 
+/// The spans a scan emits, with their alpha.
+type Spans = Vec<(Span, u8)>;
+
 /// The spans of `edges` in `clip`, walked and divided.
-fn both<const N: usize>(
-    edges: &EdgeList<N>,
-    rule: FillRule,
-    clip: ClipRect,
-) -> (Vec<(Span, u8)>, Vec<(Span, u8)>) {
+fn both<const N: usize>(edges: &EdgeList<N>, rule: FillRule, clip: ClipRect) -> (Spans, Spans) {
     let (mut walked, mut divided) = (Vec::new(), Vec::new());
     scan(edges, rule, clip, &mut Runs::new(|s, a| walked.push((s, a))));
     scan_divided(edges, rule, clip, &mut Runs::new(|s, a| divided.push((s, a))));
