@@ -11,7 +11,7 @@
 //! (`mr_band16`) and anti-aliased in bands (`mr_aa_band16`); e-g's styled
 //! primitive into the same framebuffer (`eg`); tiny-skia aliased and
 //! anti-aliased into its RGBA pixmap (`skia`, `skia_aa`). e-g has no polygon
-//! (its `Triangle` only) and no anti-aliasing. After criterion's output a
+//! (its `Triangle` only, benchmarked as `triangle`) and no anti-aliasing. After criterion's output a
 //! table of ratios from this run's medians is printed (> 1: microraster is
 //! faster), with the verdict computed from it. The `dashboard` group times
 //! the dashboard frame (`examples/common/dashboard.rs`) against its plain
@@ -40,7 +40,8 @@ mod dashboard;
 
 const FG: Rgb565 = Rgb565::new(31, 40, 8);
 const STROKE: f32 = 5.0;
-const SHAPES: [&str; 8] = ["rect", "rounded", "circle", "ellipse", "arc", "sector", "polygon", "polyline"];
+const SHAPES: [&str; 10] =
+    ["rect", "rounded", "circle", "ellipse", "arc", "sector", "polygon", "polyline", "triangle", "line"];
 
 /// Instance `k`: centre, size.
 fn place(k: usize) -> ((f32, f32), f32) {
@@ -55,6 +56,14 @@ fn star(c: (f32, f32), s: f32) -> [(f32, f32); 10] {
         let r = if i % 2 == 0 { s / 2.0 } else { s / 5.0 };
         (c.0 + r * a.cos(), c.1 + r * a.sin())
     })
+}
+
+fn triangle(c: (f32, f32), s: f32) -> [(f32, f32); 3] {
+    [(c.0 - s / 2.0, c.1 + s / 3.0), (c.0 + s / 2.0, c.1 + s / 4.0), (c.0 - s / 6.0, c.1 - s / 2.0)]
+}
+
+fn segment(c: (f32, f32), s: f32) -> [(f32, f32); 2] {
+    [(c.0 - s / 2.0, c.1 - s / 3.0), (c.0 + s / 2.0, c.1 + s / 3.0)]
 }
 
 fn zigzag(c: (f32, f32), s: f32) -> [(f32, f32); 5] {
@@ -97,6 +106,8 @@ fn mr_shapes(name: &str, aa: bool) -> Vec<Box<dyn MrDraw>> {
                 "arc" => boxed(sh::Arc::new(c, s / 2.0, 0.5, 4.0).unwrap(), stroke, aa),
                 "sector" => boxed(sh::Sector::new(c, s / 2.0, 0.5, 4.0).unwrap(), fill, aa),
                 "polygon" => boxed(sh::Polygon::new(Box::leak(Box::new(star(c, s)))).unwrap(), fill, aa),
+                "triangle" => boxed(sh::Polygon::new(Box::leak(Box::new(triangle(c, s)))).unwrap(), fill, aa),
+                "line" => boxed(sh::Polyline::new(Box::leak(Box::new(segment(c, s)))).unwrap(), stroke, aa),
                 _ => boxed(sh::Polyline::new(Box::leak(Box::new(zigzag(c, s)))).unwrap(), stroke, aa),
             }
         })
@@ -149,6 +160,14 @@ fn eg_shapes(name: &str) -> Option<Vec<EgDraw>> {
                             .draw(t)
                             .unwrap()
                     }),
+                    "triangle" => {
+                        let [a, b, q] = triangle(c, s).map(|(x, y)| p(x, y));
+                        Box::new(move |t| eg::Triangle::new(a, b, q).into_styled(fill).draw(t).unwrap())
+                    }
+                    "line" => {
+                        let [a, b] = segment(c, s).map(|(x, y)| p(x, y));
+                        Box::new(move |t| eg::Line::new(a, b).into_styled(stroke).draw(t).unwrap())
+                    }
                     _ => {
                         let pts = zigzag(c, s).map(|(x, y)| p(x, y));
                         Box::new(move |t| eg::Polyline::new(&pts).into_styled(stroke).draw(t).unwrap())
@@ -209,11 +228,17 @@ fn skia_shapes(name: &str) -> Vec<(tiny_skia::Path, Option<tiny_skia::Stroke>)> 
                     arc(&mut pb, true);
                     pb.close();
                 }
-                "polygon" => {
-                    let st = star(c, s);
+                "polygon" | "triangle" => {
+                    let st = if name == "polygon" { star(c, s).to_vec() } else { triangle(c, s).to_vec() };
                     pb.move_to(st[0].0, st[0].1);
                     st[1..].iter().for_each(|q| pb.line_to(q.0, q.1));
                     pb.close();
+                }
+                "line" => {
+                    let [a, b] = segment(c, s);
+                    pb.move_to(a.0, a.1);
+                    pb.line_to(b.0, b.1);
+                    stroked = true;
                 }
                 _ => {
                     let z = zigzag(c, s);
@@ -331,38 +356,46 @@ fn main() {
 fn ratios() {
     println!("\nRatios from this run (criterion medians; > 1: microraster is faster)");
     println!(
-        "{:<9} {:>10} {:>10} {:>13} {:>10} {:>10}",
-        "shape", "eg/direct", "skia/band", "skia_aa/aa", "band µs", "aa µs"
+        "{:<9} {:>10} {:>10} {:>10} {:>11} {:>9} {:>9}  verdict (e-g columns >= 1.0)",
+        "shape", "eg/direct", "eg/band16", "skia/band", "skia_aa/aa", "band µs", "aa µs"
     );
     let (mut faster, mut total) = (0, 0);
     for name in SHAPES {
         let g = format!("shape_{name}");
         let m = |id: &str| median(&g, id);
-        let mut ratio = |peer: Option<f64>, ours: Option<f64>| match peer.zip(ours) {
-            Some((p, o)) => {
-                total += 1;
-                faster += (p > o) as usize;
-                format!("{:.2}", p / o)
-            }
-            None => "-".into(),
+        let r = [
+            m("eg").zip(m("mr_direct")),
+            m("eg").zip(m("mr_band16")),
+            m("skia").zip(m("mr_band16")),
+            m("skia_aa").zip(m("mr_aa_band16")),
+        ]
+        .map(|v| v.map(|(p, o)| p / o));
+        for v in r.iter().flatten() {
+            total += 1;
+            faster += usize::from(*v >= 1.0);
+        }
+        let cell = |v: Option<f64>| v.map_or("-".into(), |v| format!("{v:.2}"));
+        let worst = r[..2].iter().flatten().fold(f64::INFINITY, |a, &b| a.min(b));
+        let verdict = if worst == f64::INFINITY {
+            "no e-g shape".into()
+        } else if worst >= 1.0 {
+            "met".into()
+        } else {
+            format!("missed by {:.2}x", 1.0 / worst)
         };
-        let cols = [
-            ratio(m("eg"), m("mr_direct")),
-            ratio(m("skia"), m("mr_band16")),
-            ratio(m("skia_aa"), m("mr_aa_band16")),
-        ];
         let us = |id: &str| m(id).map_or("-".into(), |t| format!("{:.1}", t / 1000.0));
         println!(
-            "{:<9} {:>10} {:>10} {:>13} {:>10} {:>10}",
+            "{:<9} {:>10} {:>10} {:>10} {:>11} {:>9} {:>9}  {verdict}",
             name,
-            cols[0],
-            cols[1],
-            cols[2],
+            cell(r[0]),
+            cell(r[1]),
+            cell(r[2]),
+            cell(r[3]),
             us("mr_band16"),
             us("mr_aa_band16")
         );
     }
-    println!("verdict: microraster faster in {faster} of {total} comparisons");
+    println!("verdict: microraster at least as fast in {faster} of {total} comparisons");
     if let Some((e, m)) = median("dashboard", "eg").zip(median("dashboard", "mr_band16")) {
         println!(
             "dashboard frame: e-g {:.0} µs, microraster (16-row bands) {:.0} µs, e-g / microraster {:.2}",

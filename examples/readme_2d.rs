@@ -50,7 +50,10 @@ fn main() -> Result<()> {
     );
     replace(&mut readme, "dashboard", &text)?;
     match shapes_ratios::table("[below](#the-dashboard)") {
-        Some(table) => replace(&mut readme, "shapes-ratios", &table)?,
+        Some(table) => {
+            println!("shapes-ratios (cargo bench --bench shapes):\n{table}");
+            replace(&mut readme, "shapes-ratios", &table)?
+        }
         None => println!(
             "shapes-ratios: no complete `cargo bench --bench shapes` run found; section left as it is"
         ),

@@ -84,6 +84,15 @@ impl<'a, D: DrawTarget> TargetBlitter<'a, D> {
         TargetBlitter { target, clip, error: None }
     }
 
+    /// `color` over columns `x .. x + w` of rows `y .. y + h`, one
+    /// `fill_solid` call (the target clips, as for spans).
+    pub(crate) fn fill_rect(&mut self, x: i32, y: i32, w: u32, h: u32, color: D::Color) {
+        if self.error.is_none() {
+            let r = self.target.fill_solid(&Rectangle::new(Point::new(x, y), Size::new(w, h)), color);
+            self.keep(r);
+        }
+    }
+
     fn keep(&mut self, r: Result<(), D::Error>) {
         if let (Err(e), None) = (r, &self.error) {
             self.error = Some(e);

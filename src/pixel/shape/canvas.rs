@@ -115,9 +115,80 @@ impl<C: Interpolate, const W: usize> Canvas<C> for BandView<'_, C, W> {
 /// assert!(edge.luma() > 0 && edge.luma() < 255);
 /// # Ok::<(), microraster::Error>(())
 /// ```
+///
+/// Opaque spans of one colour that continue each other row below row (same
+/// columns) reach the target as one rectangle: a solid pixel-aligned
+/// rectangle is one `fill_solid` call, as `embedded-graphics` draws it. The
+/// last rectangle is sent by [`TargetCanvas::finish`] (or when the canvas is
+/// dropped), before any other write.
+///
+/// ```
+/// use embedded_graphics::{pixelcolor::BinaryColor, prelude::*, primitives::Rectangle};
+/// use microraster::shape::{Rect, Shape, ShapeStyle, TargetCanvas};
+/// # struct Frame([[bool; 8]; 8], usize);
+/// # impl OriginDimensions for Frame {
+/// #     fn size(&self) -> Size { Size::new(8, 8) }
+/// # }
+/// # impl DrawTarget for Frame {
+/// #     type Color = BinaryColor;
+/// #     type Error = core::convert::Infallible;
+/// #     fn draw_iter<I: IntoIterator<Item = Pixel<BinaryColor>>>(&mut self, px: I) -> Result<(), Self::Error> {
+/// #         for Pixel(p, c) in px { self.0[p.y as usize][p.x as usize] = c.is_on(); }
+/// #         Ok(())
+/// #     }
+/// #     fn fill_solid(&mut self, r: &Rectangle, c: BinaryColor) -> Result<(), Self::Error> {
+/// #         self.1 += 1;
+/// #         self.fill_contiguous(r, core::iter::repeat(c))
+/// #     }
+/// # }
+/// // `Frame` counts its `fill_solid` calls in `.1`.
+/// let mut frame = Frame([[false; 8]; 8], 0);
+/// let card = Rect::new(1.0, 2.0, 5.0, 4.0)?.styled(ShapeStyle::fill(BinaryColor::On))?;
+/// let mut canvas = TargetCanvas::new(&mut frame);
+/// card.draw_on(&mut canvas);
+/// canvas.finish().unwrap();
+/// assert_eq!(frame.1, 1); // 4 rows of 5 pixels, one call
+/// assert!(frame.0[5][5] && !frame.0[6][5]);
+/// # Ok::<(), microraster::Error>(())
+/// ```
 pub struct TargetCanvas<'a, D: DrawTarget> {
     blitter: TargetBlitter<'a, D>,
     background: Option<D::Color>,
+    /// Opaque rows not sent yet: the first row's span, the rows, the colour.
+    pending: Option<(Span, u32, D::Color)>,
+}
+
+impl<D: DrawTarget> TargetCanvas<'_, D> {
+    /// Sends the pending rectangle, if any.
+    fn flush(&mut self) {
+        if let Some((s, rows, c)) = self.pending.take() {
+            self.blitter.fill_rect(s.x, s.y, s.len, rows, c);
+        }
+    }
+
+    /// `color` over `span`, opaque: joined to the pending rectangle when it
+    /// continues it.
+    fn solid(&mut self, span: Span, color: D::Color) {
+        if let Some((s, rows, c)) = &mut self.pending {
+            if *c == color
+                && s.x == span.x
+                && s.len == span.len
+                && i64::from(s.y) + i64::from(*rows) == i64::from(span.y)
+            {
+                *rows += 1;
+                return;
+            }
+        }
+        self.flush();
+        self.pending = Some((span, 1, color));
+    }
+}
+
+/// The last rectangle reaches the target even without [`TargetCanvas::finish`].
+impl<D: DrawTarget> Drop for TargetCanvas<'_, D> {
+    fn drop(&mut self) {
+        self.flush();
+    }
 }
 
 impl<'a, D: DrawTarget> TargetCanvas<'a, D>
@@ -138,7 +209,7 @@ where
     /// # Ok::<(), microraster::Error>(())
     /// ```
     pub fn new(target: &'a mut D) -> Self {
-        TargetCanvas { blitter: TargetBlitter::new(target), background: None }
+        TargetCanvas { blitter: TargetBlitter::new(target), background: None, pending: None }
     }
 
     /// Mixes partial pixels over `background`.
@@ -157,8 +228,9 @@ where
     /// assert!(grey > 0 && grey < 128);
     /// # Ok::<(), microraster::Error>(())
     /// ```
-    pub fn over(self, background: D::Color) -> Self {
-        TargetCanvas { background: Some(background), ..self }
+    pub fn over(mut self, background: D::Color) -> Self {
+        self.background = Some(background);
+        self
     }
 
     /// The first error the target reported, if any.
@@ -184,8 +256,9 @@ where
     /// assert_eq!(canvas.finish(), Err("bus"));
     /// # Ok::<(), microraster::Error>(())
     /// ```
-    pub fn finish(self) -> Result<(), D::Error> {
-        self.blitter.error.map_or(Ok(()), Err)
+    pub fn finish(mut self) -> Result<(), D::Error> {
+        self.flush();
+        self.blitter.error.take().map_or(Ok(()), Err)
     }
 
     /// The colour a pixel of coverage `alpha` gets, `None` if skipped.
@@ -207,13 +280,15 @@ where
 
     fn fill(&mut self, span: Span, color: D::Color, alpha: u8) {
         if alpha == OPAQUE {
-            self.blitter.fill_span(span, color);
+            self.solid(span, color);
         } else if let Some(c) = self.partial(color, alpha) {
-            self.blitter.fill_span(span, c);
+            self.solid(span, c);
         }
     }
 
     fn shade<I: Iterator<Item = D::Color>>(&mut self, span: Span, colors: I, alpha: u8) {
+        // Writes stay in order: the pending rectangle first.
+        self.flush();
         if alpha == OPAQUE {
             self.blitter.shade_span(span, colors);
         } else if alpha >= 128 || self.background.is_some() {
@@ -225,3 +300,6 @@ where
         }
     }
 }
+
+#[cfg(test)]
+mod tests;

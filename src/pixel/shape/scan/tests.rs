@@ -1,0 +1,127 @@
+extern crate std;
+use super::*;
+use crate::edge::Span;
+use std::vec::Vec;
+
+#[test]
+fn div_ceil_rounds_up_for_both_signs() {
+    assert_eq!([div_ceil(7, 2), div_ceil(-7, 2), div_ceil(6, 2), div_ceil(-6, 2)], [4, -3, 3, -3]);
+    assert_eq!([div_ceil32(7, 2), div_ceil32(-7, 2), div_ceil32(6, 2), div_ceil32(-6, 2)], [4, -3, 3, -3]);
+    assert_eq!(div_ceil32(i32::MIN, 1), i32::MIN);
+    assert_eq!(div_ceil32(i32::MAX, 2), 1 << 30);
+}
+
+#[test]
+fn rows_are_the_centres_inside_half_open() {
+    let clip = ClipRect::new(0, 0, 100, 100);
+    // Edge from y = 1.5 to 3.5 px: centres 1.5 and 2.5 (3.5 is excluded).
+    assert_eq!(center_rows(24, 56, clip), (1, 3));
+    assert_eq!(center_rows(25, 56, clip), (2, 3));
+    assert_eq!(center_rows(-1000, 5000, ClipRect::new(0, 2, 9, 4)), (2, 4));
+    // The shift equals the division for negative tops too.
+    for y in -100..100 {
+        assert_eq!(first_row(y), div_ceil(i64::from(y) - HALF, ONE), "y {y}");
+    }
+}
+
+/// xorshift64: deterministic cases without a dependency.
+struct Rng(u64);
+impl Rng {
+    fn next(&mut self) -> u64 {
+        self.0 ^= self.0 << 13;
+        self.0 ^= self.0 >> 7;
+        self.0 ^= self.0 << 17;
+        self.0
+    }
+    /// Uniform-ish in `-r..=r`.
+    fn in_range(&mut self, r: i64) -> i64 {
+        (self.next() % (2 * r as u64 + 1)) as i64 - r
+    }
+}
+
+#[test]
+fn remainder_division_is_exact_in_both_widths() {
+    let mut rng = Rng(0x9e37_79b9_7f4a_7c15);
+    for _ in 0..100_000 {
+        let scale = [1 << 8, 1 << 20, 1 << 31, 1 << 40][(rng.next() % 4) as usize];
+        let (a, b) = (rng.in_range(scale), 1 + rng.in_range(scale).abs());
+        let (q, r) = div_ceil_rem(a, b);
+        assert_eq!(q, div_ceil(a, b), "{a} / {b}");
+        assert!((0..b).contains(&r) && q * b - r == a, "{a} / {b}: {q} {r}");
+    }
+}
+
+/// The spans a scan emits, with their alpha.
+type Spans = Vec<(Span, u8)>;
+
+/// The spans of `edges` in `clip`, walked and divided.
+fn both<const N: usize>(edges: &EdgeList<N>, rule: FillRule, clip: ClipRect) -> (Spans, Spans) {
+    let (mut walked, mut divided) = (Vec::new(), Vec::new());
+    scan(edges, rule, clip, &mut Runs::new(|s, a| walked.push((s, a))));
+    scan_divided(edges, rule, clip, &mut Runs::new(|s, a| divided.push((s, a))));
+    (walked, divided)
+}
+
+/// Random polygons, near and far (up to the 2^28-subpixel limit), under
+/// clips that cut through them: the walked crossings are the divided ones.
+#[test]
+fn walked_crossings_equal_divided_ones() {
+    let mut rng = Rng(0x2545_f491_4f6c_dd1d);
+    let mut spans = 0;
+    for case in 0..3000 {
+        // Far coordinates: vertices up to ±2^24 px (2^28 subpixels), but
+        // edges still crossing the clip through a centre near the screen.
+        let reach = [40.0, 400.0, 100_000.0, 16_000_000.0][case % 4];
+        let k = 3 + (rng.next() % 9) as usize;
+        let mut e = EdgeList::<32>::new();
+        let pts: Vec<(f32, f32)> = (0..k)
+            .map(|i| {
+                let far = i % 2 == 0 && case % 4 >= 2;
+                let r = if far { reach } else { 40.0 };
+                let x = rng.in_range(1 << 20) as f32 / (1 << 20) as f32 * r as f32 + 30.0;
+                let y = rng.in_range(1 << 20) as f32 / (1 << 20) as f32 * r as f32 + 30.0;
+                (x, y)
+            })
+            .collect();
+        e.polygon(&pts).unwrap();
+        e.sort_by_top();
+        let (x0, y0) = (rng.in_range(20) as i32 + 20, rng.in_range(20) as i32 + 20);
+        let clip = ClipRect::new(x0, y0, x0 + (rng.next() % 60) as i32, y0 + (rng.next() % 60) as i32);
+        let rule = if case % 2 == 0 { FillRule::NonZero } else { FillRule::EvenOdd };
+        let (walked, divided) = both(&e, rule, clip);
+        assert_eq!(walked, divided, "case {case}: {pts:?} in {clip:?}");
+        spans += walked.len();
+    }
+    assert!(spans > 10_000, "the cases cover pixels: {spans} spans");
+}
+
+/// More edges crossing one row than there are walkers: the scan finishes by
+/// division, with the same pixels.
+#[test]
+fn more_active_edges_than_walkers_fall_back_exactly() {
+    // A comb of 2 · 40 slanted teeth: 80 edges cross the rows 2..18.
+    let mut e = EdgeList::<{ 4 * WALKERS }>::new();
+    for t in 0..40 {
+        let x = t as f32 * 3.0;
+        e.polygon(&[(x, 0.0), (x + 1.7, 1.0), (x + 2.1, 20.0), (x + 0.3, 19.5)]).unwrap();
+    }
+    e.sort_by_top();
+    assert!(e.len() > WALKERS);
+    // A small list (32 edges, 16 walkers): 10 teeth of 2 edges, all 20
+    // across rows 1..19.
+    let mut small = EdgeList::<{ 2 * SMALL_WALKERS }>::new();
+    for t in 0..10 {
+        let x = t as f32 * 2.5;
+        small.polygon(&[(x, 0.0), (x + 1.1, 20.0), (x + 2.0, 0.0)]).unwrap();
+    }
+    small.sort_by_top();
+    assert!(small.len() > SMALL_WALKERS);
+    for clip in [ClipRect::new(0, 0, 130, 24), ClipRect::new(5, 3, 90, 9), ClipRect::new(0, 19, 130, 21)] {
+        let (walked, divided) = both(&e, FillRule::NonZero, clip);
+        assert!(!walked.is_empty());
+        assert_eq!(walked, divided, "{clip:?}");
+        let (walked, divided) = both(&small, FillRule::EvenOdd, clip);
+        assert!(clip.y0() > 0 || !walked.is_empty());
+        assert_eq!(walked, divided, "small {clip:?}");
+    }
+}
