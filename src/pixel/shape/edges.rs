@@ -69,6 +69,16 @@ pub struct EdgeList<const N: usize> {
     // a `memset`, not a copy of a 5 KB constant.
     y_min: i32,
     y_max: i32,
+    // A measuring list ([`EdgeList::measuring`]) stores no edge: it counts
+    // them (up to `MAX_EDGES`) and tracks their rows. `false` is a zero
+    // byte, so a storing list is still all zeros.
+    measure: bool,
+    // A window ([`EdgeList::window`]): only edges meeting subpixel rows
+    // `win.0 .. win.1` are stored; `twice` sums the signed area terms of
+    // every edge pushed (stored or not) for [`EdgeList::orient_since`].
+    windowed: bool,
+    win: (i32, i32),
+    twice: i128,
 }
 
 impl<const N: usize> Default for EdgeList<N> {
@@ -99,6 +109,10 @@ impl<const N: usize> EdgeList<N> {
             last: (0, 0),
             y_min: 0,
             y_max: 0,
+            measure: false,
+            windowed: false,
+            win: (0, 0),
+            twice: 0,
         }
     }
 
@@ -121,6 +135,7 @@ impl<const N: usize> EdgeList<N> {
         self.len = 0;
         self.open = false;
         (self.y_min, self.y_max) = (0, 0);
+        self.twice = 0;
     }
 
     /// Number of stored edges.
@@ -148,7 +163,8 @@ impl<const N: usize> EdgeList<N> {
     }
 
     pub(crate) fn edges(&self) -> &[Edge] {
-        &self.edges[..self.len]
+        // `len ≤ N` but in a measuring list, which stores none.
+        &self.edges[..self.len.min(N)]
     }
 
     /// Rows (subpixel units) spanned by the edges: `y_min > y_max` if empty.
@@ -241,25 +257,39 @@ impl<const N: usize> EdgeList<N> {
         if flip { self.push(b, a) } else { self.push(a, b) }
     }
 
-    /// Reverses the edges from index `from` on if the winding number they
+    /// Where the contour being added starts, for [`Self::orient_since`].
+    pub(crate) fn mark(&self) -> (usize, i128) {
+        (self.len, self.twice)
+    }
+
+    /// Reverses the edges added since `mark` if the winding number they
     /// enclose integrates to less than zero (`∫w = −Σ dir·(x0 + x1)·(y1 − y0)/2`
     /// over closed contours), so every group member adds coverage with the
-    /// same sign. `i128`: each term is below 2^59, their sum is not.
-    pub(crate) fn orient_from(&mut self, from: usize) {
-        let edges = &mut self.edges[from.min(self.len)..self.len];
-        let twice: i128 = edges
-            .iter()
-            .map(|e| -i128::from(e.dir) * (i128::from(e.x0) + i128::from(e.x1)) * i128::from(e.y1 - e.y0))
-            .sum();
+    /// same sign. `i128`: each term is below 2^59, their sum is not. A
+    /// windowed list sums the terms as edges are pushed, the ones it drops
+    /// too, so its members turn as the whole list's would.
+    pub(crate) fn orient_since(&mut self, (from, twice): (usize, i128)) {
+        let end = self.len.min(N);
+        let edges = &mut self.edges[from.min(end)..end];
+        let twice = if self.windowed { self.twice - twice } else { edges.iter().map(area_term).sum() };
         if twice < 0 {
             edges.iter_mut().for_each(|e| e.dir = -e.dir);
         }
     }
 
+    /// From now on, stores only the edges that meet subpixel rows
+    /// `lo .. hi` (`y0 < hi` and `y1 > lo`): the only ones that cross a
+    /// pixel row (or row centre) in them, so a scan of those rows gives the
+    /// same coverage with fewer edges. Length and rows count the stored ones.
+    pub(crate) fn window(&mut self, lo: i32, hi: i32) {
+        (self.windowed, self.win) = (true, (lo, hi));
+    }
+
     /// Sorts the edges by their top, which the scan's active-edge list
     /// needs (`core`'s unstable sort: no allocation).
     pub(crate) fn sort_by_top(&mut self) {
-        self.edges[..self.len].sort_unstable_by_key(|e| e.y0);
+        let end = self.len.min(N);
+        self.edges[..end].sort_unstable_by_key(|e| e.y0);
     }
 
     fn push(&mut self, a: (i32, i32), b: (i32, i32)) -> Result<(), Error> {
@@ -271,12 +301,46 @@ impl<const N: usize> EdgeList<N> {
         } else {
             Edge { x0: b.0, y0: b.1, x1: a.0, y1: a.1, dir: -1 }
         };
-        let slot = self.edges.get_mut(self.len).ok_or(Error::BufferTooSmall)?;
-        *slot = e;
+        if self.windowed {
+            self.twice += area_term(&e);
+            if e.y1 <= self.win.0 || e.y0 >= self.win.1 {
+                return Ok(());
+            }
+        }
+        if self.measure {
+            if self.len >= crate::shape::MAX_EDGES {
+                return Err(Error::BufferTooSmall);
+            }
+        } else {
+            *self.edges.get_mut(self.len).ok_or(Error::BufferTooSmall)? = e;
+        }
         (self.y_min, self.y_max) =
             if self.len == 0 { (e.y0, e.y1) } else { (self.y_min.min(e.y0), self.y_max.max(e.y1)) };
         self.len += 1;
         Ok(())
+    }
+}
+
+/// `−dir·(x0 + x1)·(y1 − y0)`: twice the integral of the winding number the
+/// edge adds, over closed contours. Below 2^59 in magnitude (coordinates
+/// within ±2^28 subpixels, `y1 − y0` below 2^29): an `i64` product, summed
+/// in `i128`.
+fn area_term(e: &Edge) -> i128 {
+    let x = i64::from(e.x0) + i64::from(e.x1);
+    i128::from(-i64::from(e.dir) * x * (i64::from(e.y1) - i64::from(e.y0)))
+}
+
+impl EdgeList<0> {
+    /// A list that stores no edge but measures them: its length, rows and
+    /// errors are those of an `EdgeList<MAX_EDGES>` given the same contours
+    /// (more than [`MAX_EDGES`](crate::shape::MAX_EDGES) edges is
+    /// [`Error::BufferTooSmall`]). What [`Styled::new`](crate::shape::Styled::new)
+    /// needs to check a shape and find its rows, without writing (or
+    /// zeroing) 5 KB of edges.
+    pub(crate) const fn measuring() -> Self {
+        let mut e = EdgeList::new();
+        e.measure = true;
+        e
     }
 }
 
@@ -322,5 +386,81 @@ impl<const N: usize> Active<N> {
         edges: &'e [Edge],
     ) -> impl Iterator<Item = (u32, &'e Edge)> + use<'_, 'e, N> {
         self.idx[..self.n].iter().map(move |&i| (i, &edges[i as usize]))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    extern crate std;
+    use super::*;
+    use crate::shape::MAX_EDGES;
+    use std::vec::Vec;
+
+    /// A zigzag polygon of `n` points spread over `h` px: `n` slanted edges.
+    fn zigzag<const N: usize>(e: &mut EdgeList<N>, n: usize, h: f32) -> Result<(), Error> {
+        e.close()?;
+        for i in 0..n {
+            e.line_to(i as f32 * 0.75 - 3.0, (i % 2) as f32 * h + (i / 7) as f32 * 0.3)?;
+        }
+        e.close()
+    }
+
+    #[test]
+    fn measuring_counts_and_bounds_as_a_full_list_does() {
+        for n in [0, 1, 2, 3, 31, 32, 33, 200, MAX_EDGES, MAX_EDGES + 1, MAX_EDGES + 2, 400] {
+            let (mut full, mut m) = (EdgeList::<MAX_EDGES>::new(), EdgeList::measuring());
+            let (a, b) = (zigzag(&mut full, n, 5.0), zigzag(&mut m, n, 5.0));
+            assert_eq!(a, b, "{n} points");
+            assert_eq!((full.len(), full.y_range()), (m.len(), m.y_range()), "{n} points");
+            assert!(m.edges().is_empty());
+        }
+        // A coordinate beyond the snapping range: the same error.
+        let mut m = EdgeList::measuring();
+        assert_eq!(m.polygon(&[(0.0, 0.0), (1.0e12, 3.0), (0.0, 5.0)]), Err(Error::CoordinateOutOfRange));
+    }
+
+    #[test]
+    fn a_window_keeps_exactly_the_edges_meeting_its_rows() {
+        let mut full = EdgeList::<64>::new();
+        zigzag(&mut full, 60, 40.0).unwrap();
+        for (lo, hi) in [(0, 16), (-100, 3), (30, 31), (160, 400), (641, 700), (-50, 9000)] {
+            let mut w = EdgeList::<64>::new();
+            w.window(lo, hi);
+            zigzag(&mut w, 60, 40.0).unwrap();
+            let kept: Vec<_> = full.edges().iter().filter(|e| e.y0 < hi && e.y1 > lo).copied().collect();
+            assert_eq!(w.edges(), &kept[..], "rows {lo}..{hi}");
+            // The same orientation sum as the whole list's.
+            let all = full.edges().iter().map(area_term).sum::<i128>();
+            assert_eq!(w.twice, all);
+        }
+    }
+
+    #[test]
+    fn a_windowed_group_member_turns_as_the_whole_one_does() {
+        // A triangle enclosing winding −1: reversed. Each window below holds
+        // its vertical edge and one slanted one, whose own sum is positive:
+        // orienting by the stored edges alone would leave them as they are.
+        let tri = [(100.0, 0.0), (150.0, 60.0), (100.0, 100.0)];
+        let mut full = EdgeList::<8>::new();
+        let mark = full.mark();
+        full.polygon(&tri).unwrap();
+        full.orient_since(mark);
+        let vertical = full.edges().iter().find(|e| e.x0 == e.x1).unwrap();
+        assert_eq!(vertical.dir, 1, "the upward vertical edge, reversed");
+        for (lo, hi) in [(0, 16), (1500, 1600)] {
+            let mut w = EdgeList::<8>::new();
+            w.window(lo, hi);
+            w.polygon(&tri).unwrap();
+            assert!(w.edges().iter().map(area_term).sum::<i128>() > 0, "rows {lo}..{hi}");
+        }
+        for (lo, hi) in [(0, 16), (900, 1000), (1500, 1600)] {
+            let mut w = EdgeList::<8>::new();
+            w.window(lo, hi);
+            let mark = w.mark();
+            w.polygon(&tri).unwrap();
+            w.orient_since(mark);
+            let kept: Vec<_> = full.edges().iter().filter(|e| e.y0 < hi && e.y1 > lo).copied().collect();
+            assert_eq!(w.edges(), &kept[..], "rows {lo}..{hi}");
+        }
     }
 }
