@@ -109,8 +109,10 @@ fn path_reach(pts: &[(f32, f32)], fill: bool, stroke: Option<&StrokeParams>) -> 
     if pts.is_empty() || !(far + r < NEAR) || edges > super::MAX_EDGES {
         return None;
     }
-    // Whole rows, a pixel wider each side than the exact reach.
-    let rows = ((y0 - r).floor() as i32 - 1, (y1 + r).floor() as i32 + 2);
+    // Whole rows, a pixel wider each side than the exact reach. `floor` by
+    // hand (not in `core` on every toolchain): exact, |v| < 2^20.
+    let floor = |v: f32| if ((v as i32) as f32) > v { v as i32 - 1 } else { v as i32 };
+    let rows = (floor(y0 - r) - 1, floor(y1 + r) + 2);
     Some(Reach { rows, edges })
 }
 
