@@ -34,9 +34,32 @@
 //! that margin of a tie (`tests/integration/shapes_ref/far.rs` and
 //! `antialiased.rs` compare with the exact area in `f64`).
 //!
+//! # Fewer divisions, the same crossings
+//! A 64-bit division is a library call on 32-bit cores, so the crossings
+//! above are divided as rarely as their exact values allow:
+//!
+//! * at an edge's end the crossing is the end's `x`, a multiple of `dy` in
+//!   the numerator: shifted, not divided;
+//! * a strip's top crossing is the strip above's bottom one, kept per edge
+//!   (the edge crossed that strip: it was active, and its piece ended on the
+//!   shared boundary), so a row divides once per edge that runs through it;
+//! * in a row, a piece's column crossings grow by a constant numerator per
+//!   column: with `n · 2^FB = q·d + r` (`0 ≤ r < d`) held, the next one is
+//!   `q + Q (+1 when r + R ≥ d)` for the exact quotient and remainder
+//!   `Q·d + R = COL·dy·sign(dx)` (below `2^55`): one division for a piece's
+//!   first crossing, one for the step, none after ([`Crossings`]);
+//! * a division whose numerator fits 32 bits and denominator 20 (any shape
+//!   on a screen) is done in 32-bit steps: the integer quotient, then the
+//!   fraction's 22 bits as two 11-bit digits of long division.
+//!
+//! Each is the same integer as the rounded-down quotient it replaces, so the
+//! alphas (and the bound above) are unchanged; the unit tests check the
+//! stepped crossings and `fixed` against exact `i128` quotients.
+//!
 //! The row is processed in chunks of 32 cells: chunks no edge
-//! reaches have one coverage and go out as one run; the others accumulate
-//! per cell.
+//! reaches have one coverage and go out as one run; in the others only the
+//! cells between the first and the last a piece wrote are accumulated and
+//! read back one by one, the cells left and right of them being one run each.
 
 use super::edges::{Active, BITS, Edge, EdgeList};
 use super::{FillRule, Runs};
@@ -46,8 +69,10 @@ use crate::edge::Span;
 /// Cells accumulated at once.
 pub(crate) const CHUNK: usize = 32;
 
-/// Fraction bits of a subpixel in crossings.
+/// Fraction bits of a subpixel in crossings (`fixed_rem`'s 32-bit path
+/// divides in two steps of 11).
 const FB: u32 = 22;
+const _: () = assert!(FB == 2 * 11);
 /// One subpixel, a pixel (a column's width, a strip's height) in crossing units.
 const SUB: i64 = 1 << FB;
 const COL: i64 = SUB << BITS;
@@ -67,6 +92,21 @@ fn fixed(n: i64, d: i64) -> i64 {
 /// `0 ≤ r < d`, so a crossing can be stepped exactly ([`Crossings`]).
 #[inline]
 fn fixed_rem(n: i64, d: i64) -> (i64, i64) {
+    // Shapes on a screen have numerators below 2^31 and denominators below
+    // 2^20: then both steps are 32-bit divisions, which Cortex-M3 and up do
+    // in hardware (a 64-bit one is a library call). The same quotients.
+    if let (Ok(n32), Ok(d32)) = (i32::try_from(n), u32::try_from(d)) {
+        if d32 < 1 << 20 {
+            // Euclidean: n = a·d + b, 0 ≤ b < d.
+            let d = d32 as i32;
+            let (a, b) = (n32.div_euclid(d), n32.rem_euclid(d) as u32);
+            // b·2^FB = c·d + r in two base-2^11 digits, each step below 2^31:
+            // b < 2^20, then r1 < d < 2^20.
+            let (c1, r1) = ((b << 11) / d32, (b << 11) % d32);
+            let (c2, r) = ((r1 << 11) / d32, (r1 << 11) % d32);
+            return ((i64::from(a) << FB) + i64::from((c1 << 11) | c2), i64::from(r));
+        }
+    }
     // One quotient-and-remainder (`__aeabi_ldivmod` on 32-bit Arm), made
     // Euclidean: n = a·d + b, 0 ≤ b < d.
     let (mut a, mut b) = (n / d, n % d);
@@ -175,10 +215,8 @@ impl Crossings {
     #[inline]
     fn advance(&mut self) {
         let (d, rise) = (self.d, self.rise);
-        let (sq, sr) = *self.step.get_or_insert_with(|| {
-            let delta = COL * rise;
-            (delta.div_euclid(d), delta.rem_euclid(d))
-        });
+        // COL·rise = (16·rise)·2^FB: the step is `fixed_rem(16·rise, d)`.
+        let (sq, sr) = *self.step.get_or_insert_with(|| fixed_rem((COL >> FB) * rise, d));
         (self.q, self.r) = (self.q + sq, self.r + sr);
         if self.r >= d {
             (self.q, self.r) = (self.q + 1, self.r - d);
@@ -221,7 +259,8 @@ pub(crate) fn scan<F: FnMut(Span, u8), const N: usize>(
     let lo = (i64::from(y_min).div_euclid(one)).max(i64::from(clip.y0())) as i32;
     let hi = super::scan::div_ceil(i64::from(y_max), one).min(i64::from(clip.y1())) as i32;
     let cols = i64::from(clip.x1() - clip.x0());
-    let mut pieces = [Piece::default(); N];
+    // Written as the row's pieces come, never zeroed ahead.
+    let mut pieces = heapless::Vec::<Piece, N>::new();
     // Each edge's crossing of the last strip's bottom, by edge index.
     let mut xs = [0i64; N];
     let mut active = Active::<N>::new();
@@ -229,7 +268,8 @@ pub(crate) fn scan<F: FnMut(Span, u8), const N: usize>(
     for y in lo..hi {
         let o = Origin { ox: i64::from(clip.x0()) * one, s0: i64::from(y) * one };
         let s1 = o.s0 + one;
-        let (mut n, mut min_x, mut max_x) = (0, i64::MAX, i64::MIN);
+        let (mut min_x, mut max_x) = (i64::MAX, i64::MIN);
+        pieces.clear();
         active.advance(edges.edges(), s1, o.s0);
         for (i, e) in active.indexed(edges.edges()) {
             let (t0, t1) = (i64::from(e.y0).max(o.s0), i64::from(e.y1).min(s1));
@@ -244,16 +284,16 @@ pub(crate) fn scan<F: FnMut(Span, u8), const N: usize>(
             xs[i as usize] = x1;
             let p = o.piece(e, i, (t0, x0), (t1, x1));
             (min_x, max_x) = (min_x.min(p.lx), max_x.max(p.rx));
-            pieces[n] = p;
-            n += 1;
+            // Fits: a piece per active edge, at most N.
+            let _ = pieces.push(p);
         }
-        if n == 0 {
+        if pieces.is_empty() {
             continue;
         }
         // Columns (from the clip's left side) the pieces can reach.
         let x_lo = min_x.div_euclid(COL).clamp(0, cols) as i32;
         let x_hi = (max_x.div_euclid(COL) + 1).clamp(0, cols) as i32;
-        let strip = Strip { edges: edges.edges(), pieces: &pieces[..n], o, y, cx0: clip.x0() };
+        let strip = Strip { edges: edges.edges(), pieces: &pieces, o, y, cx0: clip.x0() };
         strip.row((x_lo, x_hi), rule, &mut cells, runs);
     }
     runs.flush();
@@ -405,6 +445,15 @@ mod tests {
             let n = (x as i64) >> 4; // |n| < 2^59
             let d = ((x >> 33) as i64 & ((1 << 31) - 1)).max(1) >> (x % 31);
             check(n, d.max(1));
+            // The 32-bit path: |n| < 2^31, d < 2^20, and its edges.
+            check(n >> 29, (d >> 11).max(1));
+            check(n >> 28, (d >> (11 + x % 9)).max(1));
+        }
+        for (n, d) in
+            [(i64::from(i32::MAX), (1 << 20) - 1), (i64::from(i32::MIN), (1 << 20) - 1), (-1, 1 << 20)]
+        {
+            check(n, d);
+            check(n, d - 1);
         }
     }
 

@@ -32,9 +32,6 @@ pub const BITS: u32 = 4;
 
 /// One non-horizontal edge, stored top to bottom (`y0 < y1`) in subpixel
 /// units; `dir` is `+1` if the contour ran downwards, `-1` if upwards.
-/// `dir` is a whole word, though it holds one of two values: with no padding
-/// bytes an empty [`EdgeList`] is all zeros, and the compiler builds one with
-/// a `memset` in place instead of zeroing a temporary and copying 5 KB.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub(crate) struct Edge {
     pub x0: i32,
@@ -58,20 +55,20 @@ pub(crate) struct Edge {
 /// ```
 #[derive(Debug, Clone)]
 pub struct EdgeList<const N: usize> {
-    edges: [Edge; N],
+    // Written as edges come, never zeroed ahead (a `heapless::Vec`): a list
+    // costs what it holds, not its capacity.
+    edges: heapless::Vec<Edge, N>,
     len: usize,
     // The contour being built (if `open`): its first and last point.
     open: bool,
     start: (i32, i32),
     last: (i32, i32),
     // Bounding rows in subpixel units of the stored edges (meaningless
-    // while `len` is 0). An empty list is all zero bytes, so making one is
-    // a `memset`, not a copy of a 5 KB constant.
+    // while `len` is 0).
     y_min: i32,
     y_max: i32,
     // A measuring list ([`EdgeList::measuring`]) stores no edge: it counts
-    // them (up to `MAX_EDGES`) and tracks their rows. `false` is a zero
-    // byte, so a storing list is still all zeros.
+    // them (up to `MAX_EDGES`) and tracks their rows.
     measure: bool,
     // A window ([`EdgeList::window`]): only edges meeting subpixel rows
     // `win.0 .. win.1` are stored; `twice` sums the signed area terms of
@@ -102,7 +99,7 @@ impl<const N: usize> EdgeList<N> {
     /// ```
     pub const fn new() -> Self {
         EdgeList {
-            edges: [Edge { x0: 0, y0: 0, x1: 0, y1: 0, dir: 0 }; N],
+            edges: heapless::Vec::new(),
             len: 0,
             open: false,
             start: (0, 0),
@@ -116,10 +113,9 @@ impl<const N: usize> EdgeList<N> {
         }
     }
 
-    /// Empties the list, as [`EdgeList::new`] would, without rewriting its
-    /// storage: the stored edges are only forgotten. Reusing a list this way
-    /// costs a few stores; assigning `EdgeList::new()` rewrites the whole
-    /// array (5 KB at [`MAX_EDGES`](crate::shape::MAX_EDGES)).
+    /// Empties the list, as [`EdgeList::new`] would: the stored edges are
+    /// only forgotten (making or emptying a list costs a few stores, whatever
+    /// its capacity; its storage is written as edges come).
     ///
     /// ```
     /// let mut e = microraster::shape::EdgeList::<4>::new();
@@ -133,6 +129,7 @@ impl<const N: usize> EdgeList<N> {
     /// ```
     pub fn clear(&mut self) {
         self.len = 0;
+        self.edges.clear();
         self.open = false;
         (self.y_min, self.y_max) = (0, 0);
         self.twice = 0;
@@ -164,7 +161,7 @@ impl<const N: usize> EdgeList<N> {
 
     pub(crate) fn edges(&self) -> &[Edge] {
         // `len ≤ N` but in a measuring list, which stores none.
-        &self.edges[..self.len.min(N)]
+        &self.edges
     }
 
     /// Rows (subpixel units) spanned by the edges: `y_min > y_max` if empty.
@@ -269,8 +266,8 @@ impl<const N: usize> EdgeList<N> {
     /// windowed list sums the terms as edges are pushed, the ones it drops
     /// too, so its members turn as the whole list's would.
     pub(crate) fn orient_since(&mut self, (from, twice): (usize, i128)) {
-        let end = self.len.min(N);
-        let edges = &mut self.edges[from.min(end)..end];
+        let end = self.edges.len();
+        let edges = &mut self.edges[from.min(end)..];
         let twice = if self.windowed { self.twice - twice } else { edges.iter().map(area_term).sum() };
         if twice < 0 {
             edges.iter_mut().for_each(|e| e.dir = -e.dir);
@@ -288,8 +285,7 @@ impl<const N: usize> EdgeList<N> {
     /// Sorts the edges by their top, which the scan's active-edge list
     /// needs (`core`'s unstable sort: no allocation).
     pub(crate) fn sort_by_top(&mut self) {
-        let end = self.len.min(N);
-        self.edges[..end].sort_unstable_by_key(|e| e.y0);
+        self.edges.sort_unstable_by_key(|e| e.y0);
     }
 
     fn push(&mut self, a: (i32, i32), b: (i32, i32)) -> Result<(), Error> {
@@ -312,7 +308,7 @@ impl<const N: usize> EdgeList<N> {
                 return Err(Error::BufferTooSmall);
             }
         } else {
-            *self.edges.get_mut(self.len).ok_or(Error::BufferTooSmall)? = e;
+            self.edges.push(e).map_err(|_| Error::BufferTooSmall)?;
         }
         (self.y_min, self.y_max) =
             if self.len == 0 { (e.y0, e.y1) } else { (self.y_min.min(e.y0), self.y_max.max(e.y1)) };
@@ -336,7 +332,7 @@ impl EdgeList<0> {
     /// (more than [`MAX_EDGES`](crate::shape::MAX_EDGES) edges is
     /// [`Error::BufferTooSmall`]). What [`Styled::new`](crate::shape::Styled::new)
     /// needs to check a shape and find its rows, without writing (or
-    /// zeroing) 5 KB of edges.
+    /// zeroing) a list of edges.
     pub(crate) const fn measuring() -> Self {
         let mut e = EdgeList::new();
         e.measure = true;
@@ -348,36 +344,28 @@ impl EdgeList<0> {
 /// entered once their top is reached, dropped once their bottom is passed,
 /// so each row looks at its own edges only.
 pub(crate) struct Active<const N: usize> {
-    idx: [u32; N],
-    n: usize,
+    // Indices of the active edges, written as they enter (not zeroed ahead).
+    idx: heapless::Vec<u32, N>,
     next: usize,
 }
 
 impl<const N: usize> Active<N> {
     pub(crate) fn new() -> Self {
-        Active { idx: [0; N], n: 0, next: 0 }
+        Active { idx: heapless::Vec::new(), next: 0 }
     }
 
     /// Enters edges with `y0 < top_below` and drops those with `y1 <= bottom_above`.
     pub(crate) fn advance(&mut self, edges: &[Edge], top_below: i64, bottom_above: i64) {
         while self.next < edges.len() && i64::from(edges[self.next].y0) < top_below {
-            // n < N: at most N edges exist.
-            self.idx[self.n] = self.next as u32;
-            self.n += 1;
+            // Fits: at most N edges exist (a list of capacity N).
+            let _ = self.idx.push(self.next as u32);
             self.next += 1;
         }
-        let mut k = 0;
-        for i in 0..self.n {
-            if i64::from(edges[self.idx[i] as usize].y1) > bottom_above {
-                self.idx[k] = self.idx[i];
-                k += 1;
-            }
-        }
-        self.n = k;
+        self.idx.retain(|&i| i64::from(edges[i as usize].y1) > bottom_above);
     }
 
     pub(crate) fn edges<'e>(&self, edges: &'e [Edge]) -> impl Iterator<Item = &'e Edge> + use<'_, 'e, N> {
-        self.idx[..self.n].iter().map(move |&i| &edges[i as usize])
+        self.idx.iter().map(move |&i| &edges[i as usize])
     }
 
     /// [`Self::edges`] with each edge's index in `edges`.
@@ -385,7 +373,7 @@ impl<const N: usize> Active<N> {
         &self,
         edges: &'e [Edge],
     ) -> impl Iterator<Item = (u32, &'e Edge)> + use<'_, 'e, N> {
-        self.idx[..self.n].iter().map(move |&i| (i, &edges[i as usize]))
+        self.idx.iter().map(move |&i| (i, &edges[i as usize]))
     }
 }
 

@@ -43,7 +43,10 @@ pub struct Styled<S, C, A = Aliased> {
 const SMALL_EDGES: usize = 32;
 
 impl<S: Shape, C: Copy, A: Coverage> Styled<S, C, A> {
-    /// Checks the style and that the contours fit [`MAX_EDGES`].
+    /// Checks the style and that the contours fit [`MAX_EDGES`]: by
+    /// measuring the contours (building them without storing them), or for
+    /// polylines and polygons from the geometry alone (a bound on their
+    /// extent and edge count, [`Self::rows`]), which is cheaper still.
     ///
     /// Errors: NaN anywhere ([`Error::NonFiniteCoordinate`]); a negative
     /// stroke width or a miter limit below 1 ([`Error::InvalidParameter`]);
@@ -108,9 +111,14 @@ impl<S: Shape, C: Copy, A: Coverage> Styled<S, C, A> {
 
     /// Pixel rows `.0 .. .1` (half-open) the fill and stroke can touch;
     /// `(0, 0)` for a shape that covers nothing. A band outside them is
-    /// skipped at the cost of two comparisons. The bound rounds the edges'
-    /// extent outward to whole rows, so it may hold one row the shape does not
-    /// cover (an edge exactly on a row boundary); it never misses one.
+    /// skipped at the cost of two comparisons. A conservative bound: it never
+    /// misses a row. For most shapes it rounds the edges' extent outward to
+    /// whole rows, so it may hold one row the shape does not cover (an edge
+    /// exactly on a row boundary). For [`Polyline`](crate::shape::Polyline)s
+    /// and [`Polygon`](crate::shape::Polygon)s it is found from the points
+    /// without building the edges (so that building one per band is cheap):
+    /// their extent grown by the stroke's half width times the longest miter
+    /// (or `√2` for square caps), and one more row each side.
     ///
     /// ```
     /// use embedded_graphics::pixelcolor::{Gray8, GrayColor};
