@@ -109,11 +109,24 @@ fn path_reach(pts: &[(f32, f32)], fill: bool, stroke: Option<&StrokeParams>) -> 
     if pts.is_empty() || !(far + r < NEAR) || edges > super::MAX_EDGES {
         return None;
     }
-    // Whole rows, a pixel wider each side than the exact reach. `floor` by
-    // hand (not in `core` on every toolchain): exact, |v| < 2^20.
-    let floor = |v: f32| if ((v as i32) as f32) > v { v as i32 - 1 } else { v as i32 };
+    // Whole rows, a pixel wider each side than the exact reach.
     let rows = (floor(y0 - r) - 1, floor(y1 + r) + 2);
     Some(Reach { rows, edges })
+}
+
+/// A [`Reach`] of at most `edges` edges per part, all within `radius` px of
+/// `c` (arcs and rounded corners: vertices on circles, chords inside them).
+fn round_reach(c: (f32, f32), radius: f32, edges: usize) -> Option<Reach> {
+    let far = c.0.abs().max(c.1.abs()) + radius;
+    if !(far < NEAR) || edges > super::MAX_EDGES {
+        return None;
+    }
+    Some(Reach { rows: (floor(c.1 - radius) - 1, floor(c.1 + radius) + 2), edges })
+}
+
+/// `⌊v⌋` for `|v| < 2^20` (`f32::floor` is not in `core` on every toolchain).
+fn floor(v: f32) -> i32 {
+    if ((v as i32) as f32) > v { v as i32 - 1 } else { v as i32 }
 }
 
 /// An axis-aligned rectangle: top-left corner and size (px).
@@ -241,6 +254,24 @@ impl Shape for RoundedRect {
     fn stroke_contours<const N: usize>(&self, e: &mut EdgeList<N>, p: &StrokeParams) -> Result<(), Error> {
         self.contour(e, p.half, false)?;
         self.contour(e, -p.half, true)
+    }
+    fn reach(&self, fill: bool, stroke: Option<&StrokeParams>) -> Option<Reach> {
+        // A contour grown by `d` has four quarter arcs of radius r + d
+        // (their points, one edge each, and the closing one) within the box
+        // grown by `d`: the centre's distance to a corner of that box.
+        let Rect { x, y, w, h } = self.rect;
+        let d = stroke.map_or(0.0, |p| p.half);
+        let quarter = |r: f32| 4 * (super::flatten::segments(r, FRAC_PI_2) as usize + 1) + 1;
+        let edges = if fill { quarter(self.r) } else { 0 }.max(if stroke.is_some() {
+            2 * quarter(self.r + d)
+        } else {
+            0
+        });
+        let far = x.abs().max(y.abs()).max((x + w).abs()).max((y + h).abs()) + d;
+        if !(far < NEAR) || edges > super::MAX_EDGES {
+            return None;
+        }
+        Some(Reach { rows: (floor(y - d) - 1, floor(y + h + d) + 2), edges })
     }
 }
 

@@ -45,8 +45,9 @@ const SMALL_EDGES: usize = 32;
 impl<S: Shape, C: Copy, A: Coverage> Styled<S, C, A> {
     /// Checks the style and that the contours fit [`MAX_EDGES`]: by
     /// measuring the contours (building them without storing them), or for
-    /// polylines and polygons from the geometry alone (a bound on their
-    /// extent and edge count, [`Self::rows`]), which is cheaper still.
+    /// polylines, polygons, arcs and rounded rectangles from the geometry
+    /// alone (a bound on their extent and edge count, [`Self::rows`]), which
+    /// is cheaper still.
     ///
     /// Errors: NaN anywhere ([`Error::NonFiniteCoordinate`]); a negative
     /// stroke width or a miter limit below 1 ([`Error::InvalidParameter`]);
@@ -114,11 +115,14 @@ impl<S: Shape, C: Copy, A: Coverage> Styled<S, C, A> {
     /// skipped at the cost of two comparisons. A conservative bound: it never
     /// misses a row. For most shapes it rounds the edges' extent outward to
     /// whole rows, so it may hold one row the shape does not cover (an edge
-    /// exactly on a row boundary). For [`Polyline`](crate::shape::Polyline)s
-    /// and [`Polygon`](crate::shape::Polygon)s it is found from the points
-    /// without building the edges (so that building one per band is cheap):
-    /// their extent grown by the stroke's half width times the longest miter
-    /// (or `√2` for square caps), and one more row each side.
+    /// exactly on a row boundary). For [`Polyline`](crate::shape::Polyline)s,
+    /// [`Polygon`](crate::shape::Polygon)s, [`Arc`](crate::shape::Arc)s and
+    /// [`RoundedRect`](crate::shape::RoundedRect)s it is found from the
+    /// geometry without building the edges (so that building one per band is
+    /// cheap), and is looser: the points' extent grown by the stroke's half
+    /// width times the longest miter (or `√2` for square caps); an arc's whole
+    /// circle, grown by `√2` half widths; a rounded rectangle's box grown by
+    /// a half width; each with one more row each side.
     ///
     /// ```
     /// use embedded_graphics::pixelcolor::{Gray8, GrayColor};
@@ -324,6 +328,49 @@ mod tests {
                     let slack = (p.half * p.miter_limit.max(core::f32::consts::SQRT_2)).ceil() as i32 + 2;
                     let loose = (rows.0 - r.rows.0).max(r.rows.1 - rows.1);
                     assert!(loose <= slack, "{what}: {rows:?} vs {:?}", r.rows);
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn arc_and_rounded_rect_reach_holds_their_edges() {
+        use crate::shape::{Arc, Cap, Rect, RoundedRect};
+        let mut x = 0x9e37_79b9_7f4a_7c15u64;
+        let mut rnd = |scale: f32| {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            (x >> 40) as f32 / (1u64 << 24) as f32 * scale
+        };
+        for i in 0..300 {
+            let cap = [Cap::Butt, Cap::Square, Cap::Round][i % 3];
+            let mut style = ShapeStyle::fill(Gray8::WHITE).with_stroke(Gray8::BLACK, rnd(14.0));
+            style.cap = cap;
+            let base = if i % 4 == 0 { 5.0e5 } else { 0.0 };
+            let (c, r) = ((base + rnd(80.0) - 20.0, base + rnd(80.0) - 20.0), rnd(150.0));
+            let arc = Arc::new(c, r, rnd(20.0) - 10.0, rnd(16.0) - 8.0).unwrap().styled(style).unwrap();
+            let rect = Rect::new(c.0, c.1, rnd(120.0), rnd(120.0)).unwrap();
+            let rounded = RoundedRect::new(rect, rnd(40.0)).unwrap().styled(style).unwrap();
+            let stroke = Some(style.params());
+            for (reach, (rows, nf, ns), tight) in [
+                (arc.shape.reach(true, stroke.as_ref()), exact(&arc), false),
+                (rounded.shape.reach(true, stroke.as_ref()), exact(&rounded), true),
+                (
+                    rounded.shape.reach(true, None),
+                    exact(&rounded.shape.styled(ShapeStyle::fill(Gray8::WHITE)).unwrap()),
+                    true,
+                ),
+            ] {
+                let r = reach.expect("near and few edges: a reach");
+                let what = format!("{i}: {c:?} {cap:?}");
+                assert!(nf <= r.edges && ns <= r.edges, "{what}: {nf}, {ns} edges, bound {}", r.edges);
+                if rows.0 < rows.1 {
+                    assert!(r.rows.0 <= rows.0 && rows.1 <= r.rows.1, "{what}: {rows:?} in {:?}", r.rows);
+                    if tight {
+                        let loose = (rows.0 - r.rows.0).max(r.rows.1 - rows.1);
+                        assert!(loose <= 2, "{what}: {rows:?} vs {:?}", r.rows);
+                    }
                 }
             }
         }
