@@ -80,7 +80,8 @@ pub struct Reach {
 
 /// Points (px) below which `reach` is trusted: `f32` steps there are at most
 /// 1/8 px, so the few roundings between a point and a stroke's vertex move
-/// it far less than the one-pixel margin `reach` adds.
+/// it far less than the one-pixel margin `reach` adds. (Every input is
+/// finite: sums compared with it are finite or +∞, never NaN.)
 const NEAR: f32 = (1 << 20) as f32;
 
 /// [`Shape::reach`] of a path through `pts` (closed or open) filled (if
@@ -106,7 +107,7 @@ fn path_reach(pts: &[(f32, f32)], fill: bool, stroke: Option<&StrokeParams>) -> 
         let j = if round { (super::flatten::segments(p.half, PI) as usize).max(2) } else { 2 };
         edges = edges.max((2 * pts.len() + 4) * (3 + j));
     }
-    if pts.is_empty() || !(far + r < NEAR) || edges > super::MAX_EDGES {
+    if pts.is_empty() || far + r >= NEAR || edges > super::MAX_EDGES {
         return None;
     }
     // Whole rows, a pixel wider each side than the exact reach.
@@ -118,7 +119,7 @@ fn path_reach(pts: &[(f32, f32)], fill: bool, stroke: Option<&StrokeParams>) -> 
 /// `c` (arcs and rounded corners: vertices on circles, chords inside them).
 fn round_reach(c: (f32, f32), radius: f32, edges: usize) -> Option<Reach> {
     let far = c.0.abs().max(c.1.abs()) + radius;
-    if !(far < NEAR) || edges > super::MAX_EDGES {
+    if far >= NEAR || edges > super::MAX_EDGES {
         return None;
     }
     Some(Reach { rows: (floor(c.1 - radius) - 1, floor(c.1 + radius) + 2), edges })
@@ -268,7 +269,7 @@ impl Shape for RoundedRect {
             0
         });
         let far = x.abs().max(y.abs()).max((x + w).abs()).max((y + h).abs()) + d;
-        if !(far < NEAR) || edges > super::MAX_EDGES {
+        if far >= NEAR || edges > super::MAX_EDGES {
             return None;
         }
         Some(Reach { rows: (floor(y - d) - 1, floor(y + h + d) + 2), edges })
