@@ -261,8 +261,9 @@ pub(crate) fn scan<F: FnMut(Span, u8), const N: usize>(
     let cols = i64::from(clip.x1() - clip.x0());
     // Written as the row's pieces come, never zeroed ahead.
     let mut pieces = heapless::Vec::<Piece, N>::new();
-    // Each edge's crossing of the last strip's bottom, by edge index.
-    let mut xs = [0i64; N];
+    // Each edge's crossing of the last strip's bottom, by edge index: a slot
+    // per edge entered so far, added as edges enter (not zeroed ahead).
+    let mut xs = heapless::Vec::<i64, N>::new();
     let mut active = Active::<N>::new();
     let mut cells = Cells { area: [0; CHUNK], start: [0; CHUNK + 1] };
     for y in lo..hi {
@@ -271,6 +272,8 @@ pub(crate) fn scan<F: FnMut(Span, u8), const N: usize>(
         let (mut min_x, mut max_x) = (i64::MAX, i64::MIN);
         pieces.clear();
         active.advance(edges.edges(), s1, o.s0);
+        // Fits: at most N edges enter.
+        let _ = xs.resize(active.entered(), 0);
         for (i, e) in active.indexed(edges.edges()) {
             let (t0, t1) = (i64::from(e.y0).max(o.s0), i64::from(e.y1).min(s1));
             if t0 >= t1 {

@@ -364,6 +364,11 @@ impl<const N: usize> Active<N> {
         self.idx.retain(|&i| i64::from(edges[i as usize].y1) > bottom_above);
     }
 
+    /// How many edges have entered so far: every active index is below it.
+    pub(crate) fn entered(&self) -> usize {
+        self.next
+    }
+
     pub(crate) fn edges<'e>(&self, edges: &'e [Edge]) -> impl Iterator<Item = &'e Edge> + use<'_, 'e, N> {
         self.idx.iter().map(move |&i| &edges[i as usize])
     }
