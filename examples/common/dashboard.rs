@@ -127,7 +127,7 @@ pub fn dashboard_showing<const N: usize>(
         Polyline::new(&tick)?.styled(pen)?.draw_on(view);
         if major {
             let at = pixel(64.0, a) + Point::new(0, 4);
-            Text::with_alignment(LABELS[k / 4], at, text, Alignment::Center).draw(view)?;
+            view.draw_visible(&Text::with_alignment(LABELS[k / 4], at, text, Alignment::Center))?;
         }
     }
     let a = angle(kmh);
@@ -138,12 +138,12 @@ pub fn dashboard_showing<const N: usize>(
     let glass = ShapeStyle::fill(PANEL).with_stroke(CYAN, 1.5).with_opacity(180).antialiased();
     RoundedRect::new(Rect::new(200.0, 40.0, 108.0, 160.0)?, 10.0)?.styled(glass)?.draw_on(view);
     Sprite::new(&FUEL).at(Point::new(216, 58)).scale(2.0).filter(Bilinear).tint(AMBER).blend_into(view)?;
-    Text::new("FUEL 62%", Point::new(248, 74), text).draw(view)?;
-    Text::new("ODO 12840", Point::new(216, 110), text).draw(view)?;
-    Text::new("21.5 C", Point::new(216, 130), text).draw(view)?;
+    view.draw_visible(&Text::new("FUEL 62%", Point::new(248, 74), text))?;
+    view.draw_visible(&Text::new("ODO 12840", Point::new(216, 110), text))?;
+    view.draw_visible(&Text::new("21.5 C", Point::new(216, 130), text))?;
     let big = MonoTextStyle::new(&FONT_10X20, TEXT);
-    Text::with_alignment(readout, Point::new(124, 178), big, Alignment::Center).draw(view)?;
-    Text::with_alignment("km/h", Point::new(124, 192), text, Alignment::Center).draw(view)?;
+    view.draw_visible(&Text::with_alignment(readout, Point::new(124, 178), big, Alignment::Center))?;
+    view.draw_visible(&Text::with_alignment("km/h", Point::new(124, 192), text, Alignment::Center))?;
     Ok(())
 }
 // dashboard:mr:end

@@ -143,10 +143,21 @@ pub trait Blend: Copy {
     }
 
     /// Blends one colour over every pixel of `dst`.
+    ///
+    /// A run of one destination colour (a flat or vertically graded
+    /// background under a translucent panel) is blended once: the last
+    /// destination and its result are kept, so the same pixel costs a
+    /// comparison. The result is the same, as blending reads the colour's
+    /// channels only (colours equal by `==` have equal channels).
     #[inline]
     fn blend_fill<C: Interpolate>(self, dst: &mut [C], src: C, alpha: u8) {
+        let Some(first) = dst.first().copied() else { return };
+        let mut last = (first, self.blend(src, first, alpha));
         for d in dst.iter_mut() {
-            *d = self.blend(src, *d, alpha);
+            if *d != last.0 {
+                last = (*d, self.blend(src, *d, alpha));
+            }
+            *d = last.1;
         }
     }
 }
@@ -375,6 +386,41 @@ pub fn blend_span<B: Blend, C: Interpolate>(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// `blend_fill` (which blends each run of one destination colour once)
+    /// against blending pixel by pixel, for every mode.
+    fn fill_is_per_pixel<B: Blend>(mode: B) {
+        use embedded_graphics_core::pixelcolor::Rgb565;
+        let mut x = 0x2545_f491u32;
+        for len in [0usize, 1, 2, 7, 40] {
+            for alpha in [0u8, 1, 128, 180, 254, 255] {
+                // Runs of repeated colours with changes between them.
+                let mut dst = [Rgb565::new(0, 0, 0); 40];
+                for (i, d) in dst.iter_mut().enumerate().take(len) {
+                    x ^= x << 13;
+                    x ^= x >> 17;
+                    x ^= x << 5;
+                    let v = if i % 3 == 0 { x } else { (i / 5) as u32 };
+                    *d = Rgb565::new((v % 32) as u8, ((v >> 5) % 64) as u8, ((v >> 11) % 32) as u8);
+                }
+                let src = Rgb565::new(6, 50, 28);
+                let want: [Rgb565; 40] = core::array::from_fn(|i| mode.blend(src, dst[i], alpha));
+                mode.blend_fill(&mut dst[..len], src, alpha);
+                assert_eq!(dst[..len], want[..len], "len {len}, alpha {alpha}");
+            }
+        }
+    }
+
+    #[test]
+    fn blend_fill_equals_blending_each_pixel() {
+        fill_is_per_pixel(Replace);
+        fill_is_per_pixel(Mix);
+        fill_is_per_pixel(Multiply);
+        fill_is_per_pixel(Additive);
+        fill_is_per_pixel(ColorAdd);
+        fill_is_per_pixel(ColorSubtract);
+        fill_is_per_pixel(BlendMode::Mix);
+    }
 
     #[test]
     fn div255_round_is_exact_over_its_domain() {

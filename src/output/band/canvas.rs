@@ -14,12 +14,13 @@
 //! space (even ones whose far corner overflows `i32`) are accepted.
 
 use super::{BandView, clear_rows, fill_run};
+use crate::blit::Blitter;
 use core::convert::Infallible;
-use embedded_graphics_core::Pixel;
 use embedded_graphics_core::draw_target::DrawTarget;
 use embedded_graphics_core::geometry::{Dimensions, Point, Size};
 use embedded_graphics_core::pixelcolor::PixelColor;
 use embedded_graphics_core::primitives::Rectangle;
+use embedded_graphics_core::{Drawable, Pixel};
 
 impl<C: PixelColor, const W: usize> BandView<'_, C, W> {
     /// The columns `x0..x1` and view rows `r0..r1` of `area` inside the
@@ -34,6 +35,54 @@ impl<C: PixelColor, const W: usize> BandView<'_, C, W> {
         let r1 = (ay + ah - y0).min(n);
         // All four are in 0..=max(W, rows) when non-empty: the casts are exact.
         (x0 < x1 && r0 < r1).then_some((x0 as usize, x1 as usize, r0 as usize, r1 as usize))
+    }
+}
+
+impl<C: PixelColor, const W: usize> BandView<'_, C, W> {
+    /// Draws `item` if its bounding box meets the view's clip
+    /// ([`Blitter::clip`]), and skips it otherwise; `Ok(None)` when skipped.
+    ///
+    /// Why: a band renderer runs the frame's drawing code once per band, and
+    /// an e-g drawable generates all of its pixels every time, only for the
+    /// view to drop those outside it. Text is the costly case: a
+    /// `MonoText` walks every glyph pixel of every character in every band.
+    /// Culled by its bounding box, it is only walked in the bands it
+    /// reaches; the pixels are the same, since an e-g drawable draws nothing
+    /// outside its bounding box (text, primitives and images all keep to it).
+    ///
+    /// ```
+    /// use embedded_graphics::mono_font::{MonoTextStyle, ascii::FONT_6X10};
+    /// use embedded_graphics::text::Text;
+    /// use embedded_graphics::{pixelcolor::BinaryColor, prelude::*};
+    /// use microraster::Band;
+    /// let style = MonoTextStyle::new(&FONT_6X10, BinaryColor::On);
+    /// let hi = Text::new("Hi", Point::new(0, 7), style); // rows 0 .. 10
+    /// let mut band = Band::<BinaryColor, 32, 4>::new(BinaryColor::Off);
+    /// // Rows 4 .. 8 meet the text: drawn, and e-g's output comes back.
+    /// let mut view = band.view(4, 4, BinaryColor::Off);
+    /// assert_eq!(view.draw_visible(&hi)?, Some(Point::new(12, 7)));
+    /// assert!(band.rows().iter().flatten().any(|&c| c == BinaryColor::On));
+    /// // Rows 12 .. 16 do not: skipped, no glyph pixel is generated.
+    /// let mut view = band.view(12, 4, BinaryColor::Off);
+    /// assert_eq!(view.draw_visible(&hi)?, None);
+    /// assert!(band.rows().iter().flatten().all(|&c| c == BinaryColor::Off));
+    /// # Ok::<(), core::convert::Infallible>(())
+    /// ```
+    pub fn draw_visible<D>(&mut self, item: &D) -> Result<Option<D::Output>, Infallible>
+    where
+        D: Drawable<Color = C> + Dimensions,
+    {
+        let b = item.bounding_box();
+        let clip = Blitter::clip(self);
+        // In i64: a box anywhere in e-g's space, even one whose far corner
+        // overflows i32, is compared exactly.
+        let (x0, y0) = (i64::from(b.top_left.x), i64::from(b.top_left.y));
+        let (x1, y1) = (x0 + i64::from(b.size.width), y0 + i64::from(b.size.height));
+        let meets = x0 < i64::from(clip.x1())
+            && x1 > i64::from(clip.x0())
+            && y0 < i64::from(clip.y1())
+            && y1 > i64::from(clip.y0());
+        if meets { item.draw(self).map(Some) } else { Ok(None) }
     }
 }
 

@@ -34,9 +34,32 @@
 //! that margin of a tie (`tests/integration/shapes_ref/far.rs` and
 //! `antialiased.rs` compare with the exact area in `f64`).
 //!
+//! # Fewer divisions, the same crossings
+//! A 64-bit division is a library call on 32-bit cores, so the crossings
+//! above are divided as rarely as their exact values allow:
+//!
+//! * at an edge's end the crossing is the end's `x`, a multiple of `dy` in
+//!   the numerator: shifted, not divided;
+//! * a strip's top crossing is the strip above's bottom one, kept per edge
+//!   (the edge crossed that strip: it was active, and its piece ended on the
+//!   shared boundary), so a row divides once per edge that runs through it;
+//! * in a row, a piece's column crossings grow by a constant numerator per
+//!   column: with `n · 2^FB = q·d + r` (`0 ≤ r < d`) held, the next one is
+//!   `q + Q (+1 when r + R ≥ d)` for the exact quotient and remainder
+//!   `Q·d + R = COL·dy·sign(dx)` (below `2^55`): one division for a piece's
+//!   first crossing, one for the step, none after ([`Crossings`]);
+//! * a division whose numerator fits 32 bits and denominator 20 (any shape
+//!   on a screen) is done in 32-bit steps: the integer quotient, then the
+//!   fraction's 22 bits as two 11-bit digits of long division.
+//!
+//! Each is the same integer as the rounded-down quotient it replaces, so the
+//! alphas (and the bound above) are unchanged; the unit tests check the
+//! stepped crossings and `fixed` against exact `i128` quotients.
+//!
 //! The row is processed in chunks of 32 cells: chunks no edge
-//! reaches have one coverage and go out as one run; the others accumulate
-//! per cell.
+//! reaches have one coverage and go out as one run; in the others only the
+//! cells between the first and the last a piece wrote are accumulated and
+//! read back one by one, the cells left and right of them being one run each.
 
 use super::edges::{Active, BITS, Edge, EdgeList};
 use super::{FillRule, Runs};
@@ -46,8 +69,10 @@ use crate::edge::Span;
 /// Cells accumulated at once.
 pub(crate) const CHUNK: usize = 32;
 
-/// Fraction bits of a subpixel in crossings.
+/// Fraction bits of a subpixel in crossings (`fixed_rem`'s 32-bit path
+/// divides in two steps of 11).
 const FB: u32 = 22;
+const _: () = assert!(FB == 2 * 11);
 /// One subpixel, a pixel (a column's width, a strip's height) in crossing units.
 const SUB: i64 = 1 << FB;
 const COL: i64 = SUB << BITS;
@@ -56,12 +81,42 @@ const COL: i64 = SUB << BITS;
 const FULL: i64 = COL * 2 * COL;
 
 /// `n / d` (`d > 0`) rounded down to `FB` fraction bits: `⌊n · 2^FB / d⌋`
-/// without forming `n · 2^FB` (`|n| < 2^60`, `d < 2^31`).
+/// without forming `n · 2^FB` (`|n| < 2^60`, `d < 2^31`, and a result that
+/// fits: `|n / d| < 2^40`, as every crossing, a coordinate, is).
 #[inline]
 fn fixed(n: i64, d: i64) -> i64 {
-    let (q, r) = (n.div_euclid(d), n.rem_euclid(d));
-    // r < d < 2^31: r · 2^FB < 2^53.
-    (q << FB) + (r << FB) / d
+    fixed_rem(n, d).0
+}
+
+/// [`fixed`] and its remainder: `(q, r)` with `n · 2^FB = q·d + r`,
+/// `0 ≤ r < d`, so a crossing can be stepped exactly ([`Crossings`]).
+#[inline]
+fn fixed_rem(n: i64, d: i64) -> (i64, i64) {
+    // Shapes on a screen have numerators below 2^31 and denominators below
+    // 2^20: then both steps are 32-bit divisions, which Cortex-M3 and up do
+    // in hardware (a 64-bit one is a library call). The same quotients.
+    if let (Ok(n32), Ok(d32)) = (i32::try_from(n), u32::try_from(d)) {
+        if d32 < 1 << 20 {
+            // Euclidean: n = a·d + b, 0 ≤ b < d.
+            let d = d32 as i32;
+            let (a, b) = (n32.div_euclid(d), n32.rem_euclid(d) as u32);
+            // b·2^FB = c·d + r in two base-2^11 digits, each step below 2^31:
+            // b < 2^20, then r1 < d < 2^20.
+            let (c1, r1) = ((b << 11) / d32, (b << 11) % d32);
+            let (c2, r) = ((r1 << 11) / d32, (r1 << 11) % d32);
+            return ((i64::from(a) << FB) + i64::from((c1 << 11) | c2), i64::from(r));
+        }
+    }
+    // One quotient-and-remainder (`__aeabi_ldivmod` on 32-bit Arm), made
+    // Euclidean: n = a·d + b, 0 ≤ b < d.
+    let (mut a, mut b) = (n / d, n % d);
+    if b < 0 {
+        (a, b) = (a - 1, b + d);
+    }
+    // 0 ≤ b < d < 2^31: b · 2^FB < 2^53, unsigned: b·2^FB = c·d + r.
+    let (bs, du) = ((b as u64) << FB, d as u64);
+    let (c, r) = (bs / du, bs % du);
+    ((a << FB) + c as i64, r as i64)
 }
 
 /// One edge clipped to a row strip: its left and right end, `x` in
@@ -94,26 +149,78 @@ impl Origin {
         (x0, y0, i64::from(e.x1) - i64::from(e.x0), i64::from(e.y1) - i64::from(e.y0))
     }
 
-    /// `e` between rows `t0 < t1` (subpixels, absolute) as a piece.
-    fn piece(self, e: &Edge, edge: u32, t0: i64, t1: i64) -> Piece {
-        let (x0, y0, dx, dy) = self.rel(e);
-        // |x0| < 2^29, dy ≤ 2^29, |t − y0| ≤ 2^29, |dx| ≤ 2^29: below 2^60.
-        let at = |t: i64| (fixed(x0 * dy + (t - y0) * dx, dy), (t * SUB) as i32);
-        let (a, b) = (at(t0 - self.s0), at(t1 - self.s0));
+    /// Where `e` crosses row `t` (subpixels, absolute, within the edge's
+    /// rows): `x` in crossing units from the clip's left side. At the
+    /// edge's ends that is the end's `x`, exactly (`fixed` of a multiple of
+    /// `dy`), with no division.
+    #[inline]
+    fn x_at(self, e: &Edge, t: i64) -> i64 {
+        let ox = self.ox;
+        if t == i64::from(e.y0) {
+            return (i64::from(e.x0) - ox) << FB;
+        }
+        if t == i64::from(e.y1) {
+            return (i64::from(e.x1) - ox) << FB;
+        }
+        let (x0, _, dx, dy) = self.rel(e);
+        // |x0| < 2^29, dy ≤ 2^29, |t − e.y0| ≤ 2^29, |dx| ≤ 2^29: below 2^60.
+        fixed(x0 * dy + (t - i64::from(e.y0)) * dx, dy)
+    }
+
+    /// `e` between rows `t0 < t1` (subpixels, absolute), crossing them at
+    /// `x0` and `x1` ([`Self::x_at`]), as a piece.
+    #[inline]
+    fn piece(self, e: &Edge, edge: u32, (t0, x0): (i64, i64), (t1, x1): (i64, i64)) -> Piece {
+        let (a, b) = ((x0, ((t0 - self.s0) * SUB) as i32), (x1, ((t1 - self.s0) * SUB) as i32));
         let (l, r) = if a.0 <= b.0 { (a, b) } else { (b, a) };
         Piece { lx: l.0, rx: r.0, lt: l.1, rt: r.1, edge, dir: e.dir }
     }
 
-    /// `t` (crossing units from the strip's top) where `e` crosses the
-    /// column boundary `x` (subpixels from the clip's left side), for `x`
-    /// strictly inside the piece's `x` extent (so `dx ≠ 0`).
+    /// Where `e` crosses the column boundaries `x`, `x + 16`, … (subpixels
+    /// from the clip's left side), for `x` strictly inside the piece's `x`
+    /// extent (so `dx ≠ 0`): `t` in crossing units from the strip's top.
     #[inline]
-    fn t_at(self, e: &Edge, x: i64) -> i32 {
+    fn crossings(self, e: &Edge, x: i64) -> Crossings {
         let (x0, y0, dx, dy) = self.rel(e);
         let s = dx.signum();
         // |y0 · dx| and |(x − x0) · dy| below 2^59 each; the result lies in
         // the strip, 0 ..= 16 · 2^FB.
-        fixed(y0 * dx * s + (x - x0) * dy * s, dx * s) as i32
+        let (q, r) = fixed_rem(y0 * dx * s + (x - x0) * dy * s, dx * s);
+        Crossings { q, r, d: dx * s, rise: dy * s, step: None }
+    }
+}
+
+/// One edge's crossings of successive column boundaries, left to right:
+/// `t = ⌊n · 2^FB / d⌋` with `n` growing by `16·dy·sign(dx)` a column, kept
+/// as `n · 2^FB = q·d + r` (`0 ≤ r < d`) and stepped by the exact quotient
+/// and remainder of that growth, `Q·d + R = COL·dy·sign(dx)` (below `2^55`):
+/// one division for the first crossing, one for the step (at the second),
+/// none after. The same `t` as dividing at every column.
+struct Crossings {
+    q: i64,
+    r: i64,
+    d: i64,
+    rise: i64,
+    step: Option<(i64, i64)>,
+}
+
+impl Crossings {
+    /// The current crossing (within the strip: `0 ..= 16 · 2^FB`).
+    #[inline]
+    fn t(&self) -> i32 {
+        self.q as i32
+    }
+
+    /// Moves to the next column boundary.
+    #[inline]
+    fn advance(&mut self) {
+        let (d, rise) = (self.d, self.rise);
+        // COL·rise = (16·rise)·2^FB: the step is `fixed_rem(16·rise, d)`.
+        let (sq, sr) = *self.step.get_or_insert_with(|| fixed_rem((COL >> FB) * rise, d));
+        (self.q, self.r) = (self.q + sq, self.r + sr);
+        if self.r >= d {
+            (self.q, self.r) = (self.q + 1, self.r - d);
+        }
     }
 }
 
@@ -152,40 +259,55 @@ pub(crate) fn scan<F: FnMut(Span, u8), const N: usize>(
     let lo = (i64::from(y_min).div_euclid(one)).max(i64::from(clip.y0())) as i32;
     let hi = super::scan::div_ceil(i64::from(y_max), one).min(i64::from(clip.y1())) as i32;
     let cols = i64::from(clip.x1() - clip.x0());
-    let mut pieces = [Piece::default(); N];
+    // Written as the row's pieces come, never zeroed ahead.
+    let mut pieces = heapless::Vec::<Piece, N>::new();
+    // Each edge's crossing of the last strip's bottom, by edge index: a slot
+    // per edge entered so far, added as edges enter (not zeroed ahead).
+    let mut xs = heapless::Vec::<i64, N>::new();
     let mut active = Active::<N>::new();
     let mut cells = Cells { area: [0; CHUNK], start: [0; CHUNK + 1] };
     for y in lo..hi {
         let o = Origin { ox: i64::from(clip.x0()) * one, s0: i64::from(y) * one };
         let s1 = o.s0 + one;
-        let (mut n, mut min_x, mut max_x) = (0, i64::MAX, i64::MIN);
+        let (mut min_x, mut max_x) = (i64::MAX, i64::MIN);
+        pieces.clear();
         active.advance(edges.edges(), s1, o.s0);
+        // Fits: at most N edges enter.
+        let _ = xs.resize(active.entered(), 0);
         for (i, e) in active.indexed(edges.edges()) {
             let (t0, t1) = (i64::from(e.y0).max(o.s0), i64::from(e.y1).min(s1));
             if t0 >= t1 {
                 continue;
             }
-            let p = o.piece(e, i, t0, t1);
+            // The strip's top crossing is the previous strip's bottom one
+            // when the edge ran through it (it did, from row `lo + 1` on,
+            // unless it starts in this strip: then it is its end).
+            let x0 = if i64::from(e.y0) < o.s0 && y > lo { xs[i as usize] } else { o.x_at(e, t0) };
+            let x1 = o.x_at(e, t1);
+            xs[i as usize] = x1;
+            let p = o.piece(e, i, (t0, x0), (t1, x1));
             (min_x, max_x) = (min_x.min(p.lx), max_x.max(p.rx));
-            pieces[n] = p;
-            n += 1;
+            // Fits: a piece per active edge, at most N.
+            let _ = pieces.push(p);
         }
-        if n == 0 {
+        if pieces.is_empty() {
             continue;
         }
         // Columns (from the clip's left side) the pieces can reach.
         let x_lo = min_x.div_euclid(COL).clamp(0, cols) as i32;
         let x_hi = (max_x.div_euclid(COL) + 1).clamp(0, cols) as i32;
-        let strip = Strip { edges: edges.edges(), pieces: &pieces[..n], o, y, cx0: clip.x0() };
+        let strip = Strip { edges: edges.edges(), pieces: &pieces, o, y, cx0: clip.x0() };
         strip.row((x_lo, x_hi), rule, &mut cells, runs);
     }
     runs.flush();
 }
 
 /// One chunk's accumulators (doubled areas): each cell's partial area, and
-/// the winding change entering at each cell. Kept by the caller and zeroed
-/// only for a chunk an edge touches: most chunks of a large shape (its
-/// inside, or the hole of a ring) are one coverage and need neither.
+/// the winding change entering at each cell. Kept by the caller, all zeros
+/// between chunks: a chunk reads (and zeroes again) only the cells its
+/// pieces wrote, most of a thin stroke's chunk is one run either side of
+/// them, and most chunks of a large shape (its inside, or the hole of a
+/// ring) are one coverage and need neither.
 struct Cells {
     area: [i64; CHUNK],
     start: [i64; CHUNK + 1],
@@ -214,31 +336,39 @@ impl Strip<'_> {
             let len = (x_hi - c0).min(CHUNK as i32);
             let (f0, f1) = (i64::from(c0) * COL, i64::from(c0 + len) * COL);
             let mut base = 0i64;
-            let mut touched = false;
+            // Cells the pieces wrote: area[k_lo..k_hi], start[k_lo + 1 ..= k_hi].
+            let (mut k_lo, mut k_hi) = (i64::from(len), 0i64);
             for p in self.pieces {
                 if p.rx <= f0 {
                     base += cover(p.dir, p.lt, p.rt);
                 } else if p.lx < f1 {
-                    if !touched {
-                        // The cells this chunk reads: area[..len], start[..=len].
-                        area[..len as usize].fill(0);
-                        start[..=len as usize].fill(0);
-                    }
-                    touched = true;
                     let e = &self.edges[p.edge as usize];
                     // The part left of the chunk is cover for all of it.
                     let (mut ax, mut at) = (p.lx, p.lt);
+                    // Its crossings of the column boundaries, from the
+                    // chunk's left side or the piece's first one on.
+                    let mut k = (ax.max(f0) - f0).div_euclid(COL);
+                    let mut cross = None::<Crossings>;
                     if ax < f0 {
-                        let t = self.o.t_at(e, f0 >> FB);
-                        base += cover(p.dir, at, t);
-                        (ax, at) = (f0, t);
+                        let c = cross.insert(self.o.crossings(e, f0 >> FB));
+                        base += cover(p.dir, at, c.t());
+                        (ax, at) = (f0, c.t());
                     }
                     // Column by column, to the right end or the chunk's side.
-                    let mut k = (ax - f0).div_euclid(COL);
+                    k_lo = k_lo.min(k);
                     while k < i64::from(len) {
                         let side = f0 + (k + 1) * COL;
                         let end = p.rx <= side;
-                        let (bx, bt) = if end { (p.rx, p.rt) } else { (side, self.o.t_at(e, side >> FB)) };
+                        let bt = if end {
+                            p.rt
+                        } else {
+                            match &mut cross {
+                                Some(c) => c.advance(),
+                                None => cross = Some(self.o.crossings(e, side >> FB)),
+                            }
+                            cross.as_ref().map_or(0, Crossings::t)
+                        };
+                        let bx = if end { p.rx } else { side };
                         // The trapezoid right of the piece in column k, and
                         // its height as cover for the columns after it.
                         let dt = i64::from(p.dir) * i64::from((bt - at).abs());
@@ -249,16 +379,29 @@ impl Strip<'_> {
                         }
                         (ax, at, k) = (bx, bt, k + 1);
                     }
+                    k_hi = k_hi.max((k + 1).min(i64::from(len)));
                 }
             }
             let x = self.cx0 + c0;
-            if !touched {
+            if k_lo >= k_hi {
                 runs.push(self.y, x, len as u32, alpha(base, rule));
             } else {
+                // Left of the first written cell the coverage is `base`,
+                // right of the last one `base` plus every piece's height:
+                // one run each. The cells read are zeroed again, so the
+                // arrays are all zeros at every chunk's start.
+                let (lo, hi) = (k_lo as usize, k_hi as usize);
+                if lo > 0 {
+                    runs.push(self.y, x, lo as u32, alpha(base, rule));
+                }
                 let mut cover = base;
-                for k in 0..len as usize {
-                    cover += start[k];
-                    runs.push(self.y, x + k as i32, 1, alpha(cover + area[k], rule));
+                for k in lo..hi {
+                    cover += core::mem::take(&mut start[k]);
+                    runs.push(self.y, x + k as i32, 1, alpha(cover + core::mem::take(&mut area[k]), rule));
+                }
+                cover += core::mem::take(&mut start[hi]);
+                if hi < len as usize {
+                    runs.push(self.y, x + hi as i32, (len as usize - hi) as u32, alpha(cover, rule));
                 }
             }
             c0 += len;
@@ -276,6 +419,85 @@ mod tests {
         assert_eq!(fixed(-3, 2), -3 * SUB / 2);
         assert_eq!(fixed(1, 3), SUB / 3);
         assert_eq!(fixed(-1, 3), -(SUB / 3) - 1);
+    }
+
+    #[test]
+    fn fixed_is_the_exact_floor_over_its_range() {
+        // ⌊n · 2^FB / d⌋ in i128 against the one-division form, at the
+        // range's ends (|n| < 2^60, 0 < d < 2^31) and in between.
+        let ns = [0i64, 1, -1, 7, -7, (1 << 59) + 12345, -(1 << 59) - 777, (1 << 60) - 1, -(1 << 60) + 1];
+        let ds = [1i64, 2, 3, 16, 255, 65_537, (1 << 29) + 3, (1 << 31) - 1];
+        let mut x = 0x9e37_79b9_7f4a_7c15u64;
+        let check = |n: i64, d: i64| {
+            let exact = (i128::from(n) << FB).div_euclid(i128::from(d));
+            // Where the result fits (`|n / d| < 2^40`: the crossings are
+            // coordinates, below 2^30 subpixels).
+            if exact.abs() < 1 << 62 {
+                assert_eq!(i128::from(fixed(n, d)), exact, "{n} / {d}");
+            }
+        };
+        for &n in &ns {
+            for &d in &ds {
+                check(n, d);
+            }
+        }
+        for _ in 0..20_000 {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            let n = (x as i64) >> 4; // |n| < 2^59
+            let d = ((x >> 33) as i64 & ((1 << 31) - 1)).max(1) >> (x % 31);
+            check(n, d.max(1));
+            // The 32-bit path: |n| < 2^31, d < 2^20, and its edges.
+            check(n >> 29, (d >> 11).max(1));
+            check(n >> 28, (d >> (11 + x % 9)).max(1));
+        }
+        for (n, d) in
+            [(i64::from(i32::MAX), (1 << 20) - 1), (i64::from(i32::MIN), (1 << 20) - 1), (-1, 1 << 20)]
+        {
+            check(n, d);
+            check(n, d - 1);
+        }
+    }
+
+    #[test]
+    fn stepped_crossings_are_the_divided_ones() {
+        // Random edges, near and far, steep and shallow, both directions:
+        // each column crossing stepped from the first equals the direct
+        // ⌊n · 2^FB / d⌋ at that column.
+        let mut x = 0x2545_f491_4f6c_dd1du64;
+        let mut rnd = |bits: u32| {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            ((x >> 11) as i64 & ((1 << bits) - 1)) - (1 << (bits - 1))
+        };
+        for i in 0..3000 {
+            let far = if i % 3 == 0 { 27 } else { 12 };
+            let (x0, y0) = (rnd(far) as i32, rnd(far) as i32);
+            let (dx, dy) = (rnd(if i % 2 == 0 { 6 } else { far }) as i32, rnd(far).abs().max(1) as i32);
+            if dx == 0 {
+                continue;
+            }
+            let e = Edge { x0, y0, x1: x0 + dx, y1: y0 + dy, dir: 1 };
+            // A strip the edge crosses, and the columns inside its x extent there.
+            let s0 = i64::from(y0) + rnd(far).abs() % i64::from(dy);
+            let o = Origin { ox: rnd(far), s0 };
+            let direct = |xs: i64| {
+                let (rx0, ry0, ddx, ddy) = o.rel(&e);
+                let sg = ddx.signum();
+                fixed(ry0 * ddx * sg + (xs - rx0) * ddy * sg, ddx * sg)
+            };
+            let (lo, hi) = (i64::from(x0.min(x0 + dx)) - o.ox, i64::from(x0.max(x0 + dx)) - o.ox);
+            let first = lo.div_euclid(16) * 16 + 16;
+            let mut c = o.crossings(&e, first);
+            let mut xs = first;
+            while xs < hi && xs < first + 16 * 40 {
+                assert_eq!((c.q, c.r >= 0 && c.r < c.d), (direct(xs), true), "edge {e:?}, x {xs}");
+                c.advance();
+                xs += 16;
+            }
+        }
     }
 
     #[test]

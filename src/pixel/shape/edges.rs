@@ -32,9 +32,6 @@ pub const BITS: u32 = 4;
 
 /// One non-horizontal edge, stored top to bottom (`y0 < y1`) in subpixel
 /// units; `dir` is `+1` if the contour ran downwards, `-1` if upwards.
-/// `dir` is a whole word, though it holds one of two values: with no padding
-/// bytes an empty [`EdgeList`] is all zeros, and the compiler builds one with
-/// a `memset` in place instead of zeroing a temporary and copying 5 KB.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub(crate) struct Edge {
     pub x0: i32,
@@ -58,17 +55,27 @@ pub(crate) struct Edge {
 /// ```
 #[derive(Debug, Clone)]
 pub struct EdgeList<const N: usize> {
-    edges: [Edge; N],
+    // Written as edges come, never zeroed ahead (a `heapless::Vec`): a list
+    // costs what it holds, not its capacity.
+    edges: heapless::Vec<Edge, N>,
     len: usize,
     // The contour being built (if `open`): its first and last point.
     open: bool,
     start: (i32, i32),
     last: (i32, i32),
     // Bounding rows in subpixel units of the stored edges (meaningless
-    // while `len` is 0). An empty list is all zero bytes, so making one is
-    // a `memset`, not a copy of a 5 KB constant.
+    // while `len` is 0).
     y_min: i32,
     y_max: i32,
+    // A measuring list ([`EdgeList::measuring`]) stores no edge: it counts
+    // them (up to `MAX_EDGES`) and tracks their rows.
+    measure: bool,
+    // A window ([`EdgeList::window`]): only edges meeting subpixel rows
+    // `win.0 .. win.1` are stored; `twice` sums the signed area terms of
+    // every edge pushed (stored or not) for [`EdgeList::orient_since`].
+    windowed: bool,
+    win: (i32, i32),
+    twice: i128,
 }
 
 impl<const N: usize> Default for EdgeList<N> {
@@ -92,20 +99,23 @@ impl<const N: usize> EdgeList<N> {
     /// ```
     pub const fn new() -> Self {
         EdgeList {
-            edges: [Edge { x0: 0, y0: 0, x1: 0, y1: 0, dir: 0 }; N],
+            edges: heapless::Vec::new(),
             len: 0,
             open: false,
             start: (0, 0),
             last: (0, 0),
             y_min: 0,
             y_max: 0,
+            measure: false,
+            windowed: false,
+            win: (0, 0),
+            twice: 0,
         }
     }
 
-    /// Empties the list, as [`EdgeList::new`] would, without rewriting its
-    /// storage: the stored edges are only forgotten. Reusing a list this way
-    /// costs a few stores; assigning `EdgeList::new()` rewrites the whole
-    /// array (5 KB at [`MAX_EDGES`](crate::shape::MAX_EDGES)).
+    /// Empties the list, as [`EdgeList::new`] would: the stored edges are
+    /// only forgotten (making or emptying a list costs a few stores, whatever
+    /// its capacity; its storage is written as edges come).
     ///
     /// ```
     /// let mut e = microraster::shape::EdgeList::<4>::new();
@@ -119,8 +129,10 @@ impl<const N: usize> EdgeList<N> {
     /// ```
     pub fn clear(&mut self) {
         self.len = 0;
+        self.edges.clear();
         self.open = false;
         (self.y_min, self.y_max) = (0, 0);
+        self.twice = 0;
     }
 
     /// Number of stored edges.
@@ -148,7 +160,8 @@ impl<const N: usize> EdgeList<N> {
     }
 
     pub(crate) fn edges(&self) -> &[Edge] {
-        &self.edges[..self.len]
+        // `len ≤ N` but in a measuring list, which stores none.
+        &self.edges
     }
 
     /// Rows (subpixel units) spanned by the edges: `y_min > y_max` if empty.
@@ -241,25 +254,38 @@ impl<const N: usize> EdgeList<N> {
         if flip { self.push(b, a) } else { self.push(a, b) }
     }
 
-    /// Reverses the edges from index `from` on if the winding number they
+    /// Where the contour being added starts, for [`Self::orient_since`].
+    pub(crate) fn mark(&self) -> (usize, i128) {
+        (self.len, self.twice)
+    }
+
+    /// Reverses the edges added since `mark` if the winding number they
     /// enclose integrates to less than zero (`∫w = −Σ dir·(x0 + x1)·(y1 − y0)/2`
     /// over closed contours), so every group member adds coverage with the
-    /// same sign. `i128`: each term is below 2^59, their sum is not.
-    pub(crate) fn orient_from(&mut self, from: usize) {
-        let edges = &mut self.edges[from.min(self.len)..self.len];
-        let twice: i128 = edges
-            .iter()
-            .map(|e| -i128::from(e.dir) * (i128::from(e.x0) + i128::from(e.x1)) * i128::from(e.y1 - e.y0))
-            .sum();
+    /// same sign. `i128`: each term is below 2^59, their sum is not. A
+    /// windowed list sums the terms as edges are pushed, the ones it drops
+    /// too, so its members turn as the whole list's would.
+    pub(crate) fn orient_since(&mut self, (from, twice): (usize, i128)) {
+        let end = self.edges.len();
+        let edges = &mut self.edges[from.min(end)..];
+        let twice = if self.windowed { self.twice - twice } else { edges.iter().map(area_term).sum() };
         if twice < 0 {
             edges.iter_mut().for_each(|e| e.dir = -e.dir);
         }
     }
 
+    /// From now on, stores only the edges that meet subpixel rows
+    /// `lo .. hi` (`y0 < hi` and `y1 > lo`): the only ones that cross a
+    /// pixel row (or row centre) in them, so a scan of those rows gives the
+    /// same coverage with fewer edges. Length and rows count the stored ones.
+    pub(crate) fn window(&mut self, lo: i32, hi: i32) {
+        (self.windowed, self.win) = (true, (lo, hi));
+    }
+
     /// Sorts the edges by their top, which the scan's active-edge list
     /// needs (`core`'s unstable sort: no allocation).
     pub(crate) fn sort_by_top(&mut self) {
-        self.edges[..self.len].sort_unstable_by_key(|e| e.y0);
+        self.edges.sort_unstable_by_key(|e| e.y0);
     }
 
     fn push(&mut self, a: (i32, i32), b: (i32, i32)) -> Result<(), Error> {
@@ -271,8 +297,19 @@ impl<const N: usize> EdgeList<N> {
         } else {
             Edge { x0: b.0, y0: b.1, x1: a.0, y1: a.1, dir: -1 }
         };
-        let slot = self.edges.get_mut(self.len).ok_or(Error::BufferTooSmall)?;
-        *slot = e;
+        if self.windowed {
+            self.twice += area_term(&e);
+            if e.y1 <= self.win.0 || e.y0 >= self.win.1 {
+                return Ok(());
+            }
+        }
+        if self.measure {
+            if self.len >= crate::shape::MAX_EDGES {
+                return Err(Error::BufferTooSmall);
+            }
+        } else {
+            self.edges.push(e).map_err(|_| Error::BufferTooSmall)?;
+        }
         (self.y_min, self.y_max) =
             if self.len == 0 { (e.y0, e.y1) } else { (self.y_min.min(e.y0), self.y_max.max(e.y1)) };
         self.len += 1;
@@ -280,40 +317,60 @@ impl<const N: usize> EdgeList<N> {
     }
 }
 
+/// `−dir·(x0 + x1)·(y1 − y0)`: twice the integral of the winding number the
+/// edge adds, over closed contours. Below 2^59 in magnitude (coordinates
+/// within ±2^28 subpixels, `y1 − y0` below 2^29): an `i64` product, summed
+/// in `i128`.
+fn area_term(e: &Edge) -> i128 {
+    let x = i64::from(e.x0) + i64::from(e.x1);
+    i128::from(-i64::from(e.dir) * x * (i64::from(e.y1) - i64::from(e.y0)))
+}
+
+impl EdgeList<0> {
+    /// A list that stores no edge but measures them: its length, rows and
+    /// errors are those of an `EdgeList<MAX_EDGES>` given the same contours
+    /// (more than [`MAX_EDGES`](crate::shape::MAX_EDGES) edges is
+    /// [`Error::BufferTooSmall`]). What [`Styled::new`](crate::shape::Styled::new)
+    /// needs to check a shape and find its rows, without writing (or
+    /// zeroing) a list of edges.
+    pub(crate) const fn measuring() -> Self {
+        let mut e = EdgeList::new();
+        e.measure = true;
+        e
+    }
+}
+
 /// The edges a row (or row strip) can cross, over edges sorted by top:
 /// entered once their top is reached, dropped once their bottom is passed,
 /// so each row looks at its own edges only.
 pub(crate) struct Active<const N: usize> {
-    idx: [u32; N],
-    n: usize,
+    // Indices of the active edges, written as they enter (not zeroed ahead).
+    idx: heapless::Vec<u32, N>,
     next: usize,
 }
 
 impl<const N: usize> Active<N> {
     pub(crate) fn new() -> Self {
-        Active { idx: [0; N], n: 0, next: 0 }
+        Active { idx: heapless::Vec::new(), next: 0 }
     }
 
     /// Enters edges with `y0 < top_below` and drops those with `y1 <= bottom_above`.
     pub(crate) fn advance(&mut self, edges: &[Edge], top_below: i64, bottom_above: i64) {
         while self.next < edges.len() && i64::from(edges[self.next].y0) < top_below {
-            // n < N: at most N edges exist.
-            self.idx[self.n] = self.next as u32;
-            self.n += 1;
+            // Fits: at most N edges exist (a list of capacity N).
+            let _ = self.idx.push(self.next as u32);
             self.next += 1;
         }
-        let mut k = 0;
-        for i in 0..self.n {
-            if i64::from(edges[self.idx[i] as usize].y1) > bottom_above {
-                self.idx[k] = self.idx[i];
-                k += 1;
-            }
-        }
-        self.n = k;
+        self.idx.retain(|&i| i64::from(edges[i as usize].y1) > bottom_above);
+    }
+
+    /// How many edges have entered so far: every active index is below it.
+    pub(crate) fn entered(&self) -> usize {
+        self.next
     }
 
     pub(crate) fn edges<'e>(&self, edges: &'e [Edge]) -> impl Iterator<Item = &'e Edge> + use<'_, 'e, N> {
-        self.idx[..self.n].iter().map(move |&i| &edges[i as usize])
+        self.idx.iter().map(move |&i| &edges[i as usize])
     }
 
     /// [`Self::edges`] with each edge's index in `edges`.
@@ -321,6 +378,82 @@ impl<const N: usize> Active<N> {
         &self,
         edges: &'e [Edge],
     ) -> impl Iterator<Item = (u32, &'e Edge)> + use<'_, 'e, N> {
-        self.idx[..self.n].iter().map(move |&i| (i, &edges[i as usize]))
+        self.idx.iter().map(move |&i| (i, &edges[i as usize]))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    extern crate std;
+    use super::*;
+    use crate::shape::MAX_EDGES;
+    use std::vec::Vec;
+
+    /// A zigzag polygon of `n` points spread over `h` px: `n` slanted edges.
+    fn zigzag<const N: usize>(e: &mut EdgeList<N>, n: usize, h: f32) -> Result<(), Error> {
+        e.close()?;
+        for i in 0..n {
+            e.line_to(i as f32 * 0.75 - 3.0, (i % 2) as f32 * h + (i / 7) as f32 * 0.3)?;
+        }
+        e.close()
+    }
+
+    #[test]
+    fn measuring_counts_and_bounds_as_a_full_list_does() {
+        for n in [0, 1, 2, 3, 31, 32, 33, 200, MAX_EDGES, MAX_EDGES + 1, MAX_EDGES + 2, 400] {
+            let (mut full, mut m) = (EdgeList::<MAX_EDGES>::new(), EdgeList::measuring());
+            let (a, b) = (zigzag(&mut full, n, 5.0), zigzag(&mut m, n, 5.0));
+            assert_eq!(a, b, "{n} points");
+            assert_eq!((full.len(), full.y_range()), (m.len(), m.y_range()), "{n} points");
+            assert!(m.edges().is_empty());
+        }
+        // A coordinate beyond the snapping range: the same error.
+        let mut m = EdgeList::measuring();
+        assert_eq!(m.polygon(&[(0.0, 0.0), (1.0e12, 3.0), (0.0, 5.0)]), Err(Error::CoordinateOutOfRange));
+    }
+
+    #[test]
+    fn a_window_keeps_exactly_the_edges_meeting_its_rows() {
+        let mut full = EdgeList::<64>::new();
+        zigzag(&mut full, 60, 40.0).unwrap();
+        for (lo, hi) in [(0, 16), (-100, 3), (30, 31), (160, 400), (641, 700), (-50, 9000)] {
+            let mut w = EdgeList::<64>::new();
+            w.window(lo, hi);
+            zigzag(&mut w, 60, 40.0).unwrap();
+            let kept: Vec<_> = full.edges().iter().filter(|e| e.y0 < hi && e.y1 > lo).copied().collect();
+            assert_eq!(w.edges(), &kept[..], "rows {lo}..{hi}");
+            // The same orientation sum as the whole list's.
+            let all = full.edges().iter().map(area_term).sum::<i128>();
+            assert_eq!(w.twice, all);
+        }
+    }
+
+    #[test]
+    fn a_windowed_group_member_turns_as_the_whole_one_does() {
+        // A triangle enclosing winding −1: reversed. Each window below holds
+        // its vertical edge and one slanted one, whose own sum is positive:
+        // orienting by the stored edges alone would leave them as they are.
+        let tri = [(100.0, 0.0), (150.0, 60.0), (100.0, 100.0)];
+        let mut full = EdgeList::<8>::new();
+        let mark = full.mark();
+        full.polygon(&tri).unwrap();
+        full.orient_since(mark);
+        let vertical = full.edges().iter().find(|e| e.x0 == e.x1).unwrap();
+        assert_eq!(vertical.dir, 1, "the upward vertical edge, reversed");
+        for (lo, hi) in [(0, 16), (1500, 1600)] {
+            let mut w = EdgeList::<8>::new();
+            w.window(lo, hi);
+            w.polygon(&tri).unwrap();
+            assert!(w.edges().iter().map(area_term).sum::<i128>() > 0, "rows {lo}..{hi}");
+        }
+        for (lo, hi) in [(0, 16), (900, 1000), (1500, 1600)] {
+            let mut w = EdgeList::<8>::new();
+            w.window(lo, hi);
+            let mark = w.mark();
+            w.polygon(&tri).unwrap();
+            w.orient_since(mark);
+            let kept: Vec<_> = full.edges().iter().filter(|e| e.y0 < hi && e.y1 > lo).copied().collect();
+            assert_eq!(w.edges(), &kept[..], "rows {lo}..{hi}");
+        }
     }
 }

@@ -90,10 +90,10 @@ impl<'a, S: Shape> Group<'a, S> {
     ) -> Result<(), Error> {
         for m in self.members {
             e.close()?;
-            let from = e.len();
+            let from = e.mark();
             add(m, e)?;
             e.close()?;
-            e.orient_from(from);
+            e.orient_since(from);
         }
         Ok(())
     }

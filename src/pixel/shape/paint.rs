@@ -179,20 +179,45 @@ impl<C: Interpolate> Paint<C> {
             Paint::Solid(c) => canvas.fill(span, *c, alpha),
             // Constant along a row (`(px − x0)·0` is 0 for every px): one colour.
             Paint::Linear(g) if g.k.0 == 0.0 => canvas.fill(span, self.color_at(span.x, span.y), alpha),
-            Paint::Linear(LinearGradient { colors, .. }) | Paint::Radial(RadialGradient { colors, .. }) => {
-                // The colour depends on the 8-bit weight alone, which changes
-                // every pixel or more: mix again only when it changes.
-                let mut last = (self.weight_at(span.x, span.y), colors[0]);
-                last.1 = Mix.blend(colors[1], colors[0], last.0);
-                let each = (0..span.len as i32).map(move |i| {
-                    let w = self.weight_at(span.x + i, span.y);
-                    if w != last.0 {
-                        last = (w, Mix.blend(colors[1], colors[0], w));
-                    }
-                    last.1
-                });
-                canvas.shade(span, each, alpha)
+            // The row's part of `t` once per span: the same products and
+            // sums as `weight_at`, in the same order, so the same weights.
+            Paint::Linear(g) => {
+                let row = (span.y as f32 + 0.5 - g.start.1) * g.k.1;
+                let w = |x: i32| weight((x as f32 + 0.5 - g.start.0) * g.k.0 + row);
+                shade_by_weight(canvas, span, g.colors, alpha, w)
+            }
+            Paint::Radial(g) => {
+                let dy = span.y as f32 + 0.5 - g.center.1;
+                let dy2 = dy * dy;
+                let w = |x: i32| {
+                    let dx = x as f32 + 0.5 - g.center.0;
+                    weight(crate::math::Scalar::sqrt(dx * dx + dy2) * g.inv_r)
+                };
+                shade_by_weight(canvas, span, g.colors, alpha, w)
             }
         }
     }
+}
+
+/// `span` shaded with `colors` mixed by `w(x)` at each pixel, coverage
+/// `alpha`. The colour depends on the 8-bit weight alone, which changes
+/// every pixel or more: mixed again only when it changes.
+#[inline]
+fn shade_by_weight<C: Interpolate, T: Canvas<C>>(
+    canvas: &mut T,
+    span: Span,
+    colors: [C; 2],
+    alpha: u8,
+    mut w: impl FnMut(i32) -> u8,
+) {
+    let first = w(span.x);
+    let mut last = (first, Mix.blend(colors[1], colors[0], first));
+    let each = (0..span.len as i32).map(move |i| {
+        let w = w(span.x + i);
+        if w != last.0 {
+            last = (w, Mix.blend(colors[1], colors[0], w));
+        }
+        last.1
+    });
+    canvas.shade(span, each, alpha)
 }

@@ -31,6 +31,16 @@ pub trait Shape: Sized {
     #[doc(hidden)]
     fn stroke_contours<const N: usize>(&self, e: &mut EdgeList<N>, p: &StrokeParams) -> Result<(), Error>;
 
+    /// A conservative bound of the fill's (if `fill`) and the stroke's (if
+    /// `stroke`) snapped edges, found from the geometry without building
+    /// them, when the shape knows one (`None`: [`Styled::new`] builds the
+    /// edges). See [`Reach`].
+    #[doc(hidden)]
+    fn reach(&self, fill: bool, stroke: Option<&StrokeParams>) -> Option<Reach> {
+        let _ = (fill, stroke);
+        None
+    }
+
     /// Pairs the shape with a style (checked: see [`Styled::new`]).
     ///
     /// ```
@@ -55,6 +65,69 @@ fn finite(v: &[f32]) -> Result<(), Error> {
 fn size(v: &[f32]) -> Result<(), Error> {
     finite(v)?;
     if v.iter().all(|&x| x >= 0.0) { Ok(()) } else { Err(Error::InvalidParameter) }
+}
+
+/// What [`Shape::reach`] promises: every edge of the fill and of the
+/// stroke lies in pixel rows `rows.0 .. rows.1`, each part has at most
+/// `edges` edges, and no vertex is beyond the snapping range (so building
+/// them cannot fail).
+#[doc(hidden)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Reach {
+    pub(crate) rows: (i32, i32),
+    pub(crate) edges: usize,
+}
+
+/// Points (px) below which `reach` is trusted: `f32` steps there are at most
+/// 1/8 px, so the few roundings between a point and a stroke's vertex move
+/// it far less than the one-pixel margin `reach` adds. (Every input is
+/// finite: sums compared with it are finite or +∞, never NaN.)
+const NEAR: f32 = (1 << 20) as f32;
+
+/// [`Shape::reach`] of a path through `pts` (closed or open) filled (if
+/// `fill`) and stroked with `stroke`. Every vertex of the stroke lies within
+/// `r = half · max(1, √2 for square caps, the miter limit for miter joins)`
+/// of a point (offsets, round joins and caps, miters no longer than the
+/// limit, pivots at the points themselves); the fill's vertices are the
+/// points. Edge counts: a polygon's fill has at most `n`; a stroke at most
+/// `(2n + 4)·(3 + J)`, `J` the chords of a half turn of radius `half`
+/// (each side: a segment and a join per point, a join being at most `J`
+/// chords or 2 edges, and two caps of at most `max(3, 2J + 1)` edges).
+fn path_reach(pts: &[(f32, f32)], fill: bool, stroke: Option<&StrokeParams>) -> Option<Reach> {
+    let (mut y0, mut y1, mut far) = (f32::INFINITY, f32::NEG_INFINITY, 0.0f32);
+    for &(x, y) in pts {
+        (y0, y1, far) = (y0.min(y), y1.max(y), far.max(x.abs()).max(y.abs()));
+    }
+    let (mut r, mut edges) = (0.0f32, if fill { pts.len() } else { 0 });
+    if let Some(p) = stroke {
+        let cap = if p.cap == super::Cap::Square { core::f32::consts::SQRT_2 } else { 1.0 };
+        let join = if p.join == super::Join::Miter { p.miter_limit } else { 1.0 };
+        r = p.half * cap.max(join);
+        let round = p.join == super::Join::Round || p.cap == super::Cap::Round;
+        let j = if round { (super::flatten::segments(p.half, PI) as usize).max(2) } else { 2 };
+        edges = edges.max((2 * pts.len() + 4) * (3 + j));
+    }
+    if pts.is_empty() || far + r >= NEAR || edges > super::MAX_EDGES {
+        return None;
+    }
+    // Whole rows, a pixel wider each side than the exact reach.
+    let rows = (floor(y0 - r) - 1, floor(y1 + r) + 2);
+    Some(Reach { rows, edges })
+}
+
+/// A [`Reach`] of at most `edges` edges per part, all within `radius` px of
+/// `c` (arcs and rounded corners: vertices on circles, chords inside them).
+fn round_reach(c: (f32, f32), radius: f32, edges: usize) -> Option<Reach> {
+    let far = c.0.abs().max(c.1.abs()) + radius;
+    if far >= NEAR || edges > super::MAX_EDGES {
+        return None;
+    }
+    Some(Reach { rows: (floor(c.1 - radius) - 1, floor(c.1 + radius) + 2), edges })
+}
+
+/// `⌊v⌋` for `|v| < 2^20` (`f32::floor` is not in `core` on every toolchain).
+fn floor(v: f32) -> i32 {
+    if ((v as i32) as f32) > v { v as i32 - 1 } else { v as i32 }
 }
 
 /// An axis-aligned rectangle: top-left corner and size (px).
@@ -183,6 +256,24 @@ impl Shape for RoundedRect {
         self.contour(e, p.half, false)?;
         self.contour(e, -p.half, true)
     }
+    fn reach(&self, fill: bool, stroke: Option<&StrokeParams>) -> Option<Reach> {
+        // A contour grown by `d` has four quarter arcs of radius r + d
+        // (their points, one edge each, and the closing one) within the box
+        // grown by `d`: the centre's distance to a corner of that box.
+        let Rect { x, y, w, h } = self.rect;
+        let d = stroke.map_or(0.0, |p| p.half);
+        let quarter = |r: f32| 4 * (super::flatten::segments(r, FRAC_PI_2) as usize + 1) + 1;
+        let edges = if fill { quarter(self.r) } else { 0 }.max(if stroke.is_some() {
+            2 * quarter(self.r + d)
+        } else {
+            0
+        });
+        let far = x.abs().max(y.abs()).max((x + w).abs()).max((y + h).abs()) + d;
+        if far >= NEAR || edges > super::MAX_EDGES {
+            return None;
+        }
+        Some(Reach { rows: (floor(y - d) - 1, floor(y + h + d) + 2), edges })
+    }
 }
 
 /// A closed polygon through borrowed points (px), convex or not,
@@ -223,6 +314,9 @@ impl Shape for Polygon<'_> {
     fn stroke_contours<const N: usize>(&self, e: &mut EdgeList<N>, p: &StrokeParams) -> Result<(), Error> {
         stroke::polyline(e, self.0, true, p)
     }
+    fn reach(&self, fill: bool, stroke: Option<&StrokeParams>) -> Option<Reach> {
+        path_reach(self.0, fill, stroke)
+    }
 }
 
 /// An open polyline through borrowed points: stroke only (its fill is
@@ -260,5 +354,9 @@ impl Shape for Polyline<'_> {
     }
     fn stroke_contours<const N: usize>(&self, e: &mut EdgeList<N>, p: &StrokeParams) -> Result<(), Error> {
         stroke::polyline(e, self.0, false, p)
+    }
+    fn reach(&self, _fill: bool, stroke: Option<&StrokeParams>) -> Option<Reach> {
+        // The fill is empty.
+        path_reach(self.0, false, stroke)
     }
 }

@@ -1,13 +1,14 @@
 //! The shapes drawn around a centre along elliptic or circular arcs: ellipses,
 //! circles, arcs and sectors.
 
-use super::{Shape, finite, size};
+use super::{Reach, Shape, finite, round_reach, size};
 use crate::Error;
+use crate::shape::Cap;
 use crate::shape::angle::{self, Angle};
 use crate::shape::edges::EdgeList;
 use crate::shape::flatten::{arc_points, arc_points_between};
 use crate::shape::stroke::{self, StrokeParams};
-use core::f32::consts::TAU;
+use core::f32::consts::{PI, SQRT_2, TAU};
 
 /// An ellipse: centre and the two radii (px).
 ///
@@ -183,6 +184,16 @@ impl Arc {
 impl Shape for Arc {
     fn fill_contours<const N: usize>(&self, _: &mut EdgeList<N>) -> Result<(), Error> {
         Ok(())
+    }
+    fn reach(&self, _fill: bool, stroke: Option<&StrokeParams>) -> Option<Reach> {
+        // The annulus's two arcs (n + 1 edges at most each, the outer one's
+        // chords the more numerous) and two caps (a start, the cap, an end:
+        // at most 2 + max(3, J) edges); every vertex within r + half·√2 of
+        // the centre (square caps' corners; round ones reach r + half).
+        let (p, g) = (stroke?, &self.0);
+        let n = crate::shape::flatten::segments(g.r + p.half, g.sweep) as usize;
+        let j = if p.cap == Cap::Round { crate::shape::flatten::segments(p.half, PI) as usize } else { 3 };
+        round_reach(g.c, g.r + p.half * SQRT_2, 2 * (n + 1) + 2 + 2 * (2 + j.max(3)))
     }
     /// The annular sector between radii `r ± width/2`, with the caps.
     fn stroke_contours<const N: usize>(&self, e: &mut EdgeList<N>, p: &StrokeParams) -> Result<(), Error> {

@@ -31,20 +31,23 @@ pub struct Styled<S, C, A = Aliased> {
     // Pixel rows the fill and stroke can touch (half-open), so a band
     // that misses them costs two comparisons.
     rows: (i32, i32),
-    // Fill and stroke each fit SMALL_EDGES: drawn with scratch arrays of
-    // that size, not MAX_EDGES.
-    small: bool,
 }
 
-/// Edge capacity of the scratch lists of a shape drawn with few edges. Every
-/// draw zeroes its edge list and the coverage's per-edge arrays (56 bytes
-/// per edge slot when anti-aliased); at [`MAX_EDGES`] that is 14 KB per shape
-/// and band, most of a small shape's cost. Rectangles, lines, ticks and
-/// small polygons fit 32.
+/// Edge capacity of the scratch lists a part (fill or stroke) is first
+/// drawn with. Every draw zeroes its edge list and the coverage's per-edge
+/// arrays (64 bytes per edge slot when anti-aliased); at [`MAX_EDGES`] that
+/// is 16 KB per shape and band, most of a small shape's cost. Rectangles,
+/// lines, ticks and small polygons fit 32, and so do the edges of a large
+/// shape that cross one band's rows, mostly; a part with more there is built
+/// again in a list of [`MAX_EDGES`].
 const SMALL_EDGES: usize = 32;
 
 impl<S: Shape, C: Copy, A: Coverage> Styled<S, C, A> {
-    /// Checks the style and that the contours fit [`MAX_EDGES`].
+    /// Checks the style and that the contours fit [`MAX_EDGES`]: by
+    /// measuring the contours (building them without storing them), or for
+    /// polylines, polygons, arcs and rounded rectangles from the geometry
+    /// alone (a bound on their extent and edge count, [`Self::rows`]), which
+    /// is cheaper still.
     ///
     /// Errors: NaN anywhere ([`Error::NonFiniteCoordinate`]); a negative
     /// stroke width or a miter limit below 1 ([`Error::InvalidParameter`]);
@@ -69,13 +72,15 @@ impl<S: Shape, C: Copy, A: Coverage> Styled<S, C, A> {
         if w < 0.0 || m < 1.0 {
             return Err(Error::InvalidParameter);
         }
-        let mut s = Styled { shape, style, rows: (0, 0), small: true };
-        // A shape that does not fit the small lists is built again in full
-        // ones; any other error is the shape's, whatever the capacity.
-        match s.extent::<SMALL_EDGES>() {
-            Err(Error::BufferTooSmall) => (s.rows, s.small) = (s.extent::<MAX_EDGES>()?, false),
-            r => s.rows = r?,
-        }
+        let mut s = Styled { shape, style, rows: (0, 0) };
+        // A shape that bounds its edges from its geometry (polylines and
+        // polygons) is checked without building them: drawn in every band
+        // of a frame, a shape outside the band then costs next to nothing.
+        let stroke = (s.style.stroke.is_some() && w > 0.0).then(|| s.style.params());
+        s.rows = match s.shape.reach(s.style.fill.is_some(), stroke.as_ref()) {
+            Some(r) => r.rows,
+            None => s.extent()?,
+        };
         Ok(s)
     }
 
@@ -107,9 +112,17 @@ impl<S: Shape, C: Copy, A: Coverage> Styled<S, C, A> {
 
     /// Pixel rows `.0 .. .1` (half-open) the fill and stroke can touch;
     /// `(0, 0)` for a shape that covers nothing. A band outside them is
-    /// skipped at the cost of two comparisons. The bound rounds the edges'
-    /// extent outward to whole rows, so it may hold one row the shape does not
-    /// cover (an edge exactly on a row boundary); it never misses one.
+    /// skipped at the cost of two comparisons. A conservative bound: it never
+    /// misses a row. For most shapes it rounds the edges' extent outward to
+    /// whole rows, so it may hold one row the shape does not cover (an edge
+    /// exactly on a row boundary). For [`Polyline`](crate::shape::Polyline)s,
+    /// [`Polygon`](crate::shape::Polygon)s, [`Arc`](crate::shape::Arc)s and
+    /// [`RoundedRect`](crate::shape::RoundedRect)s it is found from the
+    /// geometry without building the edges (so that building one per band is
+    /// cheap), and is looser: the points' extent grown by the stroke's half
+    /// width times the longest miter (or `√2` for square caps); an arc's whole
+    /// circle, grown by `√2` half widths; a rounded rectangle's box grown by
+    /// a half width; each with one more row each side.
     ///
     /// ```
     /// use embedded_graphics::pixelcolor::{Gray8, GrayColor};
@@ -127,19 +140,22 @@ impl<S: Shape, C: Copy, A: Coverage> Styled<S, C, A> {
         self.rows
     }
 
-    /// The rows [`Self::rows`] reports, with edge lists of capacity `N`. Not
-    /// inlined: a caller that builds many shapes holds no edge list on its
-    /// stack.
+    /// The rows [`Self::rows`] reports; the shape's error if it has one. One pass over
+    /// the contours into a measuring list, which stores no edge: a shape of
+    /// any size costs its contours' construction and no 5 KB list to zero
+    /// (nor a second pass when it does not fit the small one). Not inlined:
+    /// a caller that builds many shapes keeps one copy.
     #[inline(never)]
-    fn extent<const N: usize>(&self) -> Result<(i32, i32), Error> {
-        let mut e = EdgeList::<N>::new();
+    fn extent(&self) -> Result<(i32, i32), Error> {
+        let mut e = EdgeList::measuring();
         self.fill_edges(&mut e)?;
         let f = e.y_range();
         self.stroke_edges(&mut e)?;
         let t = e.y_range();
         let (y_min, y_max) = (f.0.min(t.0), f.1.max(t.1));
         // Subpixels to whole rows, outward; empty shapes get an empty range.
-        Ok(if y_min <= y_max { (y_min >> BITS, (y_max >> BITS) + 1) } else { (0, 0) })
+        let rows = if y_min <= y_max { (y_min >> BITS, (y_max >> BITS) + 1) } else { (0, 0) };
+        Ok(rows)
     }
 
     /// The fill's edges into `e` (emptied first), unsorted.
@@ -184,28 +200,49 @@ impl<S: Shape, C: Interpolate, A: Coverage> Styled<S, C, A> {
         if clip.y1() <= self.rows.0 || clip.y0() >= self.rows.1 {
             return;
         }
-        if self.small { self.draw_in::<SMALL_EDGES, T>(canvas) } else { self.draw_in::<MAX_EDGES, T>(canvas) }
+        // Only edges that cross the clip's rows can change a pixel in them
+        // (a row strip's coverage comes from the edges crossing it, aliased
+        // and anti-aliased alike), so only those are stored, sorted and
+        // scanned: a band of a large ring holds a few of its edges. Each part
+        // goes in a small list unless its edges in the band do not fit.
+        let window = (clip.y0().saturating_mul(1 << BITS), clip.y1().saturating_mul(1 << BITS));
+        for stroke in [false, true] {
+            if self.part_in::<SMALL_EDGES, T>(canvas, stroke, window) == Err(Error::BufferTooSmall) {
+                // `new` checked that the whole part fits MAX_EDGES.
+                let _ = self.part_in::<MAX_EDGES, T>(canvas, stroke, window);
+            }
+        }
     }
 
-    /// [`Self::draw_on`] with edge lists of capacity `N`, which `new` found
-    /// the shape to fit. Each capacity its own frame, for the stack.
+    /// The fill (or the stroke) on `canvas`, with an edge list of capacity
+    /// `N` holding the edges between subpixel rows `window`. Builds the edges
+    /// first: if they do not fit, nothing is drawn and the error returned.
+    /// Each capacity its own frame, for the stack.
     #[inline(never)]
-    fn draw_in<const N: usize, T: Canvas<C>>(&self, canvas: &mut T) {
-        let clip = canvas.clip();
+    fn part_in<const N: usize, T: Canvas<C>>(
+        &self,
+        canvas: &mut T,
+        stroke: bool,
+        window: (i32, i32),
+    ) -> Result<(), Error> {
+        let (paint, rule) = match stroke {
+            false => (&self.style.fill, self.style.fill_rule),
+            true => (&self.style.stroke, FillRule::NonZero),
+        };
+        let Some(paint) = paint else { return Ok(()) };
+        let mut e = EdgeList::<N>::new();
+        e.window(window.0, window.1);
+        if stroke {
+            self.stroke_edges(&mut e)?
+        } else {
+            self.fill_edges(&mut e)?
+        }
+        e.sort_by_top();
         let op = u32::from(self.style.opacity);
         // Coverage times opacity, rounded; exact (and free) when opaque.
         let alpha = |a: u8| if op == 255 { a } else { div255_round(u32::from(a) * op) as u8 };
-        // One edge list for both. Checked in `new`: building the edges
-        // cannot fail again.
-        let mut e = EdgeList::<N>::new();
-        if let (Some(paint), Ok(())) = (&self.style.fill, self.fill_edges(&mut e)) {
-            e.sort_by_top();
-            A::cover(&e, self.style.fill_rule, clip, |span, a| paint.paint(canvas, span, alpha(a)));
-        }
-        if let (Some(paint), Ok(())) = (&self.style.stroke, self.stroke_edges(&mut e)) {
-            e.sort_by_top();
-            A::cover(&e, FillRule::NonZero, clip, |span, a| paint.paint(canvas, span, alpha(a)));
-        }
+        A::cover(&e, rule, canvas.clip(), |span, a| paint.paint(canvas, span, alpha(a)));
+        Ok(())
     }
 }
 
@@ -219,5 +256,145 @@ impl<S: Shape, C: Interpolate, A: Coverage> Drawable for Styled<S, C, A> {
         let mut canvas = TargetCanvas::new(target);
         self.draw_on(&mut canvas);
         canvas.finish()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    extern crate std;
+    use super::*;
+    use crate::Band;
+    use crate::shape::{Circle, Polygon, Shape, ShapeStyle, Styled};
+    use embedded_graphics::pixelcolor::{Gray8, GrayColor};
+    use std::format;
+    use std::vec::Vec;
+
+    /// `shape` drawn into bands of `h` rows of a 64 × 48 frame, assembled.
+    fn frame<S: Shape, A: crate::shape::Coverage>(shape: &Styled<S, Gray8, A>, h: usize) -> Vec<Gray8> {
+        let mut out = Vec::new();
+        let mut band = Band::<Gray8, 64, 48>::new(Gray8::BLACK);
+        for y0 in (0..48).step_by(h) {
+            let rows = h.min(48 - y0);
+            shape.draw_on(&mut band.view(y0 as i32, rows, Gray8::new(20)));
+            out.extend(band.rows()[..rows].iter().flatten());
+        }
+        out
+    }
+
+    /// The exact rows and per-part edge counts of `s`, from its edges.
+    fn exact<S: Shape>(s: &Styled<S, Gray8>) -> ((i32, i32), usize, usize) {
+        let mut e = EdgeList::measuring();
+        s.fill_edges(&mut e).unwrap();
+        let nf = e.len();
+        s.stroke_edges(&mut e).unwrap();
+        (s.extent().unwrap(), nf, e.len())
+    }
+
+    #[test]
+    fn polyline_and_polygon_reach_holds_their_edges() {
+        use crate::shape::{Cap, Join, Polyline};
+        let mut x = 0x853c_49e6_748f_ea9bu64;
+        let mut rnd = |scale: f32| {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            (x >> 40) as f32 / (1u64 << 24) as f32 * scale
+        };
+        for i in 0..400 {
+            let n = 1 + (rnd(7.0) as usize);
+            let base = if i % 5 == 0 { 9.0e5 } else { 0.0 };
+            let pts: Vec<(f32, f32)> =
+                (0..n).map(|_| (base + rnd(60.0) - 10.0, base + rnd(60.0) - 10.0)).collect();
+            let join = [Join::Miter, Join::Round, Join::Bevel][i % 3];
+            let cap = [Cap::Butt, Cap::Square, Cap::Round][(i / 3) % 3];
+            let mut style = ShapeStyle::fill(Gray8::WHITE).with_stroke(Gray8::BLACK, rnd(12.0));
+            (style.join, style.cap, style.miter_limit) = (join, cap, 1.0 + rnd(6.0));
+            let stroke = Some(style.params());
+            for closed in [false, true] {
+                let (reach, (rows, nf, ns)) = if closed {
+                    let s = Polygon::new(&pts).unwrap().styled(style).unwrap();
+                    (s.shape.reach(true, stroke.as_ref()), exact(&s))
+                } else {
+                    let s = Polyline::new(&pts).unwrap().styled(style).unwrap();
+                    (s.shape.reach(true, stroke.as_ref()), exact(&s))
+                };
+                let r = reach.expect("near points and few edges: a reach");
+                let what = format!("{pts:?} {join:?} {cap:?} closed {closed}");
+                assert!(nf <= r.edges && ns <= r.edges, "{what}: {nf}, {ns} edges, bound {}", r.edges);
+                if rows.0 < rows.1 {
+                    assert!(r.rows.0 <= rows.0 && rows.1 <= r.rows.1, "{what}: {rows:?} in {:?}", r.rows);
+                    // Loose by at most the margin and the longest miter or cap.
+                    let p = style.params();
+                    let slack = (p.half * p.miter_limit.max(core::f32::consts::SQRT_2)).ceil() as i32 + 2;
+                    let loose = (rows.0 - r.rows.0).max(r.rows.1 - rows.1);
+                    assert!(loose <= slack, "{what}: {rows:?} vs {:?}", r.rows);
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn arc_and_rounded_rect_reach_holds_their_edges() {
+        use crate::shape::{Arc, Cap, Rect, RoundedRect};
+        let mut x = 0x9e37_79b9_7f4a_7c15u64;
+        let mut rnd = |scale: f32| {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            (x >> 40) as f32 / (1u64 << 24) as f32 * scale
+        };
+        for i in 0..300 {
+            let cap = [Cap::Butt, Cap::Square, Cap::Round][i % 3];
+            let mut style = ShapeStyle::fill(Gray8::WHITE).with_stroke(Gray8::BLACK, rnd(14.0));
+            style.cap = cap;
+            let base = if i % 4 == 0 { 5.0e5 } else { 0.0 };
+            let (c, r) = ((base + rnd(80.0) - 20.0, base + rnd(80.0) - 20.0), rnd(150.0));
+            let arc = Arc::new(c, r, rnd(20.0) - 10.0, rnd(16.0) - 8.0).unwrap().styled(style).unwrap();
+            let rect = Rect::new(c.0, c.1, rnd(120.0), rnd(120.0)).unwrap();
+            let rounded = RoundedRect::new(rect, rnd(40.0)).unwrap().styled(style).unwrap();
+            let stroke = Some(style.params());
+            for (reach, (rows, nf, ns), tight) in [
+                (arc.shape.reach(true, stroke.as_ref()), exact(&arc), false),
+                (rounded.shape.reach(true, stroke.as_ref()), exact(&rounded), true),
+                (
+                    rounded.shape.reach(true, None),
+                    exact(&rounded.shape.styled(ShapeStyle::fill(Gray8::WHITE)).unwrap()),
+                    true,
+                ),
+            ] {
+                let r = reach.expect("near and few edges: a reach");
+                let what = format!("{i}: {c:?} {cap:?}");
+                assert!(nf <= r.edges && ns <= r.edges, "{what}: {nf}, {ns} edges, bound {}", r.edges);
+                if rows.0 < rows.1 {
+                    assert!(r.rows.0 <= rows.0 && rows.1 <= r.rows.1, "{what}: {rows:?} in {:?}", r.rows);
+                    if tight {
+                        let loose = (rows.0 - r.rows.0).max(r.rows.1 - rows.1);
+                        assert!(loose <= 2, "{what}: {rows:?} vs {:?}", r.rows);
+                    }
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn windowed_parts_draw_every_band_height_alike() {
+        // 120 slanted edges within 6 rows (so a band holds more than the
+        // small list: the fall-back), filled; 30 of them stroked too (over
+        // a hundred stroke edges); and a large ring.
+        let zig: Vec<(f32, f32)> = (0..120)
+            .map(|i| (2.0 + i as f32 * 0.5, 20.0 + (i % 2) as f32 * 6.0 + (i % 5) as f32 * 0.1))
+            .collect();
+        let style = ShapeStyle::fill(Gray8::WHITE).with_stroke(Gray8::new(90), 1.5).with_opacity(200);
+        let fill = ShapeStyle::fill(Gray8::WHITE).with_opacity(200);
+        let zig_aa = Polygon::new(&zig).unwrap().styled(fill.antialiased()).unwrap();
+        let zig_al = Polygon::new(&zig[..30]).unwrap().styled(style).unwrap();
+        let ring = Circle::new((30.0, 25.0), 40.0).unwrap().styled(style.antialiased()).unwrap();
+        let whole = (frame(&zig_aa, 48), frame(&zig_al, 48), frame(&ring, 48));
+        assert!(whole.0.iter().any(|&c| c != Gray8::new(20)));
+        for h in [1, 3, 4, 16, 17] {
+            assert!(frame(&zig_aa, h) == whole.0, "anti-aliased zigzag, bands of {h}");
+            assert!(frame(&zig_al, h) == whole.1, "aliased zigzag, bands of {h}");
+            assert!(frame(&ring, h) == whole.2, "ring, bands of {h}");
+        }
     }
 }
