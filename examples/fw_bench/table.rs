@@ -277,7 +277,9 @@ pub fn table(input: &str) -> Result<(String, String), String> {
                     h.crc
                 ));
             }
-            let instr: u64 = get("instr")?.parse().map_err(|_| format!("{t}: bad instr"))?;
+            // Per frame: a row that renders several (the drive) is divided.
+            let instr: u64 =
+                get("instr")?.parse::<u64>().map_err(|_| format!("{t}: bad instr"))? / h.bench.work.frames();
             let stack: u64 = get("stack")?.parse().map_err(|_| format!("{t}: bad stack"))?;
             let ram = h.bench.work.buffers().split(',').try_fold(0, |sum, name| {
                 run.symbols
