@@ -40,6 +40,18 @@ impl Work {
     }
 }
 
+/// Pixels one run of the drive sends: the damaged area of each frame
+/// (what the host checks the frames' pixel count against).
+pub fn drive_pixels(width: u32, height: u32) -> Result<u64, Error> {
+    let mut n = 0;
+    for f in 1..live::FRAMES {
+        let mut damage = Damage::<RECTS>::new();
+        live::damage(live::speed(f - 1), live::speed(f), &mut damage)?;
+        n += damage.area(width, height);
+    }
+    Ok(n)
+}
+
 /// Frames 1 to 59 of the drive, each with its damage, into `sink`.
 pub fn drive<const W: usize, const H: usize>(
     r: Renderer<Rgb565>,
