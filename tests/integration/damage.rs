@@ -13,7 +13,7 @@ use embedded_graphics::prelude::*;
 use embedded_graphics::primitives::Rectangle;
 use embedded_graphics::text::Text;
 use microraster::band::BandView;
-use microraster::render::{Blocking, Damage, DirtyBands, from_fn};
+use microraster::render::{Binned2d, Blocking, Damage, DirtyBands, from_fn};
 use microraster::shape::{Arc, Cap, Circle, Coverage, Ellipse, Join, LinearGradient, Polygon, Polyline};
 use microraster::shape::{Rect, RoundedRect, Shape, ShapeStyle, Styled};
 use microraster::{Band, Error, Interpolate, Primitive, RenderError, Renderer, SubPoint, Triangle};
@@ -380,8 +380,9 @@ fn full_then_damaged_frames_equal_full_frames() {
         .unwrap();
 }
 
-/// The slice-of-primitives pass (rows cleared as written, `CLEARS = false`)
-/// through damage: the damage shows the full frame, nothing else is sent.
+/// The slice-of-primitives pass (rows cleared as written, `CLEARS = false`;
+/// damaged rows packed) and `Binned2d` (bands at multiples of `H`) through
+/// damage: the damage shows the full frame, nothing else is sent.
 #[test]
 fn primitive_slices_through_damage() {
     let tri = (prop::array::uniform6(-200i32..1700), 0u8..4);
@@ -403,11 +404,16 @@ fn primitive_slices_through_damage() {
             r.render(&prims[..], &mut band, &mut reference).unwrap();
             let mut band = Band::<Rgb565, W, 8>::new(SENTINEL);
             r.render_damaged(&prims[..], &damage, &mut band, &mut screen).unwrap();
+            // Binned2d: per-band lists, so its bands stay at multiples of H.
+            let mut binned = Screen::new(SENTINEL);
+            let mut index = [0u16; HT as usize / 8 * 9]; // every primitive in every band
+            r.render_damaged(Binned2d::new(&prims, &mut index), &damage, &mut band, &mut binned).unwrap();
             for (i, (a, b)) in screen.px.iter().zip(&reference.px).enumerate() {
                 let (x, y) = ((i % W) as i32, (i / W) as i32);
                 let want = if inside(&rects, x, y) { *b } else { SENTINEL };
                 prop_assert_eq!(*a, want, "({}, {})", x, y);
-                prop_assert!(screen.writes[i] <= 1);
+                prop_assert_eq!(binned.px[i], want, "({}, {}) binned", x, y);
+                prop_assert!(screen.writes[i] <= 1 && binned.writes[i] <= 1);
             }
             Ok(())
         })

@@ -2,9 +2,12 @@
 //!
 //! A [`Damage`] list holds up to `N` rectangles in frame coordinates (the
 //! old and new boxes of what moved). [`Renderer::render_damaged`] renders
-//! only the bands those rectangles touch, only their damaged rows, with the
-//! band's clip narrowed to the damaged columns, and sends the union of the
-//! rectangles, each pixel once, with one `fill_contiguous` per disjoint part.
+//! only the rows those rectangles touch, in as few bands as they fill, with
+//! the band's clip narrowed to the damaged columns, and sends the union of
+//! the rectangles, each pixel once, with one `fill_contiguous` per disjoint
+//! part. The pass's fixed cost per band (a closure that builds every shape)
+//! is paid once per band drawn, so packing the rows matters as much as
+//! narrowing them.
 //!
 //! # Why the pixels are a full frame's
 //! A pass draws the whole frame in frame coordinates and the image does not
@@ -215,12 +218,13 @@ fn parts(boxes: &[Box2], y_lo: i32, y_hi: i32, mut f: impl FnMut(Box2)) {
 }
 
 impl<C: Interpolate> Renderer<C> {
-    /// Renders and sends only `damage`: for each band of `H` rows that a
-    /// damaged rectangle touches, clears and draws the damaged rows with
-    /// the band's clip narrowed to the damaged columns, then sends the
-    /// damaged parts with one `fill_contiguous` each (disjoint: no pixel
-    /// twice; [`Damage::area`] pixels in all). Bands the damage misses are
-    /// neither drawn nor sent. Inside the damage the display then shows
+    /// Renders and sends only `damage`: the damaged rows, in bands of at
+    /// most `H` (packed from the first damaged row where the pass accepts
+    /// any rows, [`Pass::ANY_ROWS`], else within the frame's bands of `H`
+    /// rows), each cleared and drawn with its clip narrowed to the damaged
+    /// columns, then the damaged parts sent with one `fill_contiguous` each
+    /// (disjoint: no pixel twice; [`Damage::area`] pixels in all). Rows the
+    /// damage misses are neither drawn nor sent. Inside the damage the display then shows
     /// what [`Renderer::render`] of the same pass shows; outside, it keeps
     /// what it had. Rectangles are clipped to the frame; an empty damage
     /// sends nothing and returns `Ok`.
@@ -276,46 +280,53 @@ impl<C: Interpolate> Renderer<C> {
         let height = frame.size().height as i32;
         let boxes = damage.clipped(W as i64, i64::from(frame.size().height));
         let mut failed: Option<Error> = None;
-        let mut by0 = 0i32;
-        while by0 < height {
-            let by1 = (by0 + H as i32).min(height);
-            let touching = |b: &&Box2| b.y0 < by1 && b.y1 > by0;
-            if let Some(cover) = boxes.iter().filter(touching).copied().reduce(|a, b| Box2 {
+        let mut y = 0i32;
+        // Chunks of at most `H` rows from the first damaged row not yet
+        // drawn: within its band of `H` rows (at a multiple of `H`), or
+        // anywhere for a pass that accepts any rows (`Pass::ANY_ROWS`), so
+        // that the damaged rows fill as few bands as they can.
+        while let Some(top) = boxes.iter().filter(|b| b.y1 > y).map(|b| b.y0.max(y)).min() {
+            let band_end = if P::ANY_ROWS { top + H as i32 } else { top - top % H as i32 + H as i32 };
+            let limit = band_end.min(height);
+            let touching = |b: &&Box2| b.y0 < limit && b.y1 > top;
+            // `top` is some rectangle's row: at least that one touches.
+            let Some(cover) = boxes.iter().filter(touching).copied().reduce(|a, b| Box2 {
                 x0: a.x0.min(b.x0),
                 y0: a.y0.min(b.y0),
                 x1: a.x1.max(b.x1),
                 y1: a.y1.max(b.y1),
-            }) {
-                let (y0, y1) = (cover.y0.max(by0), cover.y1.min(by1));
-                let rows = &mut band.rows_mut()[..(y1 - y0) as usize];
-                if P::CLEARS || failed.is_some() {
-                    for row in rows.iter_mut() {
-                        fill_run(&mut row[cover.x0 as usize..cover.x1 as usize], self.background());
-                    }
+            }) else {
+                break;
+            };
+            let (y0, y1) = (top, cover.y1.min(limit));
+            let rows = &mut band.rows_mut()[..(y1 - y0) as usize];
+            if P::CLEARS || failed.is_some() {
+                for row in rows.iter_mut() {
+                    fill_run(&mut row[cover.x0 as usize..cover.x1 as usize], self.background());
                 }
-                if failed.is_none() {
-                    let mut view = BandView::from_rows(rows, y0, None).with_columns(cover.x0, cover.x1);
-                    if let Err(e) = pass.draw(&mut view, self) {
-                        failed = Some(e);
-                    }
-                }
-                let mut sent = Ok(());
-                parts(&boxes, y0, y1, |p| {
-                    if sent.is_err() {
-                        return;
-                    }
-                    let area = Rectangle::new(
-                        frame.offset() + Point::new(p.x0, p.y0),
-                        Size::new((p.x1 - p.x0) as u32, (p.y1 - p.y0) as u32),
-                    );
-                    let px = rows[(p.y0 - y0) as usize..(p.y1 - y0) as usize]
-                        .iter()
-                        .flat_map(|row| row[p.x0 as usize..p.x1 as usize].iter().copied());
-                    sent = target.fill_contiguous(&area, px);
-                });
-                sent.map_err(RenderError::Target)?;
             }
-            by0 = by1;
+            if failed.is_none() {
+                let mut view = BandView::from_rows(rows, y0, None).with_columns(cover.x0, cover.x1);
+                if let Err(e) = pass.draw(&mut view, self) {
+                    failed = Some(e);
+                }
+            }
+            let mut sent = Ok(());
+            parts(&boxes, y0, y1, |p| {
+                if sent.is_err() {
+                    return;
+                }
+                let area = Rectangle::new(
+                    frame.offset() + Point::new(p.x0, p.y0),
+                    Size::new((p.x1 - p.x0) as u32, (p.y1 - p.y0) as u32),
+                );
+                let px = rows[(p.y0 - y0) as usize..(p.y1 - y0) as usize]
+                    .iter()
+                    .flat_map(|row| row[p.x0 as usize..p.x1 as usize].iter().copied());
+                sent = target.fill_contiguous(&area, px);
+            });
+            sent.map_err(RenderError::Target)?;
+            y = y1;
         }
         failed.map_or(Ok(()), |e| Err(RenderError::Input(e)))
     }
