@@ -330,13 +330,13 @@ fn shape_bounds(scene: &Scene, i: usize) -> Rectangle {
     b.0.unwrap_or(Rectangle::zero())
 }
 
+/// One damaged frame's changes: shapes replaced, texts moved, extra rectangles.
+type Move = (Vec<(usize, Spec)>, Vec<(usize, Point)>, Vec<Rectangle>);
+
 /// A full frame, then damaged frames where some shapes and texts move
 /// (damage: their old and new bounds through `add_moved`, plus random
 /// rectangles): after every frame the display equals a full render.
-fn check_drive<const H: usize>(
-    first: &Scene,
-    moves: &[(Vec<(usize, Spec)>, Vec<(usize, Point)>, Vec<Rectangle>)],
-) -> Result<(), TestCaseError> {
+fn check_drive<const H: usize>(first: &Scene, moves: &[Move]) -> Result<(), TestCaseError> {
     let mut screen = Screen::new(SENTINEL);
     full::<H>(first, &mut screen);
     let mut scene = first.clone();

@@ -10,12 +10,9 @@ use embedded_graphics_core::pixelcolor::Rgb565;
 use microraster::render::{Damage, from_fn};
 use microraster::{Band, Renderer};
 
-#[path = "../../examples/common/dashboard_live.rs"]
-mod live;
-#[allow(dead_code)] // the constants the demo and benches use
-#[path = "../../examples/common/dashboard.rs"]
-mod scene;
-use scene::{H, NIGHT, W};
+// The dashboard's modules, included once (in the `dashboard` suite).
+use crate::dashboard::live;
+use crate::dashboard::scene::{H, NIGHT, W};
 
 #[test]
 fn the_drive_with_damage_is_the_full_frames() {

@@ -196,19 +196,13 @@ fn parts(boxes: &[Box2], y_lo: i32, y_hi: i32, mut f: impl FnMut(Box2)) {
         let crosses = |b: &&Box2| b.y0 <= y && b.y1 > y;
         // Column intervals of the rectangles crossing the strip, merged.
         let mut x = i32::MIN;
-        loop {
-            let Some(start) = boxes.iter().filter(crosses).filter(|b| b.x1 > x).map(|b| b.x0.max(x)).min()
-            else {
-                break;
-            };
+        while let Some(start) = boxes.iter().filter(crosses).filter(|b| b.x1 > x).map(|b| b.x0.max(x)).min() {
+            // Extend over every rectangle that starts within the interval.
             let mut end = start;
-            loop {
-                let far =
-                    boxes.iter().filter(crosses).filter(|b| b.x0 <= end && b.x1 > end).map(|b| b.x1).max();
-                match far {
-                    Some(e) => end = e,
-                    None => break,
-                }
+            while let Some(e) =
+                boxes.iter().filter(crosses).filter(|b| b.x0 <= end && b.x1 > end).map(|b| b.x1).max()
+            {
+                end = e;
             }
             f(Box2 { x0: start, y0: y, x1: end, y1: next });
             x = end;
