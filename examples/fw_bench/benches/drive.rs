@@ -4,7 +4,7 @@
 //! full frame is the `dashboard` row's kind of frame and is not timed here;
 //! the timed work is the other [`DRIVE_FRAMES`] frames, each damaged by the
 //! needle's old and new bounds and the readout's
-//! ([`live::damage`](super::live::damage), built inside the timed frame),
+//! ([`live::damage`], built inside the timed frame),
 //! rendered and sent with `Renderer::render_damaged`. The table divides the
 //! count by [`DRIVE_FRAMES`]
 //! ([`Work::frames`](super::Work::frames)): instructions per frame, to set
