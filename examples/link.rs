@@ -20,6 +20,13 @@
 //!   instruction per cycle at 168 MHz (STM32F405).
 //! * Speed-up: wall time of the 60 frames drawn by `Triangles3d` on one thread
 //!   and by `render_threads` on two, best of 5 runs each, in the same run.
+//! * Damage regions: the same drive with `Renderer::render_damaged`, each
+//!   frame damaged by the needle's old and new bounds and the readout's
+//!   (`dashboard_live::damage`); bytes sent per frame against the damaged
+//!   area's (the union of the rectangles, `Damage::area`), and the
+//!   Cortex-M4F instructions per frame of `fw_bench`'s `dashboard-drive` row
+//!   against its `dashboard` row (a full frame), read from
+//!   `docs/data/fw-bench.tsv`; the verdicts computed from them.
 
 use std::time::Instant;
 
@@ -28,7 +35,7 @@ use embedded_graphics_core::prelude::*;
 use embedded_graphics_core::primitives::Rectangle;
 use microraster::depth::{Depth16, DepthBand, DepthState};
 use microraster::raster3d::{PerspectiveCorrect, ScreenTriangle};
-use microraster::render::{Blocking, DirtyBands};
+use microraster::render::{Blocking, Damage, DirtyBands};
 use microraster::render::{Triangles3d, from_fn};
 use microraster::{Band, Renderer};
 use microraster_scenes::scenes3d::{BINS, Scene3d};
@@ -47,6 +54,7 @@ const FRAMES: usize = 60;
 const BG: Rgb565 = Rgb565::BLACK;
 const CPU_HZ: f64 = 168e6;
 const TSV: &str = "docs/data/link-m4f.tsv";
+const FW_TSV: &str = "docs/data/fw-bench.tsv";
 
 fn bins(angle: f32) -> heapless::Vec<ScreenTriangle<4>, BINS> {
     let pipeline = Scene3d::pipeline::<f32, 4>(W as u32, HEIGHT).expect("scene");
@@ -179,6 +187,102 @@ fn dashboard_sent() -> Sent {
             failed.expect("dashboard");
         },
     )
+}
+
+/// A display that keeps what it was sent, in rectangles of any shape, and
+/// counts the pixels.
+struct Patches {
+    pixels: Vec<Rgb565>,
+    sent: u64,
+}
+
+impl OriginDimensions for Patches {
+    fn size(&self) -> Size {
+        Size::new(W as u32, HEIGHT)
+    }
+}
+
+impl DrawTarget for Patches {
+    type Color = Rgb565;
+    type Error = core::convert::Infallible;
+    fn draw_iter<I: IntoIterator<Item = Pixel<Rgb565>>>(&mut self, _: I) -> Result<(), Self::Error> {
+        unreachable!("the band loop sends rectangles")
+    }
+    fn fill_contiguous<I: IntoIterator<Item = Rgb565>>(
+        &mut self,
+        area: &Rectangle,
+        c: I,
+    ) -> Result<(), Self::Error> {
+        for (p, c) in area.points().zip(c) {
+            self.pixels[p.y as usize * W + p.x as usize] = c;
+            self.sent += 1;
+        }
+        Ok(())
+    }
+}
+
+/// The drive with damage regions: bytes sent and damaged bytes in frames
+/// 2–60 (a full frame first), asserting after every frame that the display
+/// shows the full render's frame.
+fn damage_sent() -> (Vec<u64>, Vec<u64>) {
+    let r = Renderer::new(HEIGHT, scene::NIGHT);
+    let mut band = Band::<Rgb565, W, BAND>::new(scene::NIGHT);
+    let mut shown = Patches { pixels: vec![Rgb565::RED; W * HEIGHT as usize], sent: 0 };
+    let mut full = Screen::new();
+    r.render(from_fn(|view| live::dashboard_at(view, live::speed(0))), &mut band, &mut shown).expect("frame");
+    let (mut sent, mut damaged) = (Vec::new(), Vec::new());
+    for f in 1..live::FRAMES {
+        let (from, to) = (live::speed(f - 1), live::speed(f));
+        let mut damage = Damage::<4>::new();
+        live::damage(from, to, &mut damage).expect("damage");
+        let before = shown.sent;
+        r.render_damaged(from_fn(|view| live::dashboard_at(view, to)), &damage, &mut band, &mut shown)
+            .expect("frame");
+        sent.push((shown.sent - before) * 2);
+        damaged.push(damage.area(W as u32, HEIGHT) * 2);
+        r.render(from_fn(|view| live::dashboard_at(view, to)), &mut band, &mut full).expect("frame");
+        assert!(shown.pixels == full.pixels, "frame {f}: the damaged display shows another frame");
+    }
+    (sent, damaged)
+}
+
+/// The damage-region line: bytes against the damaged area, instructions
+/// against a full frame (from `docs/data/fw-bench.tsv`), each with its verdict.
+fn damage_line() -> String {
+    let (sent, damaged) = damage_sent();
+    let n = sent.len() as f64;
+    let mean = |v: &[u64]| v.iter().sum::<u64>() as f64 / n;
+    let within = sent.iter().zip(&damaged).all(|(s, d)| s <= d);
+    let bytes = format!(
+        "Damage regions (`Renderer::render_damaged`), dashboard while driving, frames 2–60 after one full frame: \
+         {:.0} bytes sent per frame (max {}), damaged area {:.0} bytes per frame (max {}): sent ≤ damaged in every frame: **{}**; \
+         {:.1} % of a full frame's 153600 bytes.",
+        mean(&sent),
+        sent.iter().max().copied().unwrap_or(0),
+        mean(&damaged),
+        damaged.iter().max().copied().unwrap_or(0),
+        if within { "met" } else { "missed" },
+        100.0 * mean(&sent) / (W * HEIGHT as usize * 2) as f64,
+    );
+    let tsv = std::fs::read_to_string(FW_TSV).unwrap_or_default();
+    let row = |key: &str| {
+        tsv.lines()
+            .map(|l| l.split('\t').collect::<Vec<_>>())
+            .find(|f| f.len() > 2 && f[0] == "m4f" && f[1].starts_with(key))
+            .and_then(|f| f[2].parse::<f64>().ok())
+    };
+    let instr = match (row("dashboard/"), row("dashboard-drive/")) {
+        (Some(full), Some(drive)) => format!(
+            " Cortex-M4F (`{FW_TSV}`, `bash scripts/firmware.sh table`): {drive:.0} instructions per damaged frame \
+             against {full:.0} for a full frame: {:.1} % (target ≤ 25 %): **{}**.",
+            100.0 * drive / full,
+            if drive <= 0.25 * full { "met" } else { "missed" }
+        ),
+        _ => format!(
+            " Cortex-M4F: no `dashboard` and `dashboard-drive` rows in `{FW_TSV}` (`bash scripts/firmware.sh table` writes them)."
+        ),
+    };
+    format!("{bytes}{instr}\n")
 }
 
 /// Bytes sent per frame, all bands and with dirty bands, for each scene.
@@ -363,11 +467,12 @@ fn speedup_table(frames: &[heapless::Vec<ScreenTriangle<4>, BINS>]) -> String {
 fn main() {
     let frames: Vec<_> = (0..FRAMES).map(|f| bins(angle(f))).collect();
     let text = format!(
-        "Written by `cargo run --release --example link -- README.md`.\n\n{}\n{}\n{}",
+        "Written by `cargo run --release --example link -- README.md`.\n\n{}\n{}\n{}\n{}",
         bytes_table(&[
             ("spinning 3D scene", scene3d_sent(&frames)),
             ("dashboard while driving", dashboard_sent())
         ]),
+        damage_line(),
         model_table(),
         speedup_table(&frames)
     );

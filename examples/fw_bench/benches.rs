@@ -25,9 +25,16 @@ use embedded_graphics_core::pixelcolor::Rgb565;
 #[allow(dead_code)] // the bench uses the microraster version only
 #[path = "../common/dashboard.rs"]
 pub mod dashboard;
+// The drive of `examples/link.rs` (`dashboard-drive`), which names the
+// dashboard's module `scene`.
+#[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+use self::dashboard as scene;
 #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
 #[path = "../common/knot_mesh.rs"]
 pub mod knot_mesh;
+#[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+#[path = "../common/dashboard_live.rs"]
+pub mod live;
 use microraster::raster3d::Precision;
 // The knot as `obj2rs`'s default command converts it, at 20k and 5k
 // triangles ([`Work::Ways`]); not every static is read.
@@ -165,6 +172,10 @@ pub enum Work {
     /// gradients, anti-aliasing and translucency, an alpha sprite, text),
     /// built and drawn in every band by `render::from_fn`.
     Dashboard,
+    /// The dashboard's drive of `examples/link.rs` with damage regions:
+    /// 59 frames, each rendering and sending only what changed
+    /// ([`drive`]); counted per frame ([`Work::frames`]).
+    DashboardDrive,
 }
 
 /// How far [`Work::KnotStage`] goes into each band's triangles.
@@ -307,6 +318,10 @@ pub const M4F: &[Bench] = &[
     probe("ways", Work::Ways(ways::Knot::K5, ways::Way::Meshlets)),
     #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
     probe("ways", Work::Ways(ways::Knot::K5, ways::Way::Bins)),
+    // Issue 62, appended so the rows above keep their indices: the drive
+    // of examples/link.rs with damage regions, per frame.
+    #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+    bench("dashboard-drive", Work::DashboardDrive),
 ];
 
 /// Rows of a band of [`Work::KnotTall`] whose colour and `Depth16` rows
@@ -332,6 +347,9 @@ pub const M0: &[Bench] = &[
 /// Primitives the Cortex-M4F configuration can hold ([`Work::Frame2d`]).
 pub const PRIMS: usize = scenes::MIXED_LEN;
 
+// The `dashboard-drive` row (Cortex-M4F and host).
+#[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+pub mod drive;
 mod frame;
 // What each configuration is called and which buffers it uses.
 mod work;

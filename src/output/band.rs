@@ -64,7 +64,7 @@ impl<C: PixelColor, const W: usize, const H: usize> Band<C, W, H> {
 
     /// The same view with the rows as they are (see [`LazyClear`]).
     pub(crate) fn view_uncleared(&mut self, y0: i32, rows: usize) -> BandView<'_, C, W> {
-        BandView { y0, rows: &mut self.rows[..rows.min(H)] }
+        BandView { y0, rows: &mut self.rows[..rows.min(H)], x0: 0, x1: W as i32 }
     }
 }
 
@@ -76,6 +76,10 @@ impl<C: PixelColor, const W: usize, const H: usize> Band<C, W, H> {
 pub struct BandView<'a, C, const W: usize> {
     y0: i32,
     rows: &'a mut [[C; W]],
+    // The clip's columns `x0..x1` (`0..W` but for a damaged frame, see
+    // `render::Damage`): shapes that honour `clip()` skip the others.
+    x0: i32,
+    x1: i32,
 }
 
 impl<'a, C: PixelColor, const W: usize> BandView<'a, C, W> {
@@ -90,7 +94,17 @@ impl<'a, C: PixelColor, const W: usize> BandView<'a, C, W> {
         if let Some(bg) = background {
             clear_rows(rows, bg);
         }
-        BandView { y0, rows }
+        BandView { y0, rows, x0: 0, x1: W as i32 }
+    }
+
+    /// The same view with its [`Blitter::clip`] narrowed to columns
+    /// `x0..x1` (within `0..W`): for a damaged frame
+    /// ([`Renderer::render_damaged`](crate::Renderer::render_damaged)), whose
+    /// other columns are not sent. Pixels of those columns may still be
+    /// written (e-g drawables draw the whole row) but are then meaningless.
+    pub(crate) fn with_columns(self, x0: i32, x1: i32) -> Self {
+        let x1 = x1.clamp(0, W as i32);
+        BandView { x0: x0.clamp(0, x1), x1, ..self }
     }
 
     /// The pixels, row by row, as `fill_contiguous` expects them.
@@ -139,7 +153,7 @@ impl<'a, C: PixelColor, const W: usize> BandView<'a, C, W> {
 
 impl<C: PixelColor, const W: usize> Blitter<C> for BandView<'_, C, W> {
     fn clip(&self) -> ClipRect {
-        ClipRect::new(0, self.y0, W as i32, self.y0.saturating_add(self.rows.len() as i32))
+        ClipRect::new(self.x0, self.y0, self.x1, self.y0.saturating_add(self.rows.len() as i32))
     }
 
     #[inline]

@@ -5,6 +5,7 @@ use crate::edge::Cull;
 
 mod band3d;
 mod binned;
+mod damage;
 mod dirty;
 pub mod link;
 #[cfg(feature = "async")]
@@ -17,6 +18,7 @@ mod threads;
 use crate::{Error, Interpolate, RenderError};
 pub use band3d::Band3d;
 pub use binned::Binned2d;
+pub use damage::Damage;
 pub use dirty::{DirtyBands, signature};
 use embedded_graphics_core::prelude::{DrawTarget, Point, Size};
 use embedded_graphics_core::primitives::Rectangle;

@@ -11,10 +11,10 @@ use microraster::render::from_fn;
 use microraster::{Band, Renderer};
 
 #[path = "../../examples/common/dashboard_live.rs"]
-mod live;
+pub(crate) mod live; // also damage_drive's
 #[allow(dead_code)] // the constants the demo and benches use
 #[path = "../../examples/common/dashboard.rs"]
-mod scene;
+pub(crate) mod scene;
 use microraster::render::{Blocking, DirtyBands};
 use scene::{H, NIGHT, TEXT, W};
 

@@ -12,6 +12,8 @@
 //! - `blend`: every blend mode × colour format vs an `f64` reference; translucent drawing; depth sort.
 //! - `gouraud`: Gouraud colour vs an `f64` barycentric reference.
 //! - `bands`: identical images for every band height; one `fill_contiguous` per band.
+//! - `damage`, `damage_bounds`: damage regions render and send only what changed, exactly;
+//!   styled shapes' bounds hold every pixel they write; the dashboard's drive with damage.
 //! - `dashboard`: the dashboard example: band invariance, text identical to plain e-g.
 //! - `drawables`: embedded-graphics text, images and styled primitives drawn into bands
 //!   match e-g into a framebuffer, for every band height; HUD over 3D.
@@ -48,6 +50,9 @@ mod blend;
 mod capacity;
 mod clip3d_raster;
 mod clip3d_ref;
+mod damage;
+mod damage_bounds;
+mod damage_drive;
 mod dashboard;
 mod depth3d;
 mod discard;

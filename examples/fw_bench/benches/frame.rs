@@ -206,6 +206,10 @@ fn frame_other<const W: usize, const H: usize, const N: usize, const P: usize>(
         Work::Dashboard => r.render(from_fn(dashboard::dashboard), b.band, sink).map_err(input),
         #[cfg(not(any(not(target_os = "none"), target_abi = "eabihf")))]
         Work::Dashboard => Err(Error::InvalidParameter),
+        #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+        Work::DashboardDrive => super::drive::drive(r, b.band, sink),
+        #[cfg(not(any(not(target_os = "none"), target_abi = "eabihf")))]
+        Work::DashboardDrive => Err(Error::InvalidParameter),
         Work::Streamed2d(scene) => {
             r.render(workload::streamed::<W>(scene, height), b.band, sink).map_err(input)
         }

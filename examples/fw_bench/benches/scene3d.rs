@@ -155,7 +155,7 @@ pub fn primitives<const W: usize, const H: usize, const N: usize, const P: usize
         .map(|()| (tris, 0))
     };
     match work {
-        Work::Clear | Work::Dashboard => Ok((0, 0)),
+        Work::Clear | Work::Dashboard | Work::DashboardDrive => Ok((0, 0)),
         #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
         Work::Meshlets(..)
         | Work::MeshletsFar(_)

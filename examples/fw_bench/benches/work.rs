@@ -46,6 +46,7 @@ impl Work {
             Work::KnotStage(Fix, Stage::Coverage) => "Fx affine: + coverage, no planes",
             Work::KnotStage(Fix, Stage::NoWrites) => "Fx affine: all but pixel writes",
             Work::Dashboard => "2D kit, drawn per band",
+            Work::DashboardDrive => "2D kit, link.rs drive, damage regions, per frame",
             #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
             Work::KnotTier(p, eye, t, i) => describe_tier(*p, *eye, *t, *i),
             #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
@@ -99,7 +100,7 @@ impl Work {
     /// The buffers it uses (names of the firmware's statics).
     pub fn buffers(&self) -> &'static str {
         match self {
-            Work::Clear | Work::Streamed2d(_) | Work::Dashboard => "BAND",
+            Work::Clear | Work::Streamed2d(_) | Work::Dashboard | Work::DashboardDrive => "BAND",
             Work::Frame2d(_) => "BAND,PRIMS",
             Work::Vertex3d(_) | Work::VertexPerBand3d(_) => "BINS",
             Work::Vertex3dCached => "BINS,CACHE",

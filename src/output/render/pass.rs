@@ -72,6 +72,14 @@ pub trait Pass<C: Interpolate, const W: usize, const H: usize> {
     /// even when it returns an error, says `false`.
     const CLEARS: bool = true;
 
+    /// Whether [`Pass::draw`] accepts a band at any frame row, not only at
+    /// a multiple of `H` (a pass with per-band state indexed by `y0 / H`,
+    /// as [`Binned2d`](super::Binned2d), says `false`). A damaged frame
+    /// ([`Renderer::render_damaged`](crate::Renderer::render_damaged))
+    /// packs the damaged rows of a pass that says `true` into as few bands
+    /// as they fill. `false` unless a pass says otherwise.
+    const ANY_ROWS: bool = false;
+
     /// Checks the pass against the frame before any band is drawn: errors
     /// here leave the target untouched.
     fn check(&mut self, renderer: &Renderer<C>) -> Result<(), Error> {
@@ -122,6 +130,8 @@ pub trait Pass<C: Interpolate, const W: usize, const H: usize> {
 
 /// The empty frame: every band cleared to the background.
 impl<C: Interpolate, const W: usize, const H: usize> Pass<C, W, H> for () {
+    const ANY_ROWS: bool = true;
+
     fn draw(&mut self, _: &mut BandView<'_, C, W>, _: &Renderer<C>) -> Result<(), Error> {
         Ok(())
     }
@@ -133,6 +143,7 @@ impl<C: Interpolate, const S: u32, const W: usize, const H: usize> Pass<C, W, H>
     // Rows are cleared as they are first written (`LazyClear`): most rows'
     // first span then costs one pass over the row, not two.
     const CLEARS: bool = false;
+    const ANY_ROWS: bool = true;
 
     fn draw(&mut self, band: &mut BandView<'_, C, W>, renderer: &Renderer<C>) -> Result<(), Error> {
         let mut view = LazyClear::<C, W, H>::new(band, renderer.background());
@@ -171,6 +182,7 @@ impl<C: Interpolate, const S: u32, const N: usize, const W: usize, const H: usiz
     for &[Primitive<C, S>; N]
 {
     const CLEARS: bool = false;
+    const ANY_ROWS: bool = true;
 
     fn draw(&mut self, band: &mut BandView<'_, C, W>, renderer: &Renderer<C>) -> Result<(), Error> {
         Pass::<C, W, H>::draw(&mut &self[..], band, renderer)
@@ -182,6 +194,7 @@ impl<C: Interpolate, const S: u32, const N: usize, const W: usize, const H: usiz
     for &heapless::Vec<Primitive<C, S>, N>
 {
     const CLEARS: bool = false;
+    const ANY_ROWS: bool = true;
 
     fn draw(&mut self, band: &mut BandView<'_, C, W>, renderer: &Renderer<C>) -> Result<(), Error> {
         Pass::<C, W, H>::draw(&mut &self[..], band, renderer)
@@ -242,6 +255,9 @@ where
     C: Interpolate,
     G: FnMut(&mut BandView<'_, C, W>) -> Result<(), Error>,
 {
+    // Frame coordinates: the closure sees the view's rows, wherever they start.
+    const ANY_ROWS: bool = true;
+
     fn draw(&mut self, band: &mut BandView<'_, C, W>, _: &Renderer<C>) -> Result<(), Error> {
         (self.draw)(band)
     }
@@ -260,6 +276,7 @@ where
     O: FnMut(&mut BandView<'_, C, W>) -> Result<(), Error>,
 {
     const CLEARS: bool = P::CLEARS;
+    const ANY_ROWS: bool = P::ANY_ROWS;
 
     fn check(&mut self, renderer: &Renderer<C>) -> Result<(), Error> {
         self.first.check(renderer)

@@ -5,6 +5,7 @@ use super::stroke::StrokeParams;
 use super::{Aliased, AntiAliased, Coverage, FillRule, Paint};
 use crate::blend::OPAQUE;
 
+mod bounds;
 mod styled;
 pub use styled::Styled;
 
