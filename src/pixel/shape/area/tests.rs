@@ -39,8 +39,7 @@ fn fixed_is_the_exact_floor_over_its_range() {
         check(n >> 29, (d >> 11).max(1));
         check(n >> 28, (d >> (11 + x % 9)).max(1));
     }
-    for (n, d) in
-        [(i64::from(i32::MAX), (1 << 20) - 1), (i64::from(i32::MIN), (1 << 20) - 1), (-1, 1 << 20)]
+    for (n, d) in [(i64::from(i32::MAX), (1 << 20) - 1), (i64::from(i32::MIN), (1 << 20) - 1), (-1, 1 << 20)]
     {
         check(n, d);
         check(n, d - 1);
