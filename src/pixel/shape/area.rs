@@ -88,7 +88,7 @@ fn fixed(n: i64, d: i64) -> i64 {
     fixed_rem(n, d).0
 }
 
-/// [`fixed`] and its remainder: `(q, r)` with `n · 2^FB = q·d + r`,
+/// [`fixed()`] and its remainder: `(q, r)` with `n · 2^FB = q·d + r`,
 /// `0 ≤ r < d`, so a crossing can be stepped exactly ([`Crossings`]).
 #[inline]
 fn fixed_rem(n: i64, d: i64) -> (i64, i64) {
