@@ -29,6 +29,8 @@ mod output;
 #[cfg(feature = "fragment")]
 mod pixel;
 mod raster;
+#[cfg(test)]
+mod test_rng;
 
 mod color;
 mod error;

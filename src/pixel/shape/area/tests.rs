@@ -1,4 +1,5 @@
 use super::*;
+use crate::test_rng::Rng;
 
 #[test]
 fn fixed_rounds_down_for_both_signs() {
@@ -14,7 +15,7 @@ fn fixed_is_the_exact_floor_over_its_range() {
     // range's ends (|n| < 2^60, 0 < d < 2^31) and in between.
     let ns = [0i64, 1, -1, 7, -7, (1 << 59) + 12345, -(1 << 59) - 777, (1 << 60) - 1, -(1 << 60) + 1];
     let ds = [1i64, 2, 3, 16, 255, 65_537, (1 << 29) + 3, (1 << 31) - 1];
-    let mut x = 0x9e37_79b9_7f4a_7c15u64;
+    let mut rng = Rng(0x9e37_79b9_7f4a_7c15);
     let check = |n: i64, d: i64| {
         let exact = (i128::from(n) << FB).div_euclid(i128::from(d));
         // Where the result fits (`|n / d| < 2^40`: the crossings are
@@ -29,9 +30,7 @@ fn fixed_is_the_exact_floor_over_its_range() {
         }
     }
     for _ in 0..20_000 {
-        x ^= x << 13;
-        x ^= x >> 7;
-        x ^= x << 17;
+        let x = rng.next();
         let n = (x as i64) >> 4; // |n| < 2^59
         let d = ((x >> 33) as i64 & ((1 << 31) - 1)).max(1) >> (x % 31);
         check(n, d.max(1));
@@ -51,11 +50,9 @@ fn stepped_crossings_are_the_divided_ones() {
     // Random edges, near and far, steep and shallow, both directions:
     // each column crossing stepped from the first equals the direct
     // ⌊n · 2^FB / d⌋ at that column.
-    let mut x = 0x2545_f491_4f6c_dd1du64;
+    let mut rng = Rng(0x2545_f491_4f6c_dd1d);
     let mut rnd = |bits: u32| {
-        x ^= x << 13;
-        x ^= x >> 7;
-        x ^= x << 17;
+        let x = rng.next();
         ((x >> 11) as i64 & ((1 << bits) - 1)) - (1 << (bits - 1))
     };
     for i in 0..3000 {

@@ -24,20 +24,7 @@ fn rows_are_the_centres_inside_half_open() {
     }
 }
 
-/// xorshift64: deterministic cases without a dependency.
-struct Rng(u64);
-impl Rng {
-    fn next(&mut self) -> u64 {
-        self.0 ^= self.0 << 13;
-        self.0 ^= self.0 >> 7;
-        self.0 ^= self.0 << 17;
-        self.0
-    }
-    /// Uniform-ish in `-r..=r`.
-    fn in_range(&mut self, r: i64) -> i64 {
-        (self.next() % (2 * r as u64 + 1)) as i64 - r
-    }
-}
+use crate::test_rng::Rng;
 
 #[test]
 fn remainder_division_is_exact_in_both_widths() {

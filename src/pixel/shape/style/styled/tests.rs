@@ -2,6 +2,7 @@ extern crate std;
 use super::*;
 use crate::Band;
 use crate::shape::{Circle, Polygon, Shape, ShapeStyle, Styled};
+use crate::test_rng::Rng;
 use embedded_graphics::pixelcolor::{Gray8, GrayColor};
 use std::format;
 use std::vec::Vec;
@@ -30,13 +31,8 @@ fn exact<S: Shape>(s: &Styled<S, Gray8>) -> ((i32, i32), usize, usize) {
 #[test]
 fn polyline_and_polygon_reach_holds_their_edges() {
     use crate::shape::{Cap, Join, Polyline};
-    let mut x = 0x853c_49e6_748f_ea9bu64;
-    let mut rnd = |scale: f32| {
-        x ^= x << 13;
-        x ^= x >> 7;
-        x ^= x << 17;
-        (x >> 40) as f32 / (1u64 << 24) as f32 * scale
-    };
+    let mut rng = Rng(0x853c_49e6_748f_ea9b);
+    let mut rnd = |scale: f32| rng.unit(scale);
     for i in 0..400 {
         let n = 1 + (rnd(7.0) as usize);
         let base = if i % 5 == 0 { 9.0e5 } else { 0.0 };
@@ -73,13 +69,8 @@ fn polyline_and_polygon_reach_holds_their_edges() {
 #[test]
 fn arc_and_rounded_rect_reach_holds_their_edges() {
     use crate::shape::{Arc, Cap, Rect, RoundedRect};
-    let mut x = 0x9e37_79b9_7f4a_7c15u64;
-    let mut rnd = |scale: f32| {
-        x ^= x << 13;
-        x ^= x >> 7;
-        x ^= x << 17;
-        (x >> 40) as f32 / (1u64 << 24) as f32 * scale
-    };
+    let mut rng = Rng(0x9e37_79b9_7f4a_7c15);
+    let mut rnd = |scale: f32| rng.unit(scale);
     for i in 0..300 {
         let cap = [Cap::Butt, Cap::Square, Cap::Round][i % 3];
         let mut style = ShapeStyle::fill(Gray8::WHITE).with_stroke(Gray8::BLACK, rnd(14.0));
