@@ -100,6 +100,13 @@ fn center_rows(y_min: i32, y_max: i32, clip: ClipRect) -> (i32, i32) {
     (lo as i32, hi.max(lo) as i32)
 }
 
+/// The rows both scans visit: [`center_rows`] of the edges' extent, none
+/// for no edges or an empty clip.
+fn scan_rows<const N: usize>(edges: &EdgeList<N>, clip: ClipRect) -> Option<(i32, i32)> {
+    let (y_min, y_max) = edges.y_range();
+    (!edges.is_empty() && !clip.is_empty()).then(|| center_rows(y_min, y_max, clip))
+}
+
 /// The first row whose centre is at or below `y` (subpixels): `⌈(y − ½)/ONE⌉`,
 /// a shift.
 #[inline]
@@ -172,11 +179,7 @@ fn walk<F: FnMut(crate::edge::Span, u8), const N: usize, const K: usize>(
     clip: ClipRect,
     runs: &mut Runs<F>,
 ) {
-    let (y_min, y_max) = edges.y_range();
-    if edges.is_empty() || clip.is_empty() {
-        return;
-    }
-    let (lo, hi) = center_rows(y_min, y_max, clip);
+    let Some((lo, hi)) = scan_rows(edges, clip) else { return };
     let list = edges.edges();
     let mut w = [Walker::default(); K];
     let (mut n, mut next) = (0, 0);
@@ -247,11 +250,7 @@ fn scan_divided<F: FnMut(crate::edge::Span, u8), const N: usize>(
     clip: ClipRect,
     runs: &mut Runs<F>,
 ) {
-    let (y_min, y_max) = edges.y_range();
-    if edges.is_empty() || clip.is_empty() {
-        return;
-    }
-    let (lo, hi) = center_rows(y_min, y_max, clip);
+    let Some((lo, hi)) = scan_rows(edges, clip) else { return };
     let (cx0, cx1) = (i64::from(clip.x0()), i64::from(clip.x1()));
     let mut xs = [(0i32, 0i32); N];
     let mut active = Active::<N>::new();
