@@ -39,8 +39,12 @@ pub mod view3d;
 
 pub use geometry::{clip3d, light, math, mesh, pipeline};
 pub use output::{band, blit, depth, render};
+#[cfg(feature = "shapes")]
+pub use pixel::shape;
+#[cfg(feature = "textures")]
+pub use pixel::texture;
 #[cfg(feature = "fragment")]
-pub use pixel::{aa, blend, fragment, line_aa, shape, texture};
+pub use pixel::{aa, blend, fragment, line_aa};
 use raster::attr;
 use raster::{clip, primitive, subpixel};
 pub use raster::{edge, line, raster3d, varyings};

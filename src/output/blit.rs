@@ -87,7 +87,7 @@ impl<'a, D: DrawTarget> TargetBlitter<'a, D> {
     /// `color` over columns `x .. x + w` of rows `y .. y + h`, one
     /// `fill_solid` call (the target clips, as for spans). Only the shape
     /// kit's direct drawing joins spans into rectangles.
-    #[cfg(feature = "fragment")]
+    #[cfg(feature = "shapes")]
     pub(crate) fn fill_rect(&mut self, x: i32, y: i32, w: u32, h: u32, color: D::Color) {
         if self.error.is_none() {
             let r = self.target.fill_solid(&Rectangle::new(Point::new(x, y), Size::new(w, h)), color);

@@ -25,11 +25,12 @@
 
 mod shaders;
 
-pub use shaders::{
-    NORMAL_ONE, POSITION_ONE, Phong, Textured, TexturedAlpha, phong_varyings, textured_varyings,
-};
+pub use shaders::{NORMAL_ONE, POSITION_ONE, Phong, phong_varyings};
+#[cfg(feature = "textures")]
+#[cfg_attr(docsrs, doc(cfg(feature = "textures")))]
+pub use shaders::{Textured, TexturedAlpha, textured_varyings};
 
-use crate::texture::div255_round;
+use crate::blend::div255_round;
 
 use crate::band::BandView;
 use crate::blend::Blend;

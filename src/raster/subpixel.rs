@@ -19,7 +19,9 @@
 //! arithmetic provably free of overflow (see [`crate::edge`]).
 
 use crate::Error;
+#[cfg(feature = "fx")]
 use fixed::FixedI32;
+#[cfg(feature = "fx")]
 use fixed::types::extra::LeEqU32;
 
 /// The largest supported number of fractional (subpixel) bits.
@@ -107,6 +109,8 @@ impl<const S: u32> SubPoint<S> {
     /// let p = SubPoint::<4>::from_fixed(I16F16::from_num(1.53125), I16F16::ZERO).unwrap();
     /// assert_eq!(p.x(), 24); // 1.53125 * 16 = 24.5 → 24 (tie to even)
     /// ```
+    #[cfg(feature = "fx")]
+    #[cfg_attr(docsrs, doc(cfg(feature = "fx")))]
     pub fn from_fixed<F: LeEqU32>(x: FixedI32<F>, y: FixedI32<F>) -> Result<Self, Error> {
         let () = Self::CHECK;
         let frac = FixedI32::<F>::FRAC_NBITS;
@@ -149,6 +153,7 @@ const fn in_range(v: i64) -> bool {
 }
 
 /// `v * 2^shift`, rounded to nearest with ties to even when `shift < 0`.
+#[cfg_attr(not(feature = "fx"), allow(dead_code))]
 pub(crate) const fn shift_round_even(v: i64, shift: i32) -> i64 {
     if shift >= 0 {
         return v << shift;

@@ -13,10 +13,14 @@
 use core::fmt::Debug;
 use core::ops::{Add, Div, Mul, Neg, Sub};
 
+#[cfg(feature = "fx")]
 mod fx;
+#[cfg_attr(not(feature = "fx"), allow(dead_code, unused_imports))]
 mod fx_bits;
 pub(crate) use fx_bits::HARD_FLOAT;
 
+#[cfg(feature = "fx")]
+#[cfg_attr(docsrs, doc(cfg(feature = "fx")))]
 pub use fx::Fx;
 
 mod sealed {
@@ -30,6 +34,7 @@ mod sealed {
             Rows::F32(s)
         }
     }
+    #[cfg(feature = "fx")]
     impl Sealed for super::Fx {
         fn rows(s: &[[super::Fx; 3]]) -> Rows<'_> {
             Rows::Fx(s)
@@ -61,6 +66,7 @@ pub trait Scalar:
     fn to_f32(self) -> f32;
     /// The value of `v`: exact for [`Fx`]; for `f32` as [`Fx::to_f32`]
     /// gives it (exact below 2^8 in magnitude).
+    #[cfg(feature = "fx")]
     fn from_fx(v: Fx) -> Self;
     /// [`Vec3::from_data`](super::Vec3::from_data): for `f32` data the
     /// very call [`Vec3::from_f32`](super::Vec3::from_f32) (the vertex
@@ -132,6 +138,7 @@ impl Scalar for f32 {
     fn to_f32(self) -> f32 {
         self
     }
+    #[cfg(feature = "fx")]
     #[inline]
     fn from_fx(v: Fx) -> Self {
         v.to_f32()

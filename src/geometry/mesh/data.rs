@@ -15,6 +15,7 @@
 use super::winding::winding_agrees;
 use super::{INVALID_MESH, SPHERE_TOLERANCE, dist2, is_finite3};
 use crate::error::Error;
+#[cfg(feature = "fx")]
 use crate::math::Fx;
 
 /// Rows of three values in either storage type.
@@ -23,6 +24,7 @@ pub enum Rows<'a> {
     /// `f32` data.
     F32(&'a [[f32; 3]]),
     /// 16.16 data.
+    #[cfg(feature = "fx")]
     Fx(&'a [[Fx; 3]]),
 }
 
@@ -31,6 +33,7 @@ impl Rows<'_> {
     pub(crate) const fn len(&self) -> usize {
         match self {
             Rows::F32(r) => r.len(),
+            #[cfg(feature = "fx")]
             Rows::Fx(r) => r.len(),
         }
     }
@@ -44,6 +47,7 @@ impl Rows<'_> {
     pub(crate) const fn get(&self, i: usize) -> [f32; 3] {
         match self {
             Rows::F32(r) => r[i],
+            #[cfg(feature = "fx")]
             Rows::Fx(r) => {
                 let v = r[i];
                 [fx_f32(v[0]), fx_f32(v[1]), fx_f32(v[2])]
@@ -64,6 +68,8 @@ impl Rows<'_> {
 /// static P_FX: [[Fx; 3]; 2] = fx_rows(&P);
 /// assert_eq!(P_FX[1][0], Fx::from_f32(0.1));
 /// ```
+#[cfg(feature = "fx")]
+#[cfg_attr(docsrs, doc(cfg(feature = "fx")))]
 pub const fn fx_rows<const N: usize>(rows: &[[f32; 3]; N]) -> [[Fx; 3]; N] {
     let mut out = [[Fx::from_bits(0); 3]; N];
     let mut i = 0;
@@ -76,6 +82,7 @@ pub const fn fx_rows<const N: usize>(rows: &[[f32; 3]; N]) -> [[Fx; 3]; N] {
 }
 
 /// `v` as the nearest `f32` (what `Fx::to_f32` gives, as a `const fn`).
+#[cfg(feature = "fx")]
 const fn fx_f32(v: Fx) -> f32 {
     v.to_bits() as f32 / 65_536.0
 }
@@ -318,6 +325,7 @@ macro_rules! storage_impls {
 storage_impls!(f32, F32, new, "`mesh` if it passes its `validate`, else that error.");
 // A name of its own: two `new`s would make `ValidMeshletMesh::new(m)`
 // ambiguous (a path in an expression does not default `P`).
+#[cfg(feature = "fx")]
 storage_impls!(
     Fx,
     Fx,

@@ -64,7 +64,10 @@ pub use torus::{torus, torus_triangle_count, torus_vertex_count};
 pub use winding::DEGENERATE_SIN2;
 
 use crate::error::Error;
-use crate::math::{Fx, Scalar};
+#[cfg(feature = "fx")]
+use crate::math::Fx;
+use crate::math::Scalar;
+#[cfg(feature = "fx")]
 pub use data::fx_rows;
 pub(crate) use data::{MeshData, Rows};
 
@@ -160,6 +163,8 @@ impl<'a> Mesh<'a> {
     }
 }
 
+#[cfg(feature = "fx")]
+#[cfg_attr(docsrs, doc(cfg(feature = "fx")))]
 impl<'a> Mesh<'a, Fx> {
     /// A mesh from its parts in 16.16 (unchecked; see
     /// [`validate`](Mesh::validate)): for the fixed-point vertex stage,

@@ -8,6 +8,7 @@ use crate::Interpolate;
 use crate::light::Lighting;
 use crate::math::{Scalar, Vec3};
 use crate::pipeline::VertexInput;
+#[cfg(feature = "textures")]
 use crate::texture::{Filter, Sampler, TexelFormat, Texture, UV_ONE, from_rgb8, modulate};
 
 /// Fixed-point unit of [`phong_varyings`]' normals (2^14: components to
@@ -23,6 +24,7 @@ fn fixed<T: Scalar>(v: T, one: i32) -> i32 {
 
 /// The varyings of [`Textured`]: texture coordinates `uv` (in texture units,
 /// 1.0 = one width/height) and the lit colour as 8-bit channels.
+#[cfg(feature = "textures")]
 pub fn textured_varyings<T: Scalar>(uv: [f32; 2], input: &VertexInput<T>) -> [i32; 5] {
     let c = input.color.map(|c| c.to_channel(255) as i32);
     let f = |t: f32| (t * UV_ONE as f32).clamp(-8_388_608.0, 8_388_608.0) as i32;
@@ -32,6 +34,7 @@ pub fn textured_varyings<T: Scalar>(uv: [f32; 2], input: &VertexInput<T>) -> [i3
 /// A texture sampled at the fragment's `(u, v)` (varyings 0 and 1, in
 /// [`UV_ONE`] units) and modulated by its colour (varyings 2..5, 8-bit
 /// channels): [`textured_varyings`] makes them.
+#[cfg(feature = "textures")]
 #[derive(Debug, Clone, Copy)]
 pub struct Textured<'a, F: TexelFormat, Fi: Filter> {
     /// The texture.
@@ -40,6 +43,7 @@ pub struct Textured<'a, F: TexelFormat, Fi: Filter> {
     pub sampler: Sampler<Fi>,
 }
 
+#[cfg(feature = "textures")]
 impl<C: Interpolate, F: TexelFormat, Fi: Filter> FragmentShader<C, 5> for Textured<'_, F, Fi> {
     #[inline]
     fn shade(&self, frag: &Fragment<5>) -> C {
@@ -67,6 +71,7 @@ impl<C: Interpolate, F: TexelFormat, Fi: Filter> FragmentShader<C, 5> for Textur
 /// assert_eq!(FragmentShader::<Rgb888, 5>::shade_or_discard(&shader, &at(UV_ONE / 4)), None);
 /// assert_eq!(shader.shade_or_discard(&at(3 * UV_ONE / 4)), Some((Rgb888::RED, 200)));
 /// ```
+#[cfg(feature = "textures")]
 #[derive(Debug, Clone, Copy)]
 pub struct TexturedAlpha<'a, F: TexelFormat, Fi: Filter> {
     /// The texture.
@@ -77,6 +82,7 @@ pub struct TexturedAlpha<'a, F: TexelFormat, Fi: Filter> {
     pub cutoff: u8,
 }
 
+#[cfg(feature = "textures")]
 impl<C: Interpolate, F: TexelFormat, Fi: Filter> FragmentShader<C, 5> for TexturedAlpha<'_, F, Fi> {
     /// The colour alone, as [`Textured`] (alpha ignored).
     #[inline]

@@ -90,7 +90,6 @@ mod tests;
 pub use alpha::{A8, Argb4444};
 pub use format::TexelFormat;
 pub use sampler::{Address, Bilinear, Filter, Nearest, Sampler};
-pub(crate) use shade::div255_round;
 pub use shade::{from_rgb8, luma, modulate, to_rgb8};
 pub use sprite::{SPRITE_SCALE_RANGE, Sprite};
 

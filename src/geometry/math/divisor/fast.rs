@@ -45,6 +45,7 @@ impl FastQuotient<f32> for f32 {
     }
 }
 
+#[cfg(feature = "fx")]
 impl FastQuotient<crate::math::Fx> for FxDivisor {
     #[inline]
     fn quotient_fast(self, n: crate::math::Fx, scale: i64) -> Option<i64> {

@@ -10,7 +10,7 @@ use microraster::{Band, Renderer};
 use std::path::Path;
 
 #[allow(dead_code)] // each user takes what it needs
-#[path = "../common/dashboard.rs"]
+#[path = "../../../examples/common/dashboard.rs"]
 pub mod scene;
 
 pub fn run(out: &Path) -> Result<()> {

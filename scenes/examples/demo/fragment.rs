@@ -14,7 +14,7 @@ use microraster::{Band, Renderer};
 use std::path::Path;
 
 #[allow(dead_code)] // the firmware uses the per-band parts
-#[path = "../common/fragment_scene.rs"]
+#[path = "../../../examples/common/fragment_scene.rs"]
 mod fragment_scene;
 use fragment_scene::{BACKGROUND, FragBins, FragmentScene, H, W, draw_passes};
 

@@ -3,7 +3,7 @@
 //! in-memory display and writes them as PNGs.
 //!
 //! ```text
-//! cargo run --example demo [-- <out_dir>]     # default out/
+//! cargo run --example demo [-- <out_dir>]     # default out/ (this package: scenes/)
 //! ```
 
 use embedded_graphics::mono_font::{MonoTextStyleBuilder, ascii::FONT_6X10};

@@ -16,7 +16,7 @@ use microraster::{Band, Renderer};
 use microraster_scenes::scenes3d::Scene3d;
 use std::path::Path;
 
-#[path = "../common/knot_mesh.rs"]
+#[path = "../../../examples/common/knot_mesh.rs"]
 mod knot_mesh;
 
 // The standard 3D scene's frame, bands, angle and background.
