@@ -3,7 +3,7 @@
 //! one, and the host speed-up of threaded bands.
 //!
 //! `cargo run --release --example link` prints the tables;
-//! `cargo run --release --example link -- README.md` also replaces the text
+//! `cargo run --release --example link -- docs/link.md` also replaces the text
 //! between the `<!-- link:begin -->` and `<!-- link:end -->` markers of that
 //! file with them.
 //!
@@ -467,7 +467,7 @@ fn speedup_table(frames: &[heapless::Vec<ScreenTriangle<4>, BINS>]) -> String {
 fn main() {
     let frames: Vec<_> = (0..FRAMES).map(|f| bins(angle(f))).collect();
     let text = format!(
-        "Written by `cargo run --release --example link -- README.md`.\n\n{}\n{}\n{}\n{}",
+        "Written by `cargo run --release --example link -- docs/link.md`.\n\n{}\n{}\n{}\n{}",
         bytes_table(&[
             ("spinning 3D scene", scene3d_sent(&frames)),
             ("dashboard while driving", dashboard_sent())

@@ -1,4 +1,4 @@
-//! Writes the README's 2D numbers from their sources, between markers:
+//! Writes docs/shapes.md's 2D numbers from their sources, between markers:
 //!
 //! * `dashboard`: the line counts of the two dashboard functions in
 //!   `examples/common/dashboard.rs` (non-blank, non-comment lines between
@@ -14,7 +14,7 @@
 //! ```text
 //! cargo bench --bench shapes        # optional: refreshes the shape ratios
 //! cargo bench --bench sprites       # optional: refreshes the sprite ratios
-//! cargo run --example readme_2d     # rewrites the README sections
+//! cargo run --example readme_2d     # rewrites the docs/shapes.md sections
 //! ```
 //!
 //! A section whose numbers are missing (no bench run yet) is left as it is.
@@ -31,20 +31,22 @@ use shapes_ratios::ratio;
 type Result<T> = std::result::Result<T, Box<dyn Error>>;
 
 const SCENE: &str = "examples/common/dashboard.rs";
+/// The file the sections are in (the README links it).
+const DOC: &str = "docs/shapes.md";
 
 fn main() -> Result<()> {
     let source = std::fs::read_to_string(SCENE)?;
-    let mut readme = std::fs::read_to_string("README.md")?;
+    let mut readme = std::fs::read_to_string(DOC)?;
     let (mr, eg) = (block(&source, "mr")?, block(&source, "eg")?);
     let (n_mr, n_eg) = (count(&mr), count(&eg));
     let verdict = if n_mr <= n_eg { "met" } else { "missed" };
     println!("dashboard: microraster {n_mr} lines, plain embedded-graphics {n_eg} lines: target {verdict}");
     let text = format!(
-        "![the dashboard with microraster](docs/dashboard.png) \
-         ![the same screen in plain embedded-graphics](docs/dashboard_eg.png)\n\n\
+        "![the dashboard with microraster](dashboard.png) \
+         ![the same screen in plain embedded-graphics](dashboard_eg.png)\n\n\
          Left: microraster, {n_mr} lines; right: plain embedded-graphics, {n_eg} lines \
          (non-blank, non-comment lines of `dashboard_showing` and `dashboard_eg_showing`, the speed and its readout as arguments, in \
-         [`{SCENE}`]({SCENE}); target, no more lines than e-g: **{verdict}**).\n\n\
+         [`{SCENE}`](../{SCENE}); target, no more lines than e-g: **{verdict}**).\n\n\
          ```rust,ignore\n{}```\n",
         mr.iter().map(|l| format!("{l}\n")).collect::<String>()
     );
@@ -64,8 +66,8 @@ fn main() -> Result<()> {
             "sprites-ratios: no complete `cargo bench --bench sprites` run found; section left as it is"
         ),
     }
-    std::fs::write("README.md", readme)?;
-    println!("README.md rewritten");
+    std::fs::write(DOC, readme)?;
+    println!("{DOC} rewritten");
     Ok(())
 }
 
@@ -89,8 +91,8 @@ fn count(lines: &[&str]) -> usize {
 /// Replaces the text between `<!-- name:begin -->` and `<!-- name:end -->`.
 fn replace(readme: &mut String, name: &str, text: &str) -> Result<()> {
     let (begin, end) = (format!("<!-- {name}:begin -->\n"), format!("<!-- {name}:end -->"));
-    let b = readme.find(&begin).ok_or(format!("no `{begin}` in README.md"))? + begin.len();
-    let e = readme[b..].find(&end).ok_or(format!("no `{end}` in README.md"))? + b;
+    let b = readme.find(&begin).ok_or(format!("no `{begin}` in {DOC}"))? + begin.len();
+    let e = readme[b..].find(&end).ok_or(format!("no `{end}` in {DOC}"))? + b;
     readme.replace_range(b..e, text);
     Ok(())
 }

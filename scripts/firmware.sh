@@ -8,11 +8,11 @@
 #   bash scripts/firmware.sh check          both targets: run under QEMU, diff the records
 #                                           with the host's (`cargo run --example firmware -- m4f|m0`)
 #   bash scripts/firmware.sh size           flash and static RAM of both ELFs
-#   bash scripts/firmware.sh table          the README's table: instructions per frame
+#   bash scripts/firmware.sh table          docs/firmware.md's table: instructions per frame
 #                                           (QEMU -icount), static RAM, flash, stack,
 #                                           per scene and target (examples/fw_bench);
 #                                           its rows also go to docs/data/fw-bench.tsv
-#                                           for the report, the table into README.md
+#                                           for the report, the table into docs/firmware.md
 #                                           (`check` prints the table only)
 #   bash scripts/firmware.sh table TARGET [ROWS]
 #                                           the same for one target (m4f or m0) and,
@@ -22,7 +22,7 @@
 #                                           issue 61's rows: `knot20k` has both accuracy
 #                                           tiers, `knot20k-close` the camera twice as
 #                                           close, `knot20k-rows` the bands per tier);
-#                                           printed only, README and data untouched
+#                                           printed only, docs and data untouched
 #   bash scripts/firmware.sh profile ROWS [N]
 #                                           where those fw_bench rows (as for `table`)
 #                                           spend their Cortex-M4F instructions: the N
@@ -41,7 +41,7 @@
 #                                           `cargo run --release --example report`
 #   bash scripts/firmware.sh link           Cortex-M4F instructions per band of the standard 3D
 #                                           scene (examples/fw_link) into docs/data/link-m4f.tsv;
-#                                           then `cargo run --release --example link -- README.md`
+#                                           then `cargo run --release --example link -- docs/link.md`
 #   bash scripts/firmware.sh build-st7789   build the ST7789 display example (its own
 #                                           package: examples/st7789, STM32F405), print
 #                                           its path; flash it with probe-rs (see there)
@@ -56,7 +56,7 @@
 #                                           alone and both cores, FRAMES frames (default 4):
 #                                           every band's CRC equal to the host's, every steady
 #                                           frame within examples/rp2040/emu/budget.txt
-#                                           (emulator cycles); prints the README's rows
+#                                           (emulator cycles); prints docs/firmware.md's rows
 #   bash scripts/firmware.sh qemu ELF       run an ELF under QEMU (cargo's runner)
 #   bash scripts/firmware.sh toolchain      which toolchain builds the firmware
 #
@@ -413,14 +413,14 @@ size_words() { # size_words ELF: "text data bss"
   "$tool" "$1" | awk 'NR == 2 { print $1, $2, $3 }'
 }
 
-table() { # table [TARGET [ROWS]]; with write=1 and no arguments also the data and README
+table() { # table [TARGET [ROWS]]; with write=1 and no arguments also the data and docs/firmware.md
   local out=()
   if [ $# -ge 1 ]; then
     triple "$1" >/dev/null
     TARGETS=("$1")
   elif [ -n "${write:-}" ]; then
     mkdir -p "$ROOT/docs/data"
-    out=("$ROOT/docs/data/fw-bench.tsv" "$ROOT/README.md")
+    out=("$ROOT/docs/data/fw-bench.tsv" "$ROOT/docs/firmware.md")
   fi
   # Read by examples/fw_bench: by the firmware when it is built, by the host when it runs.
   export MICRORASTER_FW_BENCH=${2:-}
@@ -505,7 +505,7 @@ PY
 # The RP2040 example's emulator build run in rp2040-emu (examples/rp2040/emu):
 # core 0 alone, then both cores; band records compared with the host's
 # (`cargo run -- crc FRAMES` of examples/rp2040), steady frames checked
-# against examples/rp2040/emu/budget.txt. Prints the README's rows.
+# against examples/rp2040/emu/budget.txt. Prints docs/firmware.md's rows.
 rp2040() { # rp2040 [FRAMES]
   local frames=${1:-4} start=$SECONDS t=thumbv6m-none-eabi dir=$FW_DIR/rp2040 rom elf host tool status=0
   local manifest=$ROOT/examples/rp2040/Cargo.toml

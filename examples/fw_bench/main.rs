@@ -5,7 +5,7 @@
 //! `bash scripts/firmware.sh table` builds it for both targets, runs it under
 //! QEMU with `-icount shift=0` (virtual time advances 1 ns per executed
 //! instruction, so a timer counts instructions) and hands its output to the
-//! host side of this example, which prints the table of the README.
+//! host side of this example, which prints the table of docs/firmware.md.
 //!
 //! * Target (`target_os = "none"`): for each configuration, one untimed
 //!   preparation (a 2D scene collected into RAM), one untimed frame (the
@@ -23,9 +23,9 @@
 //!   covered pixels and frame CRC; `fw_bench table FILE` reads the target
 //!   runs and sizes that `scripts/firmware.sh table` collected into FILE,
 //!   checks every frame CRC against the host's, and prints the table;
-//!   `fw_bench table FILE TSV_OUT [README]` also writes its rows as
+//!   `fw_bench table FILE TSV_OUT [DOC]` also writes its rows as
 //!   tab-separated data (`docs/data/fw-bench.tsv`, which the report reads)
-//!   and the table into the README (between its `fw-table:begin/end` markers).
+//!   and the table into docs/firmware.md (between its `fw-table:begin/end` markers).
 #![cfg_attr(target_os = "none", no_std, no_main)]
 
 // The CRC firmware's workload: its constants, CRC and buffers sizes.
@@ -284,7 +284,7 @@ fn main() {
                 }
                 rest.get(1).map_or(Ok(()), |readme| table::update_readme(readme, &t))
             }),
-        _ => Err("usage: fw_bench m4f|m0 | fw_bench table FILE [TSV_OUT [README]]".to_string()),
+        _ => Err("usage: fw_bench m4f|m0 | fw_bench table FILE [TSV_OUT [DOC]]".to_string()),
     };
     if let Err(e) = result {
         eprintln!("fw_bench: {e}");

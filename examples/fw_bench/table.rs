@@ -229,13 +229,13 @@ pub fn key(b: &Bench) -> String {
     format!("{}/{}", b.scene.replace(' ', "-"), k.trim_end_matches('-'))
 }
 
-/// The README table from the collected target runs (`input`), and the same
+/// docs/firmware.md's table from the collected target runs (`input`), and the same
 /// rows as the tab-separated data the report reads (`docs/data/fw-bench.tsv`).
 pub fn table(input: &str) -> Result<(String, String), String> {
     let runs = parse(input)?;
     let mut out = String::new();
     let mut tsv = String::from(
-        "# Cortex-M counts of examples/fw_bench (the README's firmware table), one frame each.\n\
+        "# Cortex-M counts of examples/fw_bench (docs/firmware.md's table), one frame each.\n\
          # Written by `bash scripts/firmware.sh table`; do not edit. QEMU -icount shift=0:\n\
          # m4f on mps2-an386 (320x240, 16-row bands), m0 on microbit (160x128, 4-row bands).\n\
          # triangles: mesh triangles for the knot; covered: pixels unlike the background (0: none drawn);\n\
@@ -355,7 +355,7 @@ pub fn table(input: &str) -> Result<(String, String), String> {
     Ok((out, tsv))
 }
 
-/// Replaces the README's firmware table (between its
+/// Replaces docs/firmware.md's firmware table (between its
 /// `<!-- fw-table:begin -->` and `<!-- fw-table:end -->` markers) with `table`.
 pub fn update_readme(path: &str, table: &str) -> Result<(), String> {
     let text = std::fs::read_to_string(path).map_err(|e| format!("{path}: {e}"))?;

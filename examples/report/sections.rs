@@ -93,7 +93,7 @@ pub(crate) fn shapes_section() -> String {
     d += "Each shape (24 instances, 8 to 120 px, 320 × 240 `Rgb565`) against embedded-graphics' and tiny-skia's same \
           shape: criterion's medians of the last `cargo bench --bench shapes` run (`benches/shapes.rs`), read from \
           `target/criterion` when this report was written, not measured by it (> 1: microraster faster).\n\n";
-    match shapes_ratios::table("[README](../README.md#the-dashboard)") {
+    match shapes_ratios::table("[the 2D kit](shapes.md#the-dashboard)") {
         Some(table) => d += &table,
         None => {
             d += "*Not available: no complete `cargo bench --bench shapes` run in `target/criterion` when this \
