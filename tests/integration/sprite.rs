@@ -3,6 +3,10 @@
 //! module's geometry, in `f64` with `f64` sine and cosine) and the exact
 //! nearest texel or bilinear blend there.
 //!
+//! The random-texture checks run for both colour formats with alpha,
+//! `Argb4444` and `Rgb565A8`, their texels widened by the documented rules
+//! (`n·17` per nibble; `Rgb565` bit replication and the alpha byte as is).
+//!
 //! Bounds (from the sprite and texture docs): the sample point handed to the
 //! sampler is within `δ = size·2^-16 + size·4·10^-7 + 10^-6` texels of the
 //! exact one (2^-16 truncation, the `f32` sine/cosine, `f64` set-up). So
@@ -17,7 +21,7 @@ use embedded_graphics::prelude::*;
 use embedded_graphics_core::pixelcolor::{Rgb565, Rgb888};
 use microraster::blend::{Blend, BlendTarget};
 use microraster::render::from_fn;
-use microraster::texture::{A8, Argb4444, Bilinear, Filter, Sprite, TexelFormat, Texture};
+use microraster::texture::{A8, Argb4444, Bilinear, Filter, Rgb565A8, Sprite, TexelFormat, Texture};
 use microraster::{Band, ClipRect, Error, Renderer};
 use std::collections::HashMap;
 
@@ -43,8 +47,37 @@ fn record<F: TexelFormat, Fi: Filter>(s: &Sprite<'_, F, Rgb888, Fi>) -> HashMap<
     r.seen
 }
 
-struct Case {
-    texels: Vec<u16>,
+/// A format with alpha under test: a random texel from one `u64`, and the
+/// texel as 8-bit `[r, g, b, a]` by the documented widening.
+trait AlphaFormat: TexelFormat {
+    fn random(bits: u64) -> Self::Storage;
+    fn rgba(t: Self::Storage) -> [f64; 4];
+}
+
+impl AlphaFormat for Argb4444 {
+    fn random(bits: u64) -> u16 {
+        bits as u16
+    }
+    fn rgba(t: u16) -> [f64; 4] {
+        let n = |s: u32| ((t >> s) & 0xF) as f64 * 17.0;
+        [n(8), n(4), n(0), n(12)]
+    }
+}
+
+impl AlphaFormat for Rgb565A8 {
+    fn random(bits: u64) -> [u8; 3] {
+        [bits as u8, (bits >> 8) as u8, (bits >> 16) as u8]
+    }
+    fn rgba(t: [u8; 3]) -> [f64; 4] {
+        // Bit replication: c·2^(8−b) + ⌊c·2^(8−b)/2^b⌋ for a b-bit channel.
+        let c = u32::from(t[0]) << 8 | u32::from(t[1]);
+        let widen = |v: u32, b: u32| (v << (8 - b)) as f64 + ((v << (8 - b)) >> b) as f64;
+        [widen(c >> 11, 5), widen((c >> 5) & 63, 6), widen(c & 31, 5), f64::from(t[2])]
+    }
+}
+
+struct Case<F: AlphaFormat> {
+    texels: Vec<F::Storage>,
     w: u32,
     h: u32,
     at: Point,
@@ -52,12 +85,12 @@ struct Case {
     angle: f32,
 }
 
-impl Case {
-    fn random(rng: &mut Rng, axis_aligned: bool) -> Case {
+impl<F: AlphaFormat> Case<F> {
+    fn random(rng: &mut Rng, axis_aligned: bool) -> Self {
         let dim =
             |rng: &mut Rng| if rng.chance(0.4) { 1 << rng.range(0, 5) } else { rng.range(1, 37) as u32 };
         let (w, h) = (dim(rng), dim(rng));
-        let texels = (0..w * h).map(|_| rng.next_u64() as u16).collect();
+        let texels = (0..w * h).map(|_| F::random(rng.next_u64())).collect();
         let at = Point::new(rng.range(-20, 120) as i32, rng.range(-20, 120) as i32);
         let (scale, angle) = if axis_aligned {
             (rng.range(1, 6) as f32, 0.0)
@@ -72,7 +105,7 @@ impl Case {
         Case { texels, w, h, at, scale, angle }
     }
 
-    fn texture(&self) -> Texture<'_, Argb4444> {
+    fn texture(&self) -> Texture<'_, F> {
         Texture::new(&self.texels, self.w, self.h).unwrap()
     }
 
@@ -92,9 +125,7 @@ impl Case {
     }
 
     fn rgba(&self, i: usize, j: usize) -> [f64; 4] {
-        let t = self.texels[j * self.w as usize + i];
-        let n = |s: u32| ((t >> s) & 0xF) as f64 * 17.0;
-        [n(8), n(4), n(0), n(12)]
+        F::rgba(self.texels[j * self.w as usize + i])
     }
 
     /// The exact bilinear blend (edges clamped) at texel-space `(tx, ty)`.
@@ -116,7 +147,7 @@ fn border(t: f64) -> f64 {
     (t - t.round()).abs()
 }
 
-fn check_nearest(case: &Case, exact: bool) -> (usize, usize) {
+fn check_nearest<F: AlphaFormat>(case: &Case<F>, exact: bool) -> (usize, usize) {
     let tex = case.texture();
     let got = record(&Sprite::new(&tex).at(case.at).scale(case.scale).rotate(case.angle));
     let d = if exact { 0.0 } else { case.delta() };
@@ -143,10 +174,15 @@ fn check_nearest(case: &Case, exact: bool) -> (usize, usize) {
 
 #[test]
 fn nearest_axis_aligned_integer_scale_is_exact() {
-    let mut rng = Rng::new(0x5971);
+    nearest_axis_aligned::<Argb4444>(0x5971);
+    nearest_axis_aligned::<Rgb565A8>(0x5a71);
+}
+
+fn nearest_axis_aligned<F: AlphaFormat>(seed: u64) {
+    let mut rng = Rng::new(seed);
     let mut checked = 0;
     for _ in 0..300 {
-        let case = Case::random(&mut rng, true);
+        let case = Case::<F>::random(&mut rng, true);
         let (c, skipped) = check_nearest(&case, true);
         assert_eq!(skipped, 0);
         checked += c;
@@ -156,10 +192,15 @@ fn nearest_axis_aligned_integer_scale_is_exact() {
 
 #[test]
 fn nearest_rotated_and_scaled_matches_f64() {
-    let mut rng = Rng::new(0x5972);
+    nearest_rotated::<Argb4444>(0x5972);
+    nearest_rotated::<Rgb565A8>(0x5a72);
+}
+
+fn nearest_rotated<F: AlphaFormat>(seed: u64) {
+    let mut rng = Rng::new(seed);
     let (mut checked, mut skipped) = (0, 0);
     for _ in 0..400 {
-        let (c, s) = check_nearest(&Case::random(&mut rng, false), false);
+        let (c, s) = check_nearest(&Case::<F>::random(&mut rng, false), false);
         checked += c;
         skipped += s;
     }
@@ -169,11 +210,16 @@ fn nearest_rotated_and_scaled_matches_f64() {
 
 #[test]
 fn bilinear_is_within_the_stated_bound() {
-    let mut rng = Rng::new(0x5973);
+    bilinear_within_bound::<Argb4444>(0x5973);
+    bilinear_within_bound::<Rgb565A8>(0x5a73);
+}
+
+fn bilinear_within_bound<F: AlphaFormat>(seed: u64) {
+    let mut rng = Rng::new(seed);
     let (mut checked, mut worst) = (0usize, 0f64);
     for _ in 0..300 {
         let aligned = rng.chance(0.2);
-        let case = Case::random(&mut rng, aligned);
+        let case = Case::<F>::random(&mut rng, aligned);
         let tex = case.texture();
         let got =
             record(&Sprite::new(&tex).at(case.at).scale(case.scale).rotate(case.angle).filter(Bilinear));
@@ -221,7 +267,7 @@ fn a8_mask_is_tinted_and_opacity_scales_alpha() {
 
 #[test]
 fn sprites_are_band_invariant() {
-    fn frame<const H: usize>(tex: &Texture<'_, Argb4444>) -> Vec<Rgb565> {
+    fn frame<F: TexelFormat, const H: usize>(tex: &Texture<'_, F>) -> Vec<Rgb565> {
         let mut band = Band::<Rgb565, 64, H>::new(Rgb565::BLACK);
         let mut fb = crate::framebuffer::Framebuffer::new(64, 48, Rgb565::BLACK);
         Renderer::new(48, Rgb565::new(5, 10, 20))
@@ -246,18 +292,31 @@ fn sprites_are_band_invariant() {
     let mut rng = Rng::new(0x5974);
     let texels: Vec<u16> = (0..12 * 9).map(|_| rng.next_u64() as u16).collect();
     let tex = Texture::<Argb4444>::new(&texels, 12, 9).unwrap();
-    let full = frame::<48>(&tex);
+    let full = frame::<_, 48>(&tex);
     assert!(full.iter().filter(|&&c| c != Rgb565::new(5, 10, 20)).count() > 500);
-    assert_eq!(frame::<1>(&tex), full);
-    assert_eq!(frame::<3>(&tex), full);
-    assert_eq!(frame::<16>(&tex), full);
+    assert_eq!(frame::<_, 1>(&tex), full);
+    assert_eq!(frame::<_, 3>(&tex), full);
+    assert_eq!(frame::<_, 16>(&tex), full);
+    // The same for 8-bit alpha.
+    let texels: Vec<[u8; 3]> = (0..12 * 9).map(|_| Rgb565A8::random(rng.next_u64())).collect();
+    let tex = Texture::<Rgb565A8>::new(&texels, 12, 9).unwrap();
+    let full = frame::<_, 48>(&tex);
+    assert!(full.iter().filter(|&&c| c != Rgb565::new(5, 10, 20)).count() > 500);
+    assert_eq!(frame::<_, 1>(&tex), full);
+    assert_eq!(frame::<_, 3>(&tex), full);
+    assert_eq!(frame::<_, 16>(&tex), full);
 }
 
 #[test]
 fn drawable_is_the_cut_out_of_the_blend() {
-    let mut rng = Rng::new(0x5975);
+    cut_out_of_the_blend::<Argb4444>(0x5975);
+    cut_out_of_the_blend::<Rgb565A8>(0x5a75);
+}
+
+fn cut_out_of_the_blend<F: AlphaFormat>(seed: u64) {
+    let mut rng = Rng::new(seed);
     for _ in 0..50 {
-        let case = Case::random(&mut rng, false);
+        let case = Case::<F>::random(&mut rng, false);
         let tex = case.texture();
         let sprite = Sprite::new(&tex).at(case.at).scale(case.scale).rotate(case.angle);
         let blended = record(&sprite);
