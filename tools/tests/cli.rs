@@ -45,8 +45,9 @@ fn scratch(tag: &str) -> PathBuf {
 /// A 16 × 16 RGBA icon whose alpha takes every level once (`16·y + x`),
 /// over a colour ramp.
 fn glow_png() -> Vec<u8> {
-    let data: Vec<u8> =
-        (0..256u32).flat_map(|i| [(i % 16) as u8 * 17, (i / 16) as u8 * 17, 255 - (i % 16) as u8 * 8, i as u8]).collect();
+    let data: Vec<u8> = (0..256u32)
+        .flat_map(|i| [(i % 16) as u8 * 17, (i / 16) as u8 * 17, 255 - (i % 16) as u8 * 8, i as u8])
+        .collect();
     encode(16, 16, ColorType::Rgba, BitDepth::Eight, &data, None, None)
 }
 
@@ -55,13 +56,32 @@ fn help_explains_every_option_with_an_example() {
     let cases: [(&str, &[&str]); 2] = [
         (
             env!("CARGO_BIN_EXE_obj2rs"),
-            &["--name", "--out", "--plain", "--fx", "--flip-winding", "--mesh-type", "--meshlets", "-h, --help"],
+            &[
+                "--name",
+                "--out",
+                "--plain",
+                "--fx",
+                "--flip-winding",
+                "--mesh-type",
+                "--meshlets",
+                "-h, --help",
+            ],
         ),
         (
             env!("CARGO_BIN_EXE_png2rs"),
             &[
-                "--name", "--out", "--format", "rgb565", "gray8", "rgb565a8", "argb4444", "a8", "--ignore-alpha",
-                "--crate", "--pixelcolor", "-h, --help",
+                "--name",
+                "--out",
+                "--format",
+                "rgb565",
+                "gray8",
+                "rgb565a8",
+                "argb4444",
+                "a8",
+                "--ignore-alpha",
+                "--crate",
+                "--pixelcolor",
+                "-h, --help",
             ],
         ),
     ];
@@ -73,7 +93,10 @@ fn help_explains_every_option_with_an_example() {
             assert!(out.stderr.is_empty(), "{}", text(&out.stderr));
             for o in options {
                 // Each option starts a line of the options list, followed by what it does.
-                let line = help.lines().find(|l| l.trim_start().starts_with(o)).unwrap_or_else(|| panic!("{bin}: {o}"));
+                let line = help
+                    .lines()
+                    .find(|l| l.trim_start().starts_with(o))
+                    .unwrap_or_else(|| panic!("{bin}: {o}"));
                 assert!(line.trim_start().len() > o.len() + 10, "{bin}: `{o}` is explained: {line:?}");
             }
             let tool = if bin.contains("obj2rs") { "obj2rs" } else { "png2rs" };
@@ -87,7 +110,9 @@ fn help_explains_every_option_with_an_example() {
 fn obj2rs_name_and_out_and_the_deprecated_positional_name() {
     let golden = include_str!("../../assets/tetra.rs");
     // --name, to stdout; the `=` form too.
-    for args in [&[TETRA, "--name", "TETRA"][..], &["--name=TETRA", TETRA], &[TETRA, "--name", "TETRA", "--out", "-"]] {
+    for args in
+        [&[TETRA, "--name", "TETRA"][..], &["--name=TETRA", TETRA], &[TETRA, "--name", "TETRA", "--out", "-"]]
+    {
         let out = obj2rs(args);
         assert_eq!(out.status.code(), Some(0), "{args:?}: {}", text(&out.stderr));
         assert_eq!(text(&out.stdout), golden, "{args:?}");
@@ -133,7 +158,10 @@ fn bad_arguments_are_clear_errors_with_status_2() {
     }
     let png_cases: [(&[&str], &str); 7] = [
         (&["x.png", "--name", "x", "--format"], "--format needs a value"),
-        (&["x.png", "--name", "x", "--format", "rgb888"], "unknown format `rgb888` (one of rgb565, gray8, rgb565a8"),
+        (
+            &["x.png", "--name", "x", "--format", "rgb888"],
+            "unknown format `rgb888` (one of rgb565, gray8, rgb565a8",
+        ),
         (&["x.png", "--format", "rgb565"], "expected --name NAME"),
         (&["x.png", "--name", "x"], "expected --format FORMAT"),
         (&["--name", "x", "--format", "a8"], "expected INPUT"),
@@ -182,7 +210,15 @@ fn glow_rgb565a8_output_is_current_and_keeps_256_alpha_levels() {
     let png = dir.join("glow.png");
     std::fs::write(&png, glow_png()).unwrap();
     let out_file = dir.join("glow.rs");
-    let out = png2rs(&[png.to_str().unwrap(), "--name", "glow", "--format", "rgb565a8", "--out", out_file.to_str().unwrap()]);
+    let out = png2rs(&[
+        png.to_str().unwrap(),
+        "--name",
+        "glow",
+        "--format",
+        "rgb565a8",
+        "--out",
+        out_file.to_str().unwrap(),
+    ]);
     assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
     assert!(out.stdout.is_empty());
     let src = std::fs::read_to_string(&out_file).unwrap();

@@ -28,8 +28,8 @@
 
 use super::Texture;
 use super::format::TexelFormat;
-use embedded_graphics_core::pixelcolor::Rgb565;
 use super::sampler::{Filter, Sampler, bilerp};
+use embedded_graphics_core::pixelcolor::Rgb565;
 
 /// An 8-bit alpha mask: `u8` coverage per texel, colour white.
 ///

@@ -40,7 +40,8 @@ pub enum Format {
 
 impl Format {
     /// Every format, in the order the command line lists them.
-    pub const ALL: [Format; 5] = [Format::Rgb565, Format::Gray8, Format::Rgb565A8, Format::Argb4444, Format::A8];
+    pub const ALL: [Format; 5] =
+        [Format::Rgb565, Format::Gray8, Format::Rgb565A8, Format::Argb4444, Format::A8];
 
     /// The format named on the command line (`rgb565`, `gray8`,
     /// `rgb565a8`, `argb4444`, `a8`).
