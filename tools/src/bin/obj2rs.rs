@@ -2,7 +2,7 @@
 //! mesh, by default in clusters
 //! ([`microraster::mesh::ValidMeshletMesh`]) checked when the firmware
 //! compiles (arrays in flash, no RAM). `obj2rs --help` says what each option
-//! does (the text is [`HELP`]); `microraster_tools::obj` is the same
+//! does (the text is `HELP` below); `microraster_tools::obj` is the same
 //! conversion for build scripts.
 
 use microraster_tools::cli::{self, Arg, Args, Failure};

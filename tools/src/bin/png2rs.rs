@@ -1,6 +1,6 @@
 //! png2rs: converts a PNG image into Rust source for a `static`
 //! [`microraster::texture::Texture`] (texels in flash, no RAM). `png2rs
-//! --help` says what each option does (the text is [`HELP`]);
+//! --help` says what each option does (the text is `HELP` below);
 //! `microraster_tools::png` is the same conversion for build scripts.
 
 use microraster_tools::cli::{self, Arg, Args, Failure};
@@ -54,7 +54,8 @@ Alpha is straight (not premultiplied).
 
 Examples:
   png2rs icon.png --name icon --format rgb565a8 --out src/icon.rs
-      then `mod icon;` and `Sprite::new(&icon::ICON).at(Point::new(8, 8))`
+      then `mod icon;` and, in a band pass,
+      `Sprite::new(&icon::ICON).at(Point::new(8, 8)).blend_into(view)?`
   png2rs bricks.png --name bricks --format rgb565 > src/bricks.rs
 
 In a build script: `microraster_tools::png::convert(path, name, format)`.
