@@ -3,6 +3,10 @@
 //! module's geometry, in `f64` with `f64` sine and cosine) and the exact
 //! nearest texel or bilinear blend there.
 //!
+//! The random-texture checks run for both colour formats with alpha,
+//! `Argb4444` and `Rgb565A8`, their texels widened by the documented rules
+//! (`n·17` per nibble; `Rgb565` bit replication and the alpha byte as is).
+//!
 //! Bounds (from the sprite and texture docs): the sample point handed to the
 //! sampler is within `δ = size·2^-16 + size·4·10^-7 + 10^-6` texels of the
 //! exact one (2^-16 truncation, the `f32` sine/cosine, `f64` set-up). So
@@ -12,111 +16,19 @@
 //! * bilinear: within ½ + 2^-9 (the filter) + 2·255·δ (a channel moves at
 //!   most 255 per texel along each axis) of the exact blend.
 
+mod case;
+
 use crate::reference::Rng;
+use case::{AlphaFormat, Case, Recorder, border, record};
 use embedded_graphics::prelude::*;
 use embedded_graphics_core::pixelcolor::{Rgb565, Rgb888};
-use microraster::blend::{Blend, BlendTarget};
+use microraster::blend::Blend;
 use microraster::render::from_fn;
-use microraster::texture::{A8, Argb4444, Bilinear, Filter, Sprite, TexelFormat, Texture};
+use microraster::texture::{A8, Argb4444, Bilinear, Rgb565A8, Sprite, TexelFormat, Texture};
 use microraster::{Band, ClipRect, Error, Renderer};
 use std::collections::HashMap;
 
-/// Records what a sprite blends: colour (Rgb888 keeps the 8-bit channels
-/// exactly) and alpha per pixel.
-struct Recorder {
-    clip: ClipRect,
-    seen: HashMap<(i32, i32), [u8; 4]>,
-}
-
-impl BlendTarget<Rgb888> for Recorder {
-    fn clip(&self) -> ClipRect {
-        self.clip
-    }
-    fn blend_pixel<B: Blend>(&mut self, _: B, x: i32, y: i32, c: Rgb888, a: u8) {
-        assert!(self.seen.insert((x, y), [c.r(), c.g(), c.b(), a]).is_none(), "({x}, {y}) blended twice");
-    }
-}
-
-fn record<F: TexelFormat, Fi: Filter>(s: &Sprite<'_, F, Rgb888, Fi>) -> HashMap<(i32, i32), [u8; 4]> {
-    let mut r = Recorder { clip: ClipRect::new(0, 0, 200, 200), seen: HashMap::new() };
-    s.blend_into(&mut r).unwrap();
-    r.seen
-}
-
-struct Case {
-    texels: Vec<u16>,
-    w: u32,
-    h: u32,
-    at: Point,
-    scale: f32,
-    angle: f32,
-}
-
-impl Case {
-    fn random(rng: &mut Rng, axis_aligned: bool) -> Case {
-        let dim =
-            |rng: &mut Rng| if rng.chance(0.4) { 1 << rng.range(0, 5) } else { rng.range(1, 37) as u32 };
-        let (w, h) = (dim(rng), dim(rng));
-        let texels = (0..w * h).map(|_| rng.next_u64() as u16).collect();
-        let at = Point::new(rng.range(-20, 120) as i32, rng.range(-20, 120) as i32);
-        let (scale, angle) = if axis_aligned {
-            (rng.range(1, 6) as f32, 0.0)
-        } else {
-            let a = if rng.chance(0.2) {
-                rng.range(-4, 4) as f64 * std::f64::consts::FRAC_PI_2
-            } else {
-                rng.uniform(-7.0, 7.0)
-            };
-            (rng.log_uniform(0.3, 9.0) as f32, a as f32)
-        };
-        Case { texels, w, h, at, scale, angle }
-    }
-
-    fn texture(&self) -> Texture<'_, Argb4444> {
-        Texture::new(&self.texels, self.w, self.h).unwrap()
-    }
-
-    /// The exact texel-space point of pixel `(x, y)`'s centre.
-    fn texel_point(&self, x: i32, y: i32) -> (f64, f64) {
-        let (s, a) = (self.scale as f64, self.angle as f64);
-        let (w, h) = (self.w as f64, self.h as f64);
-        let (cx, cy) = (self.at.x as f64 + w * s / 2.0, self.at.y as f64 + h * s / 2.0);
-        let (dx, dy) = (x as f64 + 0.5 - cx, y as f64 + 0.5 - cy);
-        let (sin, cos) = a.sin_cos();
-        ((cos * dx + sin * dy) / s + w / 2.0, (cos * dy - sin * dx) / s + h / 2.0)
-    }
-
-    fn delta(&self) -> f64 {
-        let size = self.w.max(self.h) as f64;
-        size / 65536.0 + size * 4e-7 + 1e-6
-    }
-
-    fn rgba(&self, i: usize, j: usize) -> [f64; 4] {
-        let t = self.texels[j * self.w as usize + i];
-        let n = |s: u32| ((t >> s) & 0xF) as f64 * 17.0;
-        [n(8), n(4), n(0), n(12)]
-    }
-
-    /// The exact bilinear blend (edges clamped) at texel-space `(tx, ty)`.
-    fn bilinear(&self, tx: f64, ty: f64) -> [f64; 4] {
-        let axis = |t: f64, n: u32| {
-            let p = (t - 0.5).clamp(0.0, n as f64 - 1.0);
-            let i0 = p.floor() as usize;
-            (i0, (i0 + 1).min(n as usize - 1), p - i0 as f64)
-        };
-        let ((x0, x1, fx), (y0, y1, fy)) = (axis(tx, self.w), axis(ty, self.h));
-        let [a, b, c, d] = [(x0, y0), (x1, y0), (x0, y1), (x1, y1)].map(|(i, j)| self.rgba(i, j));
-        [0, 1, 2, 3]
-            .map(|k| (a[k] * (1.0 - fx) + b[k] * fx) * (1.0 - fy) + (c[k] * (1.0 - fx) + d[k] * fx) * fy)
-    }
-}
-
-/// Distance from `t` to the nearest integer.
-fn border(t: f64) -> f64 {
-    (t - t.round()).abs()
-}
-
-fn check_nearest(case: &Case, exact: bool) -> (usize, usize) {
+fn check_nearest<F: AlphaFormat>(case: &Case<F>, exact: bool) -> (usize, usize) {
     let tex = case.texture();
     let got = record(&Sprite::new(&tex).at(case.at).scale(case.scale).rotate(case.angle));
     let d = if exact { 0.0 } else { case.delta() };
@@ -143,10 +55,15 @@ fn check_nearest(case: &Case, exact: bool) -> (usize, usize) {
 
 #[test]
 fn nearest_axis_aligned_integer_scale_is_exact() {
-    let mut rng = Rng::new(0x5971);
+    nearest_axis_aligned::<Argb4444>(0x5971);
+    nearest_axis_aligned::<Rgb565A8>(0x5a71);
+}
+
+fn nearest_axis_aligned<F: AlphaFormat>(seed: u64) {
+    let mut rng = Rng::new(seed);
     let mut checked = 0;
     for _ in 0..300 {
-        let case = Case::random(&mut rng, true);
+        let case = Case::<F>::random(&mut rng, true);
         let (c, skipped) = check_nearest(&case, true);
         assert_eq!(skipped, 0);
         checked += c;
@@ -156,10 +73,15 @@ fn nearest_axis_aligned_integer_scale_is_exact() {
 
 #[test]
 fn nearest_rotated_and_scaled_matches_f64() {
-    let mut rng = Rng::new(0x5972);
+    nearest_rotated::<Argb4444>(0x5972);
+    nearest_rotated::<Rgb565A8>(0x5a72);
+}
+
+fn nearest_rotated<F: AlphaFormat>(seed: u64) {
+    let mut rng = Rng::new(seed);
     let (mut checked, mut skipped) = (0, 0);
     for _ in 0..400 {
-        let (c, s) = check_nearest(&Case::random(&mut rng, false), false);
+        let (c, s) = check_nearest(&Case::<F>::random(&mut rng, false), false);
         checked += c;
         skipped += s;
     }
@@ -169,11 +91,16 @@ fn nearest_rotated_and_scaled_matches_f64() {
 
 #[test]
 fn bilinear_is_within_the_stated_bound() {
-    let mut rng = Rng::new(0x5973);
+    bilinear_within_bound::<Argb4444>(0x5973);
+    bilinear_within_bound::<Rgb565A8>(0x5a73);
+}
+
+fn bilinear_within_bound<F: AlphaFormat>(seed: u64) {
+    let mut rng = Rng::new(seed);
     let (mut checked, mut worst) = (0usize, 0f64);
     for _ in 0..300 {
         let aligned = rng.chance(0.2);
-        let case = Case::random(&mut rng, aligned);
+        let case = Case::<F>::random(&mut rng, aligned);
         let tex = case.texture();
         let got =
             record(&Sprite::new(&tex).at(case.at).scale(case.scale).rotate(case.angle).filter(Bilinear));
@@ -221,7 +148,7 @@ fn a8_mask_is_tinted_and_opacity_scales_alpha() {
 
 #[test]
 fn sprites_are_band_invariant() {
-    fn frame<const H: usize>(tex: &Texture<'_, Argb4444>) -> Vec<Rgb565> {
+    fn frame<F: TexelFormat, const H: usize>(tex: &Texture<'_, F>) -> Vec<Rgb565> {
         let mut band = Band::<Rgb565, 64, H>::new(Rgb565::BLACK);
         let mut fb = crate::framebuffer::Framebuffer::new(64, 48, Rgb565::BLACK);
         Renderer::new(48, Rgb565::new(5, 10, 20))
@@ -246,18 +173,31 @@ fn sprites_are_band_invariant() {
     let mut rng = Rng::new(0x5974);
     let texels: Vec<u16> = (0..12 * 9).map(|_| rng.next_u64() as u16).collect();
     let tex = Texture::<Argb4444>::new(&texels, 12, 9).unwrap();
-    let full = frame::<48>(&tex);
+    let full = frame::<_, 48>(&tex);
     assert!(full.iter().filter(|&&c| c != Rgb565::new(5, 10, 20)).count() > 500);
-    assert_eq!(frame::<1>(&tex), full);
-    assert_eq!(frame::<3>(&tex), full);
-    assert_eq!(frame::<16>(&tex), full);
+    assert_eq!(frame::<_, 1>(&tex), full);
+    assert_eq!(frame::<_, 3>(&tex), full);
+    assert_eq!(frame::<_, 16>(&tex), full);
+    // The same for 8-bit alpha.
+    let texels: Vec<[u8; 3]> = (0..12 * 9).map(|_| Rgb565A8::random(rng.next_u64())).collect();
+    let tex = Texture::<Rgb565A8>::new(&texels, 12, 9).unwrap();
+    let full = frame::<_, 48>(&tex);
+    assert!(full.iter().filter(|&&c| c != Rgb565::new(5, 10, 20)).count() > 500);
+    assert_eq!(frame::<_, 1>(&tex), full);
+    assert_eq!(frame::<_, 3>(&tex), full);
+    assert_eq!(frame::<_, 16>(&tex), full);
 }
 
 #[test]
 fn drawable_is_the_cut_out_of_the_blend() {
-    let mut rng = Rng::new(0x5975);
+    cut_out_of_the_blend::<Argb4444>(0x5975);
+    cut_out_of_the_blend::<Rgb565A8>(0x5a75);
+}
+
+fn cut_out_of_the_blend<F: AlphaFormat>(seed: u64) {
+    let mut rng = Rng::new(seed);
     for _ in 0..50 {
-        let case = Case::random(&mut rng, false);
+        let case = Case::<F>::random(&mut rng, false);
         let tex = case.texture();
         let sprite = Sprite::new(&tex).at(case.at).scale(case.scale).rotate(case.angle);
         let blended = record(&sprite);

@@ -5,7 +5,15 @@
 //! Two routes, same output:
 //!
 //! - **Command line**: `cargo install --path tools` (from a checkout of
-//!   microraster) installs `obj2rs` and `png2rs`; run either with `--help`.
+//!   microraster) installs `obj2rs` and `png2rs`; `--help` says what each
+//!   option does. Both take the input, `--name NAME` and `--out FILE`
+//!   (standard output without it), and exit with status 2 on bad arguments
+//!   ([`cli`]):
+//!
+//!   ```text
+//!   obj2rs teapot.obj --name teapot --out src/teapot.rs
+//!   png2rs icon.png --name icon --format rgb565a8 --out src/icon.rs
+//!   ```
 //! - **Build script**: keep the assets as files and convert them in
 //!   `build.rs` with [`obj::convert`] and [`png::convert()`], writing into
 //!   `OUT_DIR` and `include!`-ing the result:
@@ -28,6 +36,7 @@
 //! The generated code names `microraster::…` and `embedded_graphics::…`
 //! paths, so it compiles in a crate that depends on those two.
 
+pub mod cli;
 pub mod obj;
 pub mod png;
 

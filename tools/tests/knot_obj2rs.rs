@@ -27,7 +27,7 @@ fn committed_knot_conversions_are_current() {
         assert!(
             c.source == committed,
             "stale: cargo run --example gen_bench_mesh -- --obj {along} {around} > {name}.obj && \
-             obj2rs {name}.obj {} > examples/common/{name}_obj2rs.rs",
+             obj2rs {name}.obj --name {} > examples/common/{name}_obj2rs.rs",
             name.to_uppercase()
         );
     }

@@ -7,8 +7,8 @@ use microraster_tools::obj::{Options, convert_bytes, emit, meshlets, parse};
 /// The converter's output for the assets, compiled as part of this test
 /// (the tetrahedron as converted by default, in clusters; the cube plain).
 /// Regenerate after changing the emitter:
-/// `cargo run -p microraster-tools --bin obj2rs -- assets/tetra.obj TETRA > assets/tetra.rs`
-/// `cargo run -p microraster-tools --bin obj2rs -- assets/cube_quads.obj CUBE_QUADS --plain > assets/cube_quads.rs`
+/// `cargo run -p microraster-tools --bin obj2rs -- assets/tetra.obj --name TETRA > assets/tetra.rs`
+/// `cargo run -p microraster-tools --bin obj2rs -- assets/cube_quads.obj --name CUBE_QUADS --plain > assets/cube_quads.rs`
 /// (the clusters' outputs: `tests/obj2rs_meshlets.rs`)
 mod generated {
     include!("../../assets/tetra.rs");

@@ -6,8 +6,8 @@ use microraster_tools::obj::{Options, convert_bytes, emit, meshlets, parse};
 
 /// The converter's clustered output for the cube, compiled as part of this
 /// test. Regenerate after changing the emitter:
-/// `cargo run -p microraster-tools --bin obj2rs -- assets/cube_quads.obj CUBE_M > assets/cube_quads_meshlets.rs`
-/// `cargo run -p microraster-tools --bin obj2rs -- assets/cube_quads.obj CUBE_FX --fx > assets/cube_quads_fx.rs`
+/// `cargo run -p microraster-tools --bin obj2rs -- assets/cube_quads.obj --name CUBE_M > assets/cube_quads_meshlets.rs`
+/// `cargo run -p microraster-tools --bin obj2rs -- assets/cube_quads.obj --name CUBE_FX --fx > assets/cube_quads_fx.rs`
 mod generated {
     include!("../../assets/cube_quads_meshlets.rs");
     include!("../../assets/cube_quads_fx.rs");
@@ -111,4 +111,37 @@ fn default_output_is_a_view3d_object() {
         (frame(&mut view, clustered), frame(&mut view, Object::new(&generated::CUBE_M_MESH, Rgb565::CYAN)));
     assert!(a.iter().filter(|&&c| c != Some(Rgb565::BLACK)).count() > 300, "the cube is drawn");
     assert_eq!(a, b);
+}
+
+/// The output for `ValidMeshletMesh::new_const` (issue 63; microraster
+/// gains it separately, so this output is checked as text until
+/// [`meshlets::VALIDATION`] switches to it): the same statics, `NAME`
+/// built by the constructor that panics at compile time with the cause, no
+/// `match` and no hand-written message. Today's output is the `match` form.
+#[test]
+fn new_const_output_is_the_match_output_with_the_constructor_call() {
+    use meshlets::{VALIDATION, Validation, rust_source_validated};
+    let m = parse_obj(CUBE_OBJ).unwrap();
+    let c = meshlets::build(&m).unwrap();
+    let ty = emit::DEFAULT_MESH_TYPE;
+    let matched = rust_source_validated(&c, "CUBE_M", ty, false, Validation::Match).unwrap();
+    assert_eq!(VALIDATION, Validation::Match);
+    assert_eq!(matched, meshlets::rust_source(&c, "CUBE_M", ty).unwrap());
+    let (prefix, tail) = matched.split_once("pub static CUBE_M: ").unwrap();
+    for fx in [false, true] {
+        let src = rust_source_validated(&c, "CUBE_M", ty, fx, Validation::NewConst).unwrap();
+        let (storage, new) = if fx { (", microraster::math::Fx", "new_fx_const") } else { ("", "new_const") };
+        let want = format!(
+            "{prefix}pub static CUBE_M: microraster::mesh::ValidMeshletMesh<'static{storage}> = \
+             microraster::mesh::ValidMeshletMesh::{new}(microraster::mesh::MeshletMesh {{\n    \
+             mesh: CUBE_M_MESH,\n    meshlets: &CUBE_M_MESHLETS,\n    vertices: &CUBE_M_MESHLET_VERTICES,\n    \
+             triangles: &CUBE_M_MESHLET_TRIANGLES,\n}});\n"
+        );
+        assert_eq!(src, want, "fx {fx}");
+        assert!(!src.contains("match") && !src.contains("panic!"));
+    }
+    assert!(tail.contains("Err(_) => panic!(\"CUBE_M: the mesh fails validation"));
+    // The types follow `--mesh-type`'s module.
+    let krate = rust_source_validated(&c, "X", "crate::mesh::Mesh", false, Validation::NewConst).unwrap();
+    assert!(krate.contains("pub static X: crate::mesh::ValidMeshletMesh<'static> = crate::mesh::ValidMeshletMesh::new_const(crate::mesh::MeshletMesh {\n"));
 }

@@ -1,25 +1,17 @@
 //! Tests of `png2rs` (PNG → Rust source for a static `Texture`): PNGs of
 //! every colour type are encoded here with the `png` crate, converted with
 //! `microraster_tools::png`, and the texels compared with an independent
-//! conversion written from the documented rules (the committed demo texture:
-//! `png2rs_demo.rs`).
+//! conversion written from the documented rules (the formats with alpha:
+//! `png2rs_alpha.rs`; the committed demo texture: `png2rs_demo.rs`).
 
 mod common;
 
-use microraster::texture::{A8, Argb4444, Sampler, Texture};
 use microraster_tools::png::convert::{Alpha, Format, Texels, convert};
 use microraster_tools::png::decode::decode;
 use microraster_tools::png::emit;
 use png::{BitDepth, ColorType};
 
-use common::{Rng, encode};
-
-/// The reference Rgb565 texel of a colour with channels in `0..=max`:
-/// each channel rounded to nearest in f64, packed red-high.
-fn ref_rgb565(rgb: [f64; 3], max: f64) -> u16 {
-    let q = |v: f64, m: f64| (v * m / max).round() as u16;
-    q(rgb[0], 31.0) * 2048 + q(rgb[1], 63.0) * 32 + q(rgb[2], 31.0)
-}
+use common::{Rng, encode, ref_rgb565};
 
 /// Rec. 601 luma at 8 bits, exact (f64 of exact integer ratios).
 fn ref_luma(rgb: [f64; 3], max: f64) -> f64 {
@@ -180,82 +172,6 @@ fn palette_images_expand_to_their_colours() {
         let want: Vec<u16> = rgb.iter().map(|c| ref_rgb565(*c, 255.0)).collect();
         assert_eq!(t, Texels::Rgb565(want));
     }
-}
-
-#[test]
-fn translucent_pixels_are_rejected_unless_ignored() {
-    let data = [10, 20, 30, 255, 40, 50, 60, 0, 70, 80, 90, 254];
-    let image = decode(&encode(3, 1, ColorType::Rgba, BitDepth::Eight, &data, None, None)).unwrap();
-    assert_eq!(
-        convert(&image, Format::Gray8, Alpha::Reject).unwrap_err(),
-        "2 pixels are not fully opaque (the first at x 1, y 0); textures have no alpha: pass \
-         --ignore-alpha to drop it"
-    );
-    let (t, n) = convert(&image, Format::Rgb565, Alpha::Ignore).unwrap();
-    assert_eq!(n, 2);
-    let want: Vec<u16> =
-        data.chunks(4).map(|c| ref_rgb565([0, 1, 2].map(|k| f64::from(c[k])), 255.0)).collect();
-    assert_eq!(t, Texels::Rgb565(want));
-}
-
-/// The alpha formats against channels and alpha rounded in f64: Argb4444
-/// `round(v·15/max)` per nibble, A8 `round(a·255/max)`.
-fn check_alpha(png: &[u8], rgba: &[[f64; 4]], max: f64) {
-    let image = decode(png).unwrap();
-    let (Texels::Argb4444(t4), n) = convert(&image, Format::Argb4444, Alpha::Reject).unwrap() else {
-        panic!()
-    };
-    let (Texels::A8(t8), _) = convert(&image, Format::A8, Alpha::Reject).unwrap() else { panic!() };
-    assert_eq!(n, rgba.iter().filter(|c| c[3] != max).count(), "pixels not opaque");
-    let q = |v: f64, m: f64| (v * m / max).round() as u16;
-    for (i, c) in rgba.iter().enumerate() {
-        let want = (q(c[3], 15.0) << 12) | (q(c[0], 15.0) << 8) | (q(c[1], 15.0) << 4) | q(c[2], 15.0);
-        assert_eq!(t4[i], want, "texel {i} of {c:?}/{max}");
-        assert_eq!(u16::from(t8[i]), q(c[3], 255.0), "alpha {i}");
-    }
-    // Through a texture: the texel's alpha is the PNG's, at 4 or 8 bits.
-    let tex = Texture::<Argb4444>::new(&t4, image.width, image.height).unwrap();
-    let mask = Texture::<A8>::new(&t8, image.width, image.height).unwrap();
-    let [_, _, _, a] = tex.sample_rgba(Sampler::NEAREST_CLAMP, [0, 0]);
-    assert_eq!(f64::from(a), (rgba[0][3] * 15.0 / max).round() * 17.0);
-    assert_eq!(mask.texel_rgba(0, 0), Some([255, 255, 255, q(rgba[0][3], 255.0) as u8]));
-}
-
-#[test]
-fn alpha_formats_keep_the_alpha_channel() {
-    let mut rng = Rng(7);
-    let (w, h) = (9, 4);
-    // 8-bit RGBA.
-    let data = rng.bytes(w * h * 4);
-    let rgba: Vec<[f64; 4]> = data.chunks(4).map(|c| [0, 1, 2, 3].map(|k| f64::from(c[k]))).collect();
-    check_alpha(&encode(9, 4, ColorType::Rgba, BitDepth::Eight, &data, None, None), &rgba, 255.0);
-    // 16-bit RGBA: rounded once from 16 bits.
-    let data = rng.bytes(w * h * 8);
-    let rgba16: Vec<[f64; 4]> = data
-        .chunks(8)
-        .map(|c| [0, 1, 2, 3].map(|k| f64::from(u16::from_be_bytes([c[2 * k], c[2 * k + 1]]))))
-        .collect();
-    check_alpha(&encode(9, 4, ColorType::Rgba, BitDepth::Sixteen, &data, None, None), &rgba16, 65535.0);
-    // Grey + alpha.
-    let data = rng.bytes(w * h * 2);
-    let ga: Vec<[f64; 4]> = data.chunks(2).map(|c| [c[0], c[0], c[0], c[1]].map(f64::from)).collect();
-    check_alpha(&encode(9, 4, ColorType::GrayscaleAlpha, BitDepth::Eight, &data, None, None), &ga, 255.0);
-    // No alpha channel: opaque.
-    let data = rng.bytes(w * h * 3);
-    let rgb: Vec<[f64; 4]> = data.chunks(3).map(|c| [c[0], c[1], c[2], 255].map(f64::from)).collect();
-    check_alpha(&encode(9, 4, ColorType::Rgb, BitDepth::Eight, &data, None, None), &rgb, 255.0);
-    // The emitted source names microraster's formats.
-    let t = Texels::Argb4444(vec![0xF00F, 0x0FF0]);
-    let src =
-        emit::rust_source(&t, 2, 1, "icon", "icon.png", "microraster", emit::DEFAULT_PIXELCOLOR).unwrap();
-    assert!(src.contains("pub static ICON_TEXELS: [[u16; 2]; 1] = [\n    [\n        0xF00F, 0x0FF0,"));
-    assert!(src.contains(
-        "pub static ICON: microraster::texture::Texture<'static, microraster::texture::Argb4444> ="
-    ));
-    let t = Texels::A8(vec![0, 128, 255]);
-    let src = emit::rust_source(&t, 3, 1, "m", "m.png", "crate", emit::DEFAULT_PIXELCOLOR).unwrap();
-    assert!(src.contains("Texture<'static, crate::texture::A8>"), "{src}");
-    assert_eq!((Format::parse("argb4444"), Format::parse("a8")), (Some(Format::Argb4444), Some(Format::A8)));
 }
 
 #[test]

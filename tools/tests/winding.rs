@@ -20,8 +20,12 @@ fn obj2rs(obj: &str, extra: &[&str]) -> (bool, String, String) {
     std::fs::create_dir_all(&dir).unwrap();
     let path = dir.join("mixed.obj");
     std::fs::write(&path, obj).unwrap();
-    let out =
-        Command::new(env!("CARGO_BIN_EXE_obj2rs")).arg(&path).arg("mixed").args(extra).output().unwrap();
+    let out = Command::new(env!("CARGO_BIN_EXE_obj2rs"))
+        .arg(&path)
+        .args(["--name", "mixed"])
+        .args(extra)
+        .output()
+        .unwrap();
     std::fs::remove_dir_all(&dir).unwrap();
     let text = |b: Vec<u8>| String::from_utf8(b).unwrap();
     (out.status.success(), text(out.stdout), text(out.stderr))

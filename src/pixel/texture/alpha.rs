@@ -6,6 +6,18 @@
 //! * [`Argb4444`]: 16-bit colour + alpha (a `u16`: alpha in bits 15–12,
 //!   red 11–8, green 7–4, blue 3–0), each nibble expanded to 8 bits as
 //!   `n·17` (exact: 15 ↦ 255).
+//! * [`Rgb565A8`]: `Rgb565` colour and 8-bit alpha in 3 bytes (`[u8; 3]`:
+//!   the colour's raw bits big-endian, then alpha), for icons whose alpha
+//!   gradients would band at 16 levels. Colour expands as
+//!   [`Rgb565`](embedded_graphics::pixelcolor::Rgb565)'s does (bit
+//!   replication), alpha is exact.
+//!
+//! `Rgb565A8` interleaves colour and alpha rather than storing two planes:
+//! a texel is one read from one place (flash prefetch and caches see one
+//! stream, not two), `Texture` stays one slice for every format, and 3
+//! bytes cost 25 % less flash than padding to a `u32`. Big-endian colour
+//! reads as `0xRRGG…` in the generated hex and is the byte order SPI panels
+//! take.
 //!
 //! Alpha is *straight* (not premultiplied), and bilinear filtering blends
 //! each channel and alpha independently with the same weights and bounds
@@ -17,6 +29,7 @@
 use super::Texture;
 use super::format::TexelFormat;
 use super::sampler::{Filter, Sampler, bilerp};
+use embedded_graphics_core::pixelcolor::Rgb565;
 
 /// An 8-bit alpha mask: `u8` coverage per texel, colour white.
 ///
@@ -40,6 +53,39 @@ pub struct A8;
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
 pub struct Argb4444;
+
+/// `Rgb565` colour with 8-bit alpha: `[colour bits 15–8, colour bits 7–0,
+/// alpha]` per texel (see the [module docs](self) for why 3 interleaved
+/// bytes). Build texels with [`Rgb565A8::texel`].
+///
+/// ```
+/// use microraster::texture::{Rgb565A8, Sampler, TexelFormat, Texture, UV_ONE};
+/// let orange = Rgb565A8::texel(0xFC00, 200); // red 31, green 32, blue 0; alpha 200
+/// assert_eq!(orange, [0xFC, 0x00, 200]);
+/// assert_eq!((Rgb565A8::expand(orange), Rgb565A8::alpha(orange)), ([255, 130, 0], 200));
+/// static ICON: [[[u8; 3]; 2]; 1] = [[Rgb565A8::texel(0xFFFF, 0), Rgb565A8::texel(0xFFFF, 255)]];
+/// static TEX: Texture<'static, Rgb565A8> = Texture::from_rows(&ICON);
+/// // Half-way between the texel centres: alpha 127.5, rounded half up; no 16-level steps.
+/// assert_eq!(TEX.sample_rgba(Sampler::BILINEAR_CLAMP, [UV_ONE / 2, 0]), [255, 255, 255, 128]);
+/// assert_eq!(TEX.sample_rgba(Sampler::BILINEAR_CLAMP, [UV_ONE * 3 / 8, 0]), [255, 255, 255, 64]);
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+pub struct Rgb565A8;
+
+impl Rgb565A8 {
+    /// The texel of raw `Rgb565` bits `rgb565` (red 15–11, green 10–5, blue
+    /// 4–0, as [`Texture<Rgb565>`](Texture) stores them) and alpha `alpha`
+    /// (straight, 255 opaque). A `const fn`, for `static` texel arrays.
+    ///
+    /// ```
+    /// use microraster::texture::Rgb565A8;
+    /// assert_eq!(Rgb565A8::texel(0x07E0, 128), [0x07, 0xE0, 128]); // green, half covered
+    /// ```
+    pub const fn texel(rgb565: u16, alpha: u8) -> [u8; 3] {
+        let [hi, lo] = rgb565.to_be_bytes();
+        [hi, lo, alpha]
+    }
+}
 
 impl TexelFormat for A8 {
     type Storage = u8;
@@ -71,6 +117,22 @@ impl TexelFormat for Argb4444 {
     #[inline]
     fn alpha(t: u16) -> u8 {
         (t >> 12) as u8 * 17
+    }
+}
+
+impl TexelFormat for Rgb565A8 {
+    type Storage = [u8; 3];
+    const CHANNELS: usize = 3;
+    const ALPHA: bool = true;
+
+    #[inline]
+    fn expand(t: [u8; 3]) -> [u8; 3] {
+        Rgb565::expand(u16::from_be_bytes([t[0], t[1]]))
+    }
+
+    #[inline]
+    fn alpha(t: [u8; 3]) -> u8 {
+        t[2]
     }
 }
 

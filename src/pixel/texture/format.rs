@@ -10,12 +10,14 @@ mod sealed {
     impl Sealed for embedded_graphics_core::pixelcolor::Gray8 {}
     impl Sealed for crate::texture::A8 {}
     impl Sealed for crate::texture::Argb4444 {}
+    impl Sealed for crate::texture::Rgb565A8 {}
 }
 
 /// A texel format. Sealed: implemented by the `embedded-graphics` colour
 /// types [`Rgb565`] (a `u16` per texel) and [`Gray8`] (a `u8`), so a texture
 /// reads as `Texture<'static, Rgb565>`, and by the formats with alpha
-/// [`A8`](crate::texture::A8) and [`Argb4444`](crate::texture::Argb4444).
+/// [`A8`](crate::texture::A8), [`Argb4444`](crate::texture::Argb4444) and
+/// [`Rgb565A8`](crate::texture::Rgb565A8).
 ///
 /// ```
 /// use embedded_graphics::pixelcolor::{Gray8, Rgb565};
@@ -28,14 +30,15 @@ mod sealed {
 pub trait TexelFormat: sealed::Sealed {
     /// One stored texel: `u16` raw bits for [`Rgb565`] (red in bits 15–11,
     /// green 10–5, blue 4–0: `embedded-graphics`' `RawU16`), `u8` for
-    /// [`Gray8`].
+    /// [`Gray8`], `[u8; 3]` for [`Rgb565A8`](crate::texture::Rgb565A8).
     ///
     /// ```
     /// use embedded_graphics::pixelcolor::{Gray8, Rgb565};
-    /// use microraster::texture::{A8, Argb4444, TexelFormat};
+    /// use microraster::texture::{A8, Argb4444, Rgb565A8, TexelFormat};
     /// let sizes = [size_of::<<Rgb565 as TexelFormat>::Storage>(), size_of::<<Gray8 as TexelFormat>::Storage>()];
     /// assert_eq!(sizes, [2, 1]);
     /// assert_eq!([size_of::<<A8 as TexelFormat>::Storage>(), size_of::<<Argb4444 as TexelFormat>::Storage>()], [1, 2]);
+    /// assert_eq!(size_of::<<Rgb565A8 as TexelFormat>::Storage>(), 3); // no padding: 3 bytes a texel
     /// ```
     type Storage: Copy + Default + Debug + PartialEq + 'static;
 
@@ -44,8 +47,9 @@ pub trait TexelFormat: sealed::Sealed {
     ///
     /// ```
     /// use embedded_graphics::pixelcolor::{Gray8, Rgb565};
-    /// use microraster::texture::{A8, Argb4444, TexelFormat};
+    /// use microraster::texture::{A8, Argb4444, Rgb565A8, TexelFormat};
     /// assert_eq!([Rgb565::CHANNELS, Gray8::CHANNELS, A8::CHANNELS, Argb4444::CHANNELS], [3, 1, 1, 3]);
+    /// assert_eq!(Rgb565A8::CHANNELS, 3);
     /// ```
     const CHANNELS: usize;
 
@@ -58,13 +62,14 @@ pub trait TexelFormat: sealed::Sealed {
     fn expand(texel: Self::Storage) -> [u8; 3];
 
     /// True for formats with an alpha channel ([`A8`](crate::texture::A8),
-    /// [`Argb4444`](crate::texture::Argb4444)).
+    /// [`Argb4444`](crate::texture::Argb4444),
+    /// [`Rgb565A8`](crate::texture::Rgb565A8)).
     ///
     /// ```
     /// use embedded_graphics::pixelcolor::{Gray8, Rgb565};
-    /// use microraster::texture::{A8, Argb4444, TexelFormat};
+    /// use microraster::texture::{A8, Argb4444, Rgb565A8, TexelFormat};
     /// assert!(!Rgb565::ALPHA && !Gray8::ALPHA);
-    /// assert!(A8::ALPHA && Argb4444::ALPHA);
+    /// assert!(A8::ALPHA && Argb4444::ALPHA && Rgb565A8::ALPHA);
     /// ```
     const ALPHA: bool = false;
 
@@ -78,6 +83,7 @@ pub trait TexelFormat: sealed::Sealed {
     /// // The top nibble, 4 bits to 8 by replication (×17): 8 → 136, 15 → 255.
     /// assert_eq!(Argb4444::alpha(0x80F0), 136);
     /// assert_eq!(Argb4444::alpha(0xF000), 255);
+    /// assert_eq!(microraster::texture::Rgb565A8::alpha([0xFF, 0xFF, 77]), 77); // 8 bits, as stored
     /// ```
     #[inline]
     fn alpha(texel: Self::Storage) -> u8 {

@@ -3,7 +3,7 @@
 //! A [`Texture<'a, F>`](Texture) is a row-major slice of texels in format
 //! `F` ([`Rgb565`](embedded_graphics::pixelcolor::Rgb565): `u16` raw
 //! bits; [`Gray8`](embedded_graphics::pixelcolor::Gray8): `u8`; with
-//! alpha, [`A8`] and [`Argb4444`]; see [`TexelFormat`]) and its size, 1 to [`MAX_TEXTURE_DIM`] texels each way
+//! alpha, [`A8`], [`Argb4444`] and [`Rgb565A8`]; see [`TexelFormat`]) and its size, 1 to [`MAX_TEXTURE_DIM`] texels each way
 //! (any size; powers of two index with shifts instead of multiplies).
 //! `cargo run -p microraster-tools --bin png2rs` (or
 //! `microraster_tools::png::convert` in a build script) converts a PNG to a
@@ -34,7 +34,8 @@
 //! |---|---|---|---|
 //! | [`Texture::sample`], [`Nearest`] | any `[i32; 2]` | 8-bit channels | exact: the texel containing `(u, v)` |
 //! | [`Texture::sample`], [`Bilinear`] | any `[i32; 2]` | 8-bit channels | ½ + 2^-9 of the exact bilinear blend |
-//! | [`TexelFormat::expand`] (Rgb565) | 5/6-bit channel | 8 bits | 0.72 of `c·255/max` (bit replication) |
+//! | [`TexelFormat::expand`] (Rgb565, [`Rgb565A8`]) | 5/6-bit channel | 8 bits | 0.72 of `c·255/max` (bit replication) |
+//! | [`TexelFormat::alpha`] | stored alpha | 8 bits | exact ([`Argb4444`]: `n·17`, exact) |
 //! | [`modulate`] | 8-bit channels | 8 bits | exact `round(t·c/255)` |
 //! | [`to_rgb8`] | native channels | 8 bits | exact `round(c·255/max)` |
 //! | [`from_rgb8`] (RGB) | 8-bit channels | native | exact `round(v·max/255)` |
@@ -87,7 +88,7 @@ mod sprite;
 #[cfg(test)]
 mod tests;
 
-pub use alpha::{A8, Argb4444};
+pub use alpha::{A8, Argb4444, Rgb565A8};
 pub use format::TexelFormat;
 pub use sampler::{Address, Bilinear, Filter, Nearest, Sampler};
 pub use shade::{from_rgb8, luma, modulate, to_rgb8};

@@ -152,3 +152,27 @@ fn power_of_two_sizes_are_detected_per_axis() {
         assert_eq!(Axis::new(n).pow2, pow2, "{n}");
     }
 }
+
+/// Rgb565A8 against its documented layout, on every colour and alpha: the
+/// colour is the big-endian `Rgb565` bits (expanded exactly as a
+/// `Texture<Rgb565>` texel), the alpha the third byte unchanged.
+#[test]
+fn rgb565a8_is_rgb565_colour_and_exact_alpha() {
+    for raw in 0..=u16::MAX {
+        let a = (raw % 251) as u8 ^ (raw >> 8) as u8; // every alpha, many times over
+        let t = Rgb565A8::texel(raw, a);
+        assert_eq!(t, [(raw >> 8) as u8, raw as u8, a]);
+        assert_eq!(Rgb565A8::expand(t), Rgb565::expand(raw), "{raw:#06x}");
+        assert_eq!(Rgb565A8::alpha(t), a);
+    }
+    for a in 0..=255u8 {
+        assert_eq!(Rgb565A8::alpha(Rgb565A8::texel(0x1234, a)), a);
+    }
+    // Through a texture: texel and texel_rgba agree with expand and alpha.
+    let texels = [Rgb565A8::texel(0xF800, 0), Rgb565A8::texel(0x001F, 1), Rgb565A8::texel(0xFFFF, 254)];
+    let tex = Texture::<Rgb565A8>::new(&texels, 3, 1).unwrap();
+    assert_eq!(tex.texel(0, 0), Some([255, 0, 0]));
+    assert_eq!(tex.texel_rgba(1, 0), Some([0, 0, 255, 1]));
+    assert_eq!(tex.texel_rgba(2, 0), Some([255, 255, 255, 254]));
+    assert_eq!(tex.texel_rgba(3, 0), None);
+}

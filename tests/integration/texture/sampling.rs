@@ -123,3 +123,66 @@ fn bilinear_reproduces_texels_at_their_centres_and_blends_across_the_wrap_seam()
     assert_eq!(tex.sample(Sampler::BILINEAR_CLAMP, [0, 0]), [0; 3]);
     assert_eq!(tex.sample(Sampler::BILINEAR_CLAMP, [i32::MAX, i32::MIN]), [200; 3]);
 }
+
+/// `sample_rgba` of the formats with colour and alpha: colour against the
+/// reference as `sample` is, alpha against the reference of the alpha plane
+/// alone (a grey texture of the stored alphas widened by the documented
+/// rule: 8 bits as is for `Rgb565A8`, `n·17` for `Argb4444`), nearest exact,
+/// bilinear within the same bound on all four channels.
+#[test]
+fn rgba_sampling_of_the_alpha_formats_against_reference() {
+    use microraster::texture::{Argb4444, Rgb565A8};
+    let mut rng = Rng::new(0x07e4_a1fa);
+    let mut worst = 0f64;
+    for (w, h) in SIZES {
+        let n = (w * h) as usize;
+        let (wi, hi) = (i64::from(w), i64::from(h));
+        let raw: Vec<u32> = (0..n).map(|_| rng.below(1 << 24) as u32).collect();
+        let r565: Vec<[u8; 3]> = raw.iter().map(|&t| Rgb565A8::texel((t >> 8) as u16, t as u8)).collect();
+        let tex565 = Texture::<Rgb565A8>::new(&r565, w, h).unwrap();
+        let colour565 = RefTexture::rgb565(&raw.iter().map(|&t| (t >> 8) as u16).collect::<Vec<_>>(), wi, hi);
+        let alpha565 = RefTexture::gray8(&raw.iter().map(|&t| t as u8).collect::<Vec<_>>(), wi, hi);
+        let r4444: Vec<u16> = raw.iter().map(|&t| t as u16).collect();
+        let tex4444 = Texture::<Argb4444>::new(&r4444, w, h).unwrap();
+        let nibbles = |s: u32| r4444.iter().map(move |&t| f64::from((t >> s) & 15) * 17.0);
+        let colour4444 = RefTexture {
+            w: wi,
+            h: hi,
+            texels: nibbles(8).zip(nibbles(4)).zip(nibbles(0)).map(|((r, g), b)| [r, g, b]).collect(),
+        };
+        let alpha4444 = RefTexture { w: wi, h: hi, texels: nibbles(12).map(|a| [a; 3]).collect() };
+        for _ in 0..20_000 {
+            let uv = [coordinate(&mut rng, w), coordinate(&mut rng, h)];
+            let a = [Address::Wrap, Address::Clamp];
+            let address = [a[rng.below(2) as usize], a[rng.below(2) as usize]];
+            let ruv = uv.map(f64::from);
+            let cases = [
+                (
+                    tex565.sample_rgba(Sampler::NEAREST_WRAP.with_address(address[0], address[1]), uv),
+                    tex565.sample_rgba(Sampler::BILINEAR_WRAP.with_address(address[0], address[1]), uv),
+                    &colour565,
+                    &alpha565,
+                ),
+                (
+                    tex4444.sample_rgba(Sampler::NEAREST_WRAP.with_address(address[0], address[1]), uv),
+                    tex4444.sample_rgba(Sampler::BILINEAR_WRAP.with_address(address[0], address[1]), uv),
+                    &colour4444,
+                    &alpha4444,
+                ),
+            ];
+            for (nearest, bilinear, colour, alpha) in cases {
+                let want = |r: [f64; 3], a: [f64; 3]| [r[0], r[1], r[2], a[0]];
+                let exact = want(colour.nearest(ruv, address), alpha.nearest(ruv, address));
+                assert_eq!(nearest.map(f64::from), exact, "nearest {w}×{h} {uv:?} {address:?}");
+                let blend = want(colour.bilinear(ruv, address), alpha.bilinear(ruv, address));
+                for k in 0..4 {
+                    let e = (f64::from(bilinear[k]) - blend[k]).abs();
+                    assert!(e <= BILINEAR_BOUND + 1e-9, "bilinear {w}×{h} {uv:?}: {bilinear:?} vs {blend:?}");
+                    worst = worst.max(e);
+                }
+            }
+        }
+    }
+    println!("rgba sampling: worst bilinear error {worst:.5} (bound {BILINEAR_BOUND:.5})");
+    assert!(worst > 0.49, "{worst}");
+}

@@ -92,6 +92,26 @@ pub fn winding_warning(mesh: &ObjMesh, meshlets: bool) -> Option<String> {
     })
 }
 
+/// How the clustered output's `static NAME` is validated when the firmware
+/// compiles. Either way an invalid mesh (one wound against its normals:
+/// [`winding_warning`]) is a build error; they differ in what it says.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Validation {
+    /// `match ValidMeshletMesh::new(..) { Ok(m) => m, Err(_) => panic!(..) }`
+    /// (`new_fx` for 16.16): works with every microraster since clusters
+    /// are validated, but the build error names the static, not the cause.
+    Match,
+    /// `ValidMeshletMesh::new_const(..)` (`new_fx_const` for 16.16): the
+    /// constructor panics at compile time naming the cause
+    /// (`WindingMismatch`, …); no `match` in the output.
+    NewConst,
+}
+
+/// The validation [`rust_source`] writes: [`Validation::Match`] until
+/// microraster has `ValidMeshletMesh::new_const` (issue 63), then
+/// [`Validation::NewConst`] (and the committed outputs regenerated).
+pub const VALIDATION: Validation = Validation::Match;
+
 /// Rust source defining `NAME_MESHLETS`, `NAME_MESHLET_VERTICES`,
 /// `NAME_MESHLET_TRIANGLES` and `NAME: ValidMeshletMesh<'static>`, the
 /// clusters around the `NAME_MESH` static ([`emit::mesh_source`] with
@@ -108,6 +128,27 @@ pub fn rust_source(c: &Clusters, name: &str, mesh_type: &str) -> Result<String, 
 /// [`rust_source`]; with `fx` around a mesh in 16.16 (`ValidMeshletMesh<'static,
 /// Fx>`, `obj2rs --fx`).
 pub fn rust_source_with(c: &Clusters, name: &str, mesh_type: &str, fx: bool) -> Result<String, String> {
+    rust_source_validated(c, name, mesh_type, fx, VALIDATION)
+}
+
+/// [`rust_source_with`], validated as `validation` says.
+///
+/// ```
+/// use microraster_tools::obj::meshlets::{Clusters, Validation, rust_source_validated};
+/// let c = Clusters { meshlets: vec![], vertices: vec![], triangles: vec![] };
+/// let src = rust_source_validated(&c, "knot", "microraster::mesh::Mesh", false, Validation::NewConst).unwrap();
+/// assert!(src.contains(
+///     "pub static KNOT: microraster::mesh::ValidMeshletMesh<'static> = \
+///      microraster::mesh::ValidMeshletMesh::new_const(microraster::mesh::MeshletMesh {"
+/// ));
+/// ```
+pub fn rust_source_validated(
+    c: &Clusters,
+    name: &str,
+    mesh_type: &str,
+    fx: bool,
+    validation: Validation,
+) -> Result<String, String> {
     let name = static_name(name)?;
     let (module, root) = type_paths(mesh_type);
     let (storage, new) = if fx { (format!(", {root}math::Fx"), "new_fx") } else { (String::new(), "new") };
@@ -144,19 +185,30 @@ pub fn rust_source_with(c: &Clusters, name: &str, mesh_type: &str, fx: bool) -> 
     let _ = writeln!(w, "/// (`Object::new(&{name}, colour)`) or `Pipeline::draw_meshlets`.");
     // A big mesh's checks run for seconds of constant evaluation.
     let _ = writeln!(w, "#[allow(long_running_const_eval)]\n#[rustfmt::skip]");
-    let _ = writeln!(
-        w,
-        "pub static {name}: {module}ValidMeshletMesh<'static{storage}> = match {module}ValidMeshletMesh::{new}({module}MeshletMesh {{"
+    let ty = format!("{module}ValidMeshletMesh<'static{storage}>");
+    let fields = format!(
+        "    mesh: {name}_MESH,\n    meshlets: &{name}_MESHLETS,\n    vertices: &{name}_MESHLET_VERTICES,\n    \
+         triangles: &{name}_MESHLET_TRIANGLES,"
     );
-    let _ = writeln!(
-        w,
-        "    mesh: {name}_MESH,\n    meshlets: &{name}_MESHLETS,\n    vertices: &{name}_MESHLET_VERTICES,"
-    );
-    let _ = writeln!(w, "    triangles: &{name}_MESHLET_TRIANGLES,\n}}) {{\n    Ok(m) => m,");
-    let _ = writeln!(
-        w,
-        "    Err(_) => panic!(\"{name}: the mesh fails validation (triangles wound against their normals? see obj2rs's warning)\"),"
-    );
-    let _ = writeln!(w, "}};");
+    match validation {
+        Validation::NewConst => {
+            let _ = writeln!(
+                w,
+                "pub static {name}: {ty} = {module}ValidMeshletMesh::{new}_const({module}MeshletMesh {{\n{fields}\n}});"
+            );
+        }
+        Validation::Match => {
+            let _ = writeln!(
+                w,
+                "pub static {name}: {ty} = match {module}ValidMeshletMesh::{new}({module}MeshletMesh {{\n{fields}"
+            );
+            let _ = writeln!(w, "}}) {{\n    Ok(m) => m,");
+            let _ = writeln!(
+                w,
+                "    Err(_) => panic!(\"{name}: the mesh fails validation (triangles wound against their normals? see obj2rs's warning)\"),"
+            );
+            let _ = writeln!(w, "}};");
+        }
+    }
     Ok(s)
 }

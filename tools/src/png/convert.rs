@@ -12,10 +12,14 @@
 //!   `0xARGB` (microraster's `texture::Argb4444`).
 //! * `a8`: the alpha channel alone, `round(a·255/max)` (`texture::A8`, an
 //!   alpha mask; the colour is dropped). An image without alpha is opaque.
+//! * `rgb565a8`: the colour as `rgb565`, the alpha as `a8`, stored
+//!   `[colour high byte, colour low byte, alpha]` (`texture::Rgb565A8`): 256
+//!   alpha levels where `argb4444` has 16.
 //! * Alpha in `rgb565` and `gray8`: they have none. Images whose every pixel
-//!   is opaque convert; any other pixel is an error unless alpha is ignored
-//!   (`--ignore-alpha`), which keeps each pixel's colour and drops its
-//!   alpha. The alpha formats keep it (straight, not premultiplied).
+//!   is opaque convert; any other pixel is an error (naming the formats that
+//!   keep alpha) unless alpha is ignored (`--ignore-alpha`), which keeps each
+//!   pixel's colour and drops its alpha. The alpha formats keep it
+//!   (straight, not premultiplied).
 
 use super::decode::Image;
 
@@ -30,24 +34,46 @@ pub enum Format {
     Argb4444,
     /// `u8` alpha.
     A8,
+    /// `[u8; 3]`: Rgb565 colour bits big-endian, then 8-bit alpha.
+    Rgb565A8,
 }
 
 impl Format {
+    /// Every format, in the order the command line lists them.
+    pub const ALL: [Format; 5] =
+        [Format::Rgb565, Format::Gray8, Format::Rgb565A8, Format::Argb4444, Format::A8];
+
     /// The format named on the command line (`rgb565`, `gray8`,
-    /// `argb4444`, `a8`).
+    /// `rgb565a8`, `argb4444`, `a8`).
     pub fn parse(s: &str) -> Option<Format> {
-        match s {
-            "rgb565" => Some(Format::Rgb565),
-            "gray8" => Some(Format::Gray8),
-            "argb4444" => Some(Format::Argb4444),
-            "a8" => Some(Format::A8),
-            _ => None,
+        Format::ALL.into_iter().find(|f| f.name() == s)
+    }
+
+    /// The name on the command line.
+    pub fn name(self) -> &'static str {
+        match self {
+            Format::Rgb565 => "rgb565",
+            Format::Gray8 => "gray8",
+            Format::Argb4444 => "argb4444",
+            Format::A8 => "a8",
+            Format::Rgb565A8 => "rgb565a8",
+        }
+    }
+
+    /// The texel format's type name in microraster or embedded-graphics.
+    pub fn type_name(self) -> &'static str {
+        match self {
+            Format::Rgb565 => "Rgb565",
+            Format::Gray8 => "Gray8",
+            Format::Argb4444 => "Argb4444",
+            Format::A8 => "A8",
+            Format::Rgb565A8 => "Rgb565A8",
         }
     }
 
     /// Whether the format keeps alpha.
     pub fn has_alpha(self) -> bool {
-        matches!(self, Format::Argb4444 | Format::A8)
+        matches!(self, Format::Argb4444 | Format::A8 | Format::Rgb565A8)
     }
 }
 
@@ -62,6 +88,8 @@ pub enum Texels {
     Argb4444(Vec<u16>),
     /// Alpha, row by row.
     A8(Vec<u8>),
+    /// `[colour high byte, colour low byte, alpha]`, row by row.
+    Rgb565A8(Vec<[u8; 3]>),
 }
 
 /// How pixels that are not fully opaque are handled.
@@ -87,18 +115,22 @@ pub fn convert(image: &Image, format: Format, alpha: Alpha) -> Result<(Texels, u
         let first = image.pixels.iter().position(|p| p[3] != image.max).unwrap_or(0);
         let (x, y) = (first as u32 % image.width, first as u32 / image.width);
         return Err(format!(
-            "{translucent} pixels are not fully opaque (the first at x {x}, y {y}); textures have no \
-             alpha: pass --ignore-alpha to drop it"
+            "{translucent} pixels are not fully opaque (the first at x {x}, y {y}); {} textures have no \
+             alpha: to keep it use --format rgb565a8, argb4444 or a8; to drop it pass --ignore-alpha",
+            format.name()
         ));
     }
     let max = image.max;
+    let rgb565 = |r, g, b| ((scale(r, 31, max) << 11) | (scale(g, 63, max) << 5) | scale(b, 31, max)) as u16;
     let texels = match format {
-        Format::Rgb565 => Texels::Rgb565(
+        Format::Rgb565 => Texels::Rgb565(image.pixels.iter().map(|&[r, g, b, _]| rgb565(r, g, b)).collect()),
+        Format::Rgb565A8 => Texels::Rgb565A8(
             image
                 .pixels
                 .iter()
-                .map(|&[r, g, b, _]| {
-                    ((scale(r, 31, max) << 11) | (scale(g, 63, max) << 5) | scale(b, 31, max)) as u16
+                .map(|&[r, g, b, a]| {
+                    let [hi, lo] = rgb565(r, g, b).to_be_bytes();
+                    [hi, lo, scale(a, 255, max) as u8]
                 })
                 .collect(),
         ),

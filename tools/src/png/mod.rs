@@ -1,8 +1,9 @@
 //! PNG → Rust source for a `static` microraster `Texture` (the `png2rs`
 //! binary, and [`convert()`] for build scripts).
 //!
-//! The output defines `NAME_TEXELS` (a `[[u16 or u8; W]; H]` array) and
-//! `NAME: Texture<'static, Rgb565, Gray8, Argb4444 or A8>`. Any PNG the `png`
+//! The output defines `NAME_TEXELS` (a `[[T; W]; H]` array, `T` the
+//! format's storage: `u16`, `u8` or `[u8; 3]`) and `NAME: Texture<'static,
+//! F>`, `F` one of `Rgb565`, `Gray8`, `Rgb565A8`, `Argb4444`, `A8`. Any PNG the `png`
 //! crate reads is accepted (see [`decode`]); rounding and alpha handling are
 //! in [`mod@convert`].
 

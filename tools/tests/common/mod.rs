@@ -1,5 +1,5 @@
-//! What the `png2rs` tests share: PNGs encoded with the `png` crate, and a
-//! deterministic generator.
+//! What the `png2rs` tests share: PNGs encoded with the `png` crate, a
+//! deterministic generator and the reference Rgb565 rounding.
 
 use png::{BitDepth, ColorType};
 
@@ -44,4 +44,12 @@ impl Rng {
     pub fn bytes(&mut self, n: usize) -> Vec<u8> {
         (0..n).map(|_| self.next() as u8).collect()
     }
+}
+
+/// The reference Rgb565 texel of a colour with channels in `0..=max`:
+/// each channel rounded to nearest in f64, packed red-high.
+#[allow(dead_code)] // not every includer converts to Rgb565
+pub fn ref_rgb565(rgb: [f64; 3], max: f64) -> u16 {
+    let q = |v: f64, m: f64| (v * m / max).round() as u16;
+    q(rgb[0], 31.0) * 2048 + q(rgb[1], 63.0) * 32 + q(rgb[2], 31.0)
 }
