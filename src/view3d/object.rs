@@ -8,7 +8,7 @@ use crate::mesh::{Mesh, ValidMesh, ValidMeshletMesh};
 use crate::pipeline::{ChunkMemo, ClusterCache, Material, Pipeline};
 use crate::raster3d::PerspectiveCorrect;
 use crate::render::Band3d;
-use crate::{Error, Interpolate};
+use crate::{Error, Interpolate, Param};
 
 /// The mesh of an [`Object`]. Build it with `into()` from a reference to
 /// any of the three mesh types; [`Object::new`] does that for you.
@@ -162,7 +162,7 @@ impl<'a, C: Copy> Object<'a, C> {
     /// // The wrong number of colours is an error.
     /// let short = Object::new(&CUBE, Rgb565::WHITE).with_vertex_colors(&colors[..8]);
     /// let err = view.draw(&Camera::look_at([0.0, 0.0, 4.0], [0.0; 3]), &[short], &mut display);
-    /// assert_eq!(err, Err(microraster::Error::InvalidParameter.into()));
+    /// assert_eq!(err, Err(microraster::Error::InvalidParameter(microraster::Param::VertexColors).into()));
     /// # Ok::<(), microraster::RenderError<core::convert::Infallible>>(())
     /// ```
     pub fn with_vertex_colors(self, colors: &'a [C]) -> Self {
@@ -214,12 +214,11 @@ impl<'a, C: Copy> Object<'a, C> {
             Geometry::Valid(m) => (m.mesh().vertex_count(), Some(m.mesh().triangle_count())),
             Geometry::Meshlets(m) => (m.get().mesh.vertex_count(), None),
         };
-        let ok = match self.colors {
-            Colors::Material => true,
-            Colors::PerVertex(c) => c.len() == vertices,
-            Colors::PerFace(c) => Some(c.len()) == triangles,
-        };
-        if ok { Ok(()) } else { Err(Error::InvalidParameter) }
+        match self.colors {
+            Colors::PerVertex(c) if c.len() != vertices => Err(Error::InvalidParameter(Param::VertexColors)),
+            Colors::PerFace(c) if Some(c.len()) != triangles => Err(Error::InvalidParameter(Param::FaceColors)),
+            _ => Ok(()),
+        }
     }
 
     /// The model matrix: object space to world space.
