@@ -11,7 +11,9 @@
 //! [`View3d::set_precision`] for [`Precision::Fast`]). Everything here is built on the explicit API
 //! ([`Pipeline`], [`Direct3d`]) and draws the same pixels
 //! (`tests/integration/view3d.rs`); use that API for other depth formats,
-//! the `Fx` path, fragment shaders or anti-aliasing.
+//! the `Fx` path, fragment shaders or anti-aliasing. A HUD (text, gauges,
+//! translucent panels) goes into each band after the meshes with
+//! [`View3d::draw_with`].
 //!
 //! ```
 //! use embedded_graphics::pixelcolor::{Rgb565, RgbColor};
@@ -231,7 +233,8 @@ impl<C: Interpolate, const W: usize, const H: usize> View3d<C, W, H> {
     /// chunks recorded in the first band that reaches them and skipped by
     /// the bands they miss;
     /// meshlet meshes go through [`Pipeline::draw_meshlets`]), and the band is sent with one
-    /// `fill_contiguous`. The image does not depend on `H`.
+    /// `fill_contiguous`. The image does not depend on `H`. Text or panels
+    /// over the frame: [`View3d::draw_with`], in the same pass.
     ///
     /// ```
     /// use embedded_graphics::{mock_display::MockDisplay, prelude::Point};

@@ -110,7 +110,20 @@ impl<'a, C: Copy> Object<'a, C> {
 
     /// Then scales it by `factor` about the world's origin. A zero factor
     /// makes the model singular: the frame fails with
-    /// [`Error::InvalidParameter`] before any band is sent.
+    /// [`Error::InvalidParameter`]`(`[`Param::Model`]`)` before any band is
+    /// sent. A NaN or infinite step (here or in a rotation or translation)
+    /// fails it with [`Error::NonFiniteCoordinate`].
+    ///
+    /// ```
+    /// use embedded_graphics::{mock_display::MockDisplay, pixelcolor::{Rgb565, RgbColor}};
+    /// use microraster::view3d::{CUBE, Camera, Object, View3d};
+    /// use microraster::{Error, Param};
+    /// let mut view = View3d::<Rgb565, 64, 8>::new(Rgb565::BLACK);
+    /// let camera = Camera::look_at([3.0, 2.0, 4.0], [0.0; 3]);
+    /// let mut draw = |o: Object<'_, Rgb565>| view.draw(&camera, &[o], &mut MockDisplay::new());
+    /// assert_eq!(draw(Object::new(&CUBE, Rgb565::RED).scale(0.0)), Err(Error::InvalidParameter(Param::Model).into()));
+    /// assert_eq!(draw(Object::new(&CUBE, Rgb565::RED).rotate_y(f32::NAN)), Err(Error::NonFiniteCoordinate.into()));
+    /// ```
     pub fn scale(self, factor: f32) -> Self {
         self.scale_xyz([factor; 3])
     }
