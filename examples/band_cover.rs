@@ -51,7 +51,7 @@ fn main() {
     let pipeline = pipeline3d::<f32, S>();
     let model = knot_model::<f32>();
     let mesh = ValidMeshletMesh::new(KNOT).expect("the knot's meshlets");
-    let mut cache = Box::new(ClusterCache::<f32, S>::new());
+    let mut cache = Box::new(ClusterCache::new());
     let (mut handed, mut no_centre, mut uncovered, mut pixels) = (0u32, 0u32, 0u32, 0u32);
     let (mut used, mut used_covering) = (0usize, 0usize);
     for y0 in (0..H).step_by(bh) {

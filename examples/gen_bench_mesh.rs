@@ -304,8 +304,7 @@ pub fn rust_source(k: &Knot) -> String {
     s += "    mesh: KNOT_MESH,\n    meshlets: &KNOT_MESHLETS,\n    vertices: &KNOT_MESHLET_VERTICES,\n";
     s += "    triangles: &KNOT_MESHLET_TRIANGLES,\n};\n\n";
     s += "/// [`KNOT`], validated at compile time (a few seconds of constant evaluation).\n";
-    s += "pub static VALID_KNOT: ValidMeshletMesh<'static> = match ValidMeshletMesh::new(KNOT) {\n";
-    s += "    Ok(m) => m,\n    Err(_) => panic!(\"invalid knot mesh\"),\n};\n";
+    s += "pub static VALID_KNOT: ValidMeshletMesh<'static> = ValidMeshletMesh::new_const(KNOT);\n";
     fx_source(&mut s, k);
     s
 }
@@ -348,8 +347,7 @@ fn fx_source(s: &mut String, k: &Knot) {
         "    meshlets: &KNOT_MESHLETS_FX,\n    vertices: &{vertices},\n    triangles: &{triangles},\n}};\n"
     );
     *s += "/// [`KNOT_FX`], validated at compile time (reading 16.16 as `f32` takes the\n/// constant evaluation past the compiler's default step budget: allowed).\n";
-    *s += "#[allow(long_running_const_eval)]\npub static VALID_KNOT_FX: ValidMeshletMesh<'static, Fx> = match ValidMeshletMesh::new_fx(KNOT_FX) {\n";
-    *s += "    Ok(m) => m,\n    Err(_) => panic!(\"invalid knot mesh\"),\n};\n";
+    *s += "#[allow(long_running_const_eval)]\npub static VALID_KNOT_FX: ValidMeshletMesh<'static, Fx> = ValidMeshletMesh::new_fx_const(KNOT_FX);\n";
 }
 
 /// One cluster as the generated file writes it (its `m(…)` call).

@@ -1,7 +1,9 @@
 //! Host preview: a lit, depth-tested microraster scene drawn by the one-call
 //! front ([`View3d`](microraster::view3d::View3d)) band by band into
-//! `embedded-graphics-simulator`'s `SimulatorDisplay`, with e-g text
-//! drawn over it, and written as a PNG through the simulator's output image
+//! `embedded-graphics-simulator`'s `SimulatorDisplay`, with a HUD (e-g text
+//! and a translucent panel) drawn into each band after the meshes
+//! ([`View3d::draw_with`](microraster::view3d::View3d::draw_with): every
+//! pixel sent once, as on a panel without a framebuffer), and written as a PNG through the simulator's output image
 //! (`to_rgb_output_image(..).save_png(..)`). The simulator is a host-only
 //! dev-dependency with `default-features = false`: no SDL window, so no
 //! system library is needed.
@@ -25,6 +27,7 @@ use embedded_graphics_simulator::{OutputSettingsBuilder, SimulatorDisplay};
 use microraster::light::Lighting;
 use microraster::math::Vec3;
 use microraster::mesh::{ValidMesh, icosphere, torus, torus_triangle_count, torus_vertex_count};
+use microraster::shape::{Rect, RoundedRect, Shape, ShapeStyle};
 use microraster::view3d::{Camera, Object, View320x240};
 
 const BG: Rgb565 = Rgb565::new(2, 6, 8);
@@ -51,11 +54,19 @@ fn main() -> Result<(), Box<dyn Error>> {
         Object::new(&ring, Rgb565::new(8, 40, 31)).rotate_x(0.35).translate([1.1, 0.0, 0.0]),
     ];
 
-    // One call: every band into the simulator's display (any e-g `DrawTarget`).
+    // The HUD: a half-transparent panel over the meshes, and a label on it.
+    let panel = RoundedRect::new(Rect::new(2.0, 2.0, 216.0, 18.0)?, 4.0)?
+        .styled(ShapeStyle::fill(Rgb565::new(0, 0, 8)).with_opacity(160))?;
+    let label = Text::new("microraster: View3d, 16-row bands", Point::new(8, 14), MonoTextStyle::new(&FONT_6X10, Rgb565::WHITE));
+
+    // One call: every band, meshes then HUD, into the simulator's display
+    // (any e-g `DrawTarget`).
     let mut display = SimulatorDisplay::<Rgb565>::new(Size::new(320, 240));
-    view.draw(&camera, &objects, &mut display)?;
-    let label = "microraster: View3d, 16-row bands";
-    Text::new(label, Point::new(6, 14), MonoTextStyle::new(&FONT_6X10, Rgb565::WHITE)).draw(&mut display)?;
+    view.draw_with(&camera, &objects, &mut display, |hud| {
+        panel.draw_on(hud);
+        hud.draw_visible(&label)?;
+        Ok(())
+    })?;
 
     // The simulator's own PNG output (2x, no gaps between pixels).
     let settings = OutputSettingsBuilder::new().scale(2).pixel_spacing(0).build();

@@ -131,7 +131,7 @@ pub use band::Band;
 pub use clip::{ClipRect, MAX_FRAME_DIM};
 pub use color::Interpolate;
 pub use edge::Cull;
-pub use error::{Error, RenderError};
+pub use error::{Error, MeshFault, Param, Region, RenderError};
 /// The `heapless` this crate is built with (its `Vec` holds the bins of
 /// [`Pipeline::draw_mesh`](crate::pipeline::Pipeline::draw_mesh)): name
 /// `microraster::heapless::Vec` so a different `heapless` in your crate

@@ -41,7 +41,7 @@ pub fn speed(f: usize) -> f32 {
 /// rounded to a whole km/h.
 pub fn dashboard_at<const N: usize>(view: &mut BandView<'_, Rgb565, N>, kmh: f32) -> Result<(), Error> {
     let mut readout = heapless::String::<8>::new();
-    write!(readout, "{}", (kmh + 0.5) as u32).map_err(|_| Error::InvalidParameter)?;
+    write!(readout, "{}", (kmh + 0.5) as u32).map_err(|_| Error::BufferTooSmall)?;
     super::scene::dashboard_showing(view, kmh, &readout)
 }
 

@@ -8994,10 +8994,7 @@ pub static KNOT: MeshletMesh<'static> = MeshletMesh {
 };
 
 /// [`KNOT`], validated at compile time (a few seconds of constant evaluation).
-pub static VALID_KNOT: ValidMeshletMesh<'static> = match ValidMeshletMesh::new(KNOT) {
-    Ok(m) => m,
-    Err(_) => panic!("invalid knot mesh"),
-};
+pub static VALID_KNOT: ValidMeshletMesh<'static> = ValidMeshletMesh::new_const(KNOT);
 
 /// [`KNOT_POSITIONS`] in 16.16, converted at compile time.
 pub static KNOT_POSITIONS_FX: [[Fx; 3]; 10240] = fx_rows(&KNOT_POSITIONS);
@@ -11984,7 +11981,4 @@ pub static KNOT_FX: MeshletMesh<'static, Fx> = MeshletMesh {
 /// [`KNOT_FX`], validated at compile time (reading 16.16 as `f32` takes the
 /// constant evaluation past the compiler's default step budget: allowed).
 #[allow(long_running_const_eval)]
-pub static VALID_KNOT_FX: ValidMeshletMesh<'static, Fx> = match ValidMeshletMesh::new_fx(KNOT_FX) {
-    Ok(m) => m,
-    Err(_) => panic!("invalid knot mesh"),
-};
+pub static VALID_KNOT_FX: ValidMeshletMesh<'static, Fx> = ValidMeshletMesh::new_fx_const(KNOT_FX);

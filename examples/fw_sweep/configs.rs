@@ -141,7 +141,7 @@ pub fn input<E>(e: RenderError<E>) -> Error {
     match e {
         RenderError::Input(e) => e,
         // The framebuffer never fails.
-        RenderError::Target(_) => Error::InvalidParameter,
+        RenderError::Target(_) => Error::InvalidParameter(microraster::Param::User),
     }
 }
 
@@ -299,7 +299,7 @@ fn knot_of<T: Scalar, M: Interpolation + Default, P: Scalar>(
 ) -> Result<(), Error> {
     let pipeline: Pipeline<T, 4> = Scene3d::pipeline::<T, 4>(W as u32, H as u32)?;
     let model = transform::rotation_y(T::from_f32(ANGLE));
-    let mut cache = ClusterCache::<T, 4>::new();
+    let mut cache = ClusterCache::new();
     let mut band = Band::<Rgb565, W, 16>::new(BG);
     let mut depth = DepthBand::<Depth16, W, 16>::zeroed();
     m.start();

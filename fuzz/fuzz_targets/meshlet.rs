@@ -116,7 +116,7 @@ fn arbitrary_clusters(inp: &mut Input<'_>, mesh: Mesh<'_>) {
             }
         }
         Err(
-            Error::InvalidMesh
+            Error::InvalidMesh(_)
             | Error::NonFiniteCoordinate
             | Error::CoordinateOutOfRange
             | Error::InvalidMeshlet

@@ -156,7 +156,7 @@ fn run<T: Scalar, const S: u32>(inp: &mut Input) {
                 matches!(
                     e,
                     Error::InvalidFrameSize
-                        | Error::InvalidParameter
+                        | Error::InvalidParameter(_)
                         | Error::NonFiniteCoordinate
                         | Error::CoordinateOutOfRange
                 ),
@@ -167,7 +167,7 @@ fn run<T: Scalar, const S: u32>(inp: &mut Input) {
                     e,
                     Error::InvalidFrameSize
                         | Error::NonFiniteCoordinate
-                        | Error::InvalidParameter
+                        | Error::InvalidParameter(_)
                         | Error::CoordinateOutOfRange
                 ));
             }
@@ -203,7 +203,7 @@ fn run<T: Scalar, const S: u32>(inp: &mut Input) {
         // The vertex stage reports exactly `validate`'s error (issue 13).
         light_error = l.validate().err();
         assert!(
-            matches!(light_error, None | Some(Error::NonFiniteCoordinate | Error::InvalidParameter)),
+            matches!(light_error, None | Some(Error::NonFiniteCoordinate | Error::InvalidParameter(_))),
             "Lighting::validate: undocumented error {light_error:?}"
         );
         p = p.with_lighting(l);
@@ -243,7 +243,7 @@ fn run<T: Scalar, const S: u32>(inp: &mut Input) {
     let mut bins = heapless::Vec::<ScreenTriangle<S>, BINS>::new();
     let bad_index = indices.iter().flatten().any(|&i| usize::from(i) >= n);
     let valid = mesh.validate();
-    assert!(!bad_index || valid == Err(Error::InvalidMesh), "bad index passed validate");
+    assert!(!bad_index || matches!(valid, Err(Error::InvalidMesh(_))), "bad index passed validate");
     match p.draw_mesh(&mesh, &model, color, &mut bins) {
         Ok(st) => {
             assert_eq!(valid, Ok(()), "draw_mesh accepted a mesh validate rejects");
@@ -263,7 +263,7 @@ fn run<T: Scalar, const S: u32>(inp: &mut Input) {
                 || proj.is_some_and(|proj| clip_beyond_range(&p, proj, &model, &positions, &indices)),
             "f32 draw_mesh: CoordinateOutOfRange within the clipper's range"
         ),
-        Err(e @ (Error::InvalidMesh | Error::NonFiniteCoordinate)) => {
+        Err(e @ (Error::InvalidMesh(_) | Error::NonFiniteCoordinate)) => {
             panic!("draw_mesh error {e:?} without validate's")
         }
         // Full bins: the count needed, and no partial mesh left.
@@ -271,7 +271,7 @@ fn run<T: Scalar, const S: u32>(inp: &mut Input) {
             assert!(capacity == BINS && needed > BINS, "needed {needed} of {capacity}");
             assert!(bins.is_empty(), "{} triangles left after CapacityExceeded", bins.len());
         }
-        Err(Error::InvalidParameter) => {}
+        Err(Error::InvalidParameter(_)) => {}
         Err(e) => panic!("draw_mesh: undocumented error {e:?}"),
     }
 

@@ -64,7 +64,7 @@ fuzz_target!(|data: &[u8]| {
     let shape = match shape {
         Ok(s) => s,
         Err(e) => {
-            assert!(matches!(e, Error::NonFiniteCoordinate | Error::InvalidParameter), "constructor: {e:?}");
+            assert!(matches!(e, Error::NonFiniteCoordinate | Error::InvalidParameter(_)), "constructor: {e:?}");
             return;
         }
     };
@@ -128,7 +128,7 @@ fn paint(inp: &mut Input) -> Option<Paint<Gray8>> {
     match made {
         Ok(p) => Some(p),
         Err(e) => {
-            assert!(matches!(e, Error::NonFiniteCoordinate | Error::InvalidParameter), "gradient: {e:?}");
+            assert!(matches!(e, Error::NonFiniteCoordinate | Error::InvalidParameter(_)), "gradient: {e:?}");
             None
         }
     }
@@ -172,7 +172,7 @@ fn check<Sh: Shape, A: Coverage>(shape: Sh, style: ShapeStyle<Gray8, A>, h: i32,
                 matches!(
                     e,
                     Error::NonFiniteCoordinate
-                        | Error::InvalidParameter
+                        | Error::InvalidParameter(_)
                         | Error::CoordinateOutOfRange
                         | Error::BufferTooSmall
                 ),

@@ -87,11 +87,11 @@ where
     let pal = [inp.u16(), inp.u16(), inp.u16(), inp.u16()].map(F::Storage::from_bits);
     let texels: Vec<F::Storage> = (0..len).map(|i| pal[(i * 7 + i / 5) % 4]).collect();
     let expect = if !(1..=4096).contains(&w) || !(1..=4096).contains(&h) {
-        Err(Error::InvalidParameter)
+        Err(Error::InvalidParameter(microraster::Param::TextureSize))
     } else if (len as u64) < n {
         Err(Error::BufferTooSmall)
     } else if len as u64 > n {
-        Err(Error::InvalidParameter)
+        Err(Error::InvalidParameter(microraster::Param::TextureSize))
     } else {
         Ok(())
     };
@@ -125,7 +125,7 @@ where
     let want = if !scale.is_finite() || !angle.is_finite() {
         Err(Error::NonFiniteCoordinate)
     } else if !(SPRITE_SCALE_RANGE.0..=SPRITE_SCALE_RANGE.1).contains(&scale) {
-        Err(Error::InvalidParameter)
+        Err(Error::InvalidParameter(microraster::Param::SpriteScale))
     } else {
         Ok(())
     };

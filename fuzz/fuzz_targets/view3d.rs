@@ -313,8 +313,8 @@ fuzz_target!(|data: &[u8]| {
                     matches!(
                         e,
                         RenderError::Input(
-                            Error::InvalidParameter
-                                | Error::InvalidMesh
+                            Error::InvalidParameter(_)
+                                | Error::InvalidMesh(_)
                                 | Error::WindingMismatch
                                 | Error::CoordinateOutOfRange
                         )

@@ -88,7 +88,7 @@ impl<T: Scalar> Lighting<T> {
     /// use microraster::{light::Lighting, math::Vec3, Error};
     /// assert!(Lighting::<f32>::try_new(0.2, Vec3::new(0.0, 0.0, 1.0), 0.8).is_ok());
     /// let zero = Vec3::new(0.0, 0.0, 0.0);
-    /// assert_eq!(Lighting::<f32>::try_new(0.2, zero, 0.8), Err(Error::InvalidParameter));
+    /// assert_eq!(Lighting::<f32>::try_new(0.2, zero, 0.8), Err(Error::InvalidParameter(microraster::Param::LightDirection)));
     /// ```
     pub fn try_new(ambient: T, direction: Vec3<T>, diffuse: T) -> Result<Self, Error> {
         let l = Self::new(ambient, direction, diffuse);
@@ -113,7 +113,7 @@ impl<T: Scalar> Lighting<T> {
         // |d|² within 2^-8 of 1 (Fx normalising rounds at 2^-16).
         let len2 = d.x.to_f32() * d.x.to_f32() + d.y.to_f32() * d.y.to_f32() + d.z.to_f32() * d.z.to_f32();
         if !((1.0 - 1.0 / 256.0)..=(1.0 + 1.0 / 256.0)).contains(&len2) {
-            return Err(Error::InvalidParameter);
+            return Err(Error::InvalidParameter(crate::Param::LightDirection));
         }
         Ok(())
     }

@@ -28,7 +28,8 @@
 //!   snapping, then the snapped position, depth and `1/w` and the
 //!   snapped-area tests);
 //! * whole meshes without meshlets: `mesh_bins` into the frame's bins
-//!   (`bins`), `varying` for the fragment stage.
+//!   (`bins`) or `mesh_band` straight into a band (which 3D path to use:
+//!   its docs), `varying` for the fragment stage.
 
 mod band;
 mod bins;
@@ -40,6 +41,7 @@ mod eager;
 mod frame_clusters;
 mod inside;
 mod material;
+mod mesh_band;
 mod mesh_bins;
 mod mesh_setup;
 mod model_light;
@@ -174,7 +176,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
             return Err(Error::InvalidFrameSize);
         }
         if !w_ref.is_finite() || w_ref <= T::ZERO {
-            return Err(Error::InvalidParameter);
+            return Err(Error::InvalidParameter(crate::Param::WRef));
         }
         if !view.cols.iter().chain(projection.cols.iter()).flatten().all(|v| v.is_finite()) {
             return Err(Error::NonFiniteCoordinate);

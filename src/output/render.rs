@@ -118,7 +118,7 @@ impl<C: Interpolate> Renderer<C> {
     /// ```
     /// use embedded_graphics::mock_display::MockDisplay;
     /// use embedded_graphics::pixelcolor::BinaryColor;
-    /// use microraster::{Band, Error, Primitive, Renderer, SubPoint, Triangle};
+    /// use microraster::{Band, Error, Primitive, Region, Renderer, SubPoint, Triangle};
     /// let p = |x, y| SubPoint::<4>::from_pixels(x, y).unwrap();
     /// let scene = [Primitive::from(Triangle::flat([p(0, 0), p(4, 0), p(0, 4)], BinaryColor::On))];
     /// let mut band = Band::<BinaryColor, 4, 2>::new(BinaryColor::Off);
@@ -131,7 +131,8 @@ impl<C: Interpolate> Renderer<C> {
     /// blank.assert_pattern(&["....", "....", "....", "...."]);
     /// // A frame taller than the display is refused before anything is sent.
     /// let tall = Renderer::new(65, BinaryColor::Off).render((), &mut band, &mut MockDisplay::new());
-    /// assert_eq!(tall, Err(Error::FrameOutsideTarget.into()));
+    /// let (frame, target) = (Region::new(0, 0, 4, 65), Region::new(0, 0, 64, 64)); // MockDisplay: 64 x 64
+    /// assert_eq!(tall, Err(Error::FrameOutsideTarget { frame, target }.into()));
     /// # Ok::<(), microraster::RenderError<core::convert::Infallible>>(())
     /// ```
     pub fn render<P, D, const W: usize, const H: usize>(
@@ -164,7 +165,7 @@ impl<C: Interpolate> Renderer<C> {
         if inside(Some(frame.top_left)) && inside(frame.bottom_right()) {
             Ok(())
         } else {
-            Err(Error::FrameOutsideTarget)
+            Err(Error::FrameOutsideTarget { frame: frame.into(), target: display.into() })
         }
     }
 }

@@ -4,7 +4,7 @@
 //! drawn ([`View3d::draw`](super::View3d::draw) returns the error), so a
 //! camera that moves every frame needs no `?` or `unwrap` where it is made.
 
-use crate::Error;
+use crate::{Error, Param};
 use crate::light::Lighting;
 use crate::math::{Mat4, Scalar, Vec3, transform};
 use crate::pipeline::Pipeline;
@@ -158,7 +158,7 @@ impl Camera {
             Projection::Orthographic { height: h, near, far } => {
                 if !(h.is_finite() && h > 0.0) {
                     return Err(if h.is_finite() {
-                        Error::InvalidParameter
+                        Error::InvalidParameter(Param::ViewBox)
                     } else {
                         Error::NonFiniteCoordinate
                     });
@@ -184,13 +184,13 @@ mod tests {
         assert!(cam.pipeline(32, 32, None).is_ok());
         assert!(cam.orthographic(2.0, 0.5, 10.0).pipeline(32, 24, None).is_ok());
         let e = |c: Camera| c.pipeline(32, 32, None).err();
-        assert_eq!(e(cam.perspective(0.0, 0.5, 10.0)), Some(Error::InvalidParameter));
-        assert_eq!(e(cam.perspective(1.0, 2.0, 1.0)), Some(Error::InvalidParameter));
+        assert_eq!(e(cam.perspective(0.0, 0.5, 10.0)), Some(Error::InvalidParameter(Param::FieldOfView)));
+        assert_eq!(e(cam.perspective(1.0, 2.0, 1.0)), Some(Error::InvalidParameter(Param::NearFar)));
         assert_eq!(e(cam.perspective(f32::NAN, 0.5, 10.0)), Some(Error::NonFiniteCoordinate));
-        assert_eq!(e(cam.orthographic(0.0, 0.5, 10.0)), Some(Error::InvalidParameter));
+        assert_eq!(e(cam.orthographic(0.0, 0.5, 10.0)), Some(Error::InvalidParameter(Param::ViewBox)));
         assert_eq!(e(cam.orthographic(f32::INFINITY, 0.5, 10.0)), Some(Error::NonFiniteCoordinate));
-        assert_eq!(e(cam.orthographic(2.0, 5.0, 1.0)), Some(Error::InvalidParameter));
-        assert_eq!(e(cam.with_up([0.0, 0.0, 1.0])), Some(Error::InvalidParameter));
+        assert_eq!(e(cam.orthographic(2.0, 5.0, 1.0)), Some(Error::InvalidParameter(Param::NearFar)));
+        assert_eq!(e(cam.with_up([0.0, 0.0, 1.0])), Some(Error::InvalidParameter(Param::LookAt)));
         assert_eq!(cam.pipeline(0, 32, None).err(), Some(Error::InvalidFrameSize));
     }
 }

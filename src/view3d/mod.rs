@@ -11,7 +11,9 @@
 //! [`View3d::set_precision`] for [`Precision::Fast`]). Everything here is built on the explicit API
 //! ([`Pipeline`], [`Direct3d`]) and draws the same pixels
 //! (`tests/integration/view3d.rs`); use that API for other depth formats,
-//! the `Fx` path, fragment shaders or anti-aliasing.
+//! the `Fx` path, fragment shaders or anti-aliasing. A HUD (text, gauges,
+//! translucent panels) goes into each band after the meshes with
+//! [`View3d::draw_with`].
 //!
 //! ```
 //! use embedded_graphics::pixelcolor::{Rgb565, RgbColor};
@@ -52,7 +54,8 @@ use crate::light::{Lighting, Viewer};
 use crate::math::Vec3;
 use crate::pipeline::{ClusterCache, FrameChunks, PerFace, PerVertex, Pipeline, Shade, Uniform};
 use crate::raster3d::{PerspectiveCorrect, Precision};
-use crate::render::Direct3d;
+use crate::band::BandView;
+use crate::render::{Direct3d, Pass};
 use crate::{Error, Interpolate, MAX_FRAME_DIM, RenderError, Renderer};
 
 /// The front's lighting unless told otherwise: ambient 0.25 and a light of
@@ -230,7 +233,8 @@ impl<C: Interpolate, const W: usize, const H: usize> View3d<C, W, H> {
     /// chunks recorded in the first band that reaches them and skipped by
     /// the bands they miss;
     /// meshlet meshes go through [`Pipeline::draw_meshlets`]), and the band is sent with one
-    /// `fill_contiguous`. The image does not depend on `H`.
+    /// `fill_contiguous`. The image does not depend on `H`. Text or panels
+    /// over the frame: [`View3d::draw_with`], in the same pass.
     ///
     /// ```
     /// use embedded_graphics::{mock_display::MockDisplay, prelude::Point};
@@ -277,6 +281,56 @@ impl<C: Interpolate, const W: usize, const H: usize> View3d<C, W, H> {
     where
         D: DrawTarget<Color = C>,
     {
+        self.draw_with(camera, objects, display, |_| Ok(()))
+    }
+
+    /// [`View3d::draw`] with a HUD: in every band, after the meshes, `hud`
+    /// draws into the band's colour rows ([`BandView`], in frame
+    /// coordinates), so text, gauges and translucent panels go out with the
+    /// frame, each pixel sent once (drawing on the display after
+    /// [`View3d::draw`] sends those pixels twice a frame, which flickers on
+    /// a panel without a framebuffer, and cannot blend over the meshes). The
+    /// HUD ignores depth. e-g drawables draw with
+    /// [`BandView::draw_visible`] (skipped in the bands they miss) or their
+    /// own `draw`; microraster's [`Styled`](crate::shape::Styled) shapes
+    /// with `draw_on`, blending over the meshes. The frame equals the
+    /// meshes drawn into a framebuffer and the HUD drawn over them, for
+    /// every `H` (`tests/integration/view3d_hud.rs`).
+    ///
+    /// ```
+    /// use embedded_graphics::mono_font::{MonoTextStyle, ascii::FONT_6X10};
+    /// use embedded_graphics::pixelcolor::{Rgb565, RgbColor};
+    /// use embedded_graphics::{mock_display::MockDisplay, prelude::*, text::Text};
+    /// use microraster::shape::{Rect, Shape, ShapeStyle};
+    /// use microraster::view3d::{CUBE, Camera, Object, View3d};
+    /// let mut view = View3d::<Rgb565, 64, 8>::new(Rgb565::BLACK);
+    /// let camera = Camera::look_at([3.0, 2.0, 4.0], [0.0; 3]);
+    /// let mut display = MockDisplay::new();
+    /// let label = Text::new("HI", Point::new(2, 8), MonoTextStyle::new(&FONT_6X10, Rgb565::WHITE));
+    /// let panel = Rect::new(0.0, 48.0, 64.0, 16.0)?.styled(ShapeStyle::fill(Rgb565::BLUE).with_opacity(128))?;
+    /// view.draw_with(&camera, &[Object::new(&CUBE, Rgb565::RED)], &mut display, |hud| {
+    ///     hud.draw_visible(&label)?;
+    ///     panel.draw_on(hud); // half-transparent: blends over the cube
+    ///     Ok(())
+    /// })?;
+    /// assert_eq!(display.get_pixel(Point::new(3, 7)), Some(Rgb565::WHITE)); // a glyph pixel of "H"
+    /// # Ok::<(), microraster::RenderError<core::convert::Infallible>>(())
+    /// ```
+    ///
+    /// Errors: those of [`View3d::draw`], then the first error `hud`
+    /// returns (the frame goes on as for a band that fails in the vertex
+    /// stage).
+    pub fn draw_with<D, F>(
+        &mut self,
+        camera: &Camera,
+        objects: &[Object<'_, C>],
+        display: &mut D,
+        hud: F,
+    ) -> Result<(), RenderError<D::Error>>
+    where
+        D: DrawTarget<Color = C>,
+        F: FnMut(&mut BandView<'_, C, W>) -> Result<(), Error>,
+    {
         let rows = self.height.unwrap_or(display.bounding_box().size.height);
         let (pipe, renderer) = self.pipeline(camera, rows)?;
         // Whole-mesh checks once per frame, before any band is sent, with
@@ -311,6 +365,6 @@ impl<C: Interpolate, const W: usize, const H: usize> View3d<C, W, H> {
             }
             Ok(())
         });
-        renderer.render(frame, &mut self.band, display)
+        renderer.render(frame.then(hud), &mut self.band, display)
     }
 }

@@ -8,7 +8,7 @@ use crate::mesh::{Mesh, ValidMesh, ValidMeshletMesh};
 use crate::pipeline::{ChunkMemo, ClusterCache, Material, Pipeline};
 use crate::raster3d::PerspectiveCorrect;
 use crate::render::Band3d;
-use crate::{Error, Interpolate};
+use crate::{Error, Interpolate, Param};
 
 /// The mesh of an [`Object`]. Build it with `into()` from a reference to
 /// any of the three mesh types; [`Object::new`] does that for you.
@@ -110,7 +110,20 @@ impl<'a, C: Copy> Object<'a, C> {
 
     /// Then scales it by `factor` about the world's origin. A zero factor
     /// makes the model singular: the frame fails with
-    /// [`Error::InvalidParameter`] before any band is sent.
+    /// [`Error::InvalidParameter`]`(`[`Param::Model`]`)` before any band is
+    /// sent. A NaN or infinite step (here or in a rotation or translation)
+    /// fails it with [`Error::NonFiniteCoordinate`].
+    ///
+    /// ```
+    /// use embedded_graphics::{mock_display::MockDisplay, pixelcolor::{Rgb565, RgbColor}};
+    /// use microraster::view3d::{CUBE, Camera, Object, View3d};
+    /// use microraster::{Error, Param};
+    /// let mut view = View3d::<Rgb565, 64, 8>::new(Rgb565::BLACK);
+    /// let camera = Camera::look_at([3.0, 2.0, 4.0], [0.0; 3]);
+    /// let mut draw = |o: Object<'_, Rgb565>| view.draw(&camera, &[o], &mut MockDisplay::new());
+    /// assert_eq!(draw(Object::new(&CUBE, Rgb565::RED).scale(0.0)), Err(Error::InvalidParameter(Param::Model).into()));
+    /// assert_eq!(draw(Object::new(&CUBE, Rgb565::RED).rotate_y(f32::NAN)), Err(Error::NonFiniteCoordinate.into()));
+    /// ```
     pub fn scale(self, factor: f32) -> Self {
         self.scale_xyz([factor; 3])
     }
@@ -162,7 +175,7 @@ impl<'a, C: Copy> Object<'a, C> {
     /// // The wrong number of colours is an error.
     /// let short = Object::new(&CUBE, Rgb565::WHITE).with_vertex_colors(&colors[..8]);
     /// let err = view.draw(&Camera::look_at([0.0, 0.0, 4.0], [0.0; 3]), &[short], &mut display);
-    /// assert_eq!(err, Err(microraster::Error::InvalidParameter.into()));
+    /// assert_eq!(err, Err(microraster::Error::InvalidParameter(microraster::Param::VertexColors).into()));
     /// # Ok::<(), microraster::RenderError<core::convert::Infallible>>(())
     /// ```
     pub fn with_vertex_colors(self, colors: &'a [C]) -> Self {
@@ -214,12 +227,11 @@ impl<'a, C: Copy> Object<'a, C> {
             Geometry::Valid(m) => (m.mesh().vertex_count(), Some(m.mesh().triangle_count())),
             Geometry::Meshlets(m) => (m.get().mesh.vertex_count(), None),
         };
-        let ok = match self.colors {
-            Colors::Material => true,
-            Colors::PerVertex(c) => c.len() == vertices,
-            Colors::PerFace(c) => Some(c.len()) == triangles,
-        };
-        if ok { Ok(()) } else { Err(Error::InvalidParameter) }
+        match self.colors {
+            Colors::PerVertex(c) if c.len() != vertices => Err(Error::InvalidParameter(Param::VertexColors)),
+            Colors::PerFace(c) if Some(c.len()) != triangles => Err(Error::InvalidParameter(Param::FaceColors)),
+            _ => Ok(()),
+        }
     }
 
     /// The model matrix: object space to world space.

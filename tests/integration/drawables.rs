@@ -263,12 +263,12 @@ fn closure_errors_are_returned_and_bands_still_sent() {
     let r = Renderer::new(FH, BG).render(
         from_fn(|_| {
             calls += 1;
-            Err(Error::InvalidParameter)
+            Err(Error::InvalidParameter(microraster::Param::User))
         }),
         &mut band,
         &mut fb,
     );
-    assert_eq!(r, Err(microraster::RenderError::Input(Error::InvalidParameter)));
+    assert_eq!(r, Err(microraster::RenderError::Input(Error::InvalidParameter(microraster::Param::User))));
     assert_eq!(calls, 1, "no call after the first error");
     assert!(fb.writes.iter().all(|&n| n == 1) && fb.pixels.iter().all(|&c| c == BG));
     // A bad frame height is an error before anything is drawn.

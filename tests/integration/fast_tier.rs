@@ -187,6 +187,6 @@ fn bad_input_is_the_same_error_in_both_tiers() {
     let (exact, fast) = (errors(Precision::Exact), errors(Precision::Fast));
     assert_eq!(exact, fast);
     assert!(exact.iter().all(Result::is_err), "{exact:?}");
-    assert_eq!(exact[1], Err(Error::InvalidParameter));
+    assert_eq!(exact[1], Err(Error::InvalidParameter(microraster::Param::Model)));
     assert_eq!(exact[3], Err(Error::CoordinateOutOfRange));
 }

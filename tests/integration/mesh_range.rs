@@ -182,7 +182,7 @@ fn a_singular_model_sends_nothing() {
     let flat = Object::new(&CUBE, Rgb565::GREEN).scale(0.0);
     let sphere = crate::view3d::sphere_meshlets();
     let flat_clusters = Object::new(sphere, Rgb565::GREEN).scale(0.0);
-    let want = Err(RenderError::Input(Error::InvalidParameter));
+    let want = Err(RenderError::Input(Error::InvalidParameter(microraster::Param::Model)));
     for objects in [[good, flat], [flat, good], [good, flat_clusters]] {
         let (r, img, sent) = front(&objects);
         assert_eq!((r, sent), (want, 0));

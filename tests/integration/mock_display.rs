@@ -61,9 +61,13 @@ fn culling_drops_one_winding() {
 #[test]
 fn frame_outside_the_display_is_an_error_and_draws_nothing() {
     use embedded_graphics_core::prelude::Point;
-    use microraster::{Band, Error, RenderError, Renderer};
+    use microraster::{Band, Error, Region, RenderError, Renderer};
     let scene = [microraster::Primitive::from(Triangle::flat([p(0, 0), p(4, 0), p(0, 4)], BinaryColor::On))];
-    let outside = Err(RenderError::Input(Error::FrameOutsideTarget));
+    // The frame as given, on MockDisplay's 64 × 64.
+    let outside = |x, y, width, height| {
+        let frame = Region { x, y, width, height };
+        Err(RenderError::Input(Error::FrameOutsideTarget { frame, target: Region::new(0, 0, 64, 64) }))
+    };
     let clipping = || {
         let mut d = MockDisplay::<BinaryColor>::new(); // 64 × 64
         d.set_allow_out_of_bounds_drawing(true);
@@ -72,18 +76,18 @@ fn frame_outside_the_display_is_an_error_and_draws_nothing() {
     // A band one pixel wider than the display.
     let mut d = clipping();
     let mut wide = Band::<BinaryColor, 65, 4>::new(BinaryColor::Off);
-    assert_eq!(Renderer::new(8, BinaryColor::Off).render(&scene, &mut wide, &mut d), outside);
+    assert_eq!(Renderer::new(8, BinaryColor::Off).render(&scene, &mut wide, &mut d), outside(0, 0, 65, 8));
     assert_eq!(d, MockDisplay::new(), "nothing drawn");
     // A frame one row taller than the display.
     let mut band = Band::<BinaryColor, 8, 4>::new(BinaryColor::Off);
     let mut d = clipping();
-    assert_eq!(Renderer::new(65, BinaryColor::Off).render(&scene, &mut band, &mut d), outside);
+    assert_eq!(Renderer::new(65, BinaryColor::Off).render(&scene, &mut band, &mut d), outside(0, 0, 8, 65));
     assert_eq!(d, MockDisplay::new(), "nothing drawn");
     // An offset that moves a fitting frame past either edge.
     for offset in [Point::new(57, 0), Point::new(0, -1)] {
         let r = Renderer::new(8, BinaryColor::Off).with_offset(offset);
         let mut d = clipping();
-        assert_eq!(r.render(&scene, &mut band, &mut d), outside, "{offset:?}");
+        assert_eq!(r.render(&scene, &mut band, &mut d), outside(offset.x, offset.y, 8, 8), "{offset:?}");
     }
     // Exactly the display's size, and a frame touching its corner, fit.
     let mut full = Band::<BinaryColor, 64, 16>::new(BinaryColor::Off);
@@ -98,12 +102,13 @@ fn frame_outside_the_display_is_an_error_and_draws_nothing() {
 /// The threaded band loop checks the frame against the display the same way.
 #[test]
 fn threaded_frame_outside_the_display_is_an_error() {
-    use microraster::{Band, Error, RenderError, Renderer};
+    use microraster::{Band, Error, Region, RenderError, Renderer};
     let mut bands = [(); 2].map(|()| Band::<BinaryColor, 8, 4>::new(BinaryColor::Off));
     let mut d = MockDisplay::<BinaryColor>::new();
     d.set_allow_out_of_bounds_drawing(true);
     let r = Renderer::new(65, BinaryColor::Off).render_threads([(), ()], &mut bands, &mut d);
-    assert_eq!(r, Err(RenderError::Input(Error::FrameOutsideTarget)));
+    let (frame, target) = (Region::new(0, 0, 8, 65), Region::new(0, 0, 64, 64));
+    assert_eq!(r, Err(RenderError::Input(Error::FrameOutsideTarget { frame, target })));
     assert_eq!(d, MockDisplay::new(), "nothing drawn");
 }
 
@@ -118,7 +123,11 @@ fn render_error_converts_into_a_boxed_std_error() {
         Ok(())
     }
     let e = frame().unwrap_err();
-    assert_eq!(e.to_string(), "invalid input: frame does not fit in the draw target's bounding box");
+    assert_eq!(
+        e.to_string(),
+        "invalid input: frame 65 x 4 at (0, 0) does not fit in the draw target's 64 x 64 at (0, 0)"
+    );
     let source = e.source().expect("the input error");
-    assert_eq!(source.to_string(), microraster::Error::FrameOutsideTarget.to_string());
+    let (frame, target) = (microraster::Region::new(0, 0, 65, 4), microraster::Region::new(0, 0, 64, 64));
+    assert_eq!(source.to_string(), microraster::Error::FrameOutsideTarget { frame, target }.to_string());
 }

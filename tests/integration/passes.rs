@@ -39,7 +39,7 @@ impl Fill {
 
 impl<const W: usize, const H: usize> Pass<BinaryColor, W, H> for Fill {
     fn check(&mut self, _: &Renderer<BinaryColor>) -> Result<(), Error> {
-        if self.refuse { Err(Error::InvalidParameter) } else { Ok(()) }
+        if self.refuse { Err(Error::InvalidParameter(microraster::Param::User)) } else { Ok(()) }
     }
 
     fn draw(
@@ -67,7 +67,7 @@ fn a_refused_pass_sends_nothing_on_every_loop() {
     let r = Renderer::new(8, OFF);
     let mut band = Band::<BinaryColor, 4, 2>::new(OFF);
     let mut d = MockDisplay::new();
-    let refused = Err(RenderError::Input(Error::InvalidParameter));
+    let refused = Err(RenderError::Input(Error::InvalidParameter(microraster::Param::User)));
     assert_eq!(r.render(Fill::refused(), &mut band, &mut d), refused);
     let mut bands = [const { Band::<BinaryColor, 4, 2>::new(OFF) }; 2];
     assert_eq!(r.render_linked(Fill::refused(), &mut bands, &mut Blocking(&mut d)), refused);
@@ -102,10 +102,10 @@ fn threads_return_the_topmost_error_and_blank_each_threads_later_bands() {
     let mut bands = [const { Band::<BinaryColor, 4, 2>::new(ON) }; 2];
     let mut d = MockDisplay::new();
     let column = |fail_at, error| Fill { cols: 1, fail_at, error, refuse: false };
-    let passes = [column(4, Error::BufferTooSmall), column(2, Error::InvalidParameter)];
+    let passes = [column(4, Error::BufferTooSmall), column(2, Error::InvalidParameter(microraster::Param::User))];
     assert_eq!(
         r.render_threads(passes, &mut bands, &mut d),
-        Err(RenderError::Input(Error::InvalidParameter))
+        Err(RenderError::Input(Error::InvalidParameter(microraster::Param::User)))
     );
     d.assert_pattern(&["#...", "#...", "#...", "#...", "#...", "#...", "....", "...."]);
 }
@@ -130,9 +130,9 @@ fn an_overlay_error_stops_later_overlays_and_keeps_the_frame_below() {
         embedded_graphics::primitives::Line::new(Point::new(3, view.y0()), Point::new(3, view.y0() + 3))
             .into_styled(embedded_graphics::primitives::PrimitiveStyle::with_stroke(ON, 1))
             .draw(view)?;
-        Err(Error::InvalidParameter)
+        Err(Error::InvalidParameter(microraster::Param::User))
     });
-    assert_eq!(r.render(frame, &mut band, &mut d), Err(RenderError::Input(Error::InvalidParameter)));
+    assert_eq!(r.render(frame, &mut band, &mut d), Err(RenderError::Input(Error::InvalidParameter(microraster::Param::User))));
     assert_eq!(calls, 1);
     for y in 0..8 {
         for x in 0..4 {

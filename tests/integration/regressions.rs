@@ -200,10 +200,12 @@ fn draw_mesh_rejects_a_mesh_outside_its_bounding_sphere() {
     let p = Pipeline::<f32, 4>::perspective(Mat4::IDENTITY, 1.0, 0.1, 100.0, 64, 48).unwrap();
     let tri = [[-1.0, -1.0, -3.0], [1.0, -1.0, -3.0], [0.0, 1.0, -3.0]];
     let mesh = Mesh::new(&tri, &[], &ONE_TRIANGLE, ([0.0, 0.0, 50.0], 0.5)); // behind the eye
-    assert_eq!(mesh.validate(), Err(microraster::Error::InvalidMesh));
+    // Vertex 0 is the first outside the sphere (all three are).
+    let outside = microraster::Error::InvalidMesh(microraster::MeshFault::OutsideSphere { vertex: 0 });
+    assert_eq!(mesh.validate(), Err(outside));
     let mut bins = heapless::Vec::<ScreenTriangle<4>, 16>::new();
     let r = p.draw_mesh(&mesh, &Mat4::IDENTITY, Gray8::new(255), &mut bins);
-    assert_eq!(r.err(), Some(microraster::Error::InvalidMesh), "got {r:?}");
+    assert_eq!(r.err(), Some(outside), "got {r:?}");
 }
 
 /// Gap B: NaN or ±inf in the view or projection matrix given to

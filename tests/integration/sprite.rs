@@ -222,16 +222,16 @@ fn bad_input_is_a_typed_error() {
     let texels = [0xFFFFu16; 6];
     assert_eq!(Texture::<Argb4444>::new(&texels[..5], 3, 2).err(), Some(Error::BufferTooSmall));
     assert_eq!(Texture::<A8>::new(&[0; 5], 3, 2).err(), Some(Error::BufferTooSmall));
-    assert_eq!(Texture::<A8>::new(&[0; 0], 0, 2).err(), Some(Error::InvalidParameter));
+    assert_eq!(Texture::<A8>::new(&[0; 0], 0, 2).err(), Some(Error::InvalidParameter(microraster::Param::TextureSize)));
     let tex = Texture::<Argb4444>::new(&texels, 3, 2).unwrap();
     let cases: [(f32, f32, Error); 7] = [
         (f32::NAN, 0.0, Error::NonFiniteCoordinate),
         (f32::INFINITY, 0.0, Error::NonFiniteCoordinate),
         (1.0, f32::NAN, Error::NonFiniteCoordinate),
         (1.0, f32::NEG_INFINITY, Error::NonFiniteCoordinate),
-        (0.0, 0.0, Error::InvalidParameter),
-        (-2.0, 0.0, Error::InvalidParameter),
-        (1e9, 0.0, Error::InvalidParameter),
+        (0.0, 0.0, Error::InvalidParameter(microraster::Param::SpriteScale)),
+        (-2.0, 0.0, Error::InvalidParameter(microraster::Param::SpriteScale)),
+        (1e9, 0.0, Error::InvalidParameter(microraster::Param::SpriteScale)),
     ];
     for (scale, angle, e) in cases {
         let s = Sprite::new(&tex).at(Point::new(1, 1)).scale(scale).rotate(angle);

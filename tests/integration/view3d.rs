@@ -14,7 +14,7 @@ use microraster::pipeline::Pipeline;
 use microraster::raster3d::PerspectiveCorrect;
 use microraster::render::Triangles3d;
 use microraster::view3d::{CUBE, Camera, DEFAULT_LIGHTING, Object, View3d};
-use microraster::{Band, Error, RenderError, Renderer};
+use microraster::{Band, Error, Param, Region, RenderError, Renderer};
 
 const W: usize = 96;
 const H: u32 = 72;
@@ -44,6 +44,11 @@ pub(crate) fn clusters(m: Mesh<'static>) -> &'static ValidMeshletMesh<'static> {
     let scratch = Vec::leak(vec![0u32; mesh::meshlet_scratch_len(nv, nt)]);
     let built = mesh::build_meshlets(m, meshlets, vertices, triangles, scratch).unwrap();
     Box::leak(Box::new(ValidMeshletMesh::new(built).unwrap()))
+}
+
+/// The error of a `frame` (width, height) at the origin on a `target` of that size.
+fn outside(frame: (u32, u32), target: (u32, u32)) -> Error {
+    Error::FrameOutsideTarget { frame: Region::new(0, 0, frame.0, frame.1), target: Region::new(0, 0, target.0, target.1) }
 }
 
 fn camera() -> Camera {
@@ -251,18 +256,18 @@ fn wrong_inputs_are_errors() {
     let on_target = Camera::look_at([0.0; 3], [0.0; 3]);
     assert_eq!(
         run(&mut view, &on_target, &cube, W as u32, H),
-        (Err(RenderError::Input(Error::InvalidParameter)), 0)
+        (Err(RenderError::Input(Error::InvalidParameter(Param::LookAt))), 0)
     );
     // A zero-size display; one narrower than the band; one shorter than the frame.
     assert_eq!(run(&mut view, &camera(), &cube, 0, 0), (Err(RenderError::Input(Error::InvalidFrameSize)), 0));
     assert_eq!(
         run(&mut view, &camera(), &cube, W as u32 - 1, H),
-        (Err(RenderError::Input(Error::FrameOutsideTarget)), 0)
+        (Err(RenderError::Input(outside((W as u32, H), (W as u32 - 1, H)))), 0)
     );
     view.set_height(Some(H + 1));
     assert_eq!(
         run(&mut view, &camera(), &cube, W as u32, H),
-        (Err(RenderError::Input(Error::FrameOutsideTarget)), 0)
+        (Err(RenderError::Input(outside((W as u32, H + 1), (W as u32, H)))), 0)
     );
     view.set_height(None);
     // A mesh wound against its normals.
@@ -288,12 +293,12 @@ fn wrong_inputs_are_errors() {
     let flat = [Object::new(&CUBE, Rgb565::RED).scale(0.0)];
     assert_eq!(
         run(&mut view, &camera(), &flat, W as u32, H),
-        (Err(RenderError::Input(Error::InvalidParameter)), 0)
+        (Err(RenderError::Input(Error::InvalidParameter(Param::Model))), 0)
     );
     // A bad light fails the frame before any band, with no objects too.
     for direction in [Vec3::new(0.0, 0.0, f32::INFINITY), Vec3::new(0.0, 0.0, 2.0)] {
         view.set_lighting(Some(microraster::light::Lighting { direction, ..DEFAULT_LIGHTING }));
-        let want = if direction.z.is_finite() { Error::InvalidParameter } else { Error::NonFiniteCoordinate };
+        let want = if direction.z.is_finite() { Error::InvalidParameter(Param::LightDirection) } else { Error::NonFiniteCoordinate };
         for objects in [&cube[..], &[]] {
             assert_eq!(run(&mut view, &camera(), objects, W as u32, H), (Err(RenderError::Input(want)), 0));
         }
@@ -330,7 +335,7 @@ fn a_singular_model_fails_for_every_band_height() {
             _ => View3d::<Rgb565, W, 3>::new(BG).draw(&cam, &cube, &mut fb),
         }
     };
-    let want = Err(RenderError::Input(Error::InvalidParameter));
+    let want = Err(RenderError::Input(Error::InvalidParameter(Param::Model)));
     assert_eq!((run(1), run(3)), (want, want));
 }
 
@@ -340,7 +345,7 @@ fn a_singular_model_fails_for_every_band_height() {
 /// passing silently where the view cull drops it first.
 #[test]
 fn a_singular_model_out_of_view_is_an_error() {
-    let want = Err(RenderError::Input(Error::InvalidParameter));
+    let want = Err(RenderError::Input(Error::InvalidParameter(Param::Model)));
     let cam = camera();
     for at in [[0.0, 0.2, 0.0], [0.0, 0.0, 40.0], [300.0, 0.0, 0.0]] {
         let cube = [Object::new(&CUBE, Rgb565::RED).scale(0.0).translate(at)];
@@ -355,7 +360,7 @@ fn a_singular_model_out_of_view_is_an_error() {
         let mut bins = heapless::Vec::<_, 64>::new();
         assert_eq!(
             pipeline.draw_mesh(CUBE.mesh(), &model, Rgb565::RED, &mut bins).err(),
-            Some(Error::InvalidParameter)
+            Some(Error::InvalidParameter(Param::Model))
         );
     }
 }

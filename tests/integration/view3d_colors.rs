@@ -177,21 +177,22 @@ fn mismatched_colours_are_errors() {
         let r = view.draw(&cam, objects, &mut fb);
         (r, fb.contiguous.len())
     };
-    let bad = Err(RenderError::Input(Error::InvalidParameter));
+    let bad = |param| Err(RenderError::Input(Error::InvalidParameter(param)));
+    let (bad_vertex, bad_face) = (bad(microraster::Param::VertexColors), bad(microraster::Param::FaceColors));
     let plain = Object::new(&s, Rgb565::RED);
     let meshlets = Object::new(m, Rgb565::RED);
     for n in [0, nv - 1, nv + 1, nt] {
-        assert_eq!(run(&[plain.with_vertex_colors(&colours[..n])]), (bad, 0), "{n} vertex colours");
-        assert_eq!(run(&[meshlets.with_vertex_colors(&colours[..n])]), (bad, 0), "{n} meshlet colours");
+        assert_eq!(run(&[plain.with_vertex_colors(&colours[..n])]), (bad_vertex, 0), "{n} vertex colours");
+        assert_eq!(run(&[meshlets.with_vertex_colors(&colours[..n])]), (bad_vertex, 0), "{n} meshlet colours");
     }
     for n in [0, nt - 1, nt + 1, nv] {
-        assert_eq!(run(&[plain.with_face_colors(&colours[..n])]), (bad, 0), "{n} face colours");
+        assert_eq!(run(&[plain.with_face_colors(&colours[..n])]), (bad_face, 0), "{n} face colours");
     }
     // Meshlets take vertex colours, not face colours (their triangles are
     // in cluster order), whatever the length.
-    assert_eq!(run(&[meshlets.with_face_colors(&colours[..nt])]), (bad, 0));
+    assert_eq!(run(&[meshlets.with_face_colors(&colours[..nt])]), (bad_face, 0));
     // A bad object after a good one still fails the frame before it starts.
-    assert_eq!(run(&[plain, plain.with_face_colors(&colours[..nt + 1])]), (bad, 0));
+    assert_eq!(run(&[plain, plain.with_face_colors(&colours[..nt + 1])]), (bad_face, 0));
     // The right lengths draw.
     let good = [plain.with_vertex_colors(&colours[..nv]), plain.with_face_colors(&colours[..nt])];
     assert_eq!(run(&good).0, Ok(()));

@@ -205,11 +205,11 @@ fn frame_other<const W: usize, const H: usize, const N: usize, const P: usize>(
         #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
         Work::Dashboard => r.render(from_fn(dashboard::dashboard), b.band, sink).map_err(input),
         #[cfg(not(any(not(target_os = "none"), target_abi = "eabihf")))]
-        Work::Dashboard => Err(Error::InvalidParameter),
+        Work::Dashboard => Err(Error::InvalidParameter(microraster::Param::User)),
         #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
         Work::DashboardDrive => super::drive::drive(r, b.band, sink),
         #[cfg(not(any(not(target_os = "none"), target_abi = "eabihf")))]
-        Work::DashboardDrive => Err(Error::InvalidParameter),
+        Work::DashboardDrive => Err(Error::InvalidParameter(microraster::Param::User)),
         Work::Streamed2d(scene) => {
             r.render(workload::streamed::<W>(scene, height), b.band, sink).map_err(input)
         }
@@ -264,7 +264,7 @@ fn frame_other<const W: usize, const H: usize, const N: usize, const P: usize>(
         | Work::VertexPerBand3d(F32)
         | Work::Vertex3dCached
         | Work::Vertex3dChunked
-        | Work::Frame3dChunked => Err(Error::InvalidParameter),
+        | Work::Frame3dChunked => Err(Error::InvalidParameter(microraster::Param::User)),
         // The knot's 460 KB of flash data do not fit the micro:bit: Cortex-M4F only.
         #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
         Work::Meshlets(t, i) => match (t, i, b.cluster.as_mut().ok_or(Error::BufferTooSmall)?) {
@@ -296,10 +296,10 @@ fn frame_other<const W: usize, const H: usize, const N: usize, const P: usize>(
         | Work::Front3d
         | Work::KnotTier(..)
         | Work::KnotTallTier(..)
-        | Work::Ways(..) => Err(Error::InvalidParameter),
+        | Work::Ways(..) => Err(Error::InvalidParameter(microraster::Param::User)),
         // Cortex-M4F rows only (in `frame` there).
-        Work::Frame3dTier(..) => Err(Error::InvalidParameter),
+        Work::Frame3dTier(..) => Err(Error::InvalidParameter(microraster::Param::User)),
         #[cfg(not(any(not(target_os = "none"), target_abi = "eabihf")))]
-        Work::Meshlets(..) | Work::MeshletsFar(_) | Work::KnotStage(..) => Err(Error::InvalidParameter),
+        Work::Meshlets(..) | Work::MeshletsFar(_) | Work::KnotStage(..) => Err(Error::InvalidParameter(microraster::Param::User)),
     }
 }

@@ -35,7 +35,7 @@ pub(super) fn knot_tall<const W: usize>(
         TALL_20 => meshlets::<f32, _, W, TALL_20>(r, t.band20, t.depth20, cache, Affine, Local, sink),
         TALL_48 => meshlets::<f32, _, W, TALL_48>(r, t.band48, t.depth48, cache, Affine, Local, sink),
         TALL_240 => meshlets::<f32, _, W, TALL_240>(r, t.band240, t.depth240, cache, Affine, Local, sink),
-        _ => Err(Error::InvalidParameter),
+        _ => Err(Error::InvalidParameter(microraster::Param::User)),
     }
 }
 

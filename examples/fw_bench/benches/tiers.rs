@@ -80,7 +80,7 @@ pub(super) fn knot_tall_tier<const W: usize>(
         TALL_20 => knot::<f32, Affine, W, TALL_20>(r, t.band20, t.depth20, cache, eye, p, sink),
         TALL_32 => knot::<f32, Affine, W, TALL_32>(r, t.band32, t.depth32, cache, eye, p, sink),
         TALL_48 => knot::<f32, Affine, W, TALL_48>(r, t.band48, t.depth48, cache, eye, p, sink),
-        _ => Err(Error::InvalidParameter),
+        _ => Err(Error::InvalidParameter(microraster::Param::User)),
     }
 }
 

@@ -18,7 +18,7 @@ pub(super) fn check_ctor<T: Scalar>(what: &str, inputs: &[f32], r: &Result<Mat4<
             assert!(
                 matches!(
                     e,
-                    Error::NonFiniteCoordinate | Error::InvalidParameter | Error::CoordinateOutOfRange
+                    Error::NonFiniteCoordinate | Error::InvalidParameter(_) | Error::CoordinateOutOfRange
                 ),
                 "{what}{inputs:?}: {e:?}"
             );

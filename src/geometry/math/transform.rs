@@ -52,10 +52,12 @@
 
 use super::vec::at_limit;
 use super::{Mat4, Scalar, Vec3, Vec4};
-use crate::Error;
+use crate::{Error, Param};
 
-/// The error for degenerate view/projection parameters.
-const DEGENERATE: Error = Error::InvalidParameter;
+/// The error for a degenerate view or projection parameter.
+const fn degenerate(param: Param) -> Error {
+    Error::InvalidParameter(param)
+}
 
 /// Translation by `t`.
 ///
@@ -138,7 +140,7 @@ pub fn look_at<T: Scalar>(eye: Vec3<T>, target: Vec3<T>, up: Vec3<T>) -> Result<
     // Normalising `up` first makes the zero test on `s` independent of |up|.
     let s = f.cross(up.normalize());
     if f == Vec3::ZERO || s == Vec3::ZERO {
-        return Err(DEGENERATE);
+        return Err(degenerate(Param::LookAt));
     }
     let s = s.normalize();
     let u = s.cross(f);
@@ -180,8 +182,14 @@ pub fn perspective<T: Scalar>(fov_y: T, aspect: T, near: T, far: T) -> Result<Ma
         return Err(Error::NonFiniteCoordinate);
     }
     let pi = T::from_f32(core::f32::consts::PI);
-    if !(fov_y > T::ZERO && fov_y < pi && aspect > T::ZERO && near > T::ZERO && far > near) {
-        return Err(DEGENERATE);
+    if !(fov_y > T::ZERO && fov_y < pi) {
+        return Err(degenerate(Param::FieldOfView));
+    }
+    if !(aspect > T::ZERO) {
+        return Err(degenerate(Param::AspectRatio));
+    }
+    if !(near > T::ZERO && far > near) {
+        return Err(degenerate(Param::NearFar));
     }
     let (s, c) = (fov_y * T::from_f32(0.5)).sin_cos();
     let f = c / s;
@@ -216,8 +224,11 @@ pub fn orthographic<T: Scalar>(
     if ![left, right, bottom, top, near, far].into_iter().all(T::is_finite) {
         return Err(Error::NonFiniteCoordinate);
     }
-    if !(left < right && bottom < top && near < far) {
-        return Err(DEGENERATE);
+    if !(left < right && bottom < top) {
+        return Err(degenerate(Param::ViewBox));
+    }
+    if !(near < far) {
+        return Err(degenerate(Param::NearFar));
     }
     let (w, h, d) = (right - left, top - bottom, near - far);
     let two = T::ONE + T::ONE;

@@ -13,7 +13,8 @@
 //! values, passes.
 
 use super::winding::winding_agrees;
-use super::{INVALID_MESH, SPHERE_TOLERANCE, dist2, is_finite3};
+use super::{SPHERE_TOLERANCE, dist2, is_finite3};
+use crate::MeshFault;
 use crate::error::Error;
 #[cfg(feature = "fx")]
 use crate::math::Fx;
@@ -103,13 +104,23 @@ impl MeshData<'_> {
         // compile time ([`ValidMesh::new`]); the same f32 operations at run time.
         let n = self.positions.len();
         if !self.normals.is_empty() && self.normals.len() != n {
-            return Err(INVALID_MESH);
+            return Err(Error::InvalidMesh(MeshFault::NormalCount { normals: self.normals.len(), positions: n }));
         }
         let mut i = 0;
         while i < self.indices.len() {
             let [a, b, c] = self.indices[i];
-            if a as usize >= n || b as usize >= n || c as usize >= n {
-                return Err(INVALID_MESH);
+            // The first index out of range, in corner order.
+            let bad = if a as usize >= n {
+                Some(a)
+            } else if b as usize >= n {
+                Some(b)
+            } else if c as usize >= n {
+                Some(c)
+            } else {
+                None
+            };
+            if let Some(index) = bad {
+                return Err(Error::InvalidMesh(MeshFault::IndexOutOfRange { triangle: i, index, vertices: n }));
             }
             i += 1;
         }
@@ -125,7 +136,7 @@ impl MeshData<'_> {
             return Err(Error::NonFiniteCoordinate);
         }
         if radius < 0.0 {
-            return Err(INVALID_MESH);
+            return Err(Error::InvalidMesh(MeshFault::NegativeRadius));
         }
         let r = radius * (1.0 + SPHERE_TOLERANCE);
         let r2 = r * r;
@@ -140,7 +151,7 @@ impl MeshData<'_> {
             }
             // Finite inputs give no NaN; an overflow to infinity fails.
             if dist2(p, centre) > r2 {
-                return Err(INVALID_MESH);
+                return Err(Error::InvalidMesh(MeshFault::OutsideSphere { vertex: i }));
             }
             i += 1;
         }
@@ -181,7 +192,7 @@ impl MeshData<'_> {
 /// generic over the trait that reads the data): their [`MeshData`], and
 /// the public checks on it.
 macro_rules! storage_impls {
-    ($p:ty, $rows:ident, $new:ident, $new_doc:literal) => {
+    ($p:ty, $rows:ident, $new:ident, $new_doc:literal, $new_const:ident, $const_doc:literal) => {
         impl<'a> super::Mesh<'a, $p> {
             /// The data as the checks read it.
             pub(crate) const fn const_data(&self) -> MeshData<'a> {
@@ -318,11 +329,36 @@ macro_rules! storage_impls {
                     Err(e) => Err(e),
                 }
             }
+
+            #[doc = $const_doc]
+            ///
+            /// `mesh` validated at compile time when it initialises a
+            /// `static` or `const` (what `obj2rs` writes): a mesh that fails
+            /// its `validate` is a build error whose message names the
+            /// cause ("triangles are wound against their normals", "a vertex
+            /// lies outside the bounding sphere", ...), with no
+            /// hand-written `match`. At run time, a panic: call the
+            /// fallible constructor there for the error and its fields.
+            #[track_caller]
+            pub const fn $new_const(mesh: super::MeshletMesh<'a, $p>) -> Self {
+                match mesh.validate() {
+                    Ok(()) => super::ValidMeshletMesh(mesh),
+                    Err(e) => e.panic_const(),
+                }
+            }
         }
     };
 }
 
-storage_impls!(f32, F32, new, "`mesh` if it passes its `validate`, else that error.");
+storage_impls!(
+    f32,
+    F32,
+    new,
+    "`mesh` if it passes its `validate`, else that error.",
+    new_const,
+    "[`ValidMeshletMesh::new`](super::ValidMeshletMesh::new) for a `static`: \
+     `static KNOT: ValidMeshletMesh<'static> = ValidMeshletMesh::new_const(MeshletMesh { .. });`"
+);
 // A name of its own: two `new`s would make `ValidMeshletMesh::new(m)`
 // ambiguous (a path in an expression does not default `P`).
 #[cfg(feature = "fx")]
@@ -331,7 +367,10 @@ storage_impls!(
     Fx,
     new_fx,
     "`mesh`, in 16.16, if it passes its `validate`, else that error \
-     ([`ValidMeshletMesh::new`](super::ValidMeshletMesh::new) for `f32` data)."
+     ([`ValidMeshletMesh::new`](super::ValidMeshletMesh::new) for `f32` data).",
+    new_fx_const,
+    "[`ValidMeshletMesh::new_fx`](super::ValidMeshletMesh::new_fx) for a `static` \
+     ([`ValidMeshletMesh::new_const`](super::ValidMeshletMesh::new_const) for `f32` data)."
 );
 
 pub(crate) use super::meshlet::MeshletData;

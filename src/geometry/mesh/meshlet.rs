@@ -227,9 +227,10 @@ impl MeshletData<'_> {
 
 /// A [`MeshletMesh`] that passed [`MeshletMesh::validate`], so the renderer
 /// draws it without checking it again. The data are shared references, so
-/// they cannot change afterwards. [`ValidMeshletMesh::new`] is a `const fn`:
-/// a `static` is checked at compile time, where an invalid one is a build
-/// error.
+/// they cannot change afterwards. A `static` is checked at compile time by
+/// [`ValidMeshletMesh::new_const`] (what `obj2rs` writes), where an invalid
+/// one is a build error naming the cause; [`ValidMeshletMesh::new`] (also a
+/// `const fn`) returns the error instead.
 ///
 /// ```
 /// use microraster::mesh::{Mesh, Meshlet, MeshletMesh, ValidMeshletMesh};
@@ -242,16 +243,17 @@ impl MeshletData<'_> {
 ///     sphere: ([0.5, 0.5, 0.0], 0.71),
 ///     cone: ([0.0, 0.0, 1.0], 0.0),
 /// }];
-/// static TRI: ValidMeshletMesh<'static> = match ValidMeshletMesh::new(MeshletMesh {
+/// // Checked at compile time: an invalid mesh is a build error naming the cause.
+/// static TRI: ValidMeshletMesh<'static> = ValidMeshletMesh::new_const(MeshletMesh {
 ///     mesh: Mesh::new(&POSITIONS, &[], &[], ([0.5, 0.5, 0.0], 0.71)),
 ///     meshlets: &CLUSTERS,
 ///     vertices: &[0, 1, 2],
 ///     triangles: &[[0, 1, 2]],
-/// }) {
-///     Ok(m) => m,
-///     Err(_) => panic!("invalid meshlets"), // at compile time: a build error
-/// };
+/// });
 /// assert_eq!(TRI.get().meshlets.len(), 1);
+/// // At run time, `new` returns the error.
+/// let bad = MeshletMesh { triangles: &[[0, 1, 3]], ..*TRI.get() };
+/// assert_eq!(ValidMeshletMesh::new(bad), Err(microraster::Error::InvalidMeshlet));
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ValidMeshletMesh<'a, P = f32>(pub(super) MeshletMesh<'a, P>);

@@ -117,7 +117,7 @@ pub fn build_meshlets<'a, P: Scalar>(
     mesh.data().validate()?;
     let (nv, nt) = (mesh.positions.len(), mesh.indices.len());
     if nt > (u32::MAX / 3) as usize {
-        return Err(Error::InvalidParameter);
+        return Err(Error::InvalidParameter(crate::Param::TriangleCount));
     }
     if triangles.len() < nt {
         return Err(Error::CapacityExceeded { needed: nt, capacity: triangles.len() });

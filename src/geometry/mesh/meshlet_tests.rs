@@ -244,7 +244,7 @@ fn winding_check_skips_degenerate_triangles_and_validates_first() {
     let line = Mesh::new(&positions, &up, &[[0, 2, 1]], ([1.0, 0.0, 0.0], 1.0));
     assert_eq!(line.check_winding(), Ok(()));
     let bad = Mesh::new(&positions, &up, &[[0, 2, 3]], ([1.0, 0.0, 0.0], 1.0));
-    assert_eq!(bad.check_winding(), Err(Error::InvalidMesh));
+    assert_eq!(bad.check_winding(), Err(Error::InvalidMesh(MeshFault::IndexOutOfRange { triangle: 0, index: 3, vertices: 3 })));
 }
 
 /// The triangle up to rotation of its corners (keeps the winding).
@@ -385,7 +385,8 @@ fn builder_reports_short_buffers_and_bad_meshes() {
     let bad = Mesh { indices: &bad_idx, ..mesh };
     let (mut m, mut v, mut t, mut s) =
         (vec![Meshlet::default(); 1], vec![0; 3], vec![[0; 3]; 1], vec![0; sl]);
-    assert_eq!(build_meshlets(bad, &mut m, &mut v, &mut t, &mut s), Err(Error::InvalidMesh));
+    let fault = MeshFault::IndexOutOfRange { triangle: 0, index: 500, vertices: mesh.vertex_count() };
+    assert_eq!(build_meshlets(bad, &mut m, &mut v, &mut t, &mut s), Err(Error::InvalidMesh(fault)));
     let empty = Mesh { indices: &[], ..mesh };
     assert_eq!(build_meshlets(empty, &mut [], &mut [], &mut [], &mut s).map(|m| m.meshlets.len()), Ok(0));
 }

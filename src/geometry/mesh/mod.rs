@@ -63,6 +63,7 @@ use sphere::sphere_about_origin;
 pub use torus::{torus, torus_triangle_count, torus_vertex_count};
 pub use winding::DEGENERATE_SIN2;
 
+pub use crate::error::MeshFault;
 use crate::error::Error;
 #[cfg(feature = "fx")]
 use crate::math::Fx;
@@ -71,13 +72,10 @@ use crate::math::Scalar;
 pub use data::fx_rows;
 pub(crate) use data::{MeshData, Rows};
 
-/// An index is out of range, the normals do not match the positions, or the
-/// bounding sphere does not contain the mesh.
-const INVALID_MESH: Error = Error::InvalidMesh;
 /// A caller-provided buffer is smaller than the generator needs.
 const BUFFER_TOO_SMALL: Error = Error::BufferTooSmall;
 /// A generator parameter (subdivisions, segments, radii) is out of range.
-const INVALID_PARAMETER: Error = Error::InvalidParameter;
+const INVALID_PARAMETER: Error = Error::InvalidParameter(crate::Param::MeshShape);
 
 /// Most vertices a mesh can index with `u16` indices (65536).
 pub const MAX_VERTICES: usize = u16::MAX as usize + 1;
@@ -285,6 +283,38 @@ impl<'a> ValidMesh<'a> {
         match mesh.validate() {
             Ok(()) => Ok(ValidMesh { mesh, wound: mesh.const_data().check_winding_unvalidated().is_ok() }),
             Err(e) => Err(e),
+        }
+    }
+
+    /// `mesh`, validated and its winding checked at compile time when it
+    /// initialises a `static` or `const`: an invalid mesh, or one wound
+    /// against its normals, is a build error whose message names the cause
+    /// (at run time, a panic; [`ValidMesh::new`] returns the error instead,
+    /// and accepts a mesh wound against its normals, for drawing with
+    /// [`Cull::None`](crate::Cull::None)). What `obj2rs --plain` output can
+    /// be wrapped in, with no hand-written `match`.
+    ///
+    /// ```
+    /// use microraster::mesh::{Mesh, ValidMesh};
+    /// static POSITIONS: [[f32; 3]; 3] = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]];
+    /// static TRI: ValidMesh<'static> = ValidMesh::new_const(Mesh::new(&POSITIONS, &[], &[[0, 1, 2]], ([0.5, 0.5, 0.0], 0.71)));
+    /// assert!(TRI.winding_agrees());
+    /// ```
+    ///
+    /// A bad mesh does not build (the message: "invalid mesh: a triangle's
+    /// index is not below the vertex count"):
+    ///
+    /// ```compile_fail
+    /// use microraster::mesh::{Mesh, ValidMesh};
+    /// static POSITIONS: [[f32; 3]; 3] = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]];
+    /// static TRI: ValidMesh<'static> = ValidMesh::new_const(Mesh::new(&POSITIONS, &[], &[[0, 1, 3]], ([0.5, 0.5, 0.0], 0.71)));
+    /// ```
+    #[track_caller]
+    pub const fn new_const(mesh: Mesh<'a>) -> Self {
+        match ValidMesh::new(mesh) {
+            Ok(m) if m.wound => m,
+            Ok(_) => Error::WindingMismatch.panic_const(),
+            Err(e) => e.panic_const(),
         }
     }
 

@@ -111,18 +111,21 @@ fn validate_accepts_generated_and_rejects_broken_meshes() {
     let nv = good.vertex_count() as u16;
     let mut idx = o.indices.clone();
     idx[7][1] = nv;
-    assert_eq!(Mesh { indices: &idx, ..good }.validate(), Err(INVALID_MESH));
+    let out = |triangle, index, vertices| Err(Error::InvalidMesh(MeshFault::IndexOutOfRange { triangle, index, vertices }));
+    assert_eq!(Mesh { indices: &idx, ..good }.validate(), out(7, nv, usize::from(nv)));
     idx[7][1] = nv - 1;
     assert_eq!(Mesh { indices: &idx, ..good }.validate(), Ok(()));
     idx[0][2] = u16::MAX;
-    assert_eq!(Mesh { indices: &idx, ..good }.validate(), Err(INVALID_MESH));
-    assert_eq!(Mesh::new(&[], &[], &[[0, 0, 0]], ([0.0; 3], 0.0)).validate(), Err(INVALID_MESH));
+    assert_eq!(Mesh { indices: &idx, ..good }.validate(), out(0, u16::MAX, usize::from(nv)));
+    assert_eq!(Mesh::new(&[], &[], &[[0, 0, 0]], ([0.0; 3], 0.0)).validate(), out(0, 0, 0));
 
     // Normals: one per position or none.
-    assert_eq!(Mesh { normals: &o.normals[1..], ..good }.validate(), Err(INVALID_MESH));
+    let count = |normals, positions| Err(Error::InvalidMesh(MeshFault::NormalCount { normals, positions }));
+    let nv = usize::from(nv);
+    assert_eq!(Mesh { normals: &o.normals[1..], ..good }.validate(), count(nv - 1, nv));
     let mut more = o.normals.clone();
     more.push([0.0, 0.0, 1.0]);
-    assert_eq!(Mesh { normals: &more, ..good }.validate(), Err(INVALID_MESH));
+    assert_eq!(Mesh { normals: &more, ..good }.validate(), count(nv + 1, nv));
 
     // Non-finite values anywhere.
     for bad in [f32::NAN, f32::INFINITY, f32::NEG_INFINITY] {
@@ -145,14 +148,18 @@ fn validate_accepts_generated_and_rejects_broken_meshes() {
 
     // The bounding sphere must contain the mesh (within SPHERE_TOLERANCE).
     let (c, r) = good.bounding_sphere;
-    assert_eq!(Mesh { bounding_sphere: (c, r * 0.999), ..good }.validate(), Err(INVALID_MESH));
+    // Every vertex of the unit icosphere is on the sphere: vertex 0 is the first outside.
+    let outside = |vertex| Err(Error::InvalidMesh(MeshFault::OutsideSphere { vertex }));
+    assert_eq!(Mesh { bounding_sphere: (c, r * 0.999), ..good }.validate(), outside(0));
     assert_eq!(Mesh { bounding_sphere: (c, r * (1.0 - SPHERE_TOLERANCE / 2.0)), ..good }.validate(), Ok(()));
-    assert_eq!(Mesh { bounding_sphere: ([0.1, 0.0, 0.0], r), ..good }.validate(), Err(INVALID_MESH));
-    assert_eq!(Mesh { bounding_sphere: (c, -r), ..good }.validate(), Err(INVALID_MESH));
-    assert_eq!(Mesh::new(&[], &[], &[], ([0.0; 3], -1.0)).validate(), Err(INVALID_MESH));
+    let moved = Mesh { bounding_sphere: ([0.1, 0.0, 0.0], r), ..good }.validate();
+    assert!(matches!(moved, Err(Error::InvalidMesh(MeshFault::OutsideSphere { .. }))), "{moved:?}");
+    let negative = Err(Error::InvalidMesh(MeshFault::NegativeRadius));
+    assert_eq!(Mesh { bounding_sphere: (c, -r), ..good }.validate(), negative);
+    assert_eq!(Mesh::new(&[], &[], &[], ([0.0; 3], -1.0)).validate(), negative);
     // Huge coordinates whose squared distance overflows are rejected, not accepted.
     let far = [[3e38, 0.0, 0.0], [-3e38, 0.0, 0.0]];
-    assert_eq!(Mesh::new(&far, &[], &[], ([0.0; 3], 1e19)).validate(), Err(INVALID_MESH));
+    assert_eq!(Mesh::new(&far, &[], &[], ([0.0; 3], 1e19)).validate(), outside(0));
     // A radius whose square overflows is out of the supported range.
     assert_eq!(Mesh::new(&far, &[], &[], ([0.0; 3], 3e38)).validate(), Err(Error::CoordinateOutOfRange));
     assert_eq!(Mesh::new(&[], &[], &[], ([0.0; 3], 2e19)).validate(), Err(Error::CoordinateOutOfRange));

@@ -147,14 +147,14 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         mut sink: impl FnMut(ScreenTriangle<S>, &mut MeshStats) -> Result<(), Error>,
     ) -> Result<(), Error> {
         if M::PER_FACE {
-            return Err(Error::InvalidParameter);
+            return Err(Error::InvalidParameter(crate::Param::FaceColors));
         }
         let Slots { slots: cache, inside } = cache;
         let MeshSetup { ctx, planes, band, max } = setup;
         let (planes, max) = (*planes, *max);
         let coder = VertexClass::<T>::new(planes);
         let flat_shade = self.shade == Shade::Flat;
-        let position = |i: usize| src.position(i).map(Vec3::from_data).ok_or(Error::InvalidMesh);
+        let position = |i: usize| src.position(i).map(Vec3::from_data).ok_or(Error::InvalidMesh(crate::MeshFault::Unchecked));
         let presnap = PreSnap::new::<T>(self.size, self.origin, S);
         let cull_sign = match self.cull {
             Cull::Clockwise if presnap.active() => 1,
@@ -179,7 +179,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         for idx in triangles {
             let [a, b, c] = idx;
             let (Some(&sa), Some(&sb), Some(&sc)) = (cache.get(a), cache.get(b), cache.get(c)) else {
-                return Err(Error::InvalidMesh);
+                return Err(Error::InvalidMesh(crate::MeshFault::Unchecked));
             };
             if sa.state & sb.state & sc.state & (super::Band::<T>::ABOVE | super::Band::<T>::BELOW) != 0 {
                 continue;

@@ -191,7 +191,7 @@ mod tests {
     type Tris = heapless::Vec<ScreenTriangle<4>, 400>;
 
     fn push(v: &mut Tris, t: ScreenTriangle<4>) -> Result<(), Error> {
-        v.push(t).map_err(|_| Error::InvalidMesh)
+        v.push(t).map_err(|_| Error::InvalidMesh(crate::MeshFault::Unchecked))
     }
 
     /// Counts the chunks the record lets a band skip.

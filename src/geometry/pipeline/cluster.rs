@@ -355,7 +355,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
                     emit,
                 )
             }
-            .map_err(|e| if e == Error::InvalidMesh { Error::InvalidMeshlet } else { e })?;
+            .map_err(|e| if matches!(e, Error::InvalidMesh(_)) { Error::InvalidMeshlet } else { e })?;
         }
         Ok(stats)
     }

@@ -69,7 +69,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         mut sink: impl FnMut(&ScreenTriangle<S>, &mut MeshStats) -> Result<(), Error>,
     ) -> Result<Option<i32>, Error> {
         if M::PER_FACE {
-            return Err(Error::InvalidParameter);
+            return Err(Error::InvalidParameter(crate::Param::FaceColors));
         }
         let MeshSetup { ctx, max, band, .. } = setup;
         let presnap = PreSnap::new::<T>(self.size, self.origin, S);
@@ -91,9 +91,9 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         // from another cluster's entry.
         let mut states = [0u8; MAX_MESHLET_VERTICES];
         let (mut all_sides, mut any_side) = (SIDES, 0);
-        let slots = cache.get_mut(..count).ok_or(Error::InvalidMesh)?;
+        let slots = cache.get_mut(..count).ok_or(Error::InvalidMesh(crate::MeshFault::Unchecked))?;
         for (i, e) in slots.iter_mut().enumerate() {
-            let p = src.position(i).map(Vec3::from_data).ok_or(Error::InvalidMesh)?;
+            let p = src.position(i).map(Vec3::from_data).ok_or(Error::InvalidMesh(crate::MeshFault::Unchecked))?;
             let yw = ctx.yw(p);
             let side = band.side(yw);
             e.state = side;
@@ -124,9 +124,9 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
             if shared & Cached::<T, S>::SNAP == 0 {
                 // A corner beyond the band's margin, of a triangle across it.
                 for &j in &idx {
-                    let e = cache.get_mut(j).ok_or(Error::InvalidMesh)?;
+                    let e = cache.get_mut(j).ok_or(Error::InvalidMesh(crate::MeshFault::Unchecked))?;
                     if e.state & Cached::<T, S>::SNAP == 0 {
-                        let p = src.position(j).map(Vec3::from_data).ok_or(Error::InvalidMesh)?;
+                        let p = src.position(j).map(Vec3::from_data).ok_or(Error::InvalidMesh(crate::MeshFault::Unchecked))?;
                         self.snap_slot::<R>(ctx, &presnap, e, p, (e.clip[1], e.clip[3]));
                         states[j % MAX_MESHLET_VERTICES] = e.state;
                     }
@@ -141,7 +141,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
             // below `count`; one beyond 64 would have read another slot's
             // state above. One test for the three, then no bounds checks.
             if (idx[0] | idx[1] | idx[2]) >= MAX_MESHLET_VERTICES {
-                return Err(Error::InvalidMesh);
+                return Err(Error::InvalidMesh(crate::MeshFault::Unchecked));
             }
             let idx = idx.map(|j| j % MAX_MESHLET_VERTICES);
             let pos = idx.map(|j| cache[j].screen.pos);

@@ -374,7 +374,7 @@ pub(super) fn triangle_in_view<T: Scalar>(
     band: &Band<T>,
     planes: ClipPlanes,
 ) -> Result<Option<([Vec3<T>; 3], [[T; 4]; 3], Class)>, Error> {
-    let pos = mesh.triangle(i).ok_or(Error::InvalidMesh)?.map(Vec3::from_f32);
+    let pos = mesh.triangle(i).ok_or(Error::InvalidMesh(crate::MeshFault::Unchecked))?.map(Vec3::from_f32);
     let yw = pos.map(|p| ctx.yw(p));
     if band.excludes(yw) {
         return Ok(None);

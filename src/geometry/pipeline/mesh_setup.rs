@@ -61,6 +61,11 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         if let Some(l) = &self.lighting {
             l.validate()?;
         }
+        // A NaN rotation, scale or translation: a coordinate error, as a
+        // NaN camera is (not a singular model).
+        if !model.cols.iter().flatten().all(|v| v.is_finite()) {
+            return Err(Error::NonFiniteCoordinate);
+        }
         let fx = !crate::math::vec::is_float::<T>();
         // Fx: a matrix product that saturates changes what is drawn.
         if fx
@@ -75,7 +80,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         // Checked before the band test, the error cannot depend on the
         // band height: the band tests of a sphere that reaches behind the
         // eye are not nested (fuzz target `view3d`).
-        let normal_matrix = model_view.normal_matrix().ok_or(Error::InvalidParameter)?;
+        let normal_matrix = model_view.normal_matrix().ok_or(Error::InvalidParameter(crate::Param::Model))?;
         if !self.sphere_visible(&mvp, mesh.bounding_sphere) {
             return Ok(None);
         }

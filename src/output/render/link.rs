@@ -394,6 +394,6 @@ where
 {
     match sink.reclaim().map_err(RenderError::Target)? {
         Some(band) => Ok(band.rows),
-        None => Err(Error::InvalidParameter.into()),
+        None => Err(Error::InvalidParameter(crate::Param::BandSink).into()),
     }
 }

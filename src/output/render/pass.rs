@@ -42,11 +42,11 @@ use crate::{Error, Interpolate, Primitive};
 /// use microraster::band::BandView;
 /// use microraster::blit::Blitter;
 /// use microraster::render::Pass;
-/// use microraster::{Band, Error, Renderer};
+/// use microraster::{Band, Error, Param, Renderer};
 /// struct Checkers(i32);
 /// impl<const W: usize, const H: usize> Pass<BinaryColor, W, H> for Checkers {
 ///     fn check(&mut self, _: &Renderer<BinaryColor>) -> Result<(), Error> {
-///         if self.0 > 0 { Ok(()) } else { Err(Error::InvalidParameter) }
+///         if self.0 > 0 { Ok(()) } else { Err(Error::InvalidParameter(Param::User)) }
 ///     }
 ///     fn draw(&mut self, band: &mut BandView<'_, BinaryColor, W>, _: &Renderer<BinaryColor>) -> Result<(), Error> {
 ///         for y in band.y0()..band.y1() {
@@ -63,7 +63,7 @@ use crate::{Error, Interpolate, Primitive};
 /// renderer.render(Checkers(2), &mut band, &mut display)?;
 /// display.assert_pattern(&["..##", "..##", "##..", "##.."]);
 /// let refused = renderer.render(Checkers(0), &mut band, &mut MockDisplay::new());
-/// assert_eq!(refused, Err(Error::InvalidParameter.into()));
+/// assert_eq!(refused, Err(Error::InvalidParameter(Param::User).into()));
 /// # Ok::<(), microraster::RenderError<core::convert::Infallible>>(())
 /// ```
 pub trait Pass<C: Interpolate, const W: usize, const H: usize> {

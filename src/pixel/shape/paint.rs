@@ -6,7 +6,7 @@
 //! the exact `c0 + t·(c1 − c0)`, plus 1/510 of the range from the 8-bit `t`.
 
 use super::canvas::Canvas;
-use crate::Error;
+use crate::{Error, Param};
 use crate::blend::{Blend, Mix};
 use crate::color::Interpolate;
 use crate::edge::Span;
@@ -78,7 +78,7 @@ impl<C> LinearGradient<C> {
     /// use embedded_graphics::pixelcolor::{Gray8, GrayColor};
     /// use microraster::shape::LinearGradient;
     /// let g = LinearGradient::new((0.0, 0.0), (0.0, 0.0), [Gray8::BLACK, Gray8::WHITE]);
-    /// assert_eq!(g, Err(microraster::Error::InvalidParameter));
+    /// assert_eq!(g, Err(microraster::Error::InvalidParameter(microraster::Param::Gradient)));
     /// ```
     pub fn new(start: (f32, f32), end: (f32, f32), colors: [C; 2]) -> Result<Self, Error> {
         let d = (end.0 - start.0, end.1 - start.1);
@@ -87,7 +87,7 @@ impl<C> LinearGradient<C> {
             return Err(Error::NonFiniteCoordinate);
         }
         if l2 <= 0.0 {
-            return Err(Error::InvalidParameter);
+            return Err(Error::InvalidParameter(Param::Gradient));
         }
         Ok(LinearGradient { start, k: (d.0 / l2, d.1 / l2), colors })
     }
@@ -128,7 +128,7 @@ impl<C> RadialGradient<C> {
             return Err(Error::NonFiniteCoordinate);
         }
         if radius <= 0.0 {
-            return Err(Error::InvalidParameter);
+            return Err(Error::InvalidParameter(Param::Gradient));
         }
         Ok(RadialGradient { center, inv_r: 1.0 / radius, colors })
     }

@@ -5,7 +5,7 @@ use super::edges::EdgeList;
 use super::flatten::arc_points;
 use super::stroke::{self, StrokeParams};
 use super::style::{ShapeStyle, Styled};
-use crate::Error;
+use crate::{Error, Param};
 use core::f32::consts::{FRAC_PI_2, PI};
 
 mod arcs;
@@ -64,7 +64,7 @@ fn finite(v: &[f32]) -> Result<(), Error> {
 /// Finite and non-negative, else the typed error.
 fn size(v: &[f32]) -> Result<(), Error> {
     finite(v)?;
-    if v.iter().all(|&x| x >= 0.0) { Ok(()) } else { Err(Error::InvalidParameter) }
+    if v.iter().all(|&x| x >= 0.0) { Ok(()) } else { Err(Error::InvalidParameter(Param::ShapeSize)) }
 }
 
 /// What [`Shape::reach`] promises: every edge of the fill and of the
@@ -135,7 +135,7 @@ fn floor(v: f32) -> i32 {
 /// ```
 /// use microraster::shape::Rect;
 /// assert!(Rect::new(0.0, 0.0, 4.0, 2.0).is_ok());
-/// assert_eq!(Rect::new(0.0, 0.0, -1.0, 2.0), Err(microraster::Error::InvalidParameter));
+/// assert_eq!(Rect::new(0.0, 0.0, -1.0, 2.0), Err(microraster::Error::InvalidParameter(microraster::Param::ShapeSize)));
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Rect {
@@ -202,7 +202,7 @@ impl RoundedRect {
     /// use microraster::{Error, shape::{Rect, RoundedRect}};
     /// let rect = Rect::new(0.0, 0.0, 8.0, 6.0)?;
     /// assert_eq!(RoundedRect::new(rect, 2.0)?.radius(), 2.0); // fits: unchanged
-    /// assert_eq!(RoundedRect::new(rect, -1.0), Err(Error::InvalidParameter));
+    /// assert_eq!(RoundedRect::new(rect, -1.0), Err(Error::InvalidParameter(microraster::Param::ShapeSize)));
     /// assert_eq!(RoundedRect::new(rect, f32::NAN), Err(Error::NonFiniteCoordinate));
     /// # Ok::<(), Error>(())
     /// ```

@@ -94,7 +94,7 @@ pub use sampler::{Address, Bilinear, Filter, Nearest, Sampler};
 pub use shade::{from_rgb8, luma, modulate, to_rgb8};
 pub use sprite::{SPRITE_SCALE_RANGE, Sprite};
 
-use crate::Error;
+use crate::{Error, Param};
 use sampler::Axis;
 
 /// Fraction bits of texture coordinates: [`UV_ONE`] = 2^16 is one texture
@@ -142,14 +142,14 @@ impl<'a, F: TexelFormat> Texture<'a, F> {
     pub fn new(data: &'a [F::Storage], width: u32, height: u32) -> Result<Self, Error> {
         let ok = |d: u32| (1..=MAX_TEXTURE_DIM).contains(&d);
         if !ok(width) || !ok(height) {
-            return Err(Error::InvalidParameter);
+            return Err(Error::InvalidParameter(Param::TextureSize));
         }
         // ≤ 2^24 texels: fits usize on every target with ≥ 32-bit pointers;
         // on smaller ones it could not be addressed anyway.
-        let n = usize::try_from(width * height).map_err(|_| Error::InvalidParameter)?;
+        let n = usize::try_from(width * height).map_err(|_| Error::InvalidParameter(Param::TextureSize))?;
         match data.len().cmp(&n) {
             core::cmp::Ordering::Less => Err(Error::BufferTooSmall),
-            core::cmp::Ordering::Greater => Err(Error::InvalidParameter),
+            core::cmp::Ordering::Greater => Err(Error::InvalidParameter(Param::TextureSize)),
             core::cmp::Ordering::Equal => Ok(Texture { data, u: Axis::new(width), v: Axis::new(height) }),
         }
     }

@@ -25,7 +25,7 @@
 use super::{Filter, Nearest, Sampler, TexelFormat, Texture, from_rgb8, modulate, shade::div255_round};
 use crate::blend::{BlendTarget, Mix};
 use crate::math::Scalar;
-use crate::{Error, Interpolate, MAX_FRAME_DIM};
+use crate::{Error, Interpolate, MAX_FRAME_DIM, Param};
 use core::marker::PhantomData;
 use embedded_graphics_core::prelude::{DrawTarget, Drawable, Pixel, Point};
 
@@ -44,7 +44,7 @@ use embedded_graphics_core::prelude::{DrawTarget, Drawable, Pixel, Point};
 /// }
 /// for scale in [lo / 2.0, hi * 2.0, 0.0, -1.0] {
 ///     let drawn = Sprite::new(&DOT).scale(scale).blend_into(&mut band.view(0, 1, Gray8::BLACK));
-///     assert_eq!(drawn, Err(Error::InvalidParameter), "{scale}");
+///     assert_eq!(drawn, Err(Error::InvalidParameter(microraster::Param::SpriteScale)), "{scale}");
 /// }
 /// ```
 pub const SPRITE_SCALE_RANGE: (f32, f32) = (1.0 / 256.0, 256.0);
@@ -146,7 +146,7 @@ impl<'t, F: TexelFormat, C, Fi: Filter> Sprite<'t, F, C, Fi> {
     /// Sprite::new(&DOT).scale(2.0).blend_into(&mut band.view(0, 1, Gray8::BLACK))?;
     /// assert_eq!(band.rows()[0], [Gray8::WHITE, Gray8::WHITE, Gray8::BLACK]);
     /// let too_big = Sprite::new(&DOT).scale(1000.0).blend_into(&mut band.view(0, 1, Gray8::BLACK));
-    /// assert_eq!(too_big, Err(Error::InvalidParameter));
+    /// assert_eq!(too_big, Err(Error::InvalidParameter(microraster::Param::SpriteScale)));
     /// # Ok::<(), Error>(())
     /// ```
     pub fn scale(self, scale: f32) -> Self {
@@ -230,7 +230,7 @@ impl<'t, F: TexelFormat, C, Fi: Filter> Sprite<'t, F, C, Fi> {
             return Err(Error::NonFiniteCoordinate);
         }
         if !(SPRITE_SCALE_RANGE.0..=SPRITE_SCALE_RANGE.1).contains(&s) {
-            return Err(Error::InvalidParameter);
+            return Err(Error::InvalidParameter(Param::SpriteScale));
         }
         // The crate's sin/cos (std's inherent one would shadow it in host tests).
         let (sin, cos) = Scalar::sin_cos(a);
@@ -314,7 +314,7 @@ impl<'t, F: TexelFormat, C, Fi: Filter> Sprite<'t, F, C, Fi> {
     /// assert_eq!(band.rows()[0], [Rgb565::BLACK, Rgb565::RED, half_red, Rgb565::BLACK]);
     /// let mut view = band.view(0, 1, Rgb565::BLACK);
     /// assert_eq!(Sprite::new(&MASK).scale(f32::NAN).blend_into(&mut view), Err(Error::NonFiniteCoordinate));
-    /// assert_eq!(Sprite::new(&MASK).scale(-1.0).blend_into(&mut view), Err(Error::InvalidParameter));
+    /// assert_eq!(Sprite::new(&MASK).scale(-1.0).blend_into(&mut view), Err(Error::InvalidParameter(microraster::Param::SpriteScale)));
     /// # Ok::<(), Error>(())
     /// ```
     pub fn blend_into<T: BlendTarget<C>>(&self, target: &mut T) -> Result<(), Error>

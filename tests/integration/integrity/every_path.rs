@@ -94,7 +94,7 @@ fn binned<const BH: usize>(bins: &[ScreenTriangle<4>]) -> Img {
         let mut depth = Box::new(DepthBand::<Depth16, PW, BH>::new());
         Renderer::new(PH as u32, Gray8::new(0))
             .render(Triangles3d::new(bins, &mut depth, DepthState::LESS_WRITE, Affine), &mut band, fb)
-            .map_err(|_| Error::InvalidParameter)
+            .map_err(|_| Error::InvalidParameter(microraster::Param::User))
     })
 }
 
@@ -213,7 +213,7 @@ fn every_path<T: Scalar>(
         let mut depth = Box::new(DepthBand::<Depth16, PW, 16>::new());
         Renderer::new(PH as u32, Gray8::new(0))
             .render(Triangles3d::new(&bins, &mut depth, DepthState::DISABLED, Affine), &mut band, fb)
-            .map_err(|_| Error::InvalidParameter)
+            .map_err(|_| Error::InvalidParameter(microraster::Param::User))
     })?;
     Ok((images[0].clone()?, cross))
 }

@@ -200,7 +200,7 @@ fn lighting_overflow_is_full_intensity_and_bad_directions_are_errors() {
     assert_eq!(colour(&b), Some(Gray8::new(255)), "Fx saturates to full intensity");
     assert_eq!(colour(&a), Some(Gray8::new(255)), "f32 overflow to infinity: full intensity, as Fx");
     for (dir, err) in [
-        ([0.0f32, 0.0, 0.0], Error::InvalidParameter),
+        ([0.0f32, 0.0, 0.0], Error::InvalidParameter(microraster::Param::LightDirection)),
         ([f32::NAN, 0.0, 1.0], Error::NonFiniteCoordinate),
         ([0.0, f32::INFINITY, 1.0], Error::NonFiniteCoordinate),
     ] {
@@ -210,7 +210,7 @@ fn lighting_overflow_is_full_intensity_and_bad_directions_are_errors() {
     let q = pf.with_lighting(Lighting::new(f(0.2), Vec3::from_f32([0.0; 3]), f(0.8)));
     assert_eq!(
         both_ways(&q, &mesh, &Mat4::IDENTITY).err(),
-        Some(Error::InvalidParameter),
+        Some(Error::InvalidParameter(microraster::Param::LightDirection)),
         "Fx zero direction"
     );
     for bad in [f32::NAN, f32::INFINITY] {

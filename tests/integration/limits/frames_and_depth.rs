@@ -11,7 +11,7 @@ use microraster::math::{Mat4, transform};
 use microraster::mesh::{Mesh, bounding_sphere};
 use microraster::pipeline::{Pipeline, Shade};
 use microraster::raster3d::{Affine, ScreenTriangle};
-use microraster::{Band, ClipRect, Error, MAX_FRAME_DIM, Primitive, Renderer, SubPoint, Triangle};
+use microraster::{Band, ClipRect, Error, MAX_FRAME_DIM, Param, Primitive, Renderer, SubPoint, Triangle};
 
 // ------------------------------------------------------------ frames and bands
 
@@ -159,15 +159,15 @@ fn limit_near_far_ratio() {
         assert!(okx(n, f).is_ok(), "Fx {n}..{f}");
     }
     for (n, f) in [(1.0, 1.0), (2.0, 1.0), (0.0, 1.0), (-1.0, 1.0), (-0.0, 5.0)] {
-        assert_eq!(ok(n, f).err(), Some(Error::InvalidParameter), "f32 {n}..{f}");
-        assert_eq!(okx(n, f).err(), Some(Error::InvalidParameter), "Fx {n}..{f}");
+        assert_eq!(ok(n, f).err(), Some(Error::InvalidParameter(Param::NearFar)), "f32 {n}..{f}");
+        assert_eq!(okx(n, f).err(), Some(Error::InvalidParameter(Param::NearFar)), "Fx {n}..{f}");
     }
     // One f32 ulp apart is still near < far: accepted, finite.
     let m = ok(1.0, 1.0 + f32::EPSILON).unwrap();
     assert!(m.to_f32().iter().flatten().all(|v| v.is_finite()));
     // Fx cannot resolve 1 + 2^-20: equal after conversion, a typed error; one
     // Fx step apart the entry saturates: also a typed error.
-    assert_eq!(okx(1.0, 1.0 + 1.0 / 1048576.0).err(), Some(Error::InvalidParameter));
+    assert_eq!(okx(1.0, 1.0 + 1.0 / 1048576.0).err(), Some(Error::InvalidParameter(Param::NearFar)));
     assert_eq!(okx(1.0, 1.0 + 1.0 / 65536.0).err(), Some(Error::CoordinateOutOfRange));
     for v in [f32::NAN, f32::INFINITY, f32::NEG_INFINITY] {
         assert_eq!(ok(v, 10.0).err(), Some(Error::NonFiniteCoordinate));

@@ -144,9 +144,12 @@ fn fx_data_is_checked_as_f32_data() {
     let mesh = Mesh { normals: &flipped, ..ok.mesh };
     assert_eq!(ValidMeshletMesh::new_fx(MeshletMesh { mesh, ..ok }).map(|_| ()), Err(Error::WindingMismatch));
     let mesh = Mesh { normals: &data.normals[1..], ..ok.mesh };
-    assert_eq!(verdicts(MeshletMesh { mesh, ..ok }), Err(Error::InvalidMesh), "one normal short");
+    let (normals, positions) = (data.normals.len() - 1, data.normals.len());
+    let short = Error::InvalidMesh(microraster::MeshFault::NormalCount { normals, positions });
+    assert_eq!(verdicts(MeshletMesh { mesh, ..ok }), Err(short), "one normal short");
     let mesh = Mesh { bounding_sphere: (data.sphere.0, data.sphere.1 * 0.9), ..ok.mesh };
-    assert_eq!(verdicts(MeshletMesh { mesh, ..ok }), Err(Error::InvalidMesh), "mesh sphere");
+    let small = verdicts(MeshletMesh { mesh, ..ok });
+    assert!(matches!(small, Err(Error::InvalidMesh(microraster::MeshFault::OutsideSphere { .. }))), "mesh sphere: {small:?}");
     let mesh = Mesh { bounding_sphere: ([f32::NAN, 0.0, 0.0], 1.0), ..ok.mesh };
     assert_eq!(verdicts(MeshletMesh { mesh, ..ok }), Err(Error::NonFiniteCoordinate));
 }

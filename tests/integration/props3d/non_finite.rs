@@ -104,7 +104,7 @@ fn nan_and_inf_everywhere() {
                     } else if bad_size {
                         prop_assert!(matches!(
                             e,
-                            Error::InvalidFrameSize | Error::InvalidParameter | Error::CoordinateOutOfRange
+                            Error::InvalidFrameSize | Error::InvalidParameter(_) | Error::CoordinateOutOfRange
                         ));
                     }
                     tally.add("constructor error");
@@ -123,7 +123,7 @@ fn nan_and_inf_everywhere() {
             match p.draw_mesh(&mesh, &model, Gray8::new(200), &mut bins) {
                 // A non-finite or unrepresentable mesh is rejected by validate.
                 Ok(_)
-                | Err(Error::InvalidParameter | Error::NonFiniteCoordinate | Error::CoordinateOutOfRange) => {
+                | Err(Error::InvalidParameter(_) | Error::NonFiniteCoordinate | Error::CoordinateOutOfRange) => {
                 }
                 Err(e) => prop_assert!(false, "undocumented error {:?}", e),
             }

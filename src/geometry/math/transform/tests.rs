@@ -67,25 +67,26 @@ fn conventions() {
 
 #[test]
 fn degenerate_inputs_are_errors_not_panics() {
-    const D: Error = DEGENERATE;
+    use crate::Param;
+    let (fov, aspect, near_far) = (degenerate(Param::FieldOfView), degenerate(Param::AspectRatio), degenerate(Param::NearFar));
     const NF: Error = Error::NonFiniteCoordinate;
     let nan = f32::NAN;
     for (args, want) in [
-        ([1.0, 1.0, 0.0, 10.0], D),  // near = 0
-        ([1.0, 1.0, -1.0, 10.0], D), // near < 0
-        ([1.0, 1.0, 2.0, 2.0], D),   // far = near
-        ([1.0, 1.0, 2.0, 1.0], D),   // far < near
-        ([1.0, 0.0, 1.0, 10.0], D),  // zero aspect
-        ([1.0, -1.0, 1.0, 10.0], D), // negative aspect
-        ([0.0, 1.0, 1.0, 10.0], D),  // zero fov
-        ([3.2, 1.0, 1.0, 10.0], D),  // fov ≥ π
-        ([nan, 1.0, 1.0, 10.0], NF), // NaN
+        ([1.0, 1.0, 0.0, 10.0], near_far),  // near = 0
+        ([1.0, 1.0, -1.0, 10.0], near_far), // near < 0
+        ([1.0, 1.0, 2.0, 2.0], near_far),   // far = near
+        ([1.0, 1.0, 2.0, 1.0], near_far),   // far < near
+        ([1.0, 0.0, 1.0, 10.0], aspect),    // zero aspect
+        ([1.0, -1.0, 1.0, 10.0], aspect),   // negative aspect
+        ([0.0, 1.0, 1.0, 10.0], fov),       // zero fov
+        ([3.2, 1.0, 1.0, 10.0], fov),       // fov ≥ π
+        ([nan, 1.0, 1.0, 10.0], NF),        // NaN
         ([1.0, 1.0, 1.0, f32::INFINITY], NF),
     ] {
         assert_eq!(perspective(args[0], args[1], args[2], args[3]), Err(want), "{args:?}");
         let f = args.map(Fx::from_f32);
-        if want == D && args[0] < 3.2 {
-            assert_eq!(perspective(f[0], f[1], f[2], f[3]), Err(D), "Fx {args:?}");
+        if want != NF && args[0] < 3.2 {
+            assert_eq!(perspective(f[0], f[1], f[2], f[3]), Err(want), "Fx {args:?}");
         }
     }
     // Fx: a fov of one bit, or a tiny aspect, would saturate f/aspect.
@@ -93,15 +94,17 @@ fn degenerate_inputs_are_errors_not_panics() {
     assert_eq!(perspective(Fx::from_bits(1), fx(1.0), fx(1.0), fx(10.0)), Err(Error::CoordinateOutOfRange));
     assert_eq!(perspective(fx(1.0), Fx::from_bits(1), fx(1.0), fx(10.0)), Err(Error::CoordinateOutOfRange));
     let (o, y) = (Vec3::new(1.0f32, 2.0, 3.0), Vec3::new(0.0, 1.0, 0.0));
-    assert_eq!(look_at(o, o, y), Err(D)); // eye == target
-    assert_eq!(look_at(o, o + y, y), Err(D)); // up parallel to the view
-    assert_eq!(look_at(o, Vec3::ZERO, Vec3::ZERO), Err(D)); // zero up
+    let look = degenerate(Param::LookAt);
+    assert_eq!(look_at(o, o, y), Err(look)); // eye == target
+    assert_eq!(look_at(o, o + y, y), Err(look)); // up parallel to the view
+    assert_eq!(look_at(o, Vec3::ZERO, Vec3::ZERO), Err(look)); // zero up
     assert_eq!(look_at(Vec3::new(nan, 0.0, 0.0), Vec3::ZERO, y), Err(NF));
     let far = Vec3::<Fx>::from_f32([-30000.0, 0.0, 0.0]);
     assert_eq!(look_at(far, -far, Vec3::from_f32([0.0, 1.0, 0.0])), Err(Error::CoordinateOutOfRange));
-    assert_eq!(orthographic(1.0f32, 1.0, 0.0, 1.0, 0.0, 1.0), Err(D));
-    assert_eq!(orthographic(0.0f32, 1.0, 1.0, 0.0, 0.0, 1.0), Err(D));
-    assert_eq!(orthographic(0.0f32, 1.0, 0.0, 1.0, 1.0, 1.0), Err(D));
+    let view_box = degenerate(Param::ViewBox);
+    assert_eq!(orthographic(1.0f32, 1.0, 0.0, 1.0, 0.0, 1.0), Err(view_box));
+    assert_eq!(orthographic(0.0f32, 1.0, 1.0, 0.0, 0.0, 1.0), Err(view_box));
+    assert_eq!(orthographic(0.0f32, 1.0, 0.0, 1.0, 1.0, 1.0), Err(near_far));
     assert_eq!(orthographic(0.0f32, 1.0, 0.0, 1.0, 0.0, nan), Err(NF));
     assert_eq!(
         orthographic(fx(-30000.0), fx(30000.0), fx(0.0), fx(1.0), fx(0.0), fx(1.0)),

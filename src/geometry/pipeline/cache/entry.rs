@@ -31,7 +31,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
     ) -> Result<(), Error> {
         let per_face = self.shade == Shade::Flat || !src.has_normals();
         for (k, &j) in idx.iter().enumerate() {
-            let e = cache.get_mut(j).ok_or(Error::InvalidMesh)?;
+            let e = cache.get_mut(j).ok_or(Error::InvalidMesh(crate::MeshFault::Unchecked))?;
             if e.state & Cached::<T, S>::DEPTH == 0 {
                 self.depth_entry::<R>(e);
             }
@@ -75,7 +75,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         }
         let [Some(ra), Some(rb), Some(rc)] = idx.map(|j| src.position(j).map(|p| p.map(Src::Coord::to_f32)))
         else {
-            return Err(Error::InvalidMesh);
+            return Err(Error::InvalidMesh(crate::MeshFault::Unchecked));
         };
         Ok(crate::mesh::face_normal_of([ra, rb, rc]))
     }
@@ -102,7 +102,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         // generic over it) cost the f32 knot 1.5 % on the Cortex-M4F, code
         // generation unchanged in its operations.
         let n = if flat { face_n } else { src.normal(j).map(|n| n.map(Src::Coord::to_f32)) };
-        let p = src.position(j).map(Vec3::from_data).ok_or(Error::InvalidMesh)?;
+        let p = src.position(j).map(Vec3::from_data).ok_or(Error::InvalidMesh(crate::MeshFault::Unchecked))?;
         Ok(if M::UNIFORM {
             ctx.lit::<R>(p, n, |ctx: &VertexCtx<T>| ctx.base)
         } else {

@@ -77,7 +77,7 @@ impl Shape for Ellipse {
 ///
 /// ```
 /// use microraster::shape::Circle;
-/// assert_eq!(Circle::new((0.0, 0.0), -1.0), Err(microraster::Error::InvalidParameter));
+/// assert_eq!(Circle::new((0.0, 0.0), -1.0), Err(microraster::Error::InvalidParameter(microraster::Param::ShapeSize)));
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Circle(Ellipse);

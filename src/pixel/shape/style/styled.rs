@@ -5,7 +5,7 @@ use super::ShapeStyle;
 use crate::blend::div255_round;
 use crate::shape::edges::{BITS, EdgeList};
 use crate::shape::{Aliased, Canvas, Coverage, FillRule, MAX_EDGES, Shape, TargetCanvas};
-use crate::{Error, Interpolate};
+use crate::{Error, Interpolate, Param};
 use embedded_graphics_core::Drawable;
 use embedded_graphics_core::prelude::DrawTarget;
 
@@ -60,7 +60,7 @@ impl<S: Shape, C: Copy, A: Coverage> Styled<S, C, A> {
     /// use microraster::{Error, shape::{Rect, ShapeStyle, Styled}};
     /// let rect = Rect::new(0.0, 0.0, 4.0, 4.0)?;
     /// assert!(Styled::new(rect, ShapeStyle::stroke(BinaryColor::On, 1.0)).is_ok());
-    /// assert_eq!(Styled::new(rect, ShapeStyle::stroke(BinaryColor::On, -1.0)), Err(Error::InvalidParameter));
+    /// assert_eq!(Styled::new(rect, ShapeStyle::stroke(BinaryColor::On, -1.0)), Err(Error::InvalidParameter(microraster::Param::StrokeWidth)));
     /// assert_eq!(Styled::new(rect, ShapeStyle::stroke(BinaryColor::On, f32::NAN)), Err(Error::NonFiniteCoordinate));
     /// # Ok::<(), Error>(())
     /// ```
@@ -69,8 +69,11 @@ impl<S: Shape, C: Copy, A: Coverage> Styled<S, C, A> {
         if !w.is_finite() || !m.is_finite() {
             return Err(Error::NonFiniteCoordinate);
         }
-        if w < 0.0 || m < 1.0 {
-            return Err(Error::InvalidParameter);
+        if w < 0.0 {
+            return Err(Error::InvalidParameter(Param::StrokeWidth));
+        }
+        if m < 1.0 {
+            return Err(Error::InvalidParameter(Param::MiterLimit));
         }
         let mut s = Styled { shape, style, rows: (0, 0) };
         // A shape that bounds its edges from its geometry (polylines and
