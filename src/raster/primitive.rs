@@ -9,7 +9,7 @@
 //! the band loop reads them with no branch on the kind. The slice pass
 //! makes that test for every primitive in every band.
 
-use crate::attr::{COLOR_FRAC, COLOR_HALF, Plane, PlaneFrame, channel_clamped};
+use crate::attr::{COLOR_FRAC, COLOR_HALF, Plane, PlaneFrame, channel_clamped, channel_in_range};
 use crate::blit::Blitter;
 use crate::edge::{Cull, TriangleSpans};
 use crate::line::{line_pixels, line_rows};
@@ -101,11 +101,12 @@ impl<C: Interpolate, const S: u32> Triangle<C, S> {
         }
     }
 
-    fn draw_gouraud<B: Blitter<C>>(&self, spans: TriangleSpans, cs: [C; 3], blitter: &mut B) {
+    /// The colour planes of a Gouraud triangle with vertex channels `ch`
+    /// (`None` for a channel the colour lacks, or zero area).
+    fn planes(&self, ch: [[u8; 3]; 3]) -> [Option<Plane>; 3] {
         let frame =
             PlaneFrame { v: self.vertices.map(|p| (2 * p.x() as i64, 2 * p.y() as i64)), shift: S + 1 };
         let (rx, ry) = reference_pixel(self.vertices[0]);
-        let ch = cs.map(|c| c.to_channels());
         let max = C::CHANNEL_MAX;
         let mut planes = [None; 3];
         for (k, plane) in planes.iter_mut().enumerate() {
@@ -114,32 +115,69 @@ impl<C: Interpolate, const S: u32> Triangle<C, S> {
                 *plane = Plane::new(&frame, values, rx, ry);
             }
         }
-        for span in spans {
-            let mut acc = [0i32; 3];
-            let mut step = [0i32; 3];
-            for k in 0..3 {
-                if let Some(p) = &planes[k] {
+        planes
+    }
+
+    fn draw_gouraud<B: Blitter<C>>(&self, spans: TriangleSpans, cs: [C; 3], blitter: &mut B) {
+        let ch = cs.map(|c| c.to_channels());
+        let planes = self.planes(ch);
+        let max = C::CHANNEL_MAX;
+        // `to_channels` keeps every channel in range for the crate's colours;
+        // a hand-made `Interpolate` may not, and keeps the clamped loop.
+        if ch.iter().all(|c| c.iter().zip(max).all(|(&v, m)| v <= m)) {
+            gouraud_spans::<C, B, false>(spans, &planes, blitter);
+        } else {
+            gouraud_spans::<C, B, true>(spans, &planes, blitter);
+        }
+    }
+}
+
+/// The Gouraud span loop of [`Triangle::draw`]. `CLAMP`: each channel
+/// clamped to `0..=max` ([`channel_clamped`]); without it (every vertex
+/// channel in range) a bit-field extract ([`channel_in_range`]): a covered
+/// centre's exact value is a convex combination of the vertices' and the
+/// sample lies within `2^13` units of it (`attr`), so both give the same
+/// pixels. The accumulators then fit `i32` as they are (below `2^28` in
+/// magnitude with the half step), so each span starts from the plane's low
+/// 32 bits ([`Plane::at_low32`]); and a step beyond `i32` only occurs where
+/// a span is one pixel long (two covered centres differ by less than
+/// `2^28`), where it is unused: truncated or clamped, the same pixels.
+#[inline(always)]
+fn gouraud_spans<C: Interpolate, B: Blitter<C>, const CLAMP: bool>(
+    spans: TriangleSpans,
+    planes: &[Option<Plane>; 3],
+    blitter: &mut B,
+) {
+    let max = C::CHANNEL_MAX;
+    for span in spans {
+        let mut acc = [0i32; 3];
+        let mut step = [0i32; 3];
+        for k in 0..3 {
+            if let Some(p) = &planes[k] {
+                if CLAMP {
                     // Inside the triangle the value is a channel (< 2^28); a step that
                     // does not fit i32 only occurs where spans are one pixel long.
                     // The rounding's half step is added here once (`channel_clamped`).
                     let biased = p.at(span.x, span.y).saturating_add(COLOR_HALF as i64);
                     acc[k] = biased.clamp(i32::MIN as i64, i32::MAX as i64) as i32;
                     step[k] = p.step_x().clamp(i32::MIN as i64, i32::MAX as i64) as i32;
+                } else {
+                    acc[k] = (p.at_low32(span.x, span.y) as i32).wrapping_add(COLOR_HALF);
+                    step[k] = p.step_x() as i32;
                 }
             }
-            let colors = (0..span.len).map(|_| {
-                let c = [
-                    channel_clamped(acc[0], max[0]),
-                    channel_clamped(acc[1], max[1]),
-                    channel_clamped(acc[2], max[2]),
-                ];
-                for k in 0..3 {
-                    acc[k] = acc[k].wrapping_add(step[k]); // the step after the last pixel is unused
-                }
-                C::from_channels(c)
-            });
-            blitter.shade_span(span, colors);
         }
+        let colors = (0..span.len).map(|_| {
+            let ch = |k: usize| {
+                if CLAMP { channel_clamped(acc[k], max[k]) } else { channel_in_range(acc[k], max[k]) }
+            };
+            let c = [ch(0), ch(1), ch(2)];
+            for k in 0..3 {
+                acc[k] = acc[k].wrapping_add(step[k]); // the step after the last pixel is unused
+            }
+            C::from_channels(c)
+        });
+        blitter.shade_span(span, colors);
     }
 }
 
@@ -276,7 +314,10 @@ pub(crate) const fn center_rows<const S: u32>(lo: i32, hi: i32) -> (i32, i32) {
 
 #[cfg(test)]
 mod tests {
-    use super::{Interpolate, Line, Primitive, SubPoint, Triangle};
+    use super::{Interpolate, Line, Primitive, Shading, SubPoint, Triangle};
+    use crate::Band;
+    use crate::blit::Blitter;
+    use crate::edge::{Cull, TriangleSpans};
     use embedded_graphics::pixelcolor::{BinaryColor, Rgb565, Rgb888};
 
     /// The offsets of a triangle's and a line's rows within their
@@ -295,6 +336,50 @@ mod tests {
             };
             rows as *const (i32, i32) as usize - prim as *const Primitive<C, 4> as usize
         })
+    }
+
+    /// The Gouraud loop without the per-pixel clamp draws exactly the
+    /// clamped loop's pixels, for random triangles of every size and shape
+    /// (slivers, spans of one pixel, vertices beyond the band) and colours
+    /// with 5-, 6- and 8-bit channels.
+    #[test]
+    fn unclamped_gouraud_is_the_clamped_loop() {
+        fn check<C: Interpolate + PartialEq + core::fmt::Debug>(
+            rng: &mut crate::test_rng::Rng,
+            color: impl Fn(u64) -> C,
+        ) -> usize {
+            let mut lit = 0;
+            for i in 0..3_000 {
+                let reach = [40, 600, 6_000, 60_000][i % 4];
+                let p = |rng: &mut crate::test_rng::Rng| {
+                    SubPoint::<4>::new(rng.in_range(reach) as i32 + 500, rng.in_range(reach) as i32 + 150)
+                        .unwrap()
+                };
+                let v = [p(rng), p(rng), p(rng)];
+                let tri = Triangle::gouraud(v, [color(rng.next()), color(rng.next()), color(rng.next())]);
+                let Shading::Gouraud(cs) = tri.shading else { unreachable!() };
+                let bg = color(0);
+                let (mut a, mut b) = (Band::<C, 64, 20>::new(bg), Band::<C, 64, 20>::new(bg));
+                for (band, clamp) in [(&mut a, true), (&mut b, false)] {
+                    let mut view = band.view(2, 20, bg);
+                    let spans = TriangleSpans::new(v, view.clip(), Cull::None);
+                    let planes = tri.planes(cs.map(|c| c.to_channels()));
+                    if clamp {
+                        super::gouraud_spans::<C, _, true>(spans, &planes, &mut view);
+                    } else {
+                        super::gouraud_spans::<C, _, false>(spans, &planes, &mut view);
+                    }
+                }
+                assert!(a.rows() == b.rows(), "{v:?} {cs:?}");
+                lit += a.rows().iter().flatten().filter(|&&c| c != bg).count();
+            }
+            lit
+        }
+        let mut rng = crate::test_rng::Rng(0x6A0_2A0D);
+        let rgb565 = |r: u64| Rgb565::new(r as u8 & 31, (r >> 8) as u8 & 63, (r >> 16) as u8 & 31);
+        let rgb888 = |r: u64| Rgb888::new(r as u8, (r >> 8) as u8, (r >> 16) as u8);
+        assert!(check(&mut rng, rgb565) > 100_000);
+        assert!(check(&mut rng, rgb888) > 100_000);
     }
 
     #[test]
