@@ -41,6 +41,15 @@ pub trait Shape: Sized {
         None
     }
 
+    /// The fill's corners `(x0, y0), (x1, y1)` (px, `x0 ≤ x1`, `y0 ≤ y1`)
+    /// when the fill is exactly that axis-aligned box, snapped as its
+    /// contour's vertices are: aliased, [`Styled`] then covers whole rows of
+    /// pixels without building edges (the same pixels). `None` otherwise.
+    #[doc(hidden)]
+    fn fill_box(&self) -> Option<[(f32, f32); 2]> {
+        None
+    }
+
     /// Pairs the shape with a style (checked: see [`Styled::new`]).
     ///
     /// ```
@@ -176,6 +185,11 @@ impl Shape for Rect {
     }
     fn stroke_contours<const N: usize>(&self, e: &mut EdgeList<N>, p: &StrokeParams) -> Result<(), Error> {
         stroke::polyline(e, &self.corners(), true, p)
+    }
+    fn fill_box(&self) -> Option<[(f32, f32); 2]> {
+        // The first and third of `corners`: the same sums, the same snaps.
+        let c = self.corners();
+        Some([c[0], c[2]])
     }
 }
 
