@@ -33,6 +33,9 @@ pub struct Styled<S, C, A = Aliased> {
     // Pixel rows the fill and stroke can touch (half-open), so a band
     // that misses them costs two comparisons.
     rows: (i32, i32),
+    // Pixel columns they can touch, likewise: a narrowed clip (a damaged
+    // frame's columns, a narrow canvas) that misses them costs two more.
+    cols: (i32, i32),
     // A part has more than `SMALL_EDGES` edges (measured by `new`; false
     // when only bounded by `Shape::reach`): drawn whole, it goes straight to
     // the large list instead of filling the small one first.
@@ -78,14 +81,14 @@ impl<S: Shape, C: Copy, A: Coverage> Styled<S, C, A> {
         if w < 0.0 || m < 1.0 {
             return Err(Error::InvalidParameter);
         }
-        let mut s = Styled { shape, style, rows: (0, 0), big: false };
+        let mut s = Styled { shape, style, rows: (0, 0), cols: (0, 0), big: false };
         // A shape that bounds its edges from its geometry (polylines and
         // polygons) is checked without building them: drawn in every band
         // of a frame, a shape outside the band then costs next to nothing.
         let stroke = (s.style.stroke.is_some() && w > 0.0).then(|| s.style.params());
-        (s.rows, s.big) = match s.shape.reach(s.style.fill.is_some(), stroke.as_ref()) {
-            Some(r) => (r.rows, false),
-            None => s.measure().map(|(rows, n)| (rows, n > SMALL_EDGES))?,
+        (s.rows, s.cols, s.big) = match s.shape.reach(s.style.fill.is_some(), stroke.as_ref()) {
+            Some(r) => (r.rows, r.cols, false),
+            None => s.measure().map(|(rows, cols, n)| (rows, cols, n > SMALL_EDGES))?,
         };
         Ok(s)
     }
@@ -152,22 +155,27 @@ impl<S: Shape, C: Copy, A: Coverage> Styled<S, C, A> {
         self.measure().map(|m| m.0)
     }
 
-    /// The rows [`Self::rows`] reports and the larger part's edge count; the shape's error if it has one. One pass over
+    /// The rows [`Self::rows`] reports, the columns likewise and the larger
+    /// part's edge count; the shape's error if it has one. One pass over
     /// the contours into a measuring list, which stores no edge: a shape of
     /// any size costs its contours' construction and no 5 KB list to zero
     /// (nor a second pass when it does not fit the small one). Not inlined:
     /// a caller that builds many shapes keeps one copy.
     #[inline(never)]
-    fn measure(&self) -> Result<((i32, i32), usize), Error> {
+    fn measure(&self) -> Result<((i32, i32), (i32, i32), usize), Error> {
         let mut e = EdgeList::measuring();
         self.fill_edges(&mut e)?;
-        let (f, n) = (e.y_range(), e.len());
+        let (f, fx, n) = (e.y_range(), e.x_range(), e.len());
         self.stroke_edges(&mut e)?;
-        let (t, n) = (e.y_range(), n.max(e.len()));
-        let (y_min, y_max) = (f.0.min(t.0), f.1.max(t.1));
-        // Subpixels to whole rows, outward; empty shapes get an empty range.
-        let rows = if y_min <= y_max { (y_min >> BITS, (y_max >> BITS) + 1) } else { (0, 0) };
-        Ok((rows, n))
+        let (t, tx, n) = (e.y_range(), e.x_range(), n.max(e.len()));
+        // Subpixels to whole pixels, outward; empty shapes get an empty
+        // range. Columns: no coverage lies right of every edge (closed
+        // contours wind 0 there) nor left of them.
+        let whole = |a: (i32, i32), b: (i32, i32)| {
+            let (lo, hi) = (a.0.min(b.0), a.1.max(b.1));
+            if lo <= hi { (lo >> BITS, (hi >> BITS) + 1) } else { (0, 0) }
+        };
+        Ok((whole(f, t), whole(fx, tx), n))
     }
 
     /// The fill's edges into `e` (emptied first), unsorted.
@@ -193,7 +201,9 @@ impl<S: Shape, C: Copy, A: Coverage> Styled<S, C, A> {
 
 impl<S: Shape, C: Interpolate, A: Coverage> Styled<S, C, A> {
     /// Draws on `canvas` (a band view, or a readable framebuffer): fill
-    /// first, then stroke; partial pixels are blended exactly.
+    /// first, then stroke; partial pixels are blended exactly. An aliased
+    /// [`Rect`](crate::shape::Rect)'s fill is written as one span per row,
+    /// without building its edges (the same pixels as the scan).
     ///
     /// ```
     /// use embedded_graphics::pixelcolor::{Gray8, GrayColor};
@@ -210,6 +220,9 @@ impl<S: Shape, C: Interpolate, A: Coverage> Styled<S, C, A> {
     pub fn draw_on<T: Canvas<C>>(&self, canvas: &mut T) {
         let clip = canvas.clip();
         if clip.y1() <= self.rows.0 || clip.y0() >= self.rows.1 {
+            return;
+        }
+        if clip.x1() <= self.cols.0 || clip.x0() >= self.cols.1 {
             return;
         }
         // Only edges that cross the clip's rows can change a pixel in them
