@@ -342,11 +342,30 @@ fn bench_dashboard(c: &mut Criterion) {
     g.finish();
 }
 
+/// What every 16-row frame pays before any shape: the empty frame (each
+/// band cleared and sent), against e-g's wipe of the framebuffer.
+fn bench_floor(c: &mut Criterion) {
+    let mut fb = SliceFb::default();
+    let mut band = Box::new(Band::<Rgb565, W, 16>::new(BG));
+    let renderer = Renderer::new(H as u32, BG);
+    let mut g = c.benchmark_group("floor");
+    run(&mut g, "mr_band16", || {
+        renderer.render((), &mut band, &mut fb).unwrap();
+        black_box(&fb.px);
+    });
+    run(&mut g, "eg", || {
+        fb.wipe();
+        black_box(&fb.px);
+    });
+    g.finish();
+}
+
 fn main() {
     let mut c = config();
     for name in SHAPES {
         bench_shape(&mut c, name);
     }
+    bench_floor(&mut c);
     bench_dashboard(&mut c);
     c.final_summary();
     ratios();
@@ -396,6 +415,13 @@ fn ratios() {
         );
     }
     println!("verdict: microraster at least as fast in {faster} of {total} comparisons");
+    if let Some((e, m)) = median("floor", "eg").zip(median("floor", "mr_band16")) {
+        println!(
+            "empty frame (the floor of every band16 row): e-g's wipe {:.1} µs, 16-row bands {:.1} µs",
+            e / 1e3,
+            m / 1e3
+        );
+    }
     if let Some((e, m)) = median("dashboard", "eg").zip(median("dashboard", "mr_band16")) {
         println!(
             "dashboard frame: e-g {:.0} µs, microraster (16-row bands) {:.0} µs, e-g / microraster {:.2}",

@@ -394,10 +394,23 @@ impl Strip<'_> {
                 if lo > 0 {
                     runs.push(self.y, x, lo as u32, alpha(base, rule));
                 }
+                // Cells of one integral in a row (a stroke's inside, the
+                // cells between two pieces) are one run: the alpha and the
+                // push once per change of the integral, not per cell.
                 let mut cover = base;
+                let (mut run, mut run_x) = (None::<i64>, lo);
                 for k in lo..hi {
                     cover += core::mem::take(&mut start[k]);
-                    runs.push(self.y, x + k as i32, 1, alpha(cover + core::mem::take(&mut area[k]), rule));
+                    let v = cover + core::mem::take(&mut area[k]);
+                    if run != Some(v) {
+                        if let Some(r) = run {
+                            runs.push(self.y, x + run_x as i32, (k - run_x) as u32, alpha(r, rule));
+                        }
+                        (run, run_x) = (Some(v), k);
+                    }
+                }
+                if let Some(r) = run {
+                    runs.push(self.y, x + run_x as i32, (hi - run_x) as u32, alpha(r, rule));
                 }
                 cover += core::mem::take(&mut start[hi]);
                 if hi < len as usize {

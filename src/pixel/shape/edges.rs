@@ -67,6 +67,9 @@ pub struct EdgeList<const N: usize> {
     // while `len` is 0).
     y_min: i32,
     y_max: i32,
+    // Columns (subpixels) of the edges, kept by a measuring list only.
+    x_min: i32,
+    x_max: i32,
     // A measuring list ([`EdgeList::measuring`]) stores no edge: it counts
     // them (up to `MAX_EDGES`) and tracks their rows.
     measure: bool,
@@ -105,6 +108,8 @@ impl<const N: usize> EdgeList<N> {
             start: (0, 0),
             last: (0, 0),
             y_min: 0,
+            x_min: 0,
+            x_max: 0,
             y_max: 0,
             measure: false,
             windowed: false,
@@ -162,6 +167,12 @@ impl<const N: usize> EdgeList<N> {
     pub(crate) fn edges(&self) -> &[Edge] {
         // `len ≤ N` but in a measuring list, which stores none.
         &self.edges
+    }
+
+    /// Columns (subpixel units) spanned by the edges of a measuring list
+    /// ([`EdgeList::measuring`]): `x_min > x_max` if empty.
+    pub(crate) fn x_range(&self) -> (i32, i32) {
+        if self.len == 0 { (i32::MAX, i32::MIN) } else { (self.x_min, self.x_max) }
     }
 
     /// Rows (subpixel units) spanned by the edges: `y_min > y_max` if empty.
@@ -307,6 +318,8 @@ impl<const N: usize> EdgeList<N> {
             if self.len >= crate::shape::MAX_EDGES {
                 return Err(Error::BufferTooSmall);
             }
+            let (l, r) = (e.x0.min(e.x1), e.x0.max(e.x1));
+            (self.x_min, self.x_max) = if self.len == 0 { (l, r) } else { (self.x_min.min(l), self.x_max.max(r)) };
         } else {
             self.edges.push(e).map_err(|_| Error::BufferTooSmall)?;
         }

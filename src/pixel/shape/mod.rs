@@ -158,6 +158,9 @@ mod sealed {
 /// # Ok::<(), microraster::Error>(())
 /// ```
 pub trait Coverage: sealed::Sealed + Copy + Default + core::fmt::Debug {
+    /// Whole pixels (in or out): a box fill is then rows of whole spans.
+    #[doc(hidden)]
+    const WHOLE: bool;
     /// Emits `(span, alpha)` runs of the covered pixels of `edges` in `clip`.
     #[doc(hidden)]
     fn cover<F: FnMut(Span, u8), const N: usize>(edges: &EdgeList<N>, rule: FillRule, clip: ClipRect, out: F);
@@ -185,6 +188,7 @@ pub struct Aliased;
 pub struct AntiAliased;
 
 impl Coverage for Aliased {
+    const WHOLE: bool = true;
     fn cover<F: FnMut(Span, u8), const N: usize>(
         edges: &EdgeList<N>,
         rule: FillRule,
@@ -196,6 +200,7 @@ impl Coverage for Aliased {
 }
 
 impl Coverage for AntiAliased {
+    const WHOLE: bool = false;
     fn cover<F: FnMut(Span, u8), const N: usize>(
         edges: &EdgeList<N>,
         rule: FillRule,

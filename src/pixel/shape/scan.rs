@@ -110,7 +110,7 @@ fn scan_rows<const N: usize>(edges: &EdgeList<N>, clip: ClipRect) -> Option<(i32
 /// The first row whose centre is at or below `y` (subpixels): `⌈(y − ½)/ONE⌉`,
 /// a shift.
 #[inline]
-fn first_row(y: i32) -> i64 {
+pub(crate) fn first_row(y: i32) -> i64 {
     (i64::from(y) - HALF + ONE - 1) >> BITS
 }
 

@@ -41,6 +41,15 @@ pub trait Shape: Sized {
         None
     }
 
+    /// The fill's corners `(x0, y0), (x1, y1)` (px, `x0 ≤ x1`, `y0 ≤ y1`)
+    /// when the fill is exactly that axis-aligned box, snapped as its
+    /// contour's vertices are: aliased, [`Styled`] then covers whole rows of
+    /// pixels without building edges (the same pixels). `None` otherwise.
+    #[doc(hidden)]
+    fn fill_box(&self) -> Option<[(f32, f32); 2]> {
+        None
+    }
+
     /// Pairs the shape with a style (checked: see [`Styled::new`]).
     ///
     /// ```
@@ -68,13 +77,15 @@ fn size(v: &[f32]) -> Result<(), Error> {
 }
 
 /// What [`Shape::reach`] promises: every edge of the fill and of the
-/// stroke lies in pixel rows `rows.0 .. rows.1`, each part has at most
+/// stroke lies in pixel rows `rows.0 .. rows.1` and columns
+/// `cols.0 .. cols.1`, each part has at most
 /// `edges` edges, and no vertex is beyond the snapping range (so building
 /// them cannot fail).
 #[doc(hidden)]
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Reach {
     pub(crate) rows: (i32, i32),
+    pub(crate) cols: (i32, i32),
     pub(crate) edges: usize,
 }
 
@@ -95,8 +106,10 @@ const NEAR: f32 = (1 << 20) as f32;
 /// chords or 2 edges, and two caps of at most `max(3, 2J + 1)` edges).
 fn path_reach(pts: &[(f32, f32)], fill: bool, stroke: Option<&StrokeParams>) -> Option<Reach> {
     let (mut y0, mut y1, mut far) = (f32::INFINITY, f32::NEG_INFINITY, 0.0f32);
+    let (mut x0, mut x1) = (f32::INFINITY, f32::NEG_INFINITY);
     for &(x, y) in pts {
         (y0, y1, far) = (y0.min(y), y1.max(y), far.max(x.abs()).max(y.abs()));
+        (x0, x1) = (x0.min(x), x1.max(x));
     }
     let (mut r, mut edges) = (0.0f32, if fill { pts.len() } else { 0 });
     if let Some(p) = stroke {
@@ -110,9 +123,9 @@ fn path_reach(pts: &[(f32, f32)], fill: bool, stroke: Option<&StrokeParams>) -> 
     if pts.is_empty() || far + r >= NEAR || edges > super::MAX_EDGES {
         return None;
     }
-    // Whole rows, a pixel wider each side than the exact reach.
-    let rows = (floor(y0 - r) - 1, floor(y1 + r) + 2);
-    Some(Reach { rows, edges })
+    // Whole rows (and columns), a pixel wider each side than the exact reach.
+    let (rows, cols) = ((floor(y0 - r) - 1, floor(y1 + r) + 2), (floor(x0 - r) - 1, floor(x1 + r) + 2));
+    Some(Reach { rows, cols, edges })
 }
 
 /// A [`Reach`] of at most `edges` edges per part, all within `radius` px of
@@ -122,7 +135,8 @@ fn round_reach(c: (f32, f32), radius: f32, edges: usize) -> Option<Reach> {
     if far >= NEAR || edges > super::MAX_EDGES {
         return None;
     }
-    Some(Reach { rows: (floor(c.1 - radius) - 1, floor(c.1 + radius) + 2), edges })
+    let span = |v: f32| (floor(v - radius) - 1, floor(v + radius) + 2);
+    Some(Reach { rows: span(c.1), cols: span(c.0), edges })
 }
 
 /// `⌊v⌋` for `|v| < 2^20` (`f32::floor` is not in `core` on every toolchain).
@@ -176,6 +190,11 @@ impl Shape for Rect {
     }
     fn stroke_contours<const N: usize>(&self, e: &mut EdgeList<N>, p: &StrokeParams) -> Result<(), Error> {
         stroke::polyline(e, &self.corners(), true, p)
+    }
+    fn fill_box(&self) -> Option<[(f32, f32); 2]> {
+        // The first and third of `corners`: the same sums, the same snaps.
+        let c = self.corners();
+        Some([c[0], c[2]])
     }
 }
 
@@ -272,7 +291,8 @@ impl Shape for RoundedRect {
         if far >= NEAR || edges > super::MAX_EDGES {
             return None;
         }
-        Some(Reach { rows: (floor(y - d) - 1, floor(y + h + d) + 2), edges })
+        let (rows, cols) = ((floor(y - d) - 1, floor(y + h + d) + 2), (floor(x - d) - 1, floor(x + w + d) + 2));
+        Some(Reach { rows, cols, edges })
     }
 }
 

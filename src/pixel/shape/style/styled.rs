@@ -3,7 +3,9 @@
 
 use super::ShapeStyle;
 use crate::blend::div255_round;
-use crate::shape::edges::{BITS, EdgeList};
+use crate::edge::Span;
+use crate::shape::edges::{BITS, EdgeList, snap};
+use crate::shape::scan::first_row;
 use crate::shape::{Aliased, Canvas, Coverage, FillRule, MAX_EDGES, Shape, TargetCanvas};
 use crate::{Error, Interpolate, Param};
 use embedded_graphics_core::Drawable;
@@ -31,6 +33,13 @@ pub struct Styled<S, C, A = Aliased> {
     // Pixel rows the fill and stroke can touch (half-open), so a band
     // that misses them costs two comparisons.
     rows: (i32, i32),
+    // Pixel columns they can touch, likewise: a narrowed clip (a damaged
+    // frame's columns, a narrow canvas) that misses them costs two more.
+    cols: (i32, i32),
+    // A part has more than `SMALL_EDGES` edges (measured by `new`; false
+    // when only bounded by `Shape::reach`): drawn whole, it goes straight to
+    // the large list instead of filling the small one first.
+    big: bool,
 }
 
 /// Edge capacity of the scratch lists a part (fill or stroke) is first
@@ -75,14 +84,14 @@ impl<S: Shape, C: Copy, A: Coverage> Styled<S, C, A> {
         if m < 1.0 {
             return Err(Error::InvalidParameter(Param::MiterLimit));
         }
-        let mut s = Styled { shape, style, rows: (0, 0) };
+        let mut s = Styled { shape, style, rows: (0, 0), cols: (0, 0), big: false };
         // A shape that bounds its edges from its geometry (polylines and
         // polygons) is checked without building them: drawn in every band
         // of a frame, a shape outside the band then costs next to nothing.
         let stroke = (s.style.stroke.is_some() && w > 0.0).then(|| s.style.params());
-        s.rows = match s.shape.reach(s.style.fill.is_some(), stroke.as_ref()) {
-            Some(r) => r.rows,
-            None => s.extent()?,
+        (s.rows, s.cols, s.big) = match s.shape.reach(s.style.fill.is_some(), stroke.as_ref()) {
+            Some(r) => (r.rows, r.cols, false),
+            None => s.measure().map(|(rows, cols, n)| (rows, cols, n > SMALL_EDGES))?,
         };
         Ok(s)
     }
@@ -143,22 +152,33 @@ impl<S: Shape, C: Copy, A: Coverage> Styled<S, C, A> {
         self.rows
     }
 
-    /// The rows [`Self::rows`] reports; the shape's error if it has one. One pass over
+    /// The rows [`Self::rows`] reports; the shape's error if it has one.
+    #[cfg(test)]
+    fn extent(&self) -> Result<(i32, i32), Error> {
+        self.measure().map(|m| m.0)
+    }
+
+    /// The rows [`Self::rows`] reports, the columns likewise and the larger
+    /// part's edge count; the shape's error if it has one. One pass over
     /// the contours into a measuring list, which stores no edge: a shape of
     /// any size costs its contours' construction and no 5 KB list to zero
     /// (nor a second pass when it does not fit the small one). Not inlined:
     /// a caller that builds many shapes keeps one copy.
     #[inline(never)]
-    fn extent(&self) -> Result<(i32, i32), Error> {
+    fn measure(&self) -> Result<((i32, i32), (i32, i32), usize), Error> {
         let mut e = EdgeList::measuring();
         self.fill_edges(&mut e)?;
-        let f = e.y_range();
+        let (f, fx, n) = (e.y_range(), e.x_range(), e.len());
         self.stroke_edges(&mut e)?;
-        let t = e.y_range();
-        let (y_min, y_max) = (f.0.min(t.0), f.1.max(t.1));
-        // Subpixels to whole rows, outward; empty shapes get an empty range.
-        let rows = if y_min <= y_max { (y_min >> BITS, (y_max >> BITS) + 1) } else { (0, 0) };
-        Ok(rows)
+        let (t, tx, n) = (e.y_range(), e.x_range(), n.max(e.len()));
+        // Subpixels to whole pixels, outward; empty shapes get an empty
+        // range. Columns: no coverage lies right of every edge (closed
+        // contours wind 0 there) nor left of them.
+        let whole = |a: (i32, i32), b: (i32, i32)| {
+            let (lo, hi) = (a.0.min(b.0), a.1.max(b.1));
+            if lo <= hi { (lo >> BITS, (hi >> BITS) + 1) } else { (0, 0) }
+        };
+        Ok((whole(f, t), whole(fx, tx), n))
     }
 
     /// The fill's edges into `e` (emptied first), unsorted.
@@ -184,7 +204,9 @@ impl<S: Shape, C: Copy, A: Coverage> Styled<S, C, A> {
 
 impl<S: Shape, C: Interpolate, A: Coverage> Styled<S, C, A> {
     /// Draws on `canvas` (a band view, or a readable framebuffer): fill
-    /// first, then stroke; partial pixels are blended exactly.
+    /// first, then stroke; partial pixels are blended exactly. An aliased
+    /// [`Rect`](crate::shape::Rect)'s fill is written as one span per row,
+    /// without building its edges (the same pixels as the scan).
     ///
     /// ```
     /// use embedded_graphics::pixelcolor::{Gray8, GrayColor};
@@ -203,18 +225,63 @@ impl<S: Shape, C: Interpolate, A: Coverage> Styled<S, C, A> {
         if clip.y1() <= self.rows.0 || clip.y0() >= self.rows.1 {
             return;
         }
+        if clip.x1() <= self.cols.0 || clip.x0() >= self.cols.1 {
+            return;
+        }
         // Only edges that cross the clip's rows can change a pixel in them
         // (a row strip's coverage comes from the edges crossing it, aliased
         // and anti-aliased alike), so only those are stored, sorted and
         // scanned: a band of a large ring holds a few of its edges. Each part
         // goes in a small list unless its edges in the band do not fit.
         let window = (clip.y0().saturating_mul(1 << BITS), clip.y1().saturating_mul(1 << BITS));
+        // A part too large for the small list, all of whose rows are in the
+        // clip, would fill it and then be built again: the large one first.
+        let small = !(self.big && clip.y0() <= self.rows.0 && clip.y1() >= self.rows.1);
         for stroke in [false, true] {
-            if self.part_in::<SMALL_EDGES, T>(canvas, stroke, window) == Err(Error::BufferTooSmall) {
+            if !stroke && A::WHOLE && self.box_fill(canvas) {
+                continue;
+            }
+            if !small || self.part_in::<SMALL_EDGES, T>(canvas, stroke, window) == Err(Error::BufferTooSmall)
+            {
                 // `new` checked that the whole part fits MAX_EDGES.
                 let _ = self.part_in::<MAX_EDGES, T>(canvas, stroke, window);
             }
         }
+    }
+
+    /// The fill of a box ([`Shape::fill_box`]), aliased, as one whole span
+    /// per row: no edges built, sorted or walked. `false` (nothing drawn)
+    /// if the shape is no box.
+    ///
+    /// The same pixels as the scan: the box's snapped contour has two
+    /// vertical edges, at `x0` (up) and `x1` (down), winding ±1 between
+    /// them (inside by either rule) from row centre `y0` to `y1`, half-open.
+    /// The scan enters an edge at the rows whose centre `yc` has
+    /// `y0 ≤ yc < y1` and starts a span at the first column whose centre is
+    /// at or right of the edge's `x`: both are [`first_row`] of the
+    /// coordinate, clamped to the clip as the scan clamps. An empty box
+    /// (`x0 = x1` or `y0 = y1`) covers nothing either way.
+    #[inline(never)]
+    fn box_fill<T: Canvas<C>>(&self, canvas: &mut T) -> bool {
+        let Some([a, b]) = self.shape.fill_box() else { return false };
+        let Some(paint) = &self.style.fill else { return true };
+        // `new` built this contour (`extent`): the same snaps succeeded there.
+        let (Ok(a), Ok(b)) = (snap(a.0, a.1), snap(b.0, b.1)) else { return true };
+        let clip = canvas.clip();
+        // Within the clip, so within i32.
+        let at = |v: i32, lo: i32, hi: i32| first_row(v).clamp(i64::from(lo), i64::from(hi)) as i32;
+        let (x0, x1) = (at(a.0, clip.x0(), clip.x1()), at(b.0, clip.x0(), clip.x1()));
+        let (y0, y1) = (at(a.1, clip.y0(), clip.y1()), at(b.1, clip.y0(), clip.y1()));
+        let op = u32::from(self.style.opacity);
+        // Coverage 255 times opacity, rounded, as `part_in` (which hands
+        // alpha 0 on too: a `TargetCanvas` over a background paints it).
+        let alpha = if op == 255 { 255 } else { div255_round(255 * op) as u8 };
+        if x0 < x1 {
+            for y in y0..y1 {
+                paint.paint(canvas, Span { y, x: x0, len: (x1 - x0) as u32 }, alpha);
+            }
+        }
+        true
     }
 
     /// The fill (or the stroke) on `canvas`, with an edge list of capacity

@@ -125,3 +125,70 @@ fn windowed_parts_draw_every_band_height_alike() {
         assert!(frame(&ring, h) == whole.2, "ring, bands of {h}");
     }
 }
+
+#[test]
+fn aliased_rect_takes_whole_spans_with_the_scans_pixels() {
+    // `Rect` fills aliased through `box_fill` (no edges); the same corners
+    // as a `Polygon` go through the scan. Random boxes, many on the 1/16 px
+    // grid at pixel centres and edges (the rule's ties), empty ones, boxes
+    // past every side, both fill rules, translucent ones and a gradient:
+    // the same pixels in bands of every height and in narrowed columns.
+    use crate::shape::{FillRule, LinearGradient, Rect};
+    let mut rng = Rng(0xd1b5_4a32_d192_ed03);
+    for i in 0..800 {
+        let mut v = |scale: f32, off: f32| {
+            let u = rng.unit(scale) - off;
+            // Half of them on the grid: k/16 px, often a centre (k ≡ 8).
+            if i % 2 == 0 { (u * 2.0).round() / 2.0 + [0.0, 0.0625, 0.5][i % 3] } else { u }
+        };
+        let (x, y) = (v(90.0, 14.0), v(70.0, 11.0));
+        let (w, h) =
+            if i % 11 == 0 { (0.0, v(20.0, 0.0).abs()) } else { (v(40.0, 0.0).abs(), v(30.0, 0.0).abs()) };
+        let corners = [(x, y), (x + w, y), (x + w, y + h), (x, y + h)];
+        let rule = [FillRule::NonZero, FillRule::EvenOdd][i % 2];
+        let opacity = [255, 255, 180, 1, 0][i % 5];
+        let mut style = ShapeStyle::fill(Gray8::new(200)).with_fill_rule(rule).with_opacity(opacity);
+        if i % 7 == 3 {
+            style.fill = Some(
+                LinearGradient::new((0.0, 0.0), (64.0, 20.0), [Gray8::WHITE, Gray8::new(60)]).unwrap().into(),
+            );
+        }
+        let rect = Rect::new(x, y, w, h).unwrap().styled(style).unwrap();
+        let poly = Polygon::new(&corners).unwrap().styled(style).unwrap();
+        let what = format!("{i}: {corners:?} {rule:?} {opacity}");
+        for bh in [48, 16, 5, 1] {
+            assert!(frame(&rect, bh) == frame(&poly, bh), "{what}, bands of {bh}");
+        }
+        let (c0, c1) = ((i % 23) as i32, 64 - (i % 17) as i32);
+        let cols = |s: &dyn Fn(&mut crate::band::BandView<'_, Gray8, 64>)| {
+            let mut band = Band::<Gray8, 64, 48>::new(Gray8::BLACK);
+            s(&mut band.view(0, 48, Gray8::new(20)).with_columns(c0, c1));
+            band.rows().concat()
+        };
+        assert!(cols(&|v| rect.draw_on(v)) == cols(&|v| poly.draw_on(v)), "{what}, columns {c0}..{c1}");
+        // Direct, through `TargetCanvas` (its rectangles joined from the spans).
+        let direct = |s: &dyn Fn(&mut Fb)| {
+            let mut fb = Fb::new();
+            s(&mut fb);
+            fb.data().to_vec()
+        };
+        let draw = |d: &mut Fb, s: &dyn Fn(&mut crate::shape::TargetCanvas<'_, Fb>)| {
+            let mut canvas = crate::shape::TargetCanvas::new(d).over(Gray8::new(7));
+            s(&mut canvas);
+            canvas.finish().unwrap();
+        };
+        assert!(
+            direct(&|d| draw(d, &|c| rect.draw_on(c))) == direct(&|d| draw(d, &|c| poly.draw_on(c))),
+            "{what}, direct"
+        );
+    }
+}
+
+type Fb = embedded_graphics::framebuffer::Framebuffer<
+    Gray8,
+    embedded_graphics::pixelcolor::raw::RawU8,
+    embedded_graphics::pixelcolor::raw::LittleEndian,
+    64,
+    48,
+    { embedded_graphics::framebuffer::buffer_size::<Gray8>(64, 48) },
+>;
