@@ -232,7 +232,7 @@ fn handed() {
     use microraster::edge::{Cull, TriangleSpans};
     use microraster::{ClipRect, raster3d::ScreenTriangle};
     let p = common::pipeline3d::<f32, 4>();
-    let mut cache = Box::new(microraster::pipeline::ClusterCache::default());
+    let mut cache = Box::new(microraster::pipeline::ClusterCache::new());
     let model = knot::knot_model::<f32>();
     let (mut handed, mut candidates, mut covered, mut none, mut no_row) = (0u32, 0i64, 0u64, 0u32, 0u32);
     for y0 in (0..common::H as i32).step_by(BAND as usize) {

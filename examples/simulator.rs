@@ -57,7 +57,11 @@ fn main() -> Result<(), Box<dyn Error>> {
     // The HUD: a half-transparent panel over the meshes, and a label on it.
     let panel = RoundedRect::new(Rect::new(2.0, 2.0, 216.0, 18.0)?, 4.0)?
         .styled(ShapeStyle::fill(Rgb565::new(0, 0, 8)).with_opacity(160))?;
-    let label = Text::new("microraster: View3d, 16-row bands", Point::new(8, 14), MonoTextStyle::new(&FONT_6X10, Rgb565::WHITE));
+    let label = Text::new(
+        "microraster: View3d, 16-row bands",
+        Point::new(8, 14),
+        MonoTextStyle::new(&FONT_6X10, Rgb565::WHITE),
+    );
 
     // One call: every band, meshes then HUD, into the simulator's display
     // (any e-g `DrawTarget`).

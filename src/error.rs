@@ -164,17 +164,25 @@ impl Param {
     /// What the parameter must be, for the error's text.
     const fn requirement(self) -> &'static str {
         match self {
-            Param::LookAt => "the camera's eye must differ from its target, and up must not be parallel to the view",
+            Param::LookAt => {
+                "the camera's eye must differ from its target, and up must not be parallel to the view"
+            }
             Param::FieldOfView => "the field of view must lie between 0 and pi radians",
             Param::AspectRatio => "the aspect ratio must be positive",
             Param::NearFar => "near must be positive and far beyond it",
-            Param::ViewBox => "the orthographic view box must have left < right, bottom < top and a positive height",
+            Param::ViewBox => {
+                "the orthographic view box must have left < right, bottom < top and a positive height"
+            }
             Param::WRef => "w_ref must be positive",
             Param::Model => "the object's transform is singular (a zero scale?)",
             Param::LightDirection => "the light direction must be a unit vector",
             Param::VertexColors => "there must be one vertex colour per mesh vertex",
-            Param::FaceColors => "there must be one face colour per mesh triangle (and none on a meshlet mesh)",
-            Param::TextureSize => "texture width and height must be 1 to MAX_TEXTURE_DIM, the data width x height",
+            Param::FaceColors => {
+                "there must be one face colour per mesh triangle (and none on a meshlet mesh)"
+            }
+            Param::TextureSize => {
+                "texture width and height must be 1 to MAX_TEXTURE_DIM, the data width x height"
+            }
             Param::SpriteScale => "the sprite scale must lie in SPRITE_SCALE_RANGE",
             Param::StrokeWidth => "the stroke width must not be negative",
             Param::MiterLimit => "the miter limit must be at least 1",
@@ -288,7 +296,9 @@ impl Error {
     #[track_caller]
     pub(crate) const fn panic_const(self) -> ! {
         match self {
-            Error::NonFiniteCoordinate => panic!("invalid mesh: a position, normal, sphere or cone is NaN or infinite"),
+            Error::NonFiniteCoordinate => {
+                panic!("invalid mesh: a position, normal, sphere or cone is NaN or infinite")
+            }
             Error::CoordinateOutOfRange => panic!("invalid mesh: the bounding sphere's radius is too large"),
             Error::InvalidMesh(MeshFault::IndexOutOfRange { .. }) => {
                 panic!("invalid mesh: a triangle's index is not below the vertex count")

@@ -109,7 +109,8 @@ fn records<const W: usize, const H: usize, const N: usize, const P: usize>(
             *c = sink.covered;
         }
         if covered[0] != covered[1] {
-            return Err(fail(Error::InvalidParameter(microraster::Param::User)) + ": a scene draws a sentinel background colour");
+            return Err(fail(Error::InvalidParameter(microraster::Param::User))
+                + ": a scene draws a sentinel background colour");
         }
         // The drive sends its damaged areas; every other row whole frames.
         let pixels = match bench.work {

@@ -149,8 +149,9 @@ fn frag3d_with<const A: usize, M: Interpolation, Sh: FragmentShader<Rgb565, A>>(
 
 /// Per-pixel lighting with the standard scene's light (vertex stage unlit).
 fn phong(m: &mut dyn Meter, fb: &mut FrameBuffer) -> Result<(), Error> {
-    let lighting =
-        Scene3d::pipeline::<f32, 4>(W as u32, H as u32)?.lighting.ok_or(Error::InvalidParameter(microraster::Param::User))?;
+    let lighting = Scene3d::pipeline::<f32, 4>(W as u32, H as u32)?
+        .lighting
+        .ok_or(Error::InvalidParameter(microraster::Param::User))?;
     frag3d_with::<6, P, _>(m, fb, |_, v| phong_varyings(v), &Phong { lighting }, Output::OPAQUE, false)
 }
 

@@ -56,8 +56,10 @@ fn draw_frame<D: DrawTarget<Color = Rgb565>>(
 // recipe:end
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
-    let path = std::env::args().nth(1).map_or_else(|| PathBuf::from("docs/img/recipe_mesh_hud.png"), PathBuf::from);
-    let mut display = Framebuffer::<Rgb565, RawU16, LittleEndian, 240, 240, { buffer_size::<Rgb565>(240, 240) }>::new();
+    let path =
+        std::env::args().nth(1).map_or_else(|| PathBuf::from("docs/img/recipe_mesh_hud.png"), PathBuf::from);
+    let mut display =
+        Framebuffer::<Rgb565, RawU16, LittleEndian, 240, 240, { buffer_size::<Rgb565>(240, 240) }>::new();
     let mut view = Box::new(View240x240::new(Rgb565::new(2, 4, 8)));
     for n in 0..3 {
         draw_frame(&mut view, n, &mut display)?;

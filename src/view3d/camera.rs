@@ -4,10 +4,10 @@
 //! drawn ([`View3d::draw`](super::View3d::draw) returns the error), so a
 //! camera that moves every frame needs no `?` or `unwrap` where it is made.
 
-use crate::{Error, Param};
 use crate::light::Lighting;
 use crate::math::{Mat4, Scalar, Vec3, transform};
 use crate::pipeline::Pipeline;
+use crate::{Error, Param};
 
 /// How the camera projects: perspective (the default) or orthographic.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -48,13 +48,13 @@ use embedded_graphics_core::draw_target::DrawTarget;
 use embedded_graphics_core::pixelcolor::Rgb565;
 
 use crate::band::Band;
+use crate::band::BandView;
 use crate::depth::{Depth16, DepthBand, DepthState};
 use crate::edge::Cull;
 use crate::light::{Lighting, Viewer};
 use crate::math::Vec3;
 use crate::pipeline::{ClusterCache, FrameChunks, PerFace, PerVertex, Pipeline, Shade, Uniform};
 use crate::raster3d::{PerspectiveCorrect, Precision};
-use crate::band::BandView;
 use crate::render::{Direct3d, Pass};
 use crate::{Error, Interpolate, MAX_FRAME_DIM, RenderError, Renderer};
 

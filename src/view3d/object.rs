@@ -229,7 +229,9 @@ impl<'a, C: Copy> Object<'a, C> {
         };
         match self.colors {
             Colors::PerVertex(c) if c.len() != vertices => Err(Error::InvalidParameter(Param::VertexColors)),
-            Colors::PerFace(c) if Some(c.len()) != triangles => Err(Error::InvalidParameter(Param::FaceColors)),
+            Colors::PerFace(c) if Some(c.len()) != triangles => {
+                Err(Error::InvalidParameter(Param::FaceColors))
+            }
             _ => Ok(()),
         }
     }

@@ -476,7 +476,8 @@ fn bad_damage_input() {
         &mut band,
         &mut small,
     );
-    let (frame, target) = (microraster::Region::new(0, 0, W as u32, HT + 1), microraster::Region::new(0, 0, W as u32, HT));
+    let (frame, target) =
+        (microraster::Region::new(0, 0, W as u32, HT + 1), microraster::Region::new(0, 0, W as u32, HT));
     assert_eq!(tall, Err(RenderError::Input(Error::FrameOutsideTarget { frame, target })));
     assert!(small.writes.iter().all(|&w| w == 0));
     // A pass error: the damaged parts still go out (background after the
@@ -484,7 +485,12 @@ fn bad_damage_input() {
     let mut failing = Screen::new(SENTINEL);
     let mut damage = Damage::<2>::new();
     damage.add(rect(0, 0, 8, 40)).unwrap();
-    let out = r.render_damaged(from_fn(|_| Err(Error::InvalidParameter(microraster::Param::User))), &damage, &mut band, &mut failing);
+    let out = r.render_damaged(
+        from_fn(|_| Err(Error::InvalidParameter(microraster::Param::User))),
+        &damage,
+        &mut band,
+        &mut failing,
+    );
     assert_eq!(out, Err(RenderError::Input(Error::InvalidParameter(microraster::Param::User))));
     assert_eq!(failing.writes.iter().sum::<u32>(), 8 * 40);
     assert!((0..40).all(|y| failing.get(3, y) == BG));

@@ -320,7 +320,10 @@ fn sink_that_keeps_bands_is_a_typed_error() {
     let mut bands = [const { Band::<Rgb565, 8, 4>::new(BG) }; 2];
     let mut sink = Hoarder(Vec::new());
     let r = Renderer::new(12, BG);
-    assert_eq!(r.render_linked((), &mut bands, &mut sink), Err(RenderError::Input(Error::InvalidParameter(microraster::Param::BandSink))));
+    assert_eq!(
+        r.render_linked((), &mut bands, &mut sink),
+        Err(RenderError::Input(Error::InvalidParameter(microraster::Param::BandSink)))
+    );
 }
 
 fn threads_3d<const H: usize, const N: usize>(angle: f32) {

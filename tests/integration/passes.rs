@@ -102,7 +102,8 @@ fn threads_return_the_topmost_error_and_blank_each_threads_later_bands() {
     let mut bands = [const { Band::<BinaryColor, 4, 2>::new(ON) }; 2];
     let mut d = MockDisplay::new();
     let column = |fail_at, error| Fill { cols: 1, fail_at, error, refuse: false };
-    let passes = [column(4, Error::BufferTooSmall), column(2, Error::InvalidParameter(microraster::Param::User))];
+    let passes =
+        [column(4, Error::BufferTooSmall), column(2, Error::InvalidParameter(microraster::Param::User))];
     assert_eq!(
         r.render_threads(passes, &mut bands, &mut d),
         Err(RenderError::Input(Error::InvalidParameter(microraster::Param::User)))
@@ -132,7 +133,10 @@ fn an_overlay_error_stops_later_overlays_and_keeps_the_frame_below() {
             .draw(view)?;
         Err(Error::InvalidParameter(microraster::Param::User))
     });
-    assert_eq!(r.render(frame, &mut band, &mut d), Err(RenderError::Input(Error::InvalidParameter(microraster::Param::User))));
+    assert_eq!(
+        r.render(frame, &mut band, &mut d),
+        Err(RenderError::Input(Error::InvalidParameter(microraster::Param::User)))
+    );
     assert_eq!(calls, 1);
     for y in 0..8 {
         for x in 0..4 {

@@ -21,7 +21,9 @@ const H: u32 = 72;
 const BG: Rgb565 = Rgb565::BLACK;
 
 fn pipeline(precision: Precision) -> Pipeline<f32, 4> {
-    let eye = transform::look_at(Vec3::new(1.5, 2.0, 5.0), Vec3::new(0.0, 0.0, 0.0), Vec3::new(0.0, 1.0, 0.0)).unwrap();
+    let eye =
+        transform::look_at(Vec3::new(1.5, 2.0, 5.0), Vec3::new(0.0, 0.0, 0.0), Vec3::new(0.0, 1.0, 0.0))
+            .unwrap();
     Pipeline::perspective(eye, 0.9, 0.5, 20.0, W as u32, H)
         .unwrap()
         .with_lighting(microraster::view3d::DEFAULT_LIGHTING)
@@ -44,7 +46,8 @@ fn binned(precision: Precision) -> (Vec<Rgb565>, u32) {
         emitted += p.draw_valid_mesh(&mesh, &model, colour, &mut bins).unwrap().emitted;
     }
     let mut fb = Framebuffer::new(W as u32, H, BG);
-    let (mut band, mut depth) = (Box::new(Band::<Rgb565, W, 8>::new(BG)), Box::new(DepthBand::<Depth16, W, 8>::new()));
+    let (mut band, mut depth) =
+        (Box::new(Band::<Rgb565, W, 8>::new(BG)), Box::new(DepthBand::<Depth16, W, 8>::new()));
     let frame = Triangles3d::new(&bins, &mut depth, DepthState::LESS_WRITE, PerspectiveCorrect);
     Renderer::new(H, BG).render(frame, &mut band, &mut fb).unwrap();
     (fb.pixels, emitted)
@@ -54,7 +57,8 @@ fn binned(precision: Precision) -> (Vec<Rgb565>, u32) {
 fn per_band<const BH: usize>(precision: Precision) -> (Vec<Rgb565>, u32) {
     let p = pipeline(precision);
     let mut fb = Framebuffer::new(W as u32, H, BG);
-    let (mut band, mut depth) = (Box::new(Band::<Rgb565, W, BH>::new(BG)), Box::new(DepthBand::<Depth16, W, BH>::new()));
+    let (mut band, mut depth) =
+        (Box::new(Band::<Rgb565, W, BH>::new(BG)), Box::new(DepthBand::<Depth16, W, BH>::new()));
     let mut emitted = 0;
     let frame = Direct3d::new(&mut depth, DepthState::LESS_WRITE, PerspectiveCorrect, |b| {
         for (mesh, model, colour) in scene() {
@@ -76,7 +80,9 @@ fn per_band_plain_mesh_draws_the_binned_frame() {
             Precision::Fast => (per_band::<72>(precision).0, binned(precision).1),
         };
         assert!(want.iter().filter(|&&c| c != BG).count() > 500, "{precision:?}: the scene shows");
-        for (bh, (got, banded)) in [(1, per_band::<1>(precision)), (7, per_band::<7>(precision)), (72, per_band::<72>(precision))] {
+        for (bh, (got, banded)) in
+            [(1, per_band::<1>(precision)), (7, per_band::<7>(precision)), (72, per_band::<72>(precision))]
+        {
             let diff = want.iter().zip(&got).filter(|(a, b)| a != b).count();
             assert_eq!(diff, 0, "{precision:?}, {bh}-row bands: {diff} pixels differ");
             // Every triangle in at least one band; in one band, exactly the frame's.

@@ -222,7 +222,10 @@ fn bad_input_is_a_typed_error() {
     let texels = [0xFFFFu16; 6];
     assert_eq!(Texture::<Argb4444>::new(&texels[..5], 3, 2).err(), Some(Error::BufferTooSmall));
     assert_eq!(Texture::<A8>::new(&[0; 5], 3, 2).err(), Some(Error::BufferTooSmall));
-    assert_eq!(Texture::<A8>::new(&[0; 0], 0, 2).err(), Some(Error::InvalidParameter(microraster::Param::TextureSize)));
+    assert_eq!(
+        Texture::<A8>::new(&[0; 0], 0, 2).err(),
+        Some(Error::InvalidParameter(microraster::Param::TextureSize))
+    );
     let tex = Texture::<Argb4444>::new(&texels, 3, 2).unwrap();
     let cases: [(f32, f32, Error); 7] = [
         (f32::NAN, 0.0, Error::NonFiniteCoordinate),

@@ -48,7 +48,10 @@ pub(crate) fn clusters(m: Mesh<'static>) -> &'static ValidMeshletMesh<'static> {
 
 /// The error of a `frame` (width, height) at the origin on a `target` of that size.
 fn outside(frame: (u32, u32), target: (u32, u32)) -> Error {
-    Error::FrameOutsideTarget { frame: Region::new(0, 0, frame.0, frame.1), target: Region::new(0, 0, target.0, target.1) }
+    Error::FrameOutsideTarget {
+        frame: Region::new(0, 0, frame.0, frame.1),
+        target: Region::new(0, 0, target.0, target.1),
+    }
 }
 
 fn camera() -> Camera {
@@ -298,7 +301,11 @@ fn wrong_inputs_are_errors() {
     // A bad light fails the frame before any band, with no objects too.
     for direction in [Vec3::new(0.0, 0.0, f32::INFINITY), Vec3::new(0.0, 0.0, 2.0)] {
         view.set_lighting(Some(microraster::light::Lighting { direction, ..DEFAULT_LIGHTING }));
-        let want = if direction.z.is_finite() { Error::InvalidParameter(Param::LightDirection) } else { Error::NonFiniteCoordinate };
+        let want = if direction.z.is_finite() {
+            Error::InvalidParameter(Param::LightDirection)
+        } else {
+            Error::NonFiniteCoordinate
+        };
         for objects in [&cube[..], &[]] {
             assert_eq!(run(&mut view, &camera(), objects, W as u32, H), (Err(RenderError::Input(want)), 0));
         }

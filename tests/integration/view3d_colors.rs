@@ -183,7 +183,11 @@ fn mismatched_colours_are_errors() {
     let meshlets = Object::new(m, Rgb565::RED);
     for n in [0, nv - 1, nv + 1, nt] {
         assert_eq!(run(&[plain.with_vertex_colors(&colours[..n])]), (bad_vertex, 0), "{n} vertex colours");
-        assert_eq!(run(&[meshlets.with_vertex_colors(&colours[..n])]), (bad_vertex, 0), "{n} meshlet colours");
+        assert_eq!(
+            run(&[meshlets.with_vertex_colors(&colours[..n])]),
+            (bad_vertex, 0),
+            "{n} meshlet colours"
+        );
     }
     for n in [0, nt - 1, nt + 1, nv] {
         assert_eq!(run(&[plain.with_face_colors(&colours[..n])]), (bad_face, 0), "{n} face colours");

@@ -37,7 +37,8 @@ fn objects() -> [Object<'static, Rgb565>; 2] {
 fn hud<const N: usize>(view: &mut BandView<'_, Rgb565, N>) -> Result<(), Error> {
     let text = MonoTextStyle::new(&FONT_6X10, Rgb565::WHITE);
     view.draw_visible(&Text::new("FPS 60", Point::new(2, 9), text))?;
-    let outline = Rectangle::new(Point::new(0, 0), Size::new(W as u32, H)).into_styled(PrimitiveStyle::with_stroke(Rgb565::YELLOW, 1));
+    let outline = Rectangle::new(Point::new(0, 0), Size::new(W as u32, H))
+        .into_styled(PrimitiveStyle::with_stroke(Rgb565::YELLOW, 1));
     view.draw_visible(&outline)?;
     let (x, y, w, h) = PANEL_AT;
     Rect::new(x, y, w, h)?.styled(ShapeStyle::fill(PANEL).with_opacity(128))?.draw_on(view);
@@ -61,7 +62,7 @@ fn meshes_then_hud(with_hud: bool) -> Vec<Rgb565> {
 fn front<const BH: usize>() -> Vec<Rgb565> {
     let mut view = Box::new(View3d::<Rgb565, W, BH>::new(BG));
     let mut fb = Framebuffer::new(W as u32, H, BG);
-    view.draw_with(&camera(), &objects(), &mut fb, |band| hud(band)).unwrap();
+    view.draw_with(&camera(), &objects(), &mut fb, hud).unwrap();
     fb.pixels
 }
 
@@ -92,7 +93,10 @@ fn a_translucent_panel_blends_over_the_meshes() {
                 (under.b(), PANEL.b(), over.b()),
             ] {
                 if u.abs_diff(p) > 2 {
-                    assert!(o > u.min(p) && o < u.max(p), "({x}, {y}): {under:?} under {PANEL:?} gave {over:?}");
+                    assert!(
+                        o > u.min(p) && o < u.max(p),
+                        "({x}, {y}): {under:?} under {PANEL:?} gave {over:?}"
+                    );
                 }
             }
             blended += usize::from(under != BG);

@@ -8,12 +8,12 @@
 //! use microraster_tools::cli::{Arg, Args};
 //! let argv: Vec<String> = ["in.png", "--name=icon", "--out", "icon.rs"].map(String::from).into();
 //! let mut args = Args::new(&argv);
-//! assert!(matches!(args.next(), Ok(Some(Arg::Positional("in.png")))));
-//! assert!(matches!(args.next(), Ok(Some(Arg::Opt("--name")))));
+//! assert!(matches!(args.next_arg(), Ok(Some(Arg::Positional("in.png")))));
+//! assert!(matches!(args.next_arg(), Ok(Some(Arg::Opt("--name")))));
 //! assert_eq!(args.value("--name").ok(), Some("icon"));
-//! assert!(matches!(args.next(), Ok(Some(Arg::Opt("--out")))));
+//! assert!(matches!(args.next_arg(), Ok(Some(Arg::Opt("--out")))));
 //! assert_eq!(args.value("--out").ok(), Some("icon.rs"));
-//! assert!(matches!(args.next(), Ok(None)));
+//! assert!(matches!(args.next_arg(), Ok(None)));
 //! ```
 
 use std::io::{Read, Write};
@@ -62,7 +62,7 @@ impl<'a> Args<'a> {
     /// # Errors
     /// An `=VALUE` given to the previous option but not taken (a flag such as
     /// `--plain=yes`).
-    pub fn next(&mut self) -> Result<Option<Arg<'a>>, Failure> {
+    pub fn next_arg(&mut self) -> Result<Option<Arg<'a>>, Failure> {
         if self.inline.take().is_some() {
             return Err(Failure::Usage(format!("{} takes no value", self.last)));
         }

@@ -300,6 +300,8 @@ fn frame_other<const W: usize, const H: usize, const N: usize, const P: usize>(
         // Cortex-M4F rows only (in `frame` there).
         Work::Frame3dTier(..) => Err(Error::InvalidParameter(microraster::Param::User)),
         #[cfg(not(any(not(target_os = "none"), target_abi = "eabihf")))]
-        Work::Meshlets(..) | Work::MeshletsFar(_) | Work::KnotStage(..) => Err(Error::InvalidParameter(microraster::Param::User)),
+        Work::Meshlets(..) | Work::MeshletsFar(_) | Work::KnotStage(..) => {
+            Err(Error::InvalidParameter(microraster::Param::User))
+        }
     }
 }

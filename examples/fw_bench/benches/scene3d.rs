@@ -167,7 +167,9 @@ pub fn primitives<const W: usize, const H: usize, const N: usize, const P: usize
         Work::Frame3dTier(p, F32, _) => Ok((scene_triangles::<f32, W, H, N>(p, height, b.bins)?, 0)),
         Work::Frame3dTier(p, Fix, _) => Ok((scene_triangles::<Fx, W, H, N>(p, height, b.bins)?, 0)),
         #[cfg(not(any(not(target_os = "none"), target_abi = "eabihf")))]
-        Work::Meshlets(..) | Work::MeshletsFar(_) | Work::KnotStage(..) => Err(Error::InvalidParameter(microraster::Param::User)),
+        Work::Meshlets(..) | Work::MeshletsFar(_) | Work::KnotStage(..) => {
+            Err(Error::InvalidParameter(microraster::Param::User))
+        }
         Work::Frame2d(scene) | Work::Streamed2d(scene) => count_2d(scene),
         Work::Vertex3dCached | Work::Vertex3dChunked | Work::Frame3dChunked => count_3d(F32),
         #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]

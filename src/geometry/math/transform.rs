@@ -185,7 +185,8 @@ pub fn perspective<T: Scalar>(fov_y: T, aspect: T, near: T, far: T) -> Result<Ma
     if !(fov_y > T::ZERO && fov_y < pi) {
         return Err(degenerate(Param::FieldOfView));
     }
-    if !(aspect > T::ZERO) {
+    // Finite here, so `<=` is the negation of `>`.
+    if aspect <= T::ZERO {
         return Err(degenerate(Param::AspectRatio));
     }
     if !(near > T::ZERO && far > near) {
@@ -227,7 +228,7 @@ pub fn orthographic<T: Scalar>(
     if !(left < right && bottom < top) {
         return Err(degenerate(Param::ViewBox));
     }
-    if !(near < far) {
+    if near >= far {
         return Err(degenerate(Param::NearFar));
     }
     let (w, h, d) = (right - left, top - bottom, near - far);

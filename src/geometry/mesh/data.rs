@@ -104,7 +104,10 @@ impl MeshData<'_> {
         // compile time ([`ValidMesh::new`]); the same f32 operations at run time.
         let n = self.positions.len();
         if !self.normals.is_empty() && self.normals.len() != n {
-            return Err(Error::InvalidMesh(MeshFault::NormalCount { normals: self.normals.len(), positions: n }));
+            return Err(Error::InvalidMesh(MeshFault::NormalCount {
+                normals: self.normals.len(),
+                positions: n,
+            }));
         }
         let mut i = 0;
         while i < self.indices.len() {
@@ -120,7 +123,11 @@ impl MeshData<'_> {
                 None
             };
             if let Some(index) = bad {
-                return Err(Error::InvalidMesh(MeshFault::IndexOutOfRange { triangle: i, index, vertices: n }));
+                return Err(Error::InvalidMesh(MeshFault::IndexOutOfRange {
+                    triangle: i,
+                    index,
+                    vertices: n,
+                }));
             }
             i += 1;
         }

@@ -244,7 +244,10 @@ fn winding_check_skips_degenerate_triangles_and_validates_first() {
     let line = Mesh::new(&positions, &up, &[[0, 2, 1]], ([1.0, 0.0, 0.0], 1.0));
     assert_eq!(line.check_winding(), Ok(()));
     let bad = Mesh::new(&positions, &up, &[[0, 2, 3]], ([1.0, 0.0, 0.0], 1.0));
-    assert_eq!(bad.check_winding(), Err(Error::InvalidMesh(MeshFault::IndexOutOfRange { triangle: 0, index: 3, vertices: 3 })));
+    assert_eq!(
+        bad.check_winding(),
+        Err(Error::InvalidMesh(MeshFault::IndexOutOfRange { triangle: 0, index: 3, vertices: 3 }))
+    );
 }
 
 /// The triangle up to rotation of its corners (keeps the winding).

@@ -63,8 +63,8 @@ use sphere::sphere_about_origin;
 pub use torus::{torus, torus_triangle_count, torus_vertex_count};
 pub use winding::DEGENERATE_SIN2;
 
-pub use crate::error::MeshFault;
 use crate::error::Error;
+pub use crate::error::MeshFault;
 #[cfg(feature = "fx")]
 use crate::math::Fx;
 use crate::math::Scalar;

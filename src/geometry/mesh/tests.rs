@@ -111,7 +111,9 @@ fn validate_accepts_generated_and_rejects_broken_meshes() {
     let nv = good.vertex_count() as u16;
     let mut idx = o.indices.clone();
     idx[7][1] = nv;
-    let out = |triangle, index, vertices| Err(Error::InvalidMesh(MeshFault::IndexOutOfRange { triangle, index, vertices }));
+    let out = |triangle, index, vertices| {
+        Err(Error::InvalidMesh(MeshFault::IndexOutOfRange { triangle, index, vertices }))
+    };
     assert_eq!(Mesh { indices: &idx, ..good }.validate(), out(7, nv, usize::from(nv)));
     idx[7][1] = nv - 1;
     assert_eq!(Mesh { indices: &idx, ..good }.validate(), Ok(()));

@@ -78,7 +78,10 @@ mod tests {
         let mut bins = heapless::Vec::<u8, 4>::new();
         let mut w = BinWriter::new(&mut bins);
         w.push(1);
-        assert_eq!(w.finish::<()>(Err(Error::InvalidMesh(crate::MeshFault::Unchecked))), Err(Error::InvalidMesh(crate::MeshFault::Unchecked)));
+        assert_eq!(
+            w.finish::<()>(Err(Error::InvalidMesh(crate::MeshFault::Unchecked))),
+            Err(Error::InvalidMesh(crate::MeshFault::Unchecked))
+        );
         assert!(bins.is_empty());
         let mut w = BinWriter::new(&mut bins);
         (0..4).for_each(|i| w.push(i));

@@ -154,7 +154,9 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         let (planes, max) = (*planes, *max);
         let coder = VertexClass::<T>::new(planes);
         let flat_shade = self.shade == Shade::Flat;
-        let position = |i: usize| src.position(i).map(Vec3::from_data).ok_or(Error::InvalidMesh(crate::MeshFault::Unchecked));
+        let position = |i: usize| {
+            src.position(i).map(Vec3::from_data).ok_or(Error::InvalidMesh(crate::MeshFault::Unchecked))
+        };
         let presnap = PreSnap::new::<T>(self.size, self.origin, S);
         let cull_sign = match self.cull {
             Cull::Clockwise if presnap.active() => 1,

@@ -93,7 +93,10 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         let (mut all_sides, mut any_side) = (SIDES, 0);
         let slots = cache.get_mut(..count).ok_or(Error::InvalidMesh(crate::MeshFault::Unchecked))?;
         for (i, e) in slots.iter_mut().enumerate() {
-            let p = src.position(i).map(Vec3::from_data).ok_or(Error::InvalidMesh(crate::MeshFault::Unchecked))?;
+            let p = src
+                .position(i)
+                .map(Vec3::from_data)
+                .ok_or(Error::InvalidMesh(crate::MeshFault::Unchecked))?;
             let yw = ctx.yw(p);
             let side = band.side(yw);
             e.state = side;
@@ -126,7 +129,10 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
                 for &j in &idx {
                     let e = cache.get_mut(j).ok_or(Error::InvalidMesh(crate::MeshFault::Unchecked))?;
                     if e.state & Cached::<T, S>::SNAP == 0 {
-                        let p = src.position(j).map(Vec3::from_data).ok_or(Error::InvalidMesh(crate::MeshFault::Unchecked))?;
+                        let p = src
+                            .position(j)
+                            .map(Vec3::from_data)
+                            .ok_or(Error::InvalidMesh(crate::MeshFault::Unchecked))?;
                         self.snap_slot::<R>(ctx, &presnap, e, p, (e.clip[1], e.clip[3]));
                         states[j % MAX_MESHLET_VERTICES] = e.state;
                     }

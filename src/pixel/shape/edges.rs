@@ -319,7 +319,8 @@ impl<const N: usize> EdgeList<N> {
                 return Err(Error::BufferTooSmall);
             }
             let (l, r) = (e.x0.min(e.x1), e.x0.max(e.x1));
-            (self.x_min, self.x_max) = if self.len == 0 { (l, r) } else { (self.x_min.min(l), self.x_max.max(r)) };
+            (self.x_min, self.x_max) =
+                if self.len == 0 { (l, r) } else { (self.x_min.min(l), self.x_max.max(r)) };
         } else {
             self.edges.push(e).map_err(|_| Error::BufferTooSmall)?;
         }

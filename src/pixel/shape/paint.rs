@@ -6,10 +6,10 @@
 //! the exact `c0 + t·(c1 − c0)`, plus 1/510 of the range from the 8-bit `t`.
 
 use super::canvas::Canvas;
-use crate::{Error, Param};
 use crate::blend::{Blend, Mix};
 use crate::color::Interpolate;
 use crate::edge::Span;
+use crate::{Error, Param};
 
 /// What a shape is filled or stroked with.
 ///

@@ -291,7 +291,8 @@ impl Shape for RoundedRect {
         if far >= NEAR || edges > super::MAX_EDGES {
             return None;
         }
-        let (rows, cols) = ((floor(y - d) - 1, floor(y + h + d) + 2), (floor(x - d) - 1, floor(x + w + d) + 2));
+        let (rows, cols) =
+            ((floor(y - d) - 1, floor(y + h + d) + 2), (floor(x - d) - 1, floor(x + w + d) + 2));
         Some(Reach { rows, cols, edges })
     }
 }

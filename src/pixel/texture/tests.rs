@@ -133,11 +133,26 @@ fn constructor_checks_sizes_and_length() {
     assert!(Texture::<Rgb565>::new(&data, 4, 3).is_ok());
     assert!(Texture::<Rgb565>::new(&data, 12, 1).is_ok());
     assert_eq!(Texture::<Rgb565>::new(&data, 5, 3).err(), Some(Error::BufferTooSmall));
-    assert_eq!(Texture::<Rgb565>::new(&data, 3, 3).err(), Some(Error::InvalidParameter(crate::Param::TextureSize)));
-    assert_eq!(Texture::<Rgb565>::new(&data, 0, 3).err(), Some(Error::InvalidParameter(crate::Param::TextureSize)));
-    assert_eq!(Texture::<Rgb565>::new(&data, 4, 0).err(), Some(Error::InvalidParameter(crate::Param::TextureSize)));
-    assert_eq!(Texture::<Rgb565>::new(&[], 4097, 1).err(), Some(Error::InvalidParameter(crate::Param::TextureSize)));
-    assert_eq!(Texture::<Rgb565>::new(&[], u32::MAX, u32::MAX).err(), Some(Error::InvalidParameter(crate::Param::TextureSize)));
+    assert_eq!(
+        Texture::<Rgb565>::new(&data, 3, 3).err(),
+        Some(Error::InvalidParameter(crate::Param::TextureSize))
+    );
+    assert_eq!(
+        Texture::<Rgb565>::new(&data, 0, 3).err(),
+        Some(Error::InvalidParameter(crate::Param::TextureSize))
+    );
+    assert_eq!(
+        Texture::<Rgb565>::new(&data, 4, 0).err(),
+        Some(Error::InvalidParameter(crate::Param::TextureSize))
+    );
+    assert_eq!(
+        Texture::<Rgb565>::new(&[], 4097, 1).err(),
+        Some(Error::InvalidParameter(crate::Param::TextureSize))
+    );
+    assert_eq!(
+        Texture::<Rgb565>::new(&[], u32::MAX, u32::MAX).err(),
+        Some(Error::InvalidParameter(crate::Param::TextureSize))
+    );
     static ROWS: [[u8; 4096]; 1] = [[9; 4096]];
     static WIDE: Texture<'static, Gray8> = Texture::from_rows(&ROWS);
     assert_eq!((WIDE.width(), WIDE.height(), WIDE.data().len()), (4096, 1, 4096));

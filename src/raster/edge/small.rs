@@ -199,7 +199,7 @@ impl Small {
     }
 
     /// The edges' biases: edge `i` lies opposite vertex `i`, and at a point
-    /// its biased function (as [`Small::for_each_centre`] gives it) plus its
+    /// its biased function (as the per-centre walk gives it) plus its
     /// bias is [`Small::det`] times the barycentric coordinate of vertex `i`.
     #[inline(always)]
     pub(crate) fn biases(&self) -> [i32; 3] {
@@ -233,7 +233,7 @@ impl Small {
     /// `f(x, y, e, len)` for each row's run of covered centres not yet
     /// walked (the `len ≥ 1` centres from column `x` of row `y`), with the
     /// biased edge functions `e` at its first centre: the centres of
-    /// [`Small::for_each_centre`], scanned the same way (no step back to a
+    /// the per-centre walk (`for_each_centre`, test only), scanned the same way (no step back to a
     /// run's start), handed over once per run so that a caller can set up
     /// per row and step per pixel.
     #[inline(always)]

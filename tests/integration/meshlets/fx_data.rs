@@ -149,7 +149,10 @@ fn fx_data_is_checked_as_f32_data() {
     assert_eq!(verdicts(MeshletMesh { mesh, ..ok }), Err(short), "one normal short");
     let mesh = Mesh { bounding_sphere: (data.sphere.0, data.sphere.1 * 0.9), ..ok.mesh };
     let small = verdicts(MeshletMesh { mesh, ..ok });
-    assert!(matches!(small, Err(Error::InvalidMesh(microraster::MeshFault::OutsideSphere { .. }))), "mesh sphere: {small:?}");
+    assert!(
+        matches!(small, Err(Error::InvalidMesh(microraster::MeshFault::OutsideSphere { .. }))),
+        "mesh sphere: {small:?}"
+    );
     let mesh = Mesh { bounding_sphere: ([f32::NAN, 0.0, 0.0], 1.0), ..ok.mesh };
     assert_eq!(verdicts(MeshletMesh { mesh, ..ok }), Err(Error::NonFiniteCoordinate));
 }

@@ -104,7 +104,9 @@ fn nan_and_inf_everywhere() {
                     } else if bad_size {
                         prop_assert!(matches!(
                             e,
-                            Error::InvalidFrameSize | Error::InvalidParameter(_) | Error::CoordinateOutOfRange
+                            Error::InvalidFrameSize
+                                | Error::InvalidParameter(_)
+                                | Error::CoordinateOutOfRange
                         ));
                     }
                     tally.add("constructor error");
@@ -123,8 +125,9 @@ fn nan_and_inf_everywhere() {
             match p.draw_mesh(&mesh, &model, Gray8::new(200), &mut bins) {
                 // A non-finite or unrepresentable mesh is rejected by validate.
                 Ok(_)
-                | Err(Error::InvalidParameter(_) | Error::NonFiniteCoordinate | Error::CoordinateOutOfRange) => {
-                }
+                | Err(
+                    Error::InvalidParameter(_) | Error::NonFiniteCoordinate | Error::CoordinateOutOfRange,
+                ) => {}
                 Err(e) => prop_assert!(false, "undocumented error {:?}", e),
             }
             let nan_matrix = sc

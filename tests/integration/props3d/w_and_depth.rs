@@ -97,8 +97,14 @@ fn prop_depth_near_far_ratios() {
             let n = 10f64.powf(ln_near) as f32;
             let f = (f64::from(n) * ln_ratio.exp()) as f32;
             prop_assume!(f > n);
-            prop_assert_eq!(transform::perspective(1.0f32, 1.0, n, n).err(), Some(Error::InvalidParameter(microraster::Param::NearFar)));
-            prop_assert_eq!(transform::perspective(1.0f32, 1.0, -n, f).err(), Some(Error::InvalidParameter(microraster::Param::NearFar)));
+            prop_assert_eq!(
+                transform::perspective(1.0f32, 1.0, n, n).err(),
+                Some(Error::InvalidParameter(microraster::Param::NearFar))
+            );
+            prop_assert_eq!(
+                transform::perspective(1.0f32, 1.0, -n, f).err(),
+                Some(Error::InvalidParameter(microraster::Param::NearFar))
+            );
             let mut p =
                 Pipeline::<f32, 4>::perspective(Mat4::IDENTITY, 1.0, n, f, W as u32, H as u32).unwrap();
             p.cull = Cull::None;

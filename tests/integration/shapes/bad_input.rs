@@ -16,13 +16,19 @@ fn bad_input_is_a_typed_error() {
     assert_eq!(Ellipse::new((0.0, 0.0), 1.0, f32::INFINITY), Err(Error::NonFiniteCoordinate));
     assert_eq!(Rect::new(0.0, 0.0, 1.0, -2.0), Err(Error::InvalidParameter(microraster::Param::ShapeSize)));
     assert_eq!(Arc::new((0.0, 0.0), 1.0, nan, 1.0), Err(Error::NonFiniteCoordinate));
-    assert_eq!(Sector::new((0.0, 0.0), -0.5, 0.0, 1.0), Err(Error::InvalidParameter(microraster::Param::ShapeSize)));
+    assert_eq!(
+        Sector::new((0.0, 0.0), -0.5, 0.0, 1.0),
+        Err(Error::InvalidParameter(microraster::Param::ShapeSize))
+    );
     assert_eq!(Polygon::new(&[(0.0, 0.0), (nan, 1.0)]), Err(Error::NonFiniteCoordinate));
     assert_eq!(Polyline::new(&[(0.0, 0.0), (1.0, nan)]), Err(Error::NonFiniteCoordinate));
     let rect = Rect::new(0.0, 0.0, 4.0, 4.0).unwrap();
     assert_eq!(RoundedRect::new(rect, nan), Err(Error::NonFiniteCoordinate));
     let line = Polyline::new(&[(0.0, 0.0), (9.0, 3.0)]).unwrap();
-    assert_eq!(line.styled(ShapeStyle::stroke(Gray8::WHITE, -1.0)).err(), Some(Error::InvalidParameter(microraster::Param::StrokeWidth)));
+    assert_eq!(
+        line.styled(ShapeStyle::stroke(Gray8::WHITE, -1.0)).err(),
+        Some(Error::InvalidParameter(microraster::Param::StrokeWidth))
+    );
     assert_eq!(line.styled(ShapeStyle::stroke(Gray8::WHITE, nan)).err(), Some(Error::NonFiniteCoordinate));
     let mut bad_miter = ShapeStyle::stroke(Gray8::WHITE, 1.0);
     bad_miter.miter_limit = 0.5;
@@ -39,11 +45,20 @@ fn bad_input_is_a_typed_error() {
     assert_eq!(LinearGradient::new((0.0, 0.0), (1.0, f32::INFINITY), c), Err(Error::NonFiniteCoordinate));
     // Finite ends whose squared distance overflows.
     assert_eq!(LinearGradient::new((-3e38, 0.0), (3e38, 0.0), c), Err(Error::NonFiniteCoordinate));
-    assert_eq!(LinearGradient::new((2.0, 3.0), (2.0, 3.0), c), Err(Error::InvalidParameter(microraster::Param::Gradient)));
+    assert_eq!(
+        LinearGradient::new((2.0, 3.0), (2.0, 3.0), c),
+        Err(Error::InvalidParameter(microraster::Param::Gradient))
+    );
     assert!(LinearGradient::new((2.0, 3.0), (2.0, 3.5), c).is_ok());
     assert_eq!(RadialGradient::new((0.0, nan), 1.0, c), Err(Error::NonFiniteCoordinate));
     assert_eq!(RadialGradient::new((0.0, 0.0), f32::INFINITY, c), Err(Error::NonFiniteCoordinate));
-    assert_eq!(RadialGradient::new((0.0, 0.0), 0.0, c), Err(Error::InvalidParameter(microraster::Param::Gradient)));
-    assert_eq!(RadialGradient::new((0.0, 0.0), -2.0, c), Err(Error::InvalidParameter(microraster::Param::Gradient)));
+    assert_eq!(
+        RadialGradient::new((0.0, 0.0), 0.0, c),
+        Err(Error::InvalidParameter(microraster::Param::Gradient))
+    );
+    assert_eq!(
+        RadialGradient::new((0.0, 0.0), -2.0, c),
+        Err(Error::InvalidParameter(microraster::Param::Gradient))
+    );
     assert!(RadialGradient::new((0.0, 0.0), 1e-3, c).is_ok());
 }

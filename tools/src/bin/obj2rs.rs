@@ -82,7 +82,7 @@ fn parse_args(args: &[String]) -> Result<Option<Parsed<'_>>, Failure> {
     let (mut name, mut out, mut mesh_type) = (None, None, None);
     let mut options = Options::default();
     let mut it = Args::new(args);
-    while let Some(a) = it.next()? {
+    while let Some(a) = it.next_arg()? {
         match a {
             Arg::Opt("-h" | "--help") => return Ok(None),
             Arg::Opt(o @ "--name") => cli::once(&mut name, o, it.value(o)?)?,

@@ -68,7 +68,8 @@ fn conventions() {
 #[test]
 fn degenerate_inputs_are_errors_not_panics() {
     use crate::Param;
-    let (fov, aspect, near_far) = (degenerate(Param::FieldOfView), degenerate(Param::AspectRatio), degenerate(Param::NearFar));
+    let (fov, aspect, near_far) =
+        (degenerate(Param::FieldOfView), degenerate(Param::AspectRatio), degenerate(Param::NearFar));
     const NF: Error = Error::NonFiniteCoordinate;
     let nan = f32::NAN;
     for (args, want) in [

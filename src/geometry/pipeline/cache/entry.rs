@@ -102,7 +102,8 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         // generic over it) cost the f32 knot 1.5 % on the Cortex-M4F, code
         // generation unchanged in its operations.
         let n = if flat { face_n } else { src.normal(j).map(|n| n.map(Src::Coord::to_f32)) };
-        let p = src.position(j).map(Vec3::from_data).ok_or(Error::InvalidMesh(crate::MeshFault::Unchecked))?;
+        let p =
+            src.position(j).map(Vec3::from_data).ok_or(Error::InvalidMesh(crate::MeshFault::Unchecked))?;
         Ok(if M::UNIFORM {
             ctx.lit::<R>(p, n, |ctx: &VertexCtx<T>| ctx.base)
         } else {

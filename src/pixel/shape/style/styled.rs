@@ -165,7 +165,7 @@ impl<S: Shape, C: Copy, A: Coverage> Styled<S, C, A> {
     /// (nor a second pass when it does not fit the small one). Not inlined:
     /// a caller that builds many shapes keeps one copy.
     #[inline(never)]
-    fn measure(&self) -> Result<((i32, i32), (i32, i32), usize), Error> {
+    fn measure(&self) -> Result<Measured, Error> {
         let mut e = EdgeList::measuring();
         self.fill_edges(&mut e)?;
         let (f, fx, n) = (e.y_range(), e.x_range(), e.len());
@@ -201,6 +201,9 @@ impl<S: Shape, C: Copy, A: Coverage> Styled<S, C, A> {
         Ok(())
     }
 }
+
+/// Pixel rows and columns (half-open) and the larger part's edge count.
+type Measured = ((i32, i32), (i32, i32), usize);
 
 impl<S: Shape, C: Interpolate, A: Coverage> Styled<S, C, A> {
     /// Draws on `canvas` (a band view, or a readable framebuffer): fill

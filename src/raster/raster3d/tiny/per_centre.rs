@@ -122,7 +122,7 @@ where
             inv_w: base_w.saturating_add((rng.next() >> 40) as u32),
             color: color(rng.next()).to_channels(),
         };
-        let tri = ScreenTriangle { v: [v(), v(), v()], flat: rng.next() % 5 == 0 };
+        let tri = ScreenTriangle { v: [v(), v(), v()], flat: rng.next().is_multiple_of(5) };
         let Some(Some(small)) =
             setup_state(tri.v.map(|v| v.pos), crate::ClipRect::new(0, 2, W as i32, 11), Cull::None)
         else {
@@ -131,8 +131,8 @@ where
         if !eligible::<F>(&small) {
             continue;
         }
-        let (ra, rb): (&mut [[F::Storage; W]], &mut [[F::Storage; W]]) =
-            if F::ENABLED { (&mut da[2..11], &mut db[2..11]) } else { (&mut [], &mut []) };
+        let rows = if F::ENABLED { 2..11 } else { 0..0 };
+        let (ra, rb) = (&mut da[rows.clone()], &mut db[rows]);
         super::draw::<C, F, M, P, 4, W>(&tri, &small, &mut a.view_uncleared(2, 9), ra, state);
         draw_per_centre::<C, F, M, P, _, 4, W>(&tri, &small, &mut b.view_uncleared(2, 9), rb, state);
         assert_eq!(a.rows(), b.rows(), "{tri:?}");
