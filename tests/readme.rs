@@ -5,8 +5,8 @@
 //!   the code between `// recipe:begin` and `// recipe:end` of that example
 //!   (which `cargo test` compiles), and every example in `examples/recipes/`
 //!   is quoted;
-//! * the dashboard recipe still draws the picture the README shows
-//!   (`docs/img/dashboard.png`, pixel for pixel);
+//! * each recipe still draws the picture the README shows
+//!   (`docs/img/dashboard.png`, `docs/img/mesh_hud.png`, pixel for pixel);
 //! * the README has at most 400 lines, no doctest scaffolding (`# ` lines
 //!   in a `rust` block) and no link to a file that does not exist;
 //! * the front page (`src/lib.rs`'s `//!` text, what rustdoc and a package
@@ -19,6 +19,10 @@ use std::path::Path;
 #[allow(dead_code)] // `main` is the example's
 #[path = "../examples/recipes/dashboard.rs"]
 mod dashboard;
+
+#[allow(dead_code)]
+#[path = "../examples/recipes/mesh_hud.rs"]
+mod mesh_hud;
 
 const ROOT: &str = env!("CARGO_MANIFEST_DIR");
 
@@ -77,18 +81,39 @@ fn readme_recipes_are_the_examples_code() {
     }
 }
 
-#[test]
-fn dashboard_recipe_draws_the_committed_picture() {
-    let file = std::fs::File::open(Path::new(ROOT).join("docs/img/dashboard.png")).unwrap();
+/// How many pixels of `drawn` (8-bit RGB) differ from the committed PNG `path`
+/// of `size`.
+fn differ_from_committed(path: &str, size: (u32, u32), drawn: &[u8]) -> usize {
+    let file = std::fs::File::open(Path::new(ROOT).join(path)).unwrap_or_else(|e| panic!("{path}: {e}"));
     let mut reader = png::Decoder::new(std::io::BufReader::new(file)).read_info().unwrap();
     let mut committed = vec![0; reader.output_buffer_size().unwrap()];
     let info = reader.next_frame(&mut committed).unwrap();
-    assert_eq!((info.width, info.height, info.color_type), (320, 240, png::ColorType::Rgb));
-    let drawn = dashboard::picture();
-    let differ = drawn.chunks(3).zip(committed.chunks(3)).filter(|(a, b)| a != b).count();
+    assert_eq!((info.width, info.height, info.color_type), (size.0, size.1, png::ColorType::Rgb), "{path}");
+    assert_eq!(drawn.len(), committed.len(), "{path}");
+    drawn.chunks(3).zip(committed.chunks(3)).filter(|(a, b)| a != b).count()
+}
+
+#[test]
+fn dashboard_recipe_draws_the_committed_picture() {
+    let differ = differ_from_committed("docs/img/dashboard.png", (320, 240), &dashboard::picture());
     assert_eq!(
         differ, 0,
         "{differ} pixels differ from docs/img/dashboard.png: `cargo run --example dashboard` rewrites it"
+    );
+}
+
+#[test]
+fn mesh_hud_recipe_draws_the_committed_picture() {
+    let drawn = mesh_hud::picture();
+    // Not a blank frame: the knot and the HUD's text light many colours.
+    let mut colours: Vec<&[u8]> = drawn.chunks(3).collect();
+    colours.sort();
+    colours.dedup();
+    assert!(colours.len() > 50, "the recipe drew {} colours", colours.len());
+    let differ = differ_from_committed("docs/img/mesh_hud.png", (240, 240), &drawn);
+    assert_eq!(
+        differ, 0,
+        "{differ} pixels differ from docs/img/mesh_hud.png: `cargo run --example mesh_hud` rewrites it"
     );
 }
 

@@ -1,21 +1,22 @@
-//! The README's first recipe: a lit, spinning mesh (the 5,120-triangle
-//! knot as `obj2rs` converts it by default) with a HUD, a translucent panel
-//! and text drawn into each band after the mesh, so every pixel is sent
-//! once. The code between `recipe:begin` and `recipe:end` is the README's
-//! block, word for word; the rest runs it on the host and writes the third
-//! frame to `docs/img/recipe_mesh_hud.png` (or the path given).
+//! Recipe: a lit, spinning mesh (the 5,120-triangle knot as `obj2rs`
+//! converts it by default) with a HUD, a translucent panel and text drawn
+//! into each band after the mesh, so every pixel is sent once; the README's
+//! first recipe.
 //!
 //! ```text
-//! cargo run --release --example mesh_hud [-- out.png]
+//! cargo run --example mesh_hud [-- out.png]   # default docs/img/mesh_hud.png
 //! ```
-
-use std::path::PathBuf;
+//!
+//! The README shows the code between `recipe:begin` and `recipe:end`
+//! verbatim (`tests/readme.rs` checks it, and that [`picture`] still draws
+//! the committed `docs/img/mesh_hud.png`); what lies outside only turns the
+//! third frame into a PNG on the host.
 
 use embedded_graphics::framebuffer::{Framebuffer, buffer_size};
 use embedded_graphics::image::GetPixel;
 use embedded_graphics::pixelcolor::raw::{LittleEndian, RawU16};
 
-/// `KNOT5K`, as `obj2rs knot5k.obj KNOT5K > knot5k.rs` writes it.
+/// `KNOT5K`, as `obj2rs knot5k.obj --name KNOT5K --out knot5k.rs` writes it.
 #[path = "../common/knot5k_obj2rs.rs"]
 #[allow(dead_code)]
 mod knot5k;
@@ -55,33 +56,34 @@ fn draw_frame<D: DrawTarget<Color = Rgb565>>(
 // for n in 0.. { draw_frame(&mut view, n, &mut display)?; }
 // recipe:end
 
-fn main() -> Result<(), Box<dyn std::error::Error>> {
-    let path =
-        std::env::args().nth(1).map_or_else(|| PathBuf::from("docs/img/recipe_mesh_hud.png"), PathBuf::from);
-    let mut display =
-        Framebuffer::<Rgb565, RawU16, LittleEndian, 240, 240, { buffer_size::<Rgb565>(240, 240) }>::new();
+type Fb = Framebuffer<Rgb565, RawU16, LittleEndian, 240, 240, { buffer_size::<Rgb565>(240, 240) }>;
+
+/// The third frame (the knot turned by 0.6 rad) as 8-bit RGB, row by row
+/// (what the PNG holds).
+pub fn picture() -> Vec<u8> {
+    let mut fb = Box::new(Fb::new());
     let mut view = Box::new(View240x240::new(Rgb565::new(2, 4, 8)));
     for n in 0..3 {
-        draw_frame(&mut view, n, &mut display)?;
+        draw_frame(&mut view, n, &mut *fb).expect("a framebuffer never fails");
     }
-    // The framebuffer as an 8-bit RGB PNG.
-    let mut data = Vec::with_capacity(240 * 240 * 3);
+    let mut rgb = Vec::with_capacity(240 * 240 * 3);
     for y in 0..240 {
         for x in 0..240 {
-            let c = display.pixel(Point::new(x, y)).unwrap_or(Rgb565::BLACK);
-            let (r, g, b) = (u32::from(c.r()), u32::from(c.g()), u32::from(c.b()));
-            data.extend([r * 255 / 31, g * 255 / 63, b * 255 / 31].map(|v| v as u8));
+            let c = fb.pixel(Point::new(x, y)).unwrap_or(Rgb565::BLACK);
+            rgb.extend([c.r() << 3 | c.r() >> 2, c.g() << 2 | c.g() >> 4, c.b() << 3 | c.b() >> 2]);
         }
     }
-    if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
-        std::fs::create_dir_all(dir)?;
-    }
-    let mut enc = png::Encoder::new(std::io::BufWriter::new(std::fs::File::create(&path)?), 240, 240);
-    enc.set_color(png::ColorType::Rgb);
-    enc.set_depth(png::BitDepth::Eight);
-    let mut writer = enc.write_header()?;
-    writer.write_image_data(&data)?;
-    writer.finish()?;
-    println!("wrote {}", path.display());
+    rgb
+}
+
+#[allow(dead_code)] // the test includes this file for `picture` alone
+fn main() -> Result<(), Box<dyn std::error::Error>> {
+    let path = std::env::args().nth(1).unwrap_or_else(|| "docs/img/mesh_hud.png".into());
+    let file = std::io::BufWriter::new(std::fs::File::create(&path)?);
+    let mut png = png::Encoder::new(file, 240, 240);
+    png.set_color(png::ColorType::Rgb);
+    png.set_depth(png::BitDepth::Eight);
+    png.write_header()?.write_image_data(&picture())?;
+    println!("wrote {path}");
     Ok(())
 }

@@ -313,7 +313,7 @@ impl<C: Interpolate, const W: usize, const H: usize> View3d<C, W, H> {
     ///     panel.draw_on(hud); // half-transparent: blends over the cube
     ///     Ok(())
     /// })?;
-    /// assert_eq!(display.get_pixel(Point::new(3, 7)), Some(Rgb565::WHITE)); // a glyph pixel of "H"
+    /// assert_eq!(display.get_pixel(Point::new(4, 5)), Some(Rgb565::WHITE)); // the bar of "H"
     /// # Ok::<(), microraster::RenderError<core::convert::Infallible>>(())
     /// ```
     ///
