@@ -110,12 +110,9 @@ pub static CUBE_FX_MESHLET_TRIANGLES: [[u8; 3]; 12] = [
 /// (`Object::new(&CUBE_FX, colour)`) or `Pipeline::draw_meshlets`.
 #[allow(long_running_const_eval)]
 #[rustfmt::skip]
-pub static CUBE_FX: microraster::mesh::ValidMeshletMesh<'static, microraster::math::Fx> = match microraster::mesh::ValidMeshletMesh::new_fx(microraster::mesh::MeshletMesh {
+pub static CUBE_FX: microraster::mesh::ValidMeshletMesh<'static, microraster::math::Fx> = microraster::mesh::ValidMeshletMesh::new_fx_const(microraster::mesh::MeshletMesh {
     mesh: CUBE_FX_MESH,
     meshlets: &CUBE_FX_MESHLETS,
     vertices: &CUBE_FX_MESHLET_VERTICES,
     triangles: &CUBE_FX_MESHLET_TRIANGLES,
-}) {
-    Ok(m) => m,
-    Err(_) => panic!("CUBE_FX: the mesh fails validation (triangles wound against their normals? see obj2rs's warning)"),
-};
+});

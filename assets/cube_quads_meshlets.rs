@@ -110,12 +110,9 @@ pub static CUBE_M_MESHLET_TRIANGLES: [[u8; 3]; 12] = [
 /// (`Object::new(&CUBE_M, colour)`) or `Pipeline::draw_meshlets`.
 #[allow(long_running_const_eval)]
 #[rustfmt::skip]
-pub static CUBE_M: microraster::mesh::ValidMeshletMesh<'static> = match microraster::mesh::ValidMeshletMesh::new(microraster::mesh::MeshletMesh {
+pub static CUBE_M: microraster::mesh::ValidMeshletMesh<'static> = microraster::mesh::ValidMeshletMesh::new_const(microraster::mesh::MeshletMesh {
     mesh: CUBE_M_MESH,
     meshlets: &CUBE_M_MESHLETS,
     vertices: &CUBE_M_MESHLET_VERTICES,
     triangles: &CUBE_M_MESHLET_TRIANGLES,
-}) {
-    Ok(m) => m,
-    Err(_) => panic!("CUBE_M: the mesh fails validation (triangles wound against their normals? see obj2rs's warning)"),
-};
+});

@@ -60,12 +60,9 @@ pub static TETRA_MESHLET_TRIANGLES: [[u8; 3]; 4] = [
 /// (`Object::new(&TETRA, colour)`) or `Pipeline::draw_meshlets`.
 #[allow(long_running_const_eval)]
 #[rustfmt::skip]
-pub static TETRA: microraster::mesh::ValidMeshletMesh<'static> = match microraster::mesh::ValidMeshletMesh::new(microraster::mesh::MeshletMesh {
+pub static TETRA: microraster::mesh::ValidMeshletMesh<'static> = microraster::mesh::ValidMeshletMesh::new_const(microraster::mesh::MeshletMesh {
     mesh: TETRA_MESH,
     meshlets: &TETRA_MESHLETS,
     vertices: &TETRA_MESHLET_VERTICES,
     triangles: &TETRA_MESHLET_TRIANGLES,
-}) {
-    Ok(m) => m,
-    Err(_) => panic!("TETRA: the mesh fails validation (triangles wound against their normals? see obj2rs's warning)"),
-};
+});

@@ -44632,12 +44632,9 @@ pub static KNOT20K_MESHLET_TRIANGLES: [[u8; 3]; 20480] = [
 /// (`Object::new(&KNOT20K, colour)`) or `Pipeline::draw_meshlets`.
 #[allow(long_running_const_eval)]
 #[rustfmt::skip]
-pub static KNOT20K: microraster::mesh::ValidMeshletMesh<'static> = match microraster::mesh::ValidMeshletMesh::new(microraster::mesh::MeshletMesh {
+pub static KNOT20K: microraster::mesh::ValidMeshletMesh<'static> = microraster::mesh::ValidMeshletMesh::new_const(microraster::mesh::MeshletMesh {
     mesh: KNOT20K_MESH,
     meshlets: &KNOT20K_MESHLETS,
     vertices: &KNOT20K_MESHLET_VERTICES,
     triangles: &KNOT20K_MESHLET_TRIANGLES,
-}) {
-    Ok(m) => m,
-    Err(_) => panic!("KNOT20K: the mesh fails validation (triangles wound against their normals? see obj2rs's warning)"),
-};
+});

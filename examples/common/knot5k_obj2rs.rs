@@ -11196,12 +11196,9 @@ pub static KNOT5K_MESHLET_TRIANGLES: [[u8; 3]; 5120] = [
 /// (`Object::new(&KNOT5K, colour)`) or `Pipeline::draw_meshlets`.
 #[allow(long_running_const_eval)]
 #[rustfmt::skip]
-pub static KNOT5K: microraster::mesh::ValidMeshletMesh<'static> = match microraster::mesh::ValidMeshletMesh::new(microraster::mesh::MeshletMesh {
+pub static KNOT5K: microraster::mesh::ValidMeshletMesh<'static> = microraster::mesh::ValidMeshletMesh::new_const(microraster::mesh::MeshletMesh {
     mesh: KNOT5K_MESH,
     meshlets: &KNOT5K_MESHLETS,
     vertices: &KNOT5K_MESHLET_VERTICES,
     triangles: &KNOT5K_MESHLET_TRIANGLES,
-}) {
-    Ok(m) => m,
-    Err(_) => panic!("KNOT5K: the mesh fails validation (triangles wound against their normals? see obj2rs's warning)"),
-};
+});

@@ -59,7 +59,7 @@ fn meshlet_output_is_current_compiles_and_validates() {
     // The types follow `--mesh-type`'s module.
     let crate_src = meshlets::rust_source(&c, "X", "crate::mesh::Mesh").unwrap();
     assert!(crate_src.contains("pub static X: crate::mesh::ValidMeshletMesh<'static> ="));
-    assert!(crate_src.contains("crate::mesh::ValidMeshletMesh::new(crate::mesh::MeshletMesh {"));
+    assert!(crate_src.contains("crate::mesh::ValidMeshletMesh::new_const(crate::mesh::MeshletMesh {"));
     assert!(meshlets::rust_source(&c, "2x", "Mesh").is_err());
 }
 
@@ -113,11 +113,9 @@ fn default_output_is_a_view3d_object() {
     assert_eq!(a, b);
 }
 
-/// The output for `ValidMeshletMesh::new_const` (issue 63; microraster
-/// gains it separately, so this output is checked as text until
-/// [`meshlets::VALIDATION`] switches to it): the same statics, `NAME`
-/// built by the constructor that panics at compile time with the cause, no
-/// `match` and no hand-written message. Today's output is the `match` form.
+/// The default output builds `NAME` with `ValidMeshletMesh::new_const`
+/// (its compile-time panic names the cause): the same statics as the older
+/// `match` form, no `match` and no hand-written message.
 #[test]
 fn new_const_output_is_the_match_output_with_the_constructor_call() {
     use meshlets::{VALIDATION, Validation, rust_source_validated};
@@ -125,8 +123,11 @@ fn new_const_output_is_the_match_output_with_the_constructor_call() {
     let c = meshlets::build(&m).unwrap();
     let ty = emit::DEFAULT_MESH_TYPE;
     let matched = rust_source_validated(&c, "CUBE_M", ty, false, Validation::Match).unwrap();
-    assert_eq!(VALIDATION, Validation::Match);
-    assert_eq!(matched, meshlets::rust_source(&c, "CUBE_M", ty).unwrap());
+    assert_eq!(VALIDATION, Validation::NewConst);
+    assert_eq!(
+        rust_source_validated(&c, "CUBE_M", ty, false, Validation::NewConst).unwrap(),
+        meshlets::rust_source(&c, "CUBE_M", ty).unwrap()
+    );
     let (prefix, tail) = matched.split_once("pub static CUBE_M: ").unwrap();
     for fx in [false, true] {
         let src = rust_source_validated(&c, "CUBE_M", ty, fx, Validation::NewConst).unwrap();

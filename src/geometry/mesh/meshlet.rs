@@ -255,6 +255,28 @@ impl MeshletData<'_> {
 /// let bad = MeshletMesh { triangles: &[[0, 1, 3]], ..*TRI.get() };
 /// assert_eq!(ValidMeshletMesh::new(bad), Err(microraster::Error::InvalidMeshlet));
 /// ```
+///
+/// The same mesh with a cluster-local index past the cluster's vertices
+/// does not build:
+///
+/// ```compile_fail
+/// use microraster::mesh::{Mesh, Meshlet, MeshletMesh, ValidMeshletMesh};
+/// static POSITIONS: [[f32; 3]; 3] = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]];
+/// static CLUSTERS: [Meshlet; 1] = [Meshlet {
+///     vertex_offset: 0,
+///     triangle_offset: 0,
+///     vertex_count: 3,
+///     triangle_count: 1,
+///     sphere: ([0.5, 0.5, 0.0], 0.71),
+///     cone: ([0.0, 0.0, 1.0], 0.0),
+/// }];
+/// static TRI: ValidMeshletMesh<'static> = ValidMeshletMesh::new_const(MeshletMesh {
+///     mesh: Mesh::new(&POSITIONS, &[], &[], ([0.5, 0.5, 0.0], 0.71)),
+///     meshlets: &CLUSTERS,
+///     vertices: &[0, 1, 2],
+///     triangles: &[[0, 1, 3]],
+/// });
+/// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ValidMeshletMesh<'a, P = f32>(pub(super) MeshletMesh<'a, P>);
 

@@ -107,10 +107,10 @@ pub enum Validation {
     NewConst,
 }
 
-/// The validation [`rust_source`] writes: [`Validation::Match`] until
-/// microraster has `ValidMeshletMesh::new_const` (issue 63), then
-/// [`Validation::NewConst`] (and the committed outputs regenerated).
-pub const VALIDATION: Validation = Validation::Match;
+/// The validation [`rust_source`] writes: [`Validation::NewConst`], whose
+/// build error names the cause. [`Validation::Match`] stays for a firmware
+/// pinned to a microraster without `new_const`.
+pub const VALIDATION: Validation = Validation::NewConst;
 
 /// Rust source defining `NAME_MESHLETS`, `NAME_MESHLET_VERTICES`,
 /// `NAME_MESHLET_TRIANGLES` and `NAME: ValidMeshletMesh<'static>`, the
