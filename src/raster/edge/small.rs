@@ -199,7 +199,7 @@ impl Small {
     }
 
     /// The edges' biases: edge `i` lies opposite vertex `i`, and at a point
-    /// its biased function (as the per-centre walk gives it) plus its
+    /// its biased function (as [`Small::for_each_centre`] gives it) plus its
     /// bias is [`Small::det`] times the barycentric coordinate of vertex `i`.
     #[inline(always)]
     pub(crate) fn biases(&self) -> [i32; 3] {
@@ -207,11 +207,11 @@ impl Small {
     }
 
     /// `f(x, y, e)` for each covered centre not yet walked, row by row, left
-    /// to right, with the biased edge functions `e` there (each `≥ 0`): the
-    /// reference [`Small::for_each_run`] is tested against. (Scanning a row
-    /// through [`Small::row`] and stepping to the span's start again made
-    /// the knot frame 10 % dearer, Cortex-M4F, `fw_bench`.)
-    #[cfg(test)]
+    /// to right, with the biased edge functions `e` there (each `≥ 0`).
+    /// It scans a row itself rather than through [`Small::row`]: finding
+    /// the span first and stepping to its start again made the knot frame
+    /// 10 % dearer (Cortex-M4F, `fw_bench`).
+    #[inline(always)]
     pub(crate) fn for_each_centre(&self, mut f: impl FnMut(i32, i32, [i32; 3])) {
         let mut e = self.e;
         for y in self.y..self.y_end {
@@ -228,46 +228,6 @@ impl Small {
             }
             e = self.next_row(e);
         }
-    }
-
-    /// `f(x, y, e, len)` for each row's run of covered centres not yet
-    /// walked (the `len ≥ 1` centres from column `x` of row `y`), with the
-    /// biased edge functions `e` at its first centre: the centres of
-    /// the per-centre walk (`for_each_centre`, test only), scanned the same way (no step back to a
-    /// run's start), handed over once per run so that a caller can set up
-    /// per row and step per pixel.
-    #[inline(always)]
-    pub(crate) fn for_each_run(&self, mut f: impl FnMut(i32, i32, [i32; 3], u32)) {
-        let mut e = self.e;
-        let inside = |e: &[i32; 3]| (e[0] | e[1] | e[2]) >= 0;
-        for y in self.y..self.y_end {
-            let (mut ec, mut c) = (e, 0);
-            while c < self.cols && !inside(&ec) {
-                ec = [ec[0] + self.a[0], ec[1] + self.a[1], ec[2] + self.a[2]];
-                c += 1;
-            }
-            if c < self.cols {
-                let (first, lo) = (ec, c);
-                loop {
-                    c += 1;
-                    if c == self.cols {
-                        break;
-                    }
-                    ec = [ec[0] + self.a[0], ec[1] + self.a[1], ec[2] + self.a[2]];
-                    if !inside(&ec) {
-                        break;
-                    }
-                }
-                f(self.x0 + lo, y, first, (c - lo) as u32);
-            }
-            e = self.next_row(e);
-        }
-    }
-
-    /// The edge functions' steps per column (one pixel to the right).
-    #[inline(always)]
-    pub(crate) fn column_steps(&self) -> [i32; 3] {
-        self.a
     }
 
     /// All remaining spans, in one loop over local state.
@@ -287,10 +247,8 @@ impl Small {
 
 #[cfg(test)]
 mod tests {
-    extern crate std;
     use super::super::TriangleSpans;
     use super::*;
-    use std::vec::Vec;
 
     /// A fingerprint of the spans through internal iteration (`fold`).
     fn folded(t: &TriangleSpans) -> (u64, u32) {
@@ -330,19 +288,6 @@ mod tests {
                 _ => ClipRect::new(0, next(30), 4096, 4 + next(32)),
             };
             let cull = [Cull::None, Cull::None, Cull::Clockwise, Cull::CounterClockwise][next(4) as usize];
-            if let Some(Some(small)) = setup_state(v, clip, cull) {
-                // The runs are the covered centres, with their edge functions.
-                let (mut centres, mut runs) = (Vec::new(), Vec::new());
-                small.for_each_centre(|x, y, e| centres.push((x, y, e)));
-                let a = small.column_steps();
-                small.for_each_run(|x, y, e, len| {
-                    assert!(len > 0);
-                    for i in 0..len as i32 {
-                        runs.push((x + i, y, [0, 1, 2].map(|k| e[k] + i * a[k])));
-                    }
-                });
-                assert_eq!(centres, runs, "{v:?} {clip:?} {cull:?}");
-            }
             let got = TriangleSpans::new(v, clip, cull);
             let want = TriangleSpans::solved(v, clip, cull);
             // Small triangles with spans (the rest: empty, or solved rows).

@@ -52,8 +52,6 @@ use crate::edge::small::Small;
 use crate::math::divisor::{divrem_small_quotient, mul_u16_u32};
 
 mod fast;
-#[cfg(test)]
-mod per_centre;
 mod perspective;
 use fast::FastShade;
 use perspective::{PerspFactors, shade_perspective};
@@ -119,117 +117,68 @@ fn draw_with<C, F, M, P, D, const S: u32, const W: usize>(
         (true, true) => depth_steps_approx(v.depth, F::BITS) >> (DEPTH_FRAC - FRAC),
     });
     let y0 = color.y0();
-    let a = small.column_steps();
-    // Per column the weights change by the edges' steps `a` and the depth
-    // sum by `Σ a_i·dv_i`: stepped (modulo 2^64, exact at every covered
-    // centre, where the sum is in range) rather than multiplied again.
-    let dn = (0..3).fold(0u64, |n, i| n.wrapping_add((a[i] as i64 * dv[i] as i64) as u64));
     // Perspective-correct colour factors (the fast tier: its colour), made
     // at the first pixel that passes its depth test (none for a hidden
-    // triangle); so are the affine channel sums' steps.
+    // triangle).
     let mut persp = None;
     let mut fast = None;
-    let mut steps = None;
-    small.for_each_run(|x, y, e, len| {
+    small.for_each_centre(|x, y, e| {
         // Edge i lies opposite vertex i: w_i / det is its barycentric coordinate.
-        let mut w = [0, 1, 2].map(|i| e[i] as u32 + bias[i]);
-        let Some(crow) = color.row_mut(y).and_then(|r| r.get_mut(x as usize..)) else { return };
-        let mut dummy: [F::Storage; 0] = [];
-        let drow = if F::ENABLED {
-            let Some(drow) = depth.get_mut((y - y0) as usize).and_then(|r| r.get_mut(x as usize..)) else {
+        let w = [0, 1, 2].map(|i| e[i] as u32 + bias[i]);
+        let Some(p) = color.row_mut(y).and_then(|r| r.get_mut(x as usize)) else { return };
+        if F::ENABLED {
+            let Some(slot) = depth.get_mut((y - y0) as usize).and_then(|r| r.get_mut(x as usize)) else {
                 return;
             };
-            drow
-        } else {
-            &mut dummy[..]
-        };
-        // w_i ≤ det < 2^16: products of a 16- and a 24-bit value (two
-        // 32-bit multiplies each on the Cortex-M0, not a library call).
-        let mut n = if F::ENABLED {
-            mul_u16_u32(w[0], dv[0]) + mul_u16_u32(w[1], dv[1]) + mul_u16_u32(w[2], dv[2])
-        } else {
-            0
-        };
-        // The affine channel sums `Σ w_i·c_i` from the run's first pixel
-        // that is drawn on, stepped as `n` is.
-        let mut sums: Option<[u32; 3]> = None;
-        let mut drow = drow.iter_mut();
-        // A pixel the colour or depth row lacks is not drawn: both are
-        // suffixes of the run, so the loop stops at the first.
-        for p in crow.iter_mut().take(len as usize) {
-            let mut drawn = true;
-            if F::ENABLED {
-                let Some(slot) = drow.next() else { return };
-                let code = depth_code(n, det);
-                n = n.wrapping_add(dn);
-                if !state.test().passes(code, F::to_u32(*slot)) {
-                    drawn = false;
-                } else if state.write() {
-                    *slot = F::from_u32(code);
-                }
+            // w_i ≤ det < 2^16: products of a 16- and a 24-bit value (two
+            // 32-bit multiplies each on the Cortex-M0, not a library call).
+            let n = mul_u16_u32(w[0], dv[0]) + mul_u16_u32(w[1], dv[1]) + mul_u16_u32(w[2], dv[2]);
+            let code = depth_code(n, det);
+            if !state.test().passes(code, F::to_u32(*slot)) {
+                return;
             }
-            if drawn {
-                let how = if P::FAST {
-                    *fast.get_or_insert_with(|| FastShade::new::<M, S>(tri))
-                } else if tri.flat {
-                    FastShade::Const(C::from_channels(tri.v[0].color))
-                } else if M::PERSPECTIVE {
-                    FastShade::Perspective
-                } else {
-                    FastShade::Affine
-                };
-                *p = match how {
-                    FastShade::Const(c) => c,
-                    FastShade::Perspective => shade_perspective::<C, S>(
-                        tri,
-                        persp.get_or_insert_with(|| PerspFactors::new::<C, S>(tri, det)),
-                        w,
-                        det,
-                    ),
-                    FastShade::Affine => shade::<C>(*sums.get_or_insert_with(|| channel_sums(tri, w)), det),
-                };
-            }
-            w = step(w, a);
-            if let Some(s) = &mut sums {
-                *s = step(*s, *steps.get_or_insert_with(|| channel_sums(tri, a.map(|a| a as u32))));
+            if state.write() {
+                *slot = F::from_u32(code);
             }
         }
+        let how = if P::FAST {
+            *fast.get_or_insert_with(|| FastShade::new::<M, S>(tri))
+        } else if M::PERSPECTIVE && !tri.flat {
+            FastShade::Perspective
+        } else {
+            FastShade::Affine
+        };
+        *p = match how {
+            FastShade::Const(c) => c,
+            FastShade::Perspective => shade_perspective::<C, S>(
+                tri,
+                persp.get_or_insert_with(|| PerspFactors::new::<C, S>(tri, det)),
+                w,
+                det,
+            ),
+            FastShade::Affine => shade::<C, S>(tri, w, det),
+        };
     });
 }
 
-/// `v + d` in each lane, modulo 2^32 (a sum stepped across a run: exact at
-/// each covered centre, where it is in range).
-#[inline(always)]
-fn step<T: Copy + Into<i64>>(v: [u32; 3], d: [T; 3]) -> [u32; 3] {
-    [0, 1, 2].map(|i| v[i].wrapping_add(d[i].into() as u32))
-}
-
-/// The channel sums `Σ w_i·c_i` of `tri`'s vertex colours (modulo 2^32:
-/// with the weights of a covered centre, below `det·2^8 < 2^24`; with the
-/// edges' column steps as `u32`, the sums' steps modulo 2^32).
-#[inline(always)]
-fn channel_sums<const S: u32>(tri: &ScreenTriangle<S>, w: [u32; 3]) -> [u32; 3] {
-    let c = |i: usize, k: usize| tri.v[i].color[k] as u32;
-    [0, 1, 2].map(|k| {
-        w[0].wrapping_mul(c(0, k))
-            .wrapping_add(w[1].wrapping_mul(c(1, k)))
-            .wrapping_add(w[2].wrapping_mul(c(2, k)))
-    })
-}
-
-/// The affine Gouraud colour at the pixel whose channel sums are
-/// `n_k = Σ w_i·c_ik` (module docs: `n_k / det` rounded half up). Out of
-/// line: inlined into the pixel loop, its work was hoisted into
-/// per-triangle set-up that costs more than a triangle of one or two
-/// pixels uses.
+/// The colour of `tri` (flat, or affine Gouraud) at the pixel whose
+/// barycentric coordinates are `w / det` (module docs). Out of line: inlined into the
+/// pixel loop, its work was hoisted into per-triangle set-up (the flat
+/// colour, the sums strength-reduced into steps) that costs more than a
+/// triangle of one or two pixels uses.
 #[inline(never)]
-fn shade<C: Interpolate>(n: [u32; 3], det: u32) -> C {
+fn shade<C: Interpolate, const S: u32>(tri: &ScreenTriangle<S>, w: [u32; 3], det: u32) -> C {
+    if tri.flat {
+        return C::from_channels(tri.v[0].color);
+    }
     let max = C::CHANNEL_MAX;
     let channel = |k: usize| -> u8 {
         if max[k] == 0 {
             return 0;
         }
-        channel_quotient(2 * n[k] + det, 2 * det, max[k]) as u8
+        let c = [0, 1, 2].map(|i| tri.v[i].color[k] as u32);
+        let n = w[0] * c[0] + w[1] * c[1] + w[2] * c[2];
+        channel_quotient(2 * n + det, 2 * det, max[k]) as u8
     };
     C::from_channels([channel(0), channel(1), channel(2)])
 }
