@@ -263,6 +263,9 @@ fn run<T: Scalar, const S: u32>(inp: &mut Input) {
                 || proj.is_some_and(|proj| clip_beyond_range(&p, proj, &model, &positions, &indices)),
             "f32 draw_mesh: CoordinateOutOfRange within the clipper's range"
         ),
+        // A model with a NaN or infinite entry (a NaN angle, an overflowing
+        // matrix) is NonFiniteCoordinate, not a singular model (issue 63).
+        Err(Error::NonFiniteCoordinate) if !model.cols.iter().flatten().all(|v| v.is_finite()) => {}
         Err(e @ (Error::InvalidMesh(_) | Error::NonFiniteCoordinate)) => {
             panic!("draw_mesh error {e:?} without validate's")
         }
