@@ -77,6 +77,28 @@ pub trait Canvas<C: Interpolate> {
     /// assert_eq!(band.rows()[0], [0, 10, 20, 30].map(Gray8::new));
     /// ```
     fn shade<I: Iterator<Item = C>>(&mut self, span: Span, colors: I, alpha: u8);
+    /// `color` over `span` and the `rows − 1` rows below it (the same
+    /// columns), coverage `alpha`: what `rows` calls of [`Canvas::fill`]
+    /// draw, which is what this default does. A canvas that can fill a
+    /// rectangle in one go (as [`TargetCanvas`] hands it to `fill_solid`)
+    /// overrides it; an aliased [`Rect`](crate::shape::Rect)'s solid fill
+    /// arrives here in one call.
+    ///
+    /// ```
+    /// use embedded_graphics::pixelcolor::{Gray8, GrayColor};
+    /// use microraster::{Band, edge::Span, shape::Canvas};
+    /// let mut band = Band::<Gray8, 4, 3>::new(Gray8::BLACK);
+    /// let mut view = band.view(0, 3, Gray8::BLACK);
+    /// view.fill_rect(Span { y: 1, x: 1, len: 2 }, 2, Gray8::WHITE, 255);
+    /// let [b, w] = [Gray8::BLACK, Gray8::WHITE];
+    /// assert_eq!(band.rows()[..3], [[b, b, b, b], [b, w, w, b], [b, w, w, b]]);
+    /// ```
+    fn fill_rect(&mut self, span: Span, rows: u32, color: C, alpha: u8) {
+        for i in 0..rows {
+            // `rows` comes from rows of the clip: `span.y + i` stays in i32.
+            self.fill(Span { y: span.y.saturating_add(i as i32), ..span }, color, alpha);
+        }
+    }
 }
 
 impl<C: Interpolate, const W: usize> Canvas<C> for BandView<'_, C, W> {
@@ -283,6 +305,16 @@ where
             self.solid(span, color);
         } else if let Some(c) = self.partial(color, alpha) {
             self.solid(span, c);
+        }
+    }
+
+    /// One `fill_solid` for the whole rectangle (joined to the rows that
+    /// follow it when they continue it, as spans are).
+    fn fill_rect(&mut self, span: Span, rows: u32, color: D::Color, alpha: u8) {
+        let color = if alpha == OPAQUE { Some(color) } else { self.partial(color, alpha) };
+        if let (Some(c), true) = (color, rows > 0) {
+            self.flush();
+            self.pending = Some((span, rows, c));
         }
     }
 

@@ -173,6 +173,21 @@ impl<C: Interpolate> Paint<C> {
         }
     }
 
+    /// Paints `span` and the `rows − 1` rows below it on `canvas` with
+    /// coverage `alpha`: a solid colour as one [`Canvas::fill_rect`], a
+    /// gradient row by row as [`Paint::paint`] paints it.
+    pub(crate) fn paint_rect<T: Canvas<C>>(&self, canvas: &mut T, span: Span, rows: u32, alpha: u8) {
+        match self {
+            Paint::Solid(c) => canvas.fill_rect(span, rows, *c, alpha),
+            _ => {
+                for i in 0..rows {
+                    // Rows of the clip: within i32.
+                    self.paint(canvas, Span { y: span.y.saturating_add(i as i32), ..span }, alpha);
+                }
+            }
+        }
+    }
+
     /// Paints `span` on `canvas` with coverage `alpha`.
     pub(crate) fn paint<T: Canvas<C>>(&self, canvas: &mut T, span: Span, alpha: u8) {
         match self {

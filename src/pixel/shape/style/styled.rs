@@ -279,10 +279,8 @@ impl<S: Shape, C: Interpolate, A: Coverage> Styled<S, C, A> {
         // Coverage 255 times opacity, rounded, as `part_in` (which hands
         // alpha 0 on too: a `TargetCanvas` over a background paints it).
         let alpha = if op == 255 { 255 } else { div255_round(255 * op) as u8 };
-        if x0 < x1 {
-            for y in y0..y1 {
-                paint.paint(canvas, Span { y, x: x0, len: (x1 - x0) as u32 }, alpha);
-            }
+        if x0 < x1 && y0 < y1 {
+            paint.paint_rect(canvas, Span { y: y0, x: x0, len: (x1 - x0) as u32 }, (y1 - y0) as u32, alpha);
         }
         true
     }

@@ -172,15 +172,20 @@ fn aliased_rect_takes_whole_spans_with_the_scans_pixels() {
             s(&mut fb);
             fb.data().to_vec()
         };
-        let draw = |d: &mut Fb, s: &dyn Fn(&mut crate::shape::TargetCanvas<'_, Fb>)| {
-            let mut canvas = crate::shape::TargetCanvas::new(d).over(Gray8::new(7));
-            s(&mut canvas);
-            canvas.finish().unwrap();
-        };
-        assert!(
-            direct(&|d| draw(d, &|c| rect.draw_on(c))) == direct(&|d| draw(d, &|c| poly.draw_on(c))),
-            "{what}, direct"
-        );
+        // Over a background (partial pixels mixed) and without one (skipped
+        // below half coverage); the rectangle arrives as one `fill_rect`.
+        for over in [true, false] {
+            let draw = |d: &mut Fb, s: &dyn Fn(&mut crate::shape::TargetCanvas<'_, Fb>)| {
+                let canvas = crate::shape::TargetCanvas::new(d);
+                let mut canvas = if over { canvas.over(Gray8::new(7)) } else { canvas };
+                s(&mut canvas);
+                canvas.finish().unwrap();
+            };
+            assert!(
+                direct(&|d| draw(d, &|c| rect.draw_on(c))) == direct(&|d| draw(d, &|c| poly.draw_on(c))),
+                "{what}, direct, over a background: {over}"
+            );
+        }
     }
 }
 
