@@ -177,6 +177,15 @@ pub(crate) fn snap_f32_bits(v: f32, s: u32) -> Result<i32, Error> {
     }
     // Scaling by a power of two is exact; the range test below keeps the cast exact too.
     let scaled = v * (1u32 << s.min(MAX_SUBPIXEL_BITS)) as f32;
+    // Below 2^22 in magnitude (every on-screen coordinate), the adder rounds:
+    // `scaled + 1.5·2^23` lies in (2^23, 2^24), where the spacing of `f32`
+    // is 1, so the sum is `scaled` rounded to the nearest integer, ties to
+    // even (Rust's only rounding mode; 1.5·2^23 is even), plus 1.5·2^23; the
+    // subtraction is exact. The result is within ±2^22: in range.
+    if scaled.abs() < (1u32 << 22) as f32 {
+        const ROUNDER: f32 = (3u32 << 22) as f32;
+        return Ok(((scaled + ROUNDER) - ROUNDER) as i32);
+    }
     if scaled.abs() > (1u32 << 28) as f32 + 0.5 {
         return Err(Error::CoordinateOutOfRange);
     }
@@ -205,6 +214,45 @@ mod tests {
         assert_eq!((p.x(), p.y()), (2, 2));
         let p = SubPoint::<8>::from_f32(-1.5 / 256.0, -2.6 / 256.0).unwrap();
         assert_eq!((p.x(), p.y()), (-2, -3));
+    }
+
+    #[test]
+    fn f32_snapping_matches_an_f64_rounding_on_both_sides_of_2_pow_22() {
+        // The reference: f64 holds `v · 2^s` exactly; round half to even by hand.
+        let reference = |v: f32, s: u32| -> i64 {
+            let x = f64::from(v) * f64::from(1u32 << s);
+            let f = x.floor();
+            let d = x - f;
+            let r = if d > 0.5 || (d == 0.5 && f % 2.0 != 0.0) { f + 1.0 } else { f };
+            r as i64
+        };
+        let mut seed = 0x9e37_79b9_7f4a_7c15u64;
+        let mut next = || {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            seed
+        };
+        for i in 0..200_000u32 {
+            let s = i % (MAX_SUBPIXEL_BITS + 1);
+            let r = next();
+            // Magnitudes up to 2^(10..26) subpixels; a quarter exact ties
+            // (k + ½ subpixels), a few right at the fast path's 2^22 bound.
+            let mag = (r >> 40) as f32 / (1u64 << 24) as f32 * (1u64 << (10 + (r % 17))) as f32;
+            let mut scaled = if r & 3 == 0 { mag.floor() + 0.5 } else { mag };
+            if r % 101 == 0 {
+                scaled = (1u32 << 22) as f32 + [-1.5f32, -0.5, 0.0, 0.5, 1.0][(r % 5) as usize];
+            }
+            let scaled = if r & 4 == 0 { -scaled } else { scaled };
+            let v = scaled / (1u32 << s) as f32;
+            let got = snap_f32_bits(v, s).map(i64::from);
+            let want = reference(v, s);
+            if want.abs() <= 1 << 28 {
+                assert_eq!(got, Ok(want), "{v:e} at {s} bits");
+            } else {
+                assert_eq!(got, Err(Error::CoordinateOutOfRange), "{v:e} at {s} bits");
+            }
+        }
     }
 
     #[test]

@@ -237,6 +237,14 @@ impl<F: FnMut(Span, u8)> Runs<F> {
         }
     }
 
+    /// `span` whole, alpha 255, after any pending span: for a caller that
+    /// joined its row's touching spans itself (the aliased scan).
+    #[inline]
+    pub(crate) fn emit(&mut self, span: Span) {
+        self.flush();
+        (self.out)(span, 255);
+    }
+
     pub(crate) fn flush(&mut self) {
         if let Some((s, a)) = self.pending.take() {
             (self.out)(s, a);

@@ -52,6 +52,7 @@
 use super::edges::{Active, BITS, Edge, EdgeList};
 use super::{FillRule, Runs};
 use crate::ClipRect;
+use crate::edge::Span;
 
 const ONE: i64 = 1 << BITS;
 const HALF: i64 = ONE / 2;
@@ -201,22 +202,38 @@ fn walk<F: FnMut(crate::edge::Span, u8), const N: usize, const K: usize>(
             n += 1;
         }
         sort(&mut w[..n]);
+        // The row's covered columns, runs that touch joined here (what
+        // `Runs::push` would join) and handed on whole.
         let mut winding = 0i32;
+        let mut run: Option<(i32, i32)> = None;
         for i in 0..n {
             winding += w[i].dir;
             if rule.inside(winding) {
                 let x = w[i].q.clamp(clip.x0(), clip.x1());
                 let next = if i + 1 < n { w[i + 1].q.clamp(clip.x0(), clip.x1()) } else { clip.x1() };
                 if next > x {
-                    runs.push(y, x, (next - x) as u32, 255);
+                    run = match run {
+                        Some((a, b)) if b == x => Some((a, next)),
+                        Some((a, b)) => {
+                            runs.emit(Span { y, x: a, len: (b - a) as u32 });
+                            Some((x, next))
+                        }
+                        None => Some((x, next)),
+                    };
                 }
             }
         }
+        if let Some((a, b)) = run {
+            runs.emit(Span { y, x: a, len: (b - a) as u32 });
+        }
         // Step to the next row, dropping the edges that end here.
+        // (Moved only past a dropped one: a walker is 40 bytes.)
         let mut k = 0;
         for i in 0..n {
             if w[i].end > y + 1 {
-                w[k] = w[i];
+                if k != i {
+                    w[k] = w[i];
+                }
                 w[k].next();
                 k += 1;
             }
@@ -231,6 +248,9 @@ fn walk<F: FnMut(crate::edge::Span, u8), const N: usize, const K: usize>(
 #[inline]
 fn sort(w: &mut [Walker]) {
     for i in 1..w.len() {
+        if w[i - 1].q <= w[i].q {
+            continue;
+        }
         let v = w[i];
         let mut j = i;
         while j > 0 && w[j - 1].q > v.q {
