@@ -163,6 +163,9 @@ pub(crate) fn scan<F: FnMut(crate::edge::Span, u8), const N: usize>(
     clip: ClipRect,
     runs: &mut Runs<F>,
 ) {
+    if let Some(rows) = two_chains(edges.edges(), clip) {
+        return walk_chains(edges.edges(), rows, clip, runs);
+    }
     // The branches are on constants and fold away.
     if N <= SMALL_WALKERS {
         walk::<F, N, N>(edges, rule, clip, runs)
@@ -239,6 +242,78 @@ fn walk<F: FnMut(crate::edge::Span, u8), const N: usize, const K: usize>(
             }
         }
         n = k;
+    }
+    runs.flush();
+}
+
+/// The rows to scan if `list` (sorted by top) is two chains, one of each
+/// direction, each of edges that follow each other without a gap
+/// (`y0` of one = `y1` of the one before, in subpixels), reaching the same
+/// rows inside `clip`: the outline of a convex shape, or of any shape that
+/// every row crosses twice (a disc, an ellipse, a rounded rectangle, and
+/// their parts in a band's window). `None` otherwise.
+///
+/// Then every row centre of the scan lies on exactly one edge of each
+/// chain (`y0 ≤ yc < y1`), so [`walk`] would hold two walkers of opposite
+/// directions in every row, and its spans are the columns between their
+/// crossings: winding ±1 there (inside by either rule), 0 elsewhere.
+/// [`walk_chains`] gives those spans without the general walk's entering,
+/// sorting and dropping.
+fn two_chains(list: &[Edge], clip: ClipRect) -> Option<(i32, i32)> {
+    // Per direction (index 0: dir −1, 1: dir +1): the first edge's top and
+    // the last edge's bottom so far.
+    let mut reach: [Option<(i32, i32)>; 2] = [None, None];
+    for e in list {
+        let chain = reach.get_mut(usize::from(e.dir > 0))?;
+        match chain {
+            Some((_, bottom)) if *bottom == e.y0 => *bottom = e.y1,
+            Some(_) => return None,
+            None => *chain = Some((e.y0, e.y1)),
+        }
+        if e.dir.abs() != 1 {
+            return None;
+        }
+    }
+    let [Some(a), Some(b)] = reach else { return None };
+    let (ra, rb) = (center_rows(a.0, a.1, clip), center_rows(b.0, b.1, clip));
+    (ra == rb && !clip.is_empty()).then_some(ra)
+}
+
+/// The spans of the two chains of `list` ([`two_chains`]) in rows
+/// `lo..hi`: per row, the edge of each chain that crosses its centre, its
+/// crossing walked as [`walk`] walks it.
+fn walk_chains<F: FnMut(Span, u8)>(list: &[Edge], (lo, hi): (i32, i32), clip: ClipRect, runs: &mut Runs<F>) {
+    // Per chain: the index of its current edge in `list` and its walker
+    // at the current row (`None` before its first edge is found).
+    let mut at = [0usize; 2];
+    let mut w: [Option<Walker>; 2] = [None, None];
+    for y in lo..hi {
+        let yc = i64::from(y) * ONE + HALF;
+        let mut q = [0i32; 2];
+        for c in 0..2 {
+            let dir = if c == 0 { -1 } else { 1 };
+            let current = list.get(at[c]).filter(|e| e.dir == dir && i64::from(e.y1) > yc && w[c].is_some());
+            if current.is_none() {
+                // The chain's edge whose rows hold this centre: the first
+                // of its direction, from the current one on, ending below
+                // it (the chain has one, `two_chains`).
+                let mut i = if w[c].is_some() { at[c] + 1 } else { 0 };
+                while list.get(i).is_some_and(|e| e.dir != dir || i64::from(e.y1) <= yc) {
+                    i += 1;
+                }
+                let Some(e) = list.get(i) else { return runs.flush() };
+                at[c] = i;
+                w[c] = Some(Walker::new(e, y));
+            }
+            q[c] = w[c].map_or(0, |w| w.q);
+        }
+        let (a, b) = (q[0].min(q[1]).clamp(clip.x0(), clip.x1()), q[0].max(q[1]).clamp(clip.x0(), clip.x1()));
+        if b > a {
+            runs.emit(Span { y, x: a, len: (b - a) as u32 });
+        }
+        for walker in w.iter_mut().flatten() {
+            walker.next();
+        }
     }
     runs.flush();
 }

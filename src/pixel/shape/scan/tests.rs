@@ -112,3 +112,87 @@ fn more_active_edges_than_walkers_fall_back_exactly() {
         assert_eq!(walked, divided, "small {clip:?}");
     }
 }
+
+/// Discs, ellipses and rounded rectangles (whole, and in windows as a band
+/// stores them) are two chains: walked as such, their spans are the
+/// general walk's and the division's. A star, a ring and two discs are not.
+#[test]
+fn two_chains_walk_as_the_general_walk() {
+    use crate::shape::{Circle, Ellipse, Rect, RoundedRect, Shape};
+    let mut rng = Rng(0x51f1_5e5d_9e1a_c0de);
+    let (mut drawn, mut chained, mut spans) = (0, 0, 0);
+    for case in 0..1500 {
+        let c = (rng.in_range(1 << 12) as f32 / 64.0 + 30.0, rng.in_range(1 << 12) as f32 / 64.0 + 30.0);
+        let r = 0.3 + (rng.next() % 4000) as f32 / 64.0;
+        let window = match case % 3 {
+            0 => None,
+            // A band's rows, in subpixels (16 per pixel), across the shape.
+            _ => {
+                let y0 = (c.1 as i32 + rng.in_range(40) as i32).max(0) * 16;
+                Some((y0, y0 + 16 * (1 + (rng.next() % 20) as i32)))
+            }
+        };
+        let mut e = EdgeList::<{ crate::shape::MAX_EDGES }>::new();
+        if let Some((lo, hi)) = window {
+            e.window(lo, hi);
+        }
+        match case % 4 {
+            0 => Circle::new(c, r).unwrap().fill_contours(&mut e),
+            1 => Ellipse::new(c, r, r * 0.37 + 0.2).unwrap().fill_contours(&mut e),
+            2 => {
+                let rect = Rect::new(c.0 - r, c.1 - r * 0.6, 2.0 * r, 1.2 * r + 0.1).unwrap();
+                RoundedRect::new(rect, r * 0.3).unwrap().fill_contours(&mut e)
+            }
+            _ => Rect::new(c.0, c.1, r, r * 0.5).unwrap().fill_contours(&mut e),
+        }
+        .unwrap();
+        e.sort_by_top();
+        let clip = if case % 5 == 0 { ClipRect::new(35, 20, 70, 80) } else { ClipRect::new(0, 0, 200, 200) };
+        let clip = window.map_or(clip, |(lo, hi)| ClipRect::new(clip.x0(), lo / 16, clip.x1(), hi / 16));
+        let whole = two_chains(e.edges(), clip);
+        if !e.is_empty() && !clip.is_empty() {
+            drawn += 1;
+            chained += usize::from(whole.is_some());
+        }
+        let rule = [FillRule::NonZero, FillRule::EvenOdd][case % 2];
+        let (walked, divided) = both(&e, rule, clip);
+        let mut general = Vec::new();
+        walk::<_, { crate::shape::MAX_EDGES }, WALKERS>(
+            &e,
+            rule,
+            clip,
+            &mut Runs::new(|s, a| general.push((s, a))),
+        );
+        assert_eq!(walked, general, "case {case}: r {r} at {c:?}, window {window:?}");
+        assert_eq!(walked, divided, "case {case}: r {r} at {c:?}, window {window:?}");
+        spans += walked.len();
+    }
+    // Nearly every outline here is two chains (not: a snapped kink where
+    // a curve turns, a few subpixels long, which the general walk takes).
+    assert!(drawn > 900 && chained * 100 >= drawn * 95, "{chained} of {drawn} walked as two chains");
+    assert!(spans > 10_000, "the cases cover pixels: {spans} spans");
+    // Not two chains: a star (a row crosses four edges), a ring (two
+    // contours, nested), two discs side by side.
+    let star: Vec<(f32, f32)> = (0..10)
+        .map(|i| {
+            let (s, c) = (i as f32 * 0.6283).sin_cos();
+            let r = if i % 2 == 0 { 20.0 } else { 8.0 };
+            (40.0 + r * c, 40.0 + r * s)
+        })
+        .collect();
+    let clip = ClipRect::new(0, 0, 100, 100);
+    let mut e = EdgeList::<64>::new();
+    e.polygon(&star).unwrap();
+    e.sort_by_top();
+    assert_eq!(two_chains(e.edges(), clip), None);
+    let mut ring = EdgeList::<{ crate::shape::MAX_EDGES }>::new();
+    Circle::new((40.0, 40.0), 20.0).unwrap().fill_contours(&mut ring).unwrap();
+    Circle::new((40.0, 40.0), 9.0).unwrap().fill_contours(&mut ring).unwrap();
+    ring.sort_by_top();
+    assert_eq!(two_chains(ring.edges(), clip), None);
+    let mut pair = EdgeList::<{ crate::shape::MAX_EDGES }>::new();
+    Circle::new((20.0, 40.0), 9.0).unwrap().fill_contours(&mut pair).unwrap();
+    Circle::new((60.0, 40.0), 9.0).unwrap().fill_contours(&mut pair).unwrap();
+    pair.sort_by_top();
+    assert_eq!(two_chains(pair.edges(), clip), None);
+}
