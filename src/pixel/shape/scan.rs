@@ -283,37 +283,46 @@ fn two_chains(list: &[Edge], clip: ClipRect) -> Option<(i32, i32)> {
 /// `lo..hi`: per row, the edge of each chain that crosses its centre, its
 /// crossing walked as [`walk`] walks it.
 fn walk_chains<F: FnMut(Span, u8)>(list: &[Edge], (lo, hi): (i32, i32), clip: ClipRect, runs: &mut Runs<F>) {
-    // Per chain: the index of its current edge in `list` and its walker
-    // at the current row (`None` before its first edge is found).
-    let mut at = [0usize; 2];
-    let mut w: [Option<Walker>; 2] = [None, None];
-    for y in lo..hi {
+    let (cx0, cx1) = (clip.x0(), clip.x1());
+    // Per chain (0: direction −1, 1: +1): where its search goes on in
+    // `list`, and its walker at row `y`.
+    let mut from = [0usize; 2];
+    let mut w = [Walker::default(); 2];
+    let mut y = lo;
+    let mut need = [true, true];
+    while y < hi {
         let yc = i64::from(y) * ONE + HALF;
-        let mut q = [0i32; 2];
         for c in 0..2 {
-            let dir = if c == 0 { -1 } else { 1 };
-            let current = list.get(at[c]).filter(|e| e.dir == dir && i64::from(e.y1) > yc && w[c].is_some());
-            if current.is_none() {
-                // The chain's edge whose rows hold this centre: the first
-                // of its direction, from the current one on, ending below
-                // it (the chain has one, `two_chains`).
-                let mut i = if w[c].is_some() { at[c] + 1 } else { 0 };
+            if need[c] {
+                // The chain's edge whose rows hold this centre: the next
+                // of its direction ending below it (it has one,
+                // `two_chains`).
+                let dir = if c == 0 { -1 } else { 1 };
+                let mut i = from[c];
                 while list.get(i).is_some_and(|e| e.dir != dir || i64::from(e.y1) <= yc) {
                     i += 1;
                 }
                 let Some(e) = list.get(i) else { return runs.flush() };
-                at[c] = i;
-                w[c] = Some(Walker::new(e, y));
+                from[c] = i + 1;
+                w[c] = Walker::new(e, y);
+                need[c] = false;
             }
-            q[c] = w[c].map_or(0, |w| w.q);
         }
-        let (a, b) = (q[0].min(q[1]).clamp(clip.x0(), clip.x1()), q[0].max(q[1]).clamp(clip.x0(), clip.x1()));
-        if b > a {
-            runs.emit(Span { y, x: a, len: (b - a) as u32 });
+        // Rows until either edge ends: two steps and a span each.
+        let stop = w[0].end.min(w[1].end).min(hi);
+        let [mut a, mut b] = w;
+        while y < stop {
+            let (l, r) = if a.q <= b.q { (a.q, b.q) } else { (b.q, a.q) };
+            let (l, r) = (l.clamp(cx0, cx1), r.clamp(cx0, cx1));
+            if r > l {
+                runs.emit(Span { y, x: l, len: (r - l) as u32 });
+            }
+            a.next();
+            b.next();
+            y += 1;
         }
-        for walker in w.iter_mut().flatten() {
-            walker.next();
-        }
+        w = [a, b];
+        need = [w[0].end <= y, w[1].end <= y];
     }
     runs.flush();
 }
