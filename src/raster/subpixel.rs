@@ -226,21 +226,15 @@ mod tests {
             let r = if d > 0.5 || (d == 0.5 && f % 2.0 != 0.0) { f + 1.0 } else { f };
             r as i64
         };
-        let mut seed = 0x9e37_79b9_7f4a_7c15u64;
-        let mut next = || {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            seed
-        };
+        let mut rng = crate::test_rng::Rng(0x9e37_79b9_7f4a_7c15);
         for i in 0..200_000u32 {
             let s = i % (MAX_SUBPIXEL_BITS + 1);
-            let r = next();
+            let r = rng.next();
             // Magnitudes up to 2^(10..26) subpixels; a quarter exact ties
             // (k + ½ subpixels), a few right at the fast path's 2^22 bound.
             let mag = (r >> 40) as f32 / (1u64 << 24) as f32 * (1u64 << (10 + (r % 17))) as f32;
             let mut scaled = if r & 3 == 0 { mag.floor() + 0.5 } else { mag };
-            if r % 101 == 0 {
+            if r.is_multiple_of(101) {
                 scaled = (1u32 << 22) as f32 + [-1.5f32, -0.5, 0.0, 0.5, 1.0][(r % 5) as usize];
             }
             let scaled = if r & 4 == 0 { -scaled } else { scaled };
