@@ -81,6 +81,18 @@ pub struct EdgeList<const N: usize> {
     windowed: bool,
     win: (i32, i32),
     twice: i128,
+    // The window's rows in `f32` subpixels, widened by one, and whether a
+    // chord of a curve may be left unsnapped when its float rows miss them
+    // ([`EdgeList::curve_to`]): not while a group orients its members, which
+    // needs every edge's area term.
+    win_f: (f32, f32),
+    cull: bool,
+    // The current point as given, and whether `last` is it snapped (a
+    // culled chord leaves it to be snapped when an edge needs it).
+    last_f: (f32, f32),
+    last_snapped: bool,
+    // The current point's side of the window (`side`).
+    last_side: i8,
     // Written as edges come, never zeroed ahead (a `heapless::Vec`): a list
     // costs what it holds, not its capacity.
     edges: heapless::Vec<Edge, N>,
@@ -120,6 +132,11 @@ impl<const N: usize> EdgeList<N> {
             windowed: false,
             win: (0, 0),
             twice: 0,
+            win_f: (0.0, 0.0),
+            cull: false,
+            last_f: (0.0, 0.0),
+            last_snapped: true,
+            last_side: 0,
         }
     }
 
@@ -200,6 +217,7 @@ impl<const N: usize> EdgeList<N> {
         let p = snap(x, y)?;
         self.close()?;
         (self.open, self.start, self.last) = (true, p, p);
+        (self.last_f, self.last_snapped, self.last_side) = ((x, y), true, self.side(x, y));
         Ok(())
     }
 
@@ -214,18 +232,17 @@ impl<const N: usize> EdgeList<N> {
     /// assert!(e.line_to(3.0, 9.0).is_err()); // a second edge does not fit in 1
     /// # Ok::<(), microraster::Error>(())
     /// ```
+    #[inline(always)]
     pub fn line_to(&mut self, x: f32, y: f32) -> Result<(), Error> {
         let p = snap(x, y)?;
-        self.line_to_snapped(p)
-    }
-
-    pub(crate) fn line_to_snapped(&mut self, p: (i32, i32)) -> Result<(), Error> {
         if !self.open {
             (self.open, self.start) = (true, p);
         } else {
-            self.push(self.last, p)?;
+            let last = self.last_point()?;
+            self.push(last, p)?;
         }
-        self.last = p;
+        // Side 0: the next chord from here is not culled.
+        (self.last, self.last_f, self.last_snapped, self.last_side) = (p, (x, y), true, 0);
         Ok(())
     }
 
@@ -242,7 +259,8 @@ impl<const N: usize> EdgeList<N> {
     pub fn close(&mut self) -> Result<(), Error> {
         if self.open {
             self.open = false;
-            self.push(self.last, self.start)?;
+            let last = self.last_point()?;
+            self.push(last, self.start)?;
         }
         Ok(())
     }
@@ -271,7 +289,10 @@ impl<const N: usize> EdgeList<N> {
     }
 
     /// Where the contour being added starts, for [`Self::orient_since`].
-    pub(crate) fn mark(&self) -> (usize, i128) {
+    /// Needs every edge's area term from now on, so [`Self::curve_to`]
+    /// culls no more chords.
+    pub(crate) fn mark(&mut self) -> (usize, i128) {
+        self.cull = false;
         (self.len, self.twice)
     }
 
@@ -296,6 +317,12 @@ impl<const N: usize> EdgeList<N> {
     /// same coverage with fewer edges. Length and rows count the stored ones.
     pub(crate) fn window(&mut self, lo: i32, hi: i32) {
         (self.windowed, self.win) = (true, (lo, hi));
+        // Rows as `f32` exactly below 2^24 subpixels (a band's are); a
+        // chord culled by `curve_to` has both ends' `16·y` at least 1 past
+        // them, and snapping moves `16·y` by 1/2 at most.
+        const EXACT: i32 = 1 << 24;
+        self.cull = lo > -EXACT && hi < EXACT && lo <= hi;
+        self.win_f = (lo as f32 - 1.0, hi as f32 + 1.0);
     }
 
     /// Sorts the edges by their top, which the scan's active-edge list
@@ -400,6 +427,8 @@ impl<const N: usize> Active<N> {
         self.idx.iter().map(move |&i| (i, &edges[i as usize]))
     }
 }
+
+mod curve;
 
 #[cfg(test)]
 mod tests;

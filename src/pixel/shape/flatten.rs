@@ -14,7 +14,9 @@
 //! `r = 1000` (a documented clamp). Vertices are then snapped to 1/16 px,
 //! which moves each by at most `√2/32 ≈ 0.044` px.
 
+use crate::Error;
 use crate::math::Scalar;
+use crate::shape::EdgeList;
 use core::f32::consts::{PI, TAU};
 
 /// Largest distance (px) between a flattened curve and the true curve, below
@@ -102,6 +104,36 @@ pub(crate) fn arc_points_between<E>(
         point(c.0 + rx * co, c.1 + ry * s)?;
     }
     point(c.0 + rx * to.1, c.1 + ry * to.0)
+}
+
+/// [`arc_points`] as points of the contour being built in `e`: through
+/// [`EdgeList::curve_to`] where the list culls chords outside its window,
+/// [`EdgeList::line_to`] (the same edges, no test a point) where it does not.
+pub(crate) fn arc_edges<const N: usize>(
+    e: &mut EdgeList<N>,
+    c: (f32, f32),
+    radii: (f32, f32),
+    start: f32,
+    sweep: f32,
+) -> Result<(), Error> {
+    let sweep = sweep.clamp(-TAU, TAU);
+    let ends = (Scalar::sin_cos(start), Scalar::sin_cos(start + sweep));
+    arc_edges_between(e, c, radii, ends, sweep)
+}
+
+/// [`arc_points_between`] into `e`, as [`arc_edges`].
+pub(crate) fn arc_edges_between<const N: usize>(
+    e: &mut EdgeList<N>,
+    c: (f32, f32),
+    radii: (f32, f32),
+    ends: ((f32, f32), (f32, f32)),
+    sweep: f32,
+) -> Result<(), Error> {
+    if e.culls() {
+        arc_points_between(c, radii, ends, sweep, |x, y| e.curve_to(x, y))
+    } else {
+        arc_points_between(c, radii, ends, sweep, |x, y| e.line_to(x, y))
+    }
 }
 
 #[cfg(test)]

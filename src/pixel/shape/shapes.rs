@@ -2,7 +2,7 @@
 
 use super::Coverage;
 use super::edges::EdgeList;
-use super::flatten::arc_points;
+use super::flatten::arc_edges;
 use super::stroke::{self, StrokeParams};
 use super::style::{ShapeStyle, Styled};
 use crate::{Error, Param};
@@ -261,7 +261,7 @@ impl RoundedRect {
         for k in 0..4 {
             let (cx, cy, a) = centres[if reverse { 3 - k } else { k }];
             let (start, sweep) = if reverse { (a + FRAC_PI_2, -FRAC_PI_2) } else { (a, FRAC_PI_2) };
-            arc_points((cx, cy), (r, r), start, sweep, |px, py| e.line_to(px, py))?;
+            arc_edges(e, (cx, cy), (r, r), start, sweep)?;
         }
         e.close()
     }

@@ -6,7 +6,7 @@ use crate::Error;
 use crate::shape::Cap;
 use crate::shape::angle::{self, Angle};
 use crate::shape::edges::EdgeList;
-use crate::shape::flatten::{arc_points, arc_points_between};
+use crate::shape::flatten::{arc_edges, arc_edges_between};
 use crate::shape::stroke::{self, StrokeParams};
 use core::f32::consts::{PI, SQRT_2, TAU};
 
@@ -56,7 +56,7 @@ impl Ellipse {
         }
         e.close()?;
         let sweep = if reverse { -TAU } else { TAU };
-        arc_points(self.c, (rx, ry), 0.0, sweep, |x, y| e.line_to(x, y))?;
+        arc_edges(e, self.c, (rx, ry), 0.0, sweep)?;
         e.close()
     }
 }
@@ -140,7 +140,7 @@ impl ArcGeom {
     fn points<const N: usize>(&self, e: &mut EdgeList<N>, r: f32, reverse: bool) -> Result<(), Error> {
         let g = if reverse { self.reversed() } else { *self };
         let ends = (g.from.sin_cos(), g.to.sin_cos());
-        arc_points_between(self.c, (r, r), ends, g.sweep, |x, y| e.line_to(x, y))
+        arc_edges_between(e, self.c, (r, r), ends, g.sweep)
     }
 }
 

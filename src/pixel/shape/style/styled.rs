@@ -236,10 +236,14 @@ impl<S: Shape, C: Interpolate, A: Coverage> Styled<S, C, A> {
         // and anti-aliased alike), so only those are stored, sorted and
         // scanned: a band of a large ring holds a few of its edges. Each part
         // goes in a small list unless its edges in the band do not fit.
-        let window = (clip.y0().saturating_mul(1 << BITS), clip.y1().saturating_mul(1 << BITS));
+        // A shape whose rows are all in the clip keeps every edge: no window
+        // (nothing to drop, no chord worth testing).
+        let whole = clip.y0() <= self.rows.0 && clip.y1() >= self.rows.1;
+        let window =
+            (!whole).then(|| (clip.y0().saturating_mul(1 << BITS), clip.y1().saturating_mul(1 << BITS)));
         // A part too large for the small list, all of whose rows are in the
         // clip, would fill it and then be built again: the large one first.
-        let small = !(self.big && clip.y0() <= self.rows.0 && clip.y1() >= self.rows.1);
+        let small = !(self.big && whole);
         for stroke in [false, true] {
             if !stroke && A::WHOLE && self.box_fill(canvas) {
                 continue;
@@ -286,7 +290,7 @@ impl<S: Shape, C: Interpolate, A: Coverage> Styled<S, C, A> {
     }
 
     /// The fill (or the stroke) on `canvas`, with an edge list of capacity
-    /// `N` holding the edges between subpixel rows `window`. Builds the edges
+    /// `N` holding the edges between subpixel rows `window` (all of them if `None`). Builds the edges
     /// first: if they do not fit, nothing is drawn and the error returned.
     /// Each capacity its own frame, for the stack.
     #[inline(never)]
@@ -294,7 +298,7 @@ impl<S: Shape, C: Interpolate, A: Coverage> Styled<S, C, A> {
         &self,
         canvas: &mut T,
         stroke: bool,
-        window: (i32, i32),
+        window: Option<(i32, i32)>,
     ) -> Result<(), Error> {
         let (paint, rule) = match stroke {
             false => (&self.style.fill, self.style.fill_rule),
@@ -302,7 +306,9 @@ impl<S: Shape, C: Interpolate, A: Coverage> Styled<S, C, A> {
         };
         let Some(paint) = paint else { return Ok(()) };
         let mut e = EdgeList::<N>::new();
-        e.window(window.0, window.1);
+        if let Some((lo, hi)) = window {
+            e.window(lo, hi);
+        }
         if stroke {
             self.stroke_edges(&mut e)?
         } else {
