@@ -282,8 +282,15 @@ impl<const N: usize> EdgeList<N> {
     }
 
     /// One edge from `a` to `b` (pixels), outside the contour being built:
-    /// callers keep their edges closed cycles. `flip` reverses it.
+    /// callers keep their edges closed cycles. `flip` reverses it. Culled
+    /// unsnapped where a windowed list would drop it (`curve.rs`).
     pub(crate) fn edge(&mut self, a: (f32, f32), b: (f32, f32), flip: bool) -> Result<(), Error> {
+        if self.cull {
+            let side = self.side(a.0, a.1);
+            if side != 0 && side == self.side(b.0, b.1) {
+                return Ok(());
+            }
+        }
         let (a, b) = (snap(a.0, a.1)?, snap(b.0, b.1)?);
         if flip { self.push(b, a) } else { self.push(a, b) }
     }

@@ -77,6 +77,7 @@ enum Step {
     Move(f32, f32),
     Curve(f32, f32),
     Line(f32, f32),
+    Edge((f32, f32), (f32, f32), bool),
     Close,
 }
 
@@ -86,18 +87,19 @@ fn build<const N: usize>(e: &mut EdgeList<N>, steps: &[Step], curves: bool) -> R
             Step::Move(x, y) => e.move_to(x, y)?,
             Step::Curve(x, y) if curves => e.curve_to(x, y)?,
             Step::Curve(x, y) | Step::Line(x, y) => e.line_to(x, y)?,
+            Step::Edge(a, b, flip) => e.edge(a, b, flip)?,
             Step::Close => e.close()?,
         }
     }
     e.close()
 }
 
-/// A windowed list given a curve's points by `curve_to` (which culls the
-/// chords that miss the window before snapping them) holds exactly the
-/// edges, rows and errors `line_to` gives it, for contours that wander in
-/// and out of the window, end points on the rows where the culling test
-/// changes its answer, lines between curves, and bad points after culled
-/// ones.
+/// A windowed list given a curve's points by `curve_to` and lone edges by
+/// `edge` (both cull what misses the window before snapping it) holds
+/// exactly the edges, rows and errors of one that culls nothing (`line_to`,
+/// and `edge` after `mark`), for contours that wander in and out of the
+/// window, end points on the rows where the culling test changes its
+/// answer, lines between curves, and bad points after culled ones.
 #[test]
 fn curve_to_stores_what_line_to_stores() {
     let mut rng = crate::test_rng::Rng(0x5EED_C0DE_2026_1207);
@@ -116,8 +118,9 @@ fn curve_to_stores_what_line_to_stores() {
         let mut steps = Vec::new();
         for _ in 0..(3 + case % 40) {
             let p = (rng.unit(40.0), y(&mut rng));
-            steps.push(match rng.next() % 12 {
+            steps.push(match rng.next() % 13 {
                 0 => Step::Move(p.0, p.1),
+                12 => Step::Edge(p, (rng.unit(40.0), y(&mut rng)), rng.next() % 2 == 0),
                 1 | 2 => Step::Line(p.0, p.1),
                 3 => Step::Close,
                 _ => Step::Curve(p.0, p.1),
@@ -132,6 +135,8 @@ fn curve_to_stores_what_line_to_stores() {
         let (mut a, mut b) = (EdgeList::<64>::new(), EdgeList::<64>::new());
         a.window(lo, hi);
         b.window(lo, hi);
+        let _ = b.mark(); // culls nothing from here
+        assert!(a.culls() && !b.culls());
         let (ra, rb) = (build(&mut a, &steps, true), build(&mut b, &steps, false));
         assert_eq!(ra, rb, "case {case}: {steps:?}");
         assert_eq!(a.edges(), b.edges(), "case {case} rows {lo}..{hi}: {steps:?}");
