@@ -120,7 +120,7 @@ fn curve_to_stores_what_line_to_stores() {
             let p = (rng.unit(40.0), y(&mut rng));
             steps.push(match rng.next() % 13 {
                 0 => Step::Move(p.0, p.1),
-                12 => Step::Edge(p, (rng.unit(40.0), y(&mut rng)), rng.next() % 2 == 0),
+                12 => Step::Edge(p, (rng.unit(40.0), y(&mut rng)), rng.next().is_multiple_of(2)),
                 1 | 2 => Step::Line(p.0, p.1),
                 3 => Step::Close,
                 _ => Step::Curve(p.0, p.1),
