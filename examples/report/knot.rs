@@ -14,7 +14,7 @@ use microraster::Band;
 use microraster::depth::{Depth16, DepthBand};
 use microraster::math::Fx;
 use microraster::pipeline::ClusterCache;
-use microraster::raster3d::{Affine, PerspectiveCorrect};
+use microraster::raster3d::{Affine, PerspectiveCorrect, Precision};
 use std::fmt::Write as _;
 
 /// The knot's scene name in the tables.
@@ -24,6 +24,9 @@ pub const SCENE: &str = "knot20k";
 pub const BASE: &str = "knot20k/f32/D16/persp/band16/S4";
 pub const AFFINE: &str = "knot20k/f32/D16/affine/band16/S4";
 pub const EUC: &str = "knot20k/euc";
+/// The fast accuracy tier (`Precision::Fast`), perspective-correct and affine.
+pub const FAST: &str = "knot20k/f32/D16/persp/band16/S4/fast";
+pub const FAST_AFFINE: &str = "knot20k/f32/D16/affine/band16/S4/fast";
 /// The fixed-point path reading the knot's data in 16.16 (`KNOT_FX`).
 pub const FX_MESH: &str = "knot20k/Fx/D16/affine/band16/S4/fx-mesh";
 
@@ -83,6 +86,12 @@ pub fn peers(peers: &mut Vec<Peer>) -> Split {
     let diff = |px: &[Rgb565]| Some(px.iter().zip(&mine).filter(|(a, b)| far(a, b)).count());
     let t = median_ns(|| mr_knot::<f32, Affine>(&p32, &mut c32, &mut band, &mut depth, &mut slice));
     add("microraster, f32, affine", AFFINE, t, diff(&slice.px));
+    let fast = p32.with_precision(Precision::Fast);
+    let t =
+        median_ns(|| mr_knot::<f32, PerspectiveCorrect>(&fast, &mut c32, &mut band, &mut depth, &mut slice));
+    add("microraster, f32, perspective-correct, fast tier", FAST, t, diff(&slice.px));
+    let t = median_ns(|| mr_knot::<f32, Affine>(&fast, &mut c32, &mut band, &mut depth, &mut slice));
+    add("microraster, f32, affine, fast tier", FAST_AFFINE, t, diff(&slice.px));
     let vertex_ns = median_ns(|| mr_knot_vertex_only(&p32, &mut c32, &mut band, &mut slice));
     let t = median_ns(|| mr_knot::<Fx, Affine>(&pfx, &mut cfx, &mut band, &mut depth, &mut slice));
     add("microraster, Fx, affine", "knot20k/Fx/D16/affine/band16/S4", t, diff(&slice.px));
@@ -111,6 +120,8 @@ pub fn readme_table(peers: &[Peer], counts: &Counts, fw: &FwBench) -> String {
     let rows = [
         (BASE, Some("knot20k/meshlets-per-band-f32-persp-correct"), true),
         (AFFINE, Some("knot20k/meshlets-per-band-f32-affine"), true),
+        (FAST, Some("knot20k/meshlets-per-band-f32-persp-correct-fast-tier"), false),
+        (FAST_AFFINE, Some("knot20k/meshlets-per-band-f32-affine-fast-tier"), false),
         ("knot20k/Fx/D16/affine/band16/S4", Some("knot20k/meshlets-per-band-fx-affine"), true),
         (FX_MESH, None, true),
         (EUC, None, false),

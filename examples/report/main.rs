@@ -245,7 +245,7 @@ fn main() -> Res<()> {
             &[
                 ("targets", targets),
                 ("knot", knot::readme_table(&peers, &counts, &fw)),
-                ("tiers", tiers::readme(&tier_errors, &fw)),
+                ("tiers", tiers::readme(&tier_errors, &fw, &peers)),
             ],
         )?;
     }

@@ -260,7 +260,7 @@ pub fn pareto(fw: &FwBench) -> String {
 }
 
 /// The README's "which tier" table (between its `tiers:begin/end` markers).
-pub fn readme(errors: &[TierError], fw: &FwBench) -> String {
+pub fn readme(errors: &[TierError], fw: &FwBench, peers: &[crate::Peer]) -> String {
     let mut w = String::new();
     let _ = writeln!(
         w,
@@ -287,6 +287,27 @@ pub fn readme(errors: &[TierError], fw: &FwBench) -> String {
             share(e),
             e.max_channel,
             e.max_depth
+        );
+    }
+    // The same knot frames timed on the host by `knot::peers`: there a
+    // division costs several multiplies, which QEMU's icount (one count per
+    // `VDIV.F32`) does not show.
+    let t = |k: &str| crate::find(peers, k).map(|p| p.ns);
+    let pairs = [(crate::knot::BASE, crate::knot::FAST), (crate::knot::AFFINE, crate::knot::FAST_AFFINE)];
+    if let [(Some(a), Some(b)), (Some(c), Some(d))] = pairs.map(|(e, f)| (t(e), t(f))) {
+        let _ = writeln!(
+            w,
+            "\nOn the host (this run of the report, 16-row bands), where a division costs several multiplies, \
+             the knot's frame takes {} µs in the fast tier against {} µs in the exact tier perspective-correct \
+             (exact ÷ fast: {:.2}) and {} µs against {} µs affine ({:.2}); one run on a shared host, which moves \
+             such times by up to ±20 %. The Cortex-M4F columns are QEMU's icount, which counts a `VDIV.F32` as \
+             one instruction however many cycles it takes on silicon (14 on a Cortex-M4F).",
+            crate::us(b),
+            crate::us(a),
+            a / b,
+            crate::us(d),
+            crate::us(c),
+            c / d
         );
     }
     w
