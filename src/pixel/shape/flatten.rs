@@ -91,12 +91,40 @@ pub(crate) fn arc_points_between<E>(
     (rx, ry): (f32, f32),
     (from, to): ((f32, f32), (f32, f32)),
     sweep: f32,
+    point: impl FnMut(f32, f32) -> Result<(), E>,
+) -> Result<(), E> {
+    let steps = Steps::new(rx.max(ry), sweep);
+    arc_points_stepped(c, (rx, ry), (from, to), steps, point)
+}
+
+/// The chord count of an arc and the rotation of one chord: all an arc's
+/// inner points depend on besides its start, so arcs of one radius and sweep
+/// (a rounded rectangle's corners) share one.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Steps {
+    n: u32,
+    // (sin, cos) of one chord's angle.
+    step: (f32, f32),
+}
+
+impl Steps {
+    /// For an arc of radius `r` sweeping `sweep` (already clamped to a turn).
+    pub(crate) fn new(r: f32, sweep: f32) -> Self {
+        let n = segments(r, sweep);
+        Steps { n, step: Scalar::sin_cos(sweep / n as f32) }
+    }
+}
+
+/// [`arc_points_between`] with its [`Steps`] given.
+fn arc_points_stepped<E>(
+    c: (f32, f32),
+    (rx, ry): (f32, f32),
+    (from, to): ((f32, f32), (f32, f32)),
+    Steps { n, step: (sd, cd) }: Steps,
     mut point: impl FnMut(f32, f32) -> Result<(), E>,
 ) -> Result<(), E> {
-    let n = segments(rx.max(ry), sweep);
     // Inner points by rotating the unit vector (one sin_cos per arc instead
     // of per point; drift below 1e-5 px per 100 px of radius over 128 steps).
-    let (sd, cd) = Scalar::sin_cos(sweep / n as f32);
     let (mut s, mut co) = from;
     point(c.0 + rx * co, c.1 + ry * s)?;
     for _ in 1..n {
@@ -129,10 +157,22 @@ pub(crate) fn arc_edges_between<const N: usize>(
     ends: ((f32, f32), (f32, f32)),
     sweep: f32,
 ) -> Result<(), Error> {
+    arc_edges_stepped(e, c, radii, ends, Steps::new(radii.0.max(radii.1), sweep))
+}
+
+/// [`arc_edges_between`] with the arc's [`Steps`] given (the same points as
+/// `arc_edges_between` for the sweep and radii they were made for).
+pub(crate) fn arc_edges_stepped<const N: usize>(
+    e: &mut EdgeList<N>,
+    c: (f32, f32),
+    radii: (f32, f32),
+    ends: ((f32, f32), (f32, f32)),
+    steps: Steps,
+) -> Result<(), Error> {
     if e.culls() {
-        arc_points_between(c, radii, ends, sweep, |x, y| e.curve_to(x, y))
+        arc_points_stepped(c, radii, ends, steps, |x, y| e.curve_to(x, y))
     } else {
-        arc_points_between(c, radii, ends, sweep, |x, y| e.line_to(x, y))
+        arc_points_stepped(c, radii, ends, steps, |x, y| e.line_to(x, y))
     }
 }
 

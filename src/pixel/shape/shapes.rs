@@ -2,9 +2,10 @@
 
 use super::Coverage;
 use super::edges::EdgeList;
-use super::flatten::arc_edges;
+use super::flatten::{Steps, arc_edges_stepped};
 use super::stroke::{self, StrokeParams};
 use super::style::{ShapeStyle, Styled};
+use crate::math::Scalar;
 use crate::{Error, Param};
 use core::f32::consts::{FRAC_PI_2, PI};
 
@@ -258,10 +259,24 @@ impl RoundedRect {
             (x0 + r, y0 + r, PI),
         ];
         e.close()?;
+        // Each corner as `arc_edges(e, centre, (r, r), start, sweep)`, the
+        // same values: one radius and sweep, so one chord count and step
+        // rotation; a corner's end angle is usually the next one's start
+        // (bit for bit), so its sine and cosine are reused.
+        let sweep = if reverse { -FRAC_PI_2 } else { FRAC_PI_2 };
+        let steps = Steps::new(r, sweep);
+        let mut last: Option<(u32, (f32, f32))> = None;
         for k in 0..4 {
             let (cx, cy, a) = centres[if reverse { 3 - k } else { k }];
-            let (start, sweep) = if reverse { (a + FRAC_PI_2, -FRAC_PI_2) } else { (a, FRAC_PI_2) };
-            arc_edges(e, (cx, cy), (r, r), start, sweep)?;
+            let start = if reverse { a + FRAC_PI_2 } else { a };
+            let end = start + sweep;
+            let from = match last {
+                Some((bits, v)) if bits == start.to_bits() => v,
+                _ => Scalar::sin_cos(start),
+            };
+            let ends = (from, Scalar::sin_cos(end));
+            last = Some((end.to_bits(), ends.1));
+            arc_edges_stepped(e, (cx, cy), (r, r), ends, steps)?;
         }
         e.close()
     }
@@ -381,3 +396,6 @@ impl Shape for Polyline<'_> {
         path_reach(self.0, false, stroke)
     }
 }
+
+#[cfg(test)]
+mod tests;
