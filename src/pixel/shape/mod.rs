@@ -161,9 +161,15 @@ pub trait Coverage: sealed::Sealed + Copy + Default + core::fmt::Debug {
     /// Whole pixels (in or out): a box fill is then rows of whole spans.
     #[doc(hidden)]
     const WHOLE: bool;
-    /// Emits `(span, alpha)` runs of the covered pixels of `edges` in `clip`.
+    /// Emits `(span, alpha)` runs of the covered pixels of `edges` in `clip`
+    /// (the edges in the order they were built; sorted here where needed).
     #[doc(hidden)]
-    fn cover<F: FnMut(Span, u8), const N: usize>(edges: &EdgeList<N>, rule: FillRule, clip: ClipRect, out: F);
+    fn cover<F: FnMut(Span, u8), const N: usize>(
+        edges: &mut EdgeList<N>,
+        rule: FillRule,
+        clip: ClipRect,
+        out: F,
+    );
 }
 
 /// Whole pixels: in or out, by the top-left rule.
@@ -190,11 +196,16 @@ pub struct AntiAliased;
 impl Coverage for Aliased {
     const WHOLE: bool = true;
     fn cover<F: FnMut(Span, u8), const N: usize>(
-        edges: &EdgeList<N>,
+        edges: &mut EdgeList<N>,
         rule: FillRule,
         clip: ClipRect,
         out: F,
     ) {
+        // One contour every row crosses twice needs no sort (`scan::Chains`).
+        if let Some(chains) = scan::Chains::in_contour_order(edges.edges(), clip) {
+            return chains.walk(edges.edges(), clip, &mut Runs::new(out));
+        }
+        edges.sort_by_top();
         scan::scan(edges, rule, clip, &mut Runs::new(out));
     }
 }
@@ -202,11 +213,12 @@ impl Coverage for Aliased {
 impl Coverage for AntiAliased {
     const WHOLE: bool = false;
     fn cover<F: FnMut(Span, u8), const N: usize>(
-        edges: &EdgeList<N>,
+        edges: &mut EdgeList<N>,
         rule: FillRule,
         clip: ClipRect,
         out: F,
     ) {
+        edges.sort_by_top();
         area::scan(edges, rule, clip, &mut Runs::new(out));
     }
 }

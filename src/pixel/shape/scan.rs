@@ -163,8 +163,8 @@ pub(crate) fn scan<F: FnMut(crate::edge::Span, u8), const N: usize>(
     clip: ClipRect,
     runs: &mut Runs<F>,
 ) {
-    if let Some(rows) = two_chains(edges.edges(), clip) {
-        return walk_chains(edges.edges(), rows, clip, runs);
+    if let Some(chains) = Chains::sorted(edges.edges(), clip) {
+        return chains.walk(edges.edges(), clip, runs);
     }
     // The branches are on constants and fold away.
     if N <= SMALL_WALKERS {
@@ -246,87 +246,6 @@ fn walk<F: FnMut(crate::edge::Span, u8), const N: usize, const K: usize>(
     runs.flush();
 }
 
-/// The rows to scan if `list` (sorted by top) is two chains, one of each
-/// direction, each of edges that follow each other without a gap
-/// (`y0` of one = `y1` of the one before, in subpixels), reaching the same
-/// rows inside `clip`: the outline of a convex shape, or of any shape that
-/// every row crosses twice (a disc, an ellipse, a rounded rectangle, and
-/// their parts in a band's window). `None` otherwise.
-///
-/// Then every row centre of the scan lies on exactly one edge of each
-/// chain (`y0 ≤ yc < y1`), so [`walk`] would hold two walkers of opposite
-/// directions in every row, and its spans are the columns between their
-/// crossings: winding ±1 there (inside by either rule), 0 elsewhere.
-/// [`walk_chains`] gives those spans without the general walk's entering,
-/// sorting and dropping.
-fn two_chains(list: &[Edge], clip: ClipRect) -> Option<(i32, i32)> {
-    // Per direction (index 0: dir −1, 1: dir +1): the first edge's top and
-    // the last edge's bottom so far.
-    let mut reach: [Option<(i32, i32)>; 2] = [None, None];
-    for e in list {
-        let chain = reach.get_mut(usize::from(e.dir > 0))?;
-        match chain {
-            Some((_, bottom)) if *bottom == e.y0 => *bottom = e.y1,
-            Some(_) => return None,
-            None => *chain = Some((e.y0, e.y1)),
-        }
-        if e.dir.abs() != 1 {
-            return None;
-        }
-    }
-    let [Some(a), Some(b)] = reach else { return None };
-    let (ra, rb) = (center_rows(a.0, a.1, clip), center_rows(b.0, b.1, clip));
-    (ra == rb && !clip.is_empty()).then_some(ra)
-}
-
-/// The spans of the two chains of `list` ([`two_chains`]) in rows
-/// `lo..hi`: per row, the edge of each chain that crosses its centre, its
-/// crossing walked as [`walk`] walks it.
-fn walk_chains<F: FnMut(Span, u8)>(list: &[Edge], (lo, hi): (i32, i32), clip: ClipRect, runs: &mut Runs<F>) {
-    let (cx0, cx1) = (clip.x0(), clip.x1());
-    // Per chain (0: direction −1, 1: +1): where its search goes on in
-    // `list`, and its walker at row `y`.
-    let mut from = [0usize; 2];
-    let mut w = [Walker::default(); 2];
-    let mut y = lo;
-    let mut need = [true, true];
-    while y < hi {
-        let yc = i64::from(y) * ONE + HALF;
-        for c in 0..2 {
-            if need[c] {
-                // The chain's edge whose rows hold this centre: the next
-                // of its direction ending below it (it has one,
-                // `two_chains`).
-                let dir = if c == 0 { -1 } else { 1 };
-                let mut i = from[c];
-                while list.get(i).is_some_and(|e| e.dir != dir || i64::from(e.y1) <= yc) {
-                    i += 1;
-                }
-                let Some(e) = list.get(i) else { return runs.flush() };
-                from[c] = i + 1;
-                w[c] = Walker::new(e, y);
-                need[c] = false;
-            }
-        }
-        // Rows until either edge ends: two steps and a span each.
-        let stop = w[0].end.min(w[1].end).min(hi);
-        let [mut a, mut b] = w;
-        while y < stop {
-            let (l, r) = if a.q <= b.q { (a.q, b.q) } else { (b.q, a.q) };
-            let (l, r) = (l.clamp(cx0, cx1), r.clamp(cx0, cx1));
-            if r > l {
-                runs.emit(Span { y, x: l, len: (r - l) as u32 });
-            }
-            a.next();
-            b.next();
-            y += 1;
-        }
-        w = [a, b];
-        need = [w[0].end <= y, w[1].end <= y];
-    }
-    runs.flush();
-}
-
 /// Insertion sort by column: after one row's steps the walkers are almost
 /// always still in order, which costs one comparison each.
 #[inline]
@@ -390,6 +309,9 @@ fn scan_divided<F: FnMut(crate::edge::Span, u8), const N: usize>(
     }
     runs.flush();
 }
+
+mod chains;
+pub(crate) use chains::Chains;
 
 #[cfg(test)]
 mod tests;

@@ -146,10 +146,22 @@ fn two_chains_walk_as_the_general_walk() {
             _ => Rect::new(c.0, c.1, r, r * 0.5).unwrap().fill_contours(&mut e),
         }
         .unwrap();
-        e.sort_by_top();
         let clip = if case % 5 == 0 { ClipRect::new(35, 20, 70, 80) } else { ClipRect::new(0, 0, 200, 200) };
         let clip = window.map_or(clip, |(lo, hi)| ClipRect::new(clip.x0(), lo / 16, clip.x1(), hi / 16));
-        let whole = two_chains(e.edges(), clip);
+        // The chains found before sorting, in the contour's own order.
+        let unsorted = Chains::in_contour_order(e.edges(), clip);
+        let mut in_order = Vec::new();
+        if let Some(ch) = unsorted {
+            ch.walk(e.edges(), clip, &mut Runs::new(|s, a| in_order.push((s, a))));
+        }
+        e.sort_by_top();
+        let whole = Chains::sorted(e.edges(), clip);
+        // A single contour: found in either order alike, over the same rows.
+        assert_eq!(
+            unsorted.map(|c| c.rows),
+            whole.map(|c| c.rows),
+            "case {case}: r {r} at {c:?}, window {window:?}"
+        );
         if !e.is_empty() && !clip.is_empty() {
             drawn += 1;
             chained += usize::from(whole.is_some());
@@ -165,6 +177,9 @@ fn two_chains_walk_as_the_general_walk() {
         );
         assert_eq!(walked, general, "case {case}: r {r} at {c:?}, window {window:?}");
         assert_eq!(walked, divided, "case {case}: r {r} at {c:?}, window {window:?}");
+        if unsorted.is_some() {
+            assert_eq!(in_order, general, "case {case}: in contour order, r {r} at {c:?}, window {window:?}");
+        }
         spans += walked.len();
     }
     // Nearly every outline here is two chains (not: a snapped kink where
@@ -183,16 +198,23 @@ fn two_chains_walk_as_the_general_walk() {
     let clip = ClipRect::new(0, 0, 100, 100);
     let mut e = EdgeList::<64>::new();
     e.polygon(&star).unwrap();
+    assert_eq!(Chains::in_contour_order(e.edges(), clip), None);
     e.sort_by_top();
-    assert_eq!(two_chains(e.edges(), clip), None);
+    assert_eq!(Chains::sorted(e.edges(), clip), None);
     let mut ring = EdgeList::<{ crate::shape::MAX_EDGES }>::new();
     Circle::new((40.0, 40.0), 20.0).unwrap().fill_contours(&mut ring).unwrap();
     Circle::new((40.0, 40.0), 9.0).unwrap().fill_contours(&mut ring).unwrap();
+    assert_eq!(Chains::in_contour_order(ring.edges(), clip), None);
     ring.sort_by_top();
-    assert_eq!(two_chains(ring.edges(), clip), None);
+    assert_eq!(Chains::sorted(ring.edges(), clip), None);
     let mut pair = EdgeList::<{ crate::shape::MAX_EDGES }>::new();
     Circle::new((20.0, 40.0), 9.0).unwrap().fill_contours(&mut pair).unwrap();
     Circle::new((60.0, 40.0), 9.0).unwrap().fill_contours(&mut pair).unwrap();
+    assert_eq!(Chains::in_contour_order(pair.edges(), clip), None);
     pair.sort_by_top();
-    assert_eq!(two_chains(pair.edges(), clip), None);
+    assert_eq!(Chains::sorted(pair.edges(), clip), None);
+    // A disc alone is one contour in order: found before the sort.
+    let mut disc = EdgeList::<{ crate::shape::MAX_EDGES }>::new();
+    Circle::new((40.0, 40.0), 20.0).unwrap().fill_contours(&mut disc).unwrap();
+    assert!(Chains::in_contour_order(disc.edges(), clip).is_some());
 }

@@ -314,11 +314,10 @@ impl<S: Shape, C: Interpolate, A: Coverage> Styled<S, C, A> {
         } else {
             self.fill_edges(&mut e)?
         }
-        e.sort_by_top();
         let op = u32::from(self.style.opacity);
         // Coverage times opacity, rounded; exact (and free) when opaque.
         let alpha = |a: u8| if op == 255 { a } else { div255_round(u32::from(a) * op) as u8 };
-        A::cover(&e, rule, canvas.clip(), |span, a| paint.paint(canvas, span, alpha(a)));
+        A::cover(&mut e, rule, canvas.clip(), |span, a| paint.paint(canvas, span, alpha(a)));
         Ok(())
     }
 }
