@@ -9,9 +9,9 @@
 //! stores its edges top to bottom, one that runs up (`dir` −1) bottom to
 //! top, so walking the list as a cycle forwards from the +1 chain's top
 //! edge, and backwards from the −1 chain's, meets each chain's edges in
-//! order of rows, the order the sorted list holds them in. Either way the
-//! same check (each chain gap-free) accepts the list, and the walk meets
-//! the same edges in the same order: the same spans.
+//! order of rows, the order the sorted list holds them in. Either way a list
+//! is accepted only if each chain is gap-free, and the walk meets the same
+//! edges in the same order: the same spans.
 
 use super::{HALF, ONE, Runs, Walker, center_rows};
 use crate::ClipRect;
@@ -52,7 +52,22 @@ impl Chains {
     /// between their crossings: winding ±1 there (inside by either rule), 0
     /// elsewhere.
     pub(crate) fn sorted(list: &[Edge], clip: ClipRect) -> Option<Self> {
-        Self::check(list, clip, [0, 0], [false, false])
+        // Per direction (index 0: dir −1, 1: dir +1): the first edge's top
+        // and the last edge's bottom so far, in one pass.
+        let mut reach: [Option<(i32, i32)>; 2] = [None, None];
+        for e in list {
+            if e.dir.abs() != 1 {
+                return None;
+            }
+            let chain = reach.get_mut(usize::from(e.dir > 0))?;
+            *chain = match *chain {
+                Some((top, bottom)) if bottom == e.y0 => Some((top, e.y1)),
+                Some(_) => return None,
+                None => Some((e.y0, e.y1)),
+            };
+        }
+        let [Some(a), Some(b)] = reach else { return None };
+        Self::same_rows([a, b], clip, [0, 0], [false, false])
     }
 
     /// The chains of `list` in the order one contour stored them (module
@@ -108,35 +123,12 @@ impl Chains {
             out[c] = (r.top, r.reach);
         }
         let [(ta, a), (tb, b)] = out;
-        let (ra, rb) = (center_rows(a.0, a.1, clip), center_rows(b.0, b.1, clip));
-        (ra == rb && !clip.is_empty()).then_some(Chains { rows: ra, start: [ta, tb], back: [true, false] })
+        Self::same_rows([a, b], clip, [ta, tb], [true, false])
     }
 
-    /// Walks each chain from `start` (backwards where `back`) over the whole
-    /// list as a cycle: accepted if every edge has direction ±1 and each
-    /// chain's edges come gap-free, and both chains reach the same rows.
-    fn check(list: &[Edge], clip: ClipRect, start: [usize; 2], back: [bool; 2]) -> Option<Self> {
-        let mut reach = [(0, 0); 2];
-        for c in 0..2 {
-            let dir = if c == 0 { -1 } else { 1 };
-            let mut i = *start.get(c)?;
-            let mut chain: Option<(i32, i32)> = None;
-            for _ in 0..list.len() {
-                let e = list.get(i)?;
-                if e.dir.abs() != 1 {
-                    return None;
-                }
-                if e.dir == dir {
-                    chain = match chain {
-                        Some((top, bottom)) if bottom == e.y0 => Some((top, e.y1)),
-                        Some(_) => return None,
-                        None => Some((e.y0, e.y1)),
-                    };
-                }
-                i = next(i, back[c], list.len());
-            }
-            reach[c] = chain?;
-        }
+    /// The chains whose subpixel rows are `reach`, if both reach the same
+    /// pixel rows inside `clip`.
+    fn same_rows(reach: [(i32, i32); 2], clip: ClipRect, start: [usize; 2], back: [bool; 2]) -> Option<Self> {
         let [a, b] = reach;
         let (ra, rb) = (center_rows(a.0, a.1, clip), center_rows(b.0, b.1, clip));
         (ra == rb && !clip.is_empty()).then_some(Chains { rows: ra, start, back })
@@ -162,8 +154,8 @@ impl Chains {
             for c in 0..2 {
                 if need[c] {
                     // The chain's edge whose rows hold this centre: the
-                    // next of its direction ending below it (it has one,
-                    // `check`).
+                    // next of its direction ending below it (it has one:
+                    // the chain is gap-free over the rows).
                     let dir = if c == 0 { -1 } else { 1 };
                     let mut e = None;
                     while left[c] > 0 {
