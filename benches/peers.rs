@@ -26,7 +26,7 @@ use embedded_graphics_core::pixelcolor::Rgb565;
 use microraster::Band;
 use microraster::depth::{Depth16, DepthBand};
 use microraster::math::Fx;
-use microraster::raster3d::{Affine, PerspectiveCorrect};
+use microraster::raster3d::{Affine, PerspectiveCorrect, Precision};
 use microraster_scenes::scenes;
 use std::hint::black_box;
 use std::path::PathBuf;
@@ -136,6 +136,13 @@ fn knot20k(c: &mut Criterion) {
     run(&mut g, "mr_fx_affine_band16_slice", || {
         mr_knot::<Fx, Affine>(&pfx, &mut cfx, &mut band, &mut depth, &mut slice);
     });
+    let fast = p32.with_precision(Precision::Fast);
+    run(&mut g, "mr_f32_persp_band16_slice_fast", || {
+        mr_knot::<f32, PerspectiveCorrect>(&fast, &mut c32, &mut band, &mut depth, &mut slice);
+    });
+    run(&mut g, "mr_f32_affine_band16_slice_fast", || {
+        mr_knot::<f32, Affine>(&fast, &mut c32, &mut band, &mut depth, &mut slice);
+    });
     let mut euc = EucKnot::new();
     run(&mut g, "euc", || euc.frame());
     g.finish();
@@ -213,6 +220,16 @@ fn ratios() {
             euc / affine,
             persp / 1000.0,
             euc / 1000.0
+        );
+    }
+    if let (Some(euc), Some(persp), Some(affine)) =
+        (knot("euc"), knot("mr_f32_persp_band16_slice_fast"), knot("mr_f32_affine_band16_slice_fast"))
+    {
+        println!(
+            "knot20k, fast tier: euc / microraster {:.2} (perspective-correct), {:.2} (affine); microraster {:.1} µs",
+            euc / persp,
+            euc / affine,
+            persp / 1000.0
         );
     }
     let large = Scene2d::<4>::new(scenes::large);

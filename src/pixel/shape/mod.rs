@@ -72,7 +72,7 @@ pub use flatten::{MAX_SEGMENTS, TOLERANCE};
 pub use group::Group;
 pub use paint::{LinearGradient, Paint, RadialGradient};
 pub use shapes::{Arc, Circle, Ellipse, Polygon, Polyline, Rect, RoundedRect, Sector, Shape};
-pub use style::{Cap, Join, ShapeStyle, Styled};
+pub use style::{Cap, Join, PREPARED_EDGES, Prepared, ShapeStyle, Styled};
 
 use crate::ClipRect;
 use crate::edge::Span;

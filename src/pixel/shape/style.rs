@@ -7,7 +7,7 @@ use crate::blend::OPAQUE;
 
 mod bounds;
 mod styled;
-pub use styled::Styled;
+pub use styled::{PREPARED_EDGES, Prepared, Styled};
 
 /// How thick lines meet at a vertex.
 ///

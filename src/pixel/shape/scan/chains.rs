@@ -126,6 +126,17 @@ impl Chains {
         Self::same_rows([a, b], clip, [ta, tb], [true, false])
     }
 
+    /// The same chains over `clip`'s rows, for chains found over a clip
+    /// whose rows hold `clip`'s ([`ClipRect`]s lie within
+    /// `0..=MAX_FRAME_DIM`, so one found over all of those serves every
+    /// clip): the rows `same_rows` would find for `clip`, as the found rows
+    /// are the chains' rows clamped to the larger clip.
+    pub(crate) fn within(self, clip: ClipRect) -> Self {
+        let (lo, hi) = self.rows;
+        let lo = lo.max(clip.y0());
+        Chains { rows: (lo, hi.min(clip.y1()).max(lo)), ..self }
+    }
+
     /// The chains whose subpixel rows are `reach`, if both reach the same
     /// pixel rows inside `clip`.
     fn same_rows(reach: [(i32, i32); 2], clip: ClipRect, start: [usize; 2], back: [bool; 2]) -> Option<Self> {

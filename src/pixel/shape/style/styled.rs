@@ -4,8 +4,9 @@
 use super::ShapeStyle;
 use crate::blend::div255_round;
 use crate::edge::Span;
+use crate::shape::Runs;
 use crate::shape::edges::{BITS, EdgeList, snap};
-use crate::shape::scan::first_row;
+use crate::shape::scan::{Chains, first_row};
 use crate::shape::{Aliased, Canvas, Coverage, FillRule, MAX_EDGES, Shape, TargetCanvas};
 use crate::{Error, Interpolate, Param};
 use embedded_graphics_core::Drawable;
@@ -225,10 +226,7 @@ impl<S: Shape, C: Interpolate, A: Coverage> Styled<S, C, A> {
     /// ```
     pub fn draw_on<T: Canvas<C>>(&self, canvas: &mut T) {
         let clip = canvas.clip();
-        if clip.y1() <= self.rows.0 || clip.y0() >= self.rows.1 {
-            return;
-        }
-        if clip.x1() <= self.cols.0 || clip.x0() >= self.cols.1 {
+        if self.misses(clip) {
             return;
         }
         // Only edges that cross the clip's rows can change a pixel in them
@@ -314,11 +312,41 @@ impl<S: Shape, C: Interpolate, A: Coverage> Styled<S, C, A> {
         } else {
             self.fill_edges(&mut e)?
         }
+        self.cover_with(&mut e, None, paint, rule, canvas);
+        Ok(())
+    }
+
+    /// `e`'s coverage in `canvas`'s clip, painted with `paint` at the
+    /// style's opacity: the last step of every part's draw. `chains`: the
+    /// list's two chains found over every row (aliased only), walked
+    /// without looking for them again.
+    #[inline(always)]
+    fn cover_with<const N: usize, T: Canvas<C>>(
+        &self,
+        e: &mut EdgeList<N>,
+        chains: Option<Chains>,
+        paint: &crate::shape::Paint<C>,
+        rule: FillRule,
+        canvas: &mut T,
+    ) {
         let op = u32::from(self.style.opacity);
         // Coverage times opacity, rounded; exact (and free) when opaque.
         let alpha = |a: u8| if op == 255 { a } else { div255_round(u32::from(a) * op) as u8 };
-        A::cover(&mut e, rule, canvas.clip(), |span, a| paint.paint(canvas, span, alpha(a)));
-        Ok(())
+        let clip = canvas.clip();
+        let out = |span, a| paint.paint(canvas, span, alpha(a));
+        match chains {
+            Some(c) if A::WHOLE => c.within(clip).walk(e.edges(), clip, &mut Runs::new(out)),
+            _ => A::cover(e, rule, clip, out),
+        }
+    }
+
+    /// Whether `clip` misses every row or every column the shape can touch.
+    #[inline(always)]
+    fn misses(&self, clip: crate::ClipRect) -> bool {
+        clip.y1() <= self.rows.0
+            || clip.y0() >= self.rows.1
+            || clip.x1() <= self.cols.0
+            || clip.x0() >= self.cols.1
     }
 }
 
@@ -334,6 +362,9 @@ impl<S: Shape, C: Interpolate, A: Coverage> Drawable for Styled<S, C, A> {
         canvas.finish()
     }
 }
+
+mod prepared;
+pub use prepared::{PREPARED_EDGES, Prepared};
 
 #[cfg(test)]
 mod tests;
