@@ -8,12 +8,15 @@
 //! * `shapes-ratios`: the ratios of `cargo bench --bench shapes` (criterion's
 //!   medians of its last run, in `target/criterion`), each shape and the
 //!   dashboard frame against their peers, with the verdicts;
+//! * `shape-counts`: the instruction counts per frame of the filled shapes
+//!   (`docs/data/shape-counts.tsv`, written by `bash scripts/shape-counts.sh`);
 //! * `sprites-ratios`: the ratios of `cargo bench --bench sprites` (the same
 //!   criterion medians), each sprite against its peer.
 //!
 //! ```text
 //! cargo bench --bench shapes        # optional: refreshes the shape ratios
 //! cargo bench --bench sprites       # optional: refreshes the sprite ratios
+//! bash scripts/shape-counts.sh      # optional: refreshes the instruction counts
 //! cargo run --example readme_2d     # rewrites the docs/shapes.md sections
 //! ```
 //!
@@ -60,6 +63,12 @@ fn main() -> Result<()> {
             "shapes-ratios: no complete `cargo bench --bench shapes` run found; section left as it is"
         ),
     }
+    match shape_counts() {
+        Some(table) => replace(&mut readme, "shape-counts", &table)?,
+        None => println!(
+            "shape-counts: no docs/data/shape-counts.tsv (bash scripts/shape-counts.sh); section left as it is"
+        ),
+    }
     match sprite_ratios() {
         Some(table) => replace(&mut readme, "sprites-ratios", &table)?,
         None => println!(
@@ -95,6 +104,45 @@ fn replace(readme: &mut String, name: &str, text: &str) -> Result<()> {
     let e = readme[b..].find(&end).ok_or(format!("no `{end}` in {DOC}"))? + b;
     readme.replace_range(b..e, text);
     Ok(())
+}
+
+/// The instruction-count table of `bash scripts/shape-counts.sh`
+/// (`docs/data/shape-counts.tsv`), with e-g / microraster ratios.
+fn shape_counts() -> Option<String> {
+    let tsv = std::fs::read_to_string("docs/data/shape-counts.tsv").ok()?;
+    let mut rows = String::from(
+        "| shape | e-g | direct | 16-row bands | prepared bands | e-g / direct | e-g / bands | e-g / prepared bands |\n\
+         |---|--:|--:|--:|--:|--:|--:|--:|\n",
+    );
+    let mut empty = None;
+    for line in tsv.lines().skip(1) {
+        let f: Vec<&str> = line.split('\t').collect();
+        let n: Vec<f64> = f.get(1..6)?.iter().map(|v| v.parse().ok()).collect::<Option<_>>()?;
+        let thousands = |v: f64| {
+            let s = format!("{v:.0}");
+            let (head, tail) = s.split_at(s.len() % 3);
+            let groups: Vec<&str> =
+                tail.as_bytes().chunks(3).map(|c| std::str::from_utf8(c).unwrap()).collect();
+            [head].into_iter().filter(|h| !h.is_empty()).chain(groups).collect::<Vec<_>>().join(",")
+        };
+        rows += &format!(
+            "| {} | {} | {} | {} | {} | {:.2} | {:.2} | {:.2} |\n",
+            f[0],
+            thousands(n[0]),
+            thousands(n[1]),
+            thousands(n[2]),
+            thousands(n[3]),
+            n[0] / n[1],
+            n[0] / n[2],
+            n[0] / n[3]
+        );
+        empty = Some(thousands(n[4]));
+    }
+    rows += &format!(
+        "\nThe empty frame in 16-row bands (each band cleared and copied out): {} instructions.\n",
+        empty?
+    );
+    Some(rows)
 }
 
 /// The sprite ratio table (`benches/sprites.rs`), if all four were measured.
