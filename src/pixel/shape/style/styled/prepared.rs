@@ -49,7 +49,7 @@ pub const PREPARED_EDGES: usize = 128;
 /// a.assert_eq(&b); // the same pixels as the shape built in every band
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
-#[derive(Clone)]
+#[derive(Debug, Clone)]
 pub struct Prepared<S, C, A = Aliased, const N: usize = PREPARED_EDGES> {
     styled: Styled<S, C, A>,
     fill: EdgeList<N>,
