@@ -25,7 +25,7 @@ use microraster::shape::{self as sh, Shape, ShapeStyle};
 use microraster::{Band, Renderer};
 use std::hint::black_box;
 
-#[allow(dead_code, unused_imports)] // each user takes what it needs
+#[allow(unused_imports)] // each user takes what it needs (the module allows dead code)
 #[path = "../benches/common/mod.rs"]
 mod common;
 use common::{BG, Frame, H, SliceFb, W};
