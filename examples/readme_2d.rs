@@ -27,8 +27,11 @@ use std::error::Error;
 #[path = "../benches/common/criterion_median.rs"]
 mod criterion_median;
 use criterion_median::median;
+#[path = "common/group.rs"]
+mod digits;
 #[path = "common/shapes_ratios.rs"]
 mod shapes_ratios;
+use digits::group;
 use shapes_ratios::ratio;
 
 type Result<T> = std::result::Result<T, Box<dyn Error>>;
@@ -117,26 +120,20 @@ fn shape_counts() -> Option<String> {
     let mut empty = None;
     for line in tsv.lines().skip(1) {
         let f: Vec<&str> = line.split('\t').collect();
-        let n: Vec<f64> = f.get(1..6)?.iter().map(|v| v.parse().ok()).collect::<Option<_>>()?;
-        let thousands = |v: f64| {
-            let s = format!("{v:.0}");
-            let (head, tail) = s.split_at(s.len() % 3);
-            let groups: Vec<&str> =
-                tail.as_bytes().chunks(3).map(|c| std::str::from_utf8(c).unwrap()).collect();
-            [head].into_iter().filter(|h| !h.is_empty()).chain(groups).collect::<Vec<_>>().join(",")
-        };
+        let n: Vec<u64> = f.get(1..6)?.iter().map(|v| v.parse().ok()).collect::<Option<_>>()?;
+        let r = |a: u64, b: u64| a as f64 / b as f64;
         rows += &format!(
             "| {} | {} | {} | {} | {} | {:.2} | {:.2} | {:.2} |\n",
             f[0],
-            thousands(n[0]),
-            thousands(n[1]),
-            thousands(n[2]),
-            thousands(n[3]),
-            n[0] / n[1],
-            n[0] / n[2],
-            n[0] / n[3]
+            group(n[0]),
+            group(n[1]),
+            group(n[2]),
+            group(n[3]),
+            r(n[0], n[1]),
+            r(n[0], n[2]),
+            r(n[0], n[3])
         );
-        empty = Some(thousands(n[4]));
+        empty = Some(group(n[4]));
     }
     rows += &format!(
         "\nThe empty frame in 16-row bands (each band cleared and copied out): {} instructions.\n",

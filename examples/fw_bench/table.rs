@@ -11,6 +11,9 @@ use microraster::pipeline::{ClusterCache, VertexCache};
 use microraster::{Band, Error};
 
 use crate::benches::{self, BACKGROUND, Bench, Buffers, Mode, Sink};
+#[path = "../common/group.rs"]
+mod digits;
+use digits::group;
 
 /// What the host knows of one configuration.
 pub struct HostRecord {
@@ -191,19 +194,6 @@ fn parse(input: &str) -> Result<BTreeMap<String, TargetRun>, String> {
         }
     }
     Ok(runs)
-}
-
-/// `1234567` → `1,234,567`.
-fn group(n: u64) -> String {
-    let s = n.to_string();
-    let mut out = String::new();
-    for (i, c) in s.chars().enumerate() {
-        if i > 0 && (s.len() - i).is_multiple_of(3) {
-            out.push(',');
-        }
-        out.push(c);
-    }
-    out
 }
 
 /// A ratio with one decimal below 100, none above.

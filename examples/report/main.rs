@@ -30,6 +30,8 @@ mod common;
 mod cortex;
 #[path = "../../benches/common/criterion_median.rs"]
 mod criterion_median;
+#[path = "../common/group.rs"]
+mod digits;
 mod document;
 mod figures;
 mod frag_report;

@@ -62,18 +62,7 @@ const HOST_EUC: f64 = 2.0;
 const PENDING_FW: &str = "pending (`bash scripts/firmware.sh table`)";
 const PENDING_TGX: &str = "pending (docs/data/peers-tgx.tsv)";
 
-/// `1234567` → `1,234,567`.
-pub(crate) fn group(n: u64) -> String {
-    let s = n.to_string();
-    let mut out = String::new();
-    for (i, c) in s.chars().enumerate() {
-        if i > 0 && (s.len() - i).is_multiple_of(3) {
-            out.push(',');
-        }
-        out.push(c);
-    }
-    out
-}
+pub(crate) use crate::digits::group;
 
 /// Issue 61's rows of the targets table and the paragraph on the misses.
 pub(super) fn issue61(peers: &[Peer], counts: &Counts, fw: &FwBench) -> (String, String) {
