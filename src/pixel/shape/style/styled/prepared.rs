@@ -169,24 +169,12 @@ impl<S: Shape, C: Interpolate, A: Coverage, const N: usize> Prepared<S, C, A, N>
 #[cfg(test)]
 mod tests {
     extern crate std;
+    use super::super::tests::frame_by;
     use super::*;
-    use crate::Band;
     use crate::shape::{Arc, Cap, Circle, Ellipse, Polygon, RoundedRect, ShapeStyle};
     use crate::test_rng::Rng;
     use embedded_graphics::pixelcolor::{Gray8, GrayColor};
     use std::vec::Vec;
-
-    /// A 64 × 48 frame in bands of `h` rows, each drawn by `draw`.
-    fn frame(h: usize, mut draw: impl FnMut(&mut crate::band::BandView<'_, Gray8, 64>)) -> Vec<Gray8> {
-        let mut out = Vec::new();
-        let mut band = Band::<Gray8, 64, 48>::new(Gray8::BLACK);
-        for y0 in (0..48).step_by(h) {
-            let rows = h.min(48 - y0);
-            draw(&mut band.view(y0 as i32, rows, Gray8::new(20)));
-            out.extend(band.rows()[..rows].iter().flatten());
-        }
-        out
-    }
 
     /// Prepared and unprepared, in bands of 1, 3, 16 and 48 rows; prepared
     /// first as `before`, then `set` to `s` (the lists reused).
@@ -195,8 +183,8 @@ mod tests {
         p.set(s.clone()).unwrap();
         let mut lit = 0;
         for h in [1, 3, 16, 48] {
-            let want = frame(h, |v| s.draw_on(v));
-            assert_eq!(frame(h, |v| p.draw_on(v)), want, "{h}-row bands");
+            let want = frame_by(h, |v| s.draw_on(v));
+            assert_eq!(frame_by(h, |v| p.draw_on(v)), want, "{h}-row bands");
             lit += want.iter().filter(|&&c| c != Gray8::new(20)).count();
         }
         lit

@@ -9,11 +9,20 @@ use std::vec::Vec;
 
 /// `shape` drawn into bands of `h` rows of a 64 × 48 frame, assembled.
 fn frame<S: Shape, A: crate::shape::Coverage>(shape: &Styled<S, Gray8, A>, h: usize) -> Vec<Gray8> {
+    frame_by(h, |v| shape.draw_on(v))
+}
+
+/// A 64 × 48 frame in bands of `h` rows (cleared to grey 20), each drawn
+/// by `draw`, assembled.
+pub(super) fn frame_by(
+    h: usize,
+    mut draw: impl FnMut(&mut crate::band::BandView<'_, Gray8, 64>),
+) -> Vec<Gray8> {
     let mut out = Vec::new();
     let mut band = Band::<Gray8, 64, 48>::new(Gray8::BLACK);
     for y0 in (0..48).step_by(h) {
         let rows = h.min(48 - y0);
-        shape.draw_on(&mut band.view(y0 as i32, rows, Gray8::new(20)));
+        draw(&mut band.view(y0 as i32, rows, Gray8::new(20)));
         out.extend(band.rows()[..rows].iter().flatten());
     }
     out
