@@ -32,6 +32,7 @@ use std::time::Duration;
 
 #[path = "common/mod.rs"]
 pub mod common;
+use common::shape_set::{bounds, place};
 use common::{BG, Frame, H, SliceFb, W};
 #[path = "common/criterion_median.rs"]
 mod criterion_median;
@@ -44,13 +45,6 @@ const FG: Rgb565 = Rgb565::new(31, 40, 8);
 const STROKE: f32 = 5.0;
 const SHAPES: [&str; 10] =
     ["rect", "rounded", "circle", "ellipse", "arc", "sector", "polygon", "polyline", "triangle", "line"];
-
-/// Instance `k`: centre, size.
-fn place(k: usize) -> ((f32, f32), f32) {
-    let size = 8.0 + (k * 37 % 113) as f32;
-    let (x, y) = ((k * 53 % W) as f32, (k * 29 % H) as f32);
-    ((x, y), size)
-}
 
 fn star(c: (f32, f32), s: f32) -> [(f32, f32); 10] {
     core::array::from_fn(|i| {
@@ -132,7 +126,8 @@ fn mr_shapes(name: &str, aa: bool) -> Vec<Box<dyn MrDraw>> {
     (0..24)
         .map(|k| {
             let (c, s) = place(k);
-            let rect = sh::Rect::new(c.0 - s / 2.0, c.1 - s / 3.0, s, s / 1.5).unwrap();
+            let (x, y, w, h) = bounds(k);
+            let rect = sh::Rect::new(x, y, w, h).unwrap();
             match name {
                 "rect" => boxed(rect, fill, aa),
                 "rounded" => boxed(sh::RoundedRect::new(rect, s / 8.0).unwrap(), fill, aa),
@@ -163,10 +158,8 @@ fn eg_shapes(name: &str) -> Option<Vec<EgDraw>> {
         (0..24)
             .map(|k| -> EgDraw {
                 let (c, s) = place(k);
-                let rect = eg::Rectangle::new(
-                    p(c.0 - s / 2.0, c.1 - s / 3.0),
-                    Size::new(s as u32, (s / 1.5) as u32),
-                );
+                let (x, y, w, h) = bounds(k);
+                let rect = eg::Rectangle::new(p(x, y), Size::new(w as u32, h as u32));
                 let d = s as u32;
                 match name {
                     "rect" => Box::new(move |t| rect.into_styled(fill).draw(t).unwrap()),
@@ -220,7 +213,8 @@ fn skia_shapes(name: &str) -> Vec<(tiny_skia::Path, Option<tiny_skia::Stroke>)> 
     (0..24)
         .filter_map(|k| {
             let (c, s) = place(k);
-            let rect = tiny_skia::Rect::from_xywh(c.0 - s / 2.0, c.1 - s / 3.0, s, s / 1.5)?;
+            let (x, y, w, h) = bounds(k);
+            let rect = tiny_skia::Rect::from_xywh(x, y, w, h)?;
             let arc = |pb: &mut PathBuilder, close_at_centre: bool| {
                 let n = 64;
                 if close_at_centre {
@@ -252,9 +246,7 @@ fn skia_shapes(name: &str) -> Vec<(tiny_skia::Path, Option<tiny_skia::Stroke>)> 
                     pb.close();
                 }
                 "circle" => pb.push_circle(c.0, c.1, s / 2.0),
-                "ellipse" => {
-                    pb.push_oval(tiny_skia::Rect::from_xywh(c.0 - s / 2.0, c.1 - s / 3.0, s, s / 1.5)?)
-                }
+                "ellipse" => pb.push_oval(rect),
                 "arc" => {
                     arc(&mut pb, false);
                     stroked = true;

@@ -28,21 +28,10 @@ use std::hint::black_box;
 #[allow(unused_imports)] // each user takes what it needs (the module allows dead code)
 #[path = "../benches/common/mod.rs"]
 mod common;
+use common::shape_set::{bounds, place};
 use common::{BG, Frame, H, SliceFb, W};
 
 const FG: Rgb565 = Rgb565::new(31, 40, 8);
-
-/// Instance `k`: centre, size (as `benches/shapes.rs` places them).
-fn place(k: usize) -> ((f32, f32), f32) {
-    let size = 8.0 + (k * 37 % 113) as f32;
-    (((k * 53 % W) as f32, (k * 29 % H) as f32), size)
-}
-
-/// The box of instance `k`: left, top, width, height.
-fn bounds(k: usize) -> (f32, f32, f32, f32) {
-    let (c, s) = place(k);
-    (c.0 - s / 2.0, c.1 - s / 3.0, s, s / 1.5)
-}
 
 /// `frames` frames of `shape` drawn the `way` way.
 fn run<S: Shape + Clone>(

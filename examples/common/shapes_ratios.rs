@@ -63,10 +63,7 @@ pub fn table(dashboard: &str) -> Option<String> {
         // (`shape::Prepared`, in the timed frame): the verdict takes the
         // faster of the two banded ways, as a user would.
         let prepared = ratio(m("eg"), m("mr_band16_prepared"));
-        let banded = match (r[1], prepared) {
-            (Some(a), Some(b)) => Some(a.max(b)),
-            (a, b) => a.or(b),
-        };
+        let banded = r[1].into_iter().chain(prepared).reduce(f64::max);
         for v in r.iter().flatten() {
             total += 1;
             met += usize::from(*v >= 1.0);
