@@ -278,7 +278,7 @@ impl<T: Scalar, const S: u32> Pipeline<T, S> {
         // test and the record's key.
         let rows_f = rows_f32(&setup.ctx.mvp);
         let cull = ClusterCull::new(rows_f, pipe.clip.far(), &setup.band, pipe.cull == Cull::Clockwise);
-        let inside = InsideView::from_rows(rows_f, setup.planes);
+        let inside = InsideView::from_rows::<T>(rows_f, setup.planes);
         let key = FrameKey {
             mesh: (mesh.meshlets.as_ptr() as usize, mesh.meshlets.len()),
             mvp: rows_f.map(|r| [r.x, r.y, r.z, r.w].map(f32::to_bits)),

@@ -6,11 +6,12 @@
 //! # Why a vertex in the sphere then has outcode 0
 //! Let `m` bound the magnitude of every clip coordinate over the sphere
 //! (`|row·(c, 1)| + r·|row.xyz|₁`, the largest of the four rows) and `l`
-//! the largest `|row.xyz|₁`. The test asks for `w − w_min`, `z` (near),
-//! `w − z` (far, when clipped) and `w ± x`, `w ± y` (the view volume, guard
-//! band 1) to be at least `margin = (m + l + 1)/2^8` everywhere in the
-//! sphere (the least value of a plane `p` over it is `p·(c, 1) −
-//! r·|p.xyz|`, bounded with `|p.xyz|₁`). A vertex's coordinates
+//! the largest `|row.xyz|₁`. The test asks for `w − w_min`, `z` (near) and
+//! `w − z` (far, when clipped) to be at least `margin = (m + l + 1)/2^8`
+//! everywhere in the sphere, and `g·w ± x`, `g·w ± y` (the guard band `g`,
+//! in `f32`; `g = 1`, the view volume, in `Fx`) at least `g·margin` (the
+//! least value of a plane `p` over it is `p·(c, 1) − r·|p.xyz|`, bounded
+//! with `|p.xyz|₁`). A vertex's coordinates
 //! as the pipeline computes them differ from the exact ones by:
 //! * `f32`: three products and three sums, each rounding at 2^-24 relative
 //!   to a partial sum of at most `m`: within `2^-22·m`;
@@ -21,10 +22,23 @@
 //!
 //! So each computed distance of [`VertexClass::code`](crate::clip3d) (sums
 //! of two coordinates, `g·w` for the guard band `g ≥ 1`) is positive: two
-//! coordinate errors are below `margin`, `fl(g·w) ≥ w` for `g ≥ 1` and
+//! coordinate errors are below `margin`; `fl(g·w) ≥ w` for `g ≥ 1` and
 //! `w > 0` (rounding is monotonic; `Fx` truncation loses at most 2^-16,
-//! also inside the margin), and a floating sum of a non-negative exact sum
-//! is non-negative. `m ≤ 2^60` keeps every coordinate finite and within the
+//! also inside the margin); in `f32`, `fl(g·w)` is within
+//! `g·(δ + 2^-24·m)` of `g·W` for a computed `w` within `δ` of the exact
+//! `W`, so the side planes' computed distances are off by less than
+//! `g·(2·2^-22·m + 2^-24·m) < g·margin`; and a floating sum of a
+//! non-negative exact sum is non-negative.
+//!
+//! # Why the guard band
+//! The clipper leaves a triangle whose vertices lie inside the guard band
+//! unclipped (outcode 0), so a cluster that reaches past the screen's edge
+//! but not past the guard band takes the same triangles through this path
+//! as through the cached one, without its per-vertex outcodes: on the knot
+//! with the camera twice as close (`fw_bench`'s `knot20k-close` rows), a
+//! sixth of the clusters drawn. `Fx` keeps the view volume: its
+//! coordinates saturate at 2^15, and a test that bounds them is not worth
+//! its cost there. `m ≤ 2^60` keeps every coordinate finite and within the
 //! code's input limit (2^64). The sphere is widened by twice the
 //! containment tolerance validation allows (`SPHERE_TOLERANCE`).
 //! `tests::inside_spheres_have_only_inside_vertices` checks the claim on
@@ -45,6 +59,9 @@ pub(super) struct InsideView {
     plane_l1: [f32; 7],
     far: bool,
     w_min: f32,
+    /// The guard band of the side planes (module docs): the planes' in
+    /// `f32`, 1 in `Fx`.
+    guard: f32,
 }
 
 /// `|p.xyz|₁`, which bounds `|p.xyz|`.
@@ -54,22 +71,31 @@ fn l1(p: Vec4<f32>) -> f32 {
 
 impl InsideView {
     pub(super) fn new<T: Scalar>(mvp: &Mat4<T>, planes: ClipPlanes) -> Self {
-        Self::from_rows(super::rows_f32(mvp), planes)
+        Self::from_rows::<T>(super::rows_f32(mvp), planes)
     }
 
     /// [`InsideView::new`] from the matrix's rows in `f32` ([`super::rows_f32`]).
-    pub(super) fn from_rows(rows: [Vec4<f32>; 4], planes: ClipPlanes) -> Self {
+    pub(super) fn from_rows<T: Scalar>(rows: [Vec4<f32>; 4], planes: ClipPlanes) -> Self {
         let l1s = rows.map(l1);
         // Fx acts on w_min no smaller than its smallest value, 2^-16.
         let w_min = planes.w_min().max(ClipPlanes::W_MIN);
+        let guard = if crate::math::vec::is_float::<T>() { planes.guard_band() } else { 1.0 };
         let view = super::view_planes(rows, planes.far()).map(l1);
+        // Only with a guard band: each product and sum is a library call in
+        // the Cortex-M0's soft float.
+        let sides = if guard == 1.0 {
+            view
+        } else {
+            super::view_planes([rows[0], rows[1], rows[2], rows[3] * guard], true).map(l1)
+        };
         InsideView {
             rows,
             l1: l1s,
             l1_max: l1s.into_iter().fold(0.0, f32::max),
-            plane_l1: [l1s[3], view[0], view[1], view[2], view[3], view[4], view[5]],
+            plane_l1: [l1s[3], sides[0], sides[1], sides[2], sides[3], view[4], view[5]],
             far: planes.far(),
             w_min,
+            guard,
         }
     }
 
@@ -92,10 +118,19 @@ impl InsideView {
         }
         let margin = (m + self.l1_max + 1.0) / 256.0;
         // The least of `p · (q, 1)` over the sphere is `p · (c, 1) − r·|p.xyz|`:
-        // w − w_min, then the view volume's planes.
+        // w − w_min, then the view volume's planes, with the guard band's
+        // `g·w` in the four sides (the near and far planes take none).
         let [v0, v1, v2, v3, v4, v5] = super::view_planes(d, self.far);
         let at_centre = [d[3] - self.w_min, v0, v1, v2, v3, v4, v5];
-        at_centre.iter().zip(self.plane_l1).all(|(v, l1)| v - r * l1 >= margin)
+        if self.guard == 1.0 {
+            // Two products fewer: soft float on the Cortex-M0 (`Fx`).
+            return at_centre.iter().zip(self.plane_l1).all(|(v, l1)| v - r * l1 >= margin);
+        }
+        let (gw, g_margin) = (self.guard * d[3], self.guard * margin);
+        let sides = [gw + d[0], gw - d[0], gw + d[1], gw - d[1]];
+        let needed = [margin, g_margin, g_margin, g_margin, g_margin, margin, margin];
+        let at_centre = [at_centre[0], sides[0], sides[1], sides[2], sides[3], v4, v5];
+        at_centre.iter().zip(self.plane_l1).zip(needed).all(|((v, l1), need)| v - r * l1 >= need)
     }
 }
 
@@ -129,7 +164,13 @@ pub(super) mod tests {
         [0, 1, 2, 3].map(|r| a[r] * p.x + b[r] * p.y + c[r] * p.z + d[r])
     }
 
-    fn check<T: Scalar>(seed: &mut u64, planes: ClipPlanes, accepted: &mut u32, near_edge: &mut u32) {
+    fn check<T: Scalar>(
+        seed: &mut u64,
+        planes: ClipPlanes,
+        accepted: &mut u32,
+        near_edge: &mut u32,
+        beyond: &mut u32,
+    ) {
         // A camera looking at the origin from a random direction; spheres
         // scattered over and beyond the view, some hugging its edges.
         let dir = Vec3::new(rng(seed), rng(seed), rng(seed) + 2.0);
@@ -165,6 +206,7 @@ pub(super) mod tests {
                 let v = v.map(|x| x.to_f32());
                 let edge = [v[3] - v[0], v[3] + v[0], v[3] - v[1], v[3] + v[1], v[2], v[3] - v[2]];
                 *near_edge += edge.iter().any(|&e| e < 0.05 * v[3]) as u32;
+                *beyond += (v[0].abs() > v[3] || v[1].abs() > v[3]) as u32;
             }
         }
     }
@@ -175,15 +217,16 @@ pub(super) mod tests {
     #[test]
     fn inside_spheres_have_only_inside_vertices() {
         let mut seed = 0x5851_f42d_4c95_7f2du64;
-        let (mut accepted, mut near_edge) = (0, 0);
+        let (mut accepted, mut near_edge, mut beyond) = (0, 0, 0);
         for i in 0..600 {
             let planes = if i % 2 == 0 { ClipPlanes::DEFAULT } else { ClipPlanes::NO_FAR };
             let planes = if i % 3 == 0 { planes.with_guard_band(1.0) } else { planes };
-            check::<f32>(&mut seed, planes, &mut accepted, &mut near_edge);
-            check::<Fx>(&mut seed, planes, &mut accepted, &mut near_edge);
+            check::<f32>(&mut seed, planes, &mut accepted, &mut near_edge, &mut beyond);
+            check::<Fx>(&mut seed, planes, &mut accepted, &mut near_edge, &mut beyond);
         }
-        // Not vacuous: many spheres pass, and their points reach the edges.
-        assert!(accepted > 2_000 && near_edge > 1_000, "{accepted} {near_edge}");
+        // Not vacuous: many spheres pass, their points reach the edges, and
+        // in `f32` with a guard band many lie beyond the view volume's sides.
+        assert!(accepted > 2_000 && near_edge > 1_000 && beyond > 1_000, "{accepted} {near_edge} {beyond}");
     }
 
     /// Spheres across a plane, behind the eye or beyond the range are not
@@ -191,9 +234,18 @@ pub(super) mod tests {
     #[test]
     fn spheres_across_the_edges_are_not_inside() {
         let mvp = eye_at_z5();
+        // The view volume's sides: guard band 1 in `f32`, any in `Fx`.
+        let view = InsideView::new(&mvp, ClipPlanes::DEFAULT.with_guard_band(1.0));
+        let fx = InsideView::new(&Mat4::<Fx>::from_f32(mvp.to_f32()), ClipPlanes::DEFAULT);
+        assert!(view.contains(([0.0; 3], 0.5)) && fx.contains(([0.0; 3], 0.5)));
+        assert!(!view.contains(([0.0; 3], 3.0)) && !fx.contains(([0.0; 3], 3.0))); // beyond the sides
+        // In `f32` the guard band's sides (256 by default): beyond the
+        // screen, not beyond the guard band.
         let test = InsideView::new(&mvp, ClipPlanes::DEFAULT);
-        assert!(test.contains(([0.0; 3], 0.5)));
-        assert!(!test.contains(([0.0; 3], 3.0))); // beyond the sides
+        assert!(test.contains(([0.0; 3], 3.0)));
+        assert!(test.contains(([50.0, 0.0, 0.0], 0.5)) && !view.contains(([50.0, 0.0, 0.0], 0.5)));
+        assert!(!test.contains(([1000.0, 0.0, 0.0], 1.0))); // beyond the guard band
+        assert!(!test.contains(([0.0, -1000.0, 0.0], 1.0)));
         assert!(!test.contains(([0.0, 0.0, 4.5], 0.2))); // across the near plane
         assert!(!test.contains(([0.0, 0.0, -5.5], 0.2))); // beyond the far plane
         assert!(test.contains(([0.0, 0.0, -4.0], 0.2)));

@@ -139,3 +139,41 @@ fn mirrored_models_draw_the_binned_image() {
     check::<f32>();
     check::<Fx>();
 }
+
+/// The torus close enough to reach past the frame's edges: the clusters
+/// across an edge lie inside the clip volume's guard band, so in `f32` they
+/// take the meshlet stage's vertex-first path (`InsideView` tests the guard
+/// band), in `Fx` the cached one with its outcodes; both must draw what the
+/// binned path draws, in every band height.
+#[test]
+fn clusters_across_the_frame_edges_draw_the_binned_image() {
+    let c = torus();
+    let mut edges_met = 0;
+    for i in 0..6 {
+        let angle = i as f32 * 1.1;
+        let eye = [0.3 * i as f32 - 0.8, 0.9 - 0.3 * i as f32, 2.0 + 0.1 * i as f32];
+        for cull in [Cull::None, Cull::Clockwise] {
+            let p = pipeline::<f32>(cull, eye);
+            let reference = binned::<f32, Affine, 16>(&c, &p, angle);
+            // Covered pixels on the frame's border: the torus crosses it.
+            let w = W;
+            let border = (0..reference.len())
+                .filter(|&k| {
+                    let (x, y) = (k % w, k / w);
+                    (x == 0 || x == w - 1 || y == 0 || y == H as usize - 1) && reference[k] != BG
+                })
+                .count();
+            edges_met += usize::from(border > 20);
+            assert_eq!(direct::<f32, Affine, 16>(&c, &p, angle, Affine), reference, "f32 {i} {cull:?}");
+            assert_eq!(direct::<f32, Affine, 1>(&c, &p, angle, Affine), reference, "f32 rows 1 {i}");
+            assert_eq!(direct::<f32, Affine, 120>(&c, &p, angle, Affine), reference, "f32 full {i}");
+            let reference = binned::<f32, PerspectiveCorrect, 16>(&c, &p, angle);
+            assert_eq!(direct::<f32, _, 16>(&c, &p, angle, PerspectiveCorrect), reference, "persp {i}");
+            let p = pipeline::<Fx>(cull, eye);
+            let reference = binned::<Fx, Affine, 16>(&c, &p, angle);
+            assert_eq!(direct::<Fx, Affine, 16>(&c, &p, angle, Affine), reference, "Fx {i} {cull:?}");
+        }
+    }
+    // Not vacuous: the views reach past the frame's edges.
+    assert!(edges_met >= 10, "{edges_met} of 12 views reach the edges");
+}
