@@ -34,11 +34,13 @@
 //! [`draw_triangle_in`] takes a [`Precision`]. [`Precision::Exact`] is what
 //! this page describes. [`Precision::Fast`] has the same coverage, maps a
 //! tiny triangle's vertex depths with two shifts (each code within one of
-//! the exact tier's), and chooses colour once per triangle: one whose
+//! the exact tier's), and chooses colour once per triangle where that pays:
+//! a triangle above the tiny size, or a tiny perspective-correct one, whose
 //! vertex channels lie within 2 of each other is one colour (the middle of
 //! each range, `tiny::fast`); a perspective-correct one whose `1/w` barely
-//! differ is drawn screen-linear. Each channel stays within one step of
-//! the exact tier's (`tests/integration/fast_raster.rs`).
+//! differ is drawn screen-linear. A tiny affine triangle keeps the exact
+//! tier's colour (choosing cost more than it saved). Each channel stays
+//! within one step of the exact tier's (`tests/integration/fast_raster.rs`).
 //!
 //! # Set-up cost
 //! Per triangle and band: the edge functions (for a small triangle in `i32`

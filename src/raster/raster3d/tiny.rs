@@ -141,8 +141,10 @@ fn draw_with<C, F, M, P, D, const S: u32, const W: usize>(
                 *slot = F::from_u32(code);
             }
         }
-        let how = if P::FAST {
-            *fast.get_or_insert_with(|| FastShade::new::<M, S>(tri))
+        // The fast tier chooses a perspective-correct colour once per
+        // triangle; its affine colour is the exact tier's (`fast` docs).
+        let how = if P::FAST && M::PERSPECTIVE {
+            *fast.get_or_insert_with(|| FastShade::new::<S>(tri))
         } else if M::PERSPECTIVE && !tri.flat {
             FastShade::Perspective
         } else {
