@@ -1,8 +1,8 @@
 //! The meshlet stage against the binned path: images and triangle counts.
 
 use super::{
-    BG, H, W, binned, binned_with, covered, direct, direct_stats, direct_with, model, pipeline, pipeline_far,
-    torus,
+    BG, Clustered, H, W, binned, binned_with, covered, direct, direct_stats, direct_with, model, pipeline,
+    pipeline_far, torus,
 };
 use crate::framebuffer::Framebuffer;
 use embedded_graphics_core::pixelcolor::Rgb565;
@@ -32,14 +32,7 @@ fn meshlets_draw_the_binned_image() {
             // back faces culled a share of those left face away.
             assert!(skipped[0] as usize > c.meshlets.len() * 2, "{skipped:?}");
             assert_eq!(skipped[1] > 0, cull == Cull::Clockwise, "{skipped:?}");
-            assert_eq!(direct::<f32, Affine, 1>(&c, &p, angle, Affine), reference, "f32 rows 1 {i}");
-            assert_eq!(direct::<f32, Affine, 3>(&c, &p, angle, Affine), reference, "f32 rows 3 {i}");
-            assert_eq!(direct::<f32, Affine, 120>(&c, &p, angle, Affine), reference, "f32 full {i}");
-            let reference = binned::<f32, PerspectiveCorrect, 16>(&c, &p, angle);
-            assert_eq!(direct::<f32, _, 16>(&c, &p, angle, PerspectiveCorrect), reference, "persp {i}");
-            let p = pipeline::<Fx>(cull, eye);
-            let reference = binned::<Fx, Affine, 16>(&c, &p, angle);
-            assert_eq!(direct::<Fx, Affine, 16>(&c, &p, angle, Affine), reference, "Fx {i} {cull:?}");
+            same_as_binned(&c, cull, eye, angle, i);
             frames += 6;
         }
     }
@@ -164,16 +157,26 @@ fn clusters_across_the_frame_edges_draw_the_binned_image() {
                 })
                 .count();
             edges_met += usize::from(border > 20);
-            assert_eq!(direct::<f32, Affine, 16>(&c, &p, angle, Affine), reference, "f32 {i} {cull:?}");
-            assert_eq!(direct::<f32, Affine, 1>(&c, &p, angle, Affine), reference, "f32 rows 1 {i}");
-            assert_eq!(direct::<f32, Affine, 120>(&c, &p, angle, Affine), reference, "f32 full {i}");
-            let reference = binned::<f32, PerspectiveCorrect, 16>(&c, &p, angle);
-            assert_eq!(direct::<f32, _, 16>(&c, &p, angle, PerspectiveCorrect), reference, "persp {i}");
-            let p = pipeline::<Fx>(cull, eye);
-            let reference = binned::<Fx, Affine, 16>(&c, &p, angle);
-            assert_eq!(direct::<Fx, Affine, 16>(&c, &p, angle, Affine), reference, "Fx {i} {cull:?}");
+            let (img, _) = direct_stats::<f32, Affine, 16>(&c, &p, angle, Affine);
+            assert_eq!(img, reference, "f32 {i} {cull:?}");
+            same_as_binned(&c, cull, eye, angle, i);
         }
     }
     // Not vacuous: the views reach past the frame's edges.
     assert!(edges_met >= 10, "{edges_met} of 12 views reach the edges");
+}
+
+/// The meshlet stage's image of view `i` against the binned path's in the
+/// other band heights (1, 3 and 120 rows), perspective-correct, and in `Fx`.
+fn same_as_binned(c: &Clustered, cull: Cull, eye: [f32; 3], angle: f32, i: usize) {
+    let p = pipeline::<f32>(cull, eye);
+    let reference = binned::<f32, Affine, 16>(c, &p, angle);
+    assert_eq!(direct::<f32, Affine, 1>(c, &p, angle, Affine), reference, "f32 rows 1 {i}");
+    assert_eq!(direct::<f32, Affine, 3>(c, &p, angle, Affine), reference, "f32 rows 3 {i}");
+    assert_eq!(direct::<f32, Affine, 120>(c, &p, angle, Affine), reference, "f32 full {i}");
+    let reference = binned::<f32, PerspectiveCorrect, 16>(c, &p, angle);
+    assert_eq!(direct::<f32, _, 16>(c, &p, angle, PerspectiveCorrect), reference, "persp {i}");
+    let p = pipeline::<Fx>(cull, eye);
+    let reference = binned::<Fx, Affine, 16>(c, &p, angle);
+    assert_eq!(direct::<Fx, Affine, 16>(c, &p, angle, Affine), reference, "Fx {i} {cull:?}");
 }
