@@ -229,6 +229,20 @@ pub(super) mod tests {
         assert!(accepted > 2_000 && near_edge > 1_000 && beyond > 1_000, "{accepted} {near_edge} {beyond}");
     }
 
+    /// The same at a guard band the random spheres reach (the default, 256,
+    /// lies far beyond them): in `f32` the side planes are the guard band's.
+    #[test]
+    fn spheres_inside_a_narrow_guard_band_have_only_inside_vertices() {
+        let mut seed = 0x2545_f491_4f6c_dd1du64;
+        let (mut accepted, mut near_edge, mut beyond) = (0, 0, 0);
+        for i in 0..600 {
+            let planes = if i % 2 == 0 { ClipPlanes::DEFAULT } else { ClipPlanes::NO_FAR };
+            check::<f32>(&mut seed, planes.with_guard_band(1.5), &mut accepted, &mut near_edge, &mut beyond);
+        }
+        // Not vacuous: many spheres pass, most of their points beyond the view volume.
+        assert!(accepted > 10_000 && beyond > 40_000, "{accepted} {beyond}");
+    }
+
     /// Spheres across a plane, behind the eye or beyond the range are not
     /// inside.
     #[test]

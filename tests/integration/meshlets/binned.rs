@@ -10,7 +10,7 @@ use microraster::depth::{Depth16, DepthBand, DepthState};
 use microraster::edge::Cull;
 use microraster::math::{Fx, Scalar, Vec3, transform};
 use microraster::mesh::ValidMesh;
-use microraster::pipeline::ClusterCache;
+use microraster::pipeline::{ClusterCache, Pipeline};
 use microraster::raster3d::{Affine, PerspectiveCorrect};
 use microraster::render::Direct3d;
 use microraster::{Band, Renderer};
@@ -32,7 +32,7 @@ fn meshlets_draw_the_binned_image() {
             // back faces culled a share of those left face away.
             assert!(skipped[0] as usize > c.meshlets.len() * 2, "{skipped:?}");
             assert_eq!(skipped[1] > 0, cull == Cull::Clockwise, "{skipped:?}");
-            same_as_binned(&c, cull, eye, angle, i);
+            same_as_binned(&c, &p, &reference, (cull, eye), angle, i);
             frames += 6;
         }
     }
@@ -149,33 +149,39 @@ fn clusters_across_the_frame_edges_draw_the_binned_image() {
             let p = pipeline::<f32>(cull, eye);
             let reference = binned::<f32, Affine, 16>(&c, &p, angle);
             // Covered pixels on the frame's border: the torus crosses it.
-            let w = W;
             let border = (0..reference.len())
                 .filter(|&k| {
-                    let (x, y) = (k % w, k / w);
-                    (x == 0 || x == w - 1 || y == 0 || y == H as usize - 1) && reference[k] != BG
+                    let (x, y) = (k % W, k / W);
+                    (x == 0 || x == W - 1 || y == 0 || y == H as usize - 1) && reference[k] != BG
                 })
                 .count();
             edges_met += usize::from(border > 20);
             let (img, _) = direct_stats::<f32, Affine, 16>(&c, &p, angle, Affine);
             assert_eq!(img, reference, "f32 {i} {cull:?}");
-            same_as_binned(&c, cull, eye, angle, i);
+            same_as_binned(&c, &p, &reference, (cull, eye), angle, i);
         }
     }
     // Not vacuous: the views reach past the frame's edges.
     assert!(edges_met >= 10, "{edges_met} of 12 views reach the edges");
 }
 
-/// The meshlet stage's image of view `i` against the binned path's in the
-/// other band heights (1, 3 and 120 rows), perspective-correct, and in `Fx`.
-fn same_as_binned(c: &Clustered, cull: Cull, eye: [f32; 3], angle: f32, i: usize) {
-    let p = pipeline::<f32>(cull, eye);
-    let reference = binned::<f32, Affine, 16>(c, &p, angle);
-    assert_eq!(direct::<f32, Affine, 1>(c, &p, angle, Affine), reference, "f32 rows 1 {i}");
-    assert_eq!(direct::<f32, Affine, 3>(c, &p, angle, Affine), reference, "f32 rows 3 {i}");
-    assert_eq!(direct::<f32, Affine, 120>(c, &p, angle, Affine), reference, "f32 full {i}");
-    let reference = binned::<f32, PerspectiveCorrect, 16>(c, &p, angle);
-    assert_eq!(direct::<f32, _, 16>(c, &p, angle, PerspectiveCorrect), reference, "persp {i}");
+/// The meshlet stage's image of view `i` (pipeline `p`, made from `cull`
+/// and `eye`, whose binned 16-row affine image is `reference`) against the
+/// binned path's in the other band heights (1, 3 and 120 rows),
+/// perspective-correct, and in `Fx`.
+fn same_as_binned(
+    c: &Clustered,
+    p: &Pipeline<f32, 4>,
+    reference: &[Rgb565],
+    (cull, eye): (Cull, [f32; 3]),
+    angle: f32,
+    i: usize,
+) {
+    assert_eq!(direct::<f32, Affine, 1>(c, p, angle, Affine), reference, "f32 rows 1 {i}");
+    assert_eq!(direct::<f32, Affine, 3>(c, p, angle, Affine), reference, "f32 rows 3 {i}");
+    assert_eq!(direct::<f32, Affine, 120>(c, p, angle, Affine), reference, "f32 full {i}");
+    let reference = binned::<f32, PerspectiveCorrect, 16>(c, p, angle);
+    assert_eq!(direct::<f32, _, 16>(c, p, angle, PerspectiveCorrect), reference, "persp {i}");
     let p = pipeline::<Fx>(cull, eye);
     let reference = binned::<Fx, Affine, 16>(c, &p, angle);
     assert_eq!(direct::<Fx, Affine, 16>(c, &p, angle, Affine), reference, "Fx {i} {cull:?}");
